@@ -1,0 +1,68 @@
+// The ground motion as smooth pieces: lambda(t) is smooth inside each piece and may jump between
+// pieces, so the integrator never steps across a piece boundary and each stage evaluates the
+// formula of the piece it lies in (the left limit at the piece's end, not the next piece's value).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "engine/scene.hpp"
+
+namespace blockfrag {
+
+class MotionPiece {
+ public:
+  enum class Shape { zero, constant, cosine, sine };
+
+  MotionPiece(Shape shape, double amplitude, double angular_frequency, double start, double end)
+      : shape_(shape), amplitude_(amplitude), omega_(angular_frequency), start_(start), end_(end) {}
+
+  double start() const { return start_; }
+  double end() const { return end_; }
+  bool is_zero() const { return shape_ == Shape::zero || amplitude_ == 0.0; }
+
+  // The piece's formula, also at its end point (the left limit there).
+  double lambda(double t) const {
+    switch (shape_) {
+      case Shape::zero: return 0.0;
+      case Shape::constant: return amplitude_;
+      case Shape::cosine: return amplitude_ * std::cos(omega_ * t);
+      case Shape::sine: return amplitude_ * std::sin(omega_ * t);
+    }
+    return 0.0;
+  }
+
+  double max_abs_lambda() const { return is_zero() ? 0.0 : std::abs(amplitude_); }
+
+  // How fast lambda changes: its period for oscillating pieces, unbounded for constant ones.
+  double time_scale() const {
+    return omega_ > 0 ? 2.0 * std::numbers::pi / omega_ : std::numeric_limits<double>::infinity();
+  }
+
+  // Times in (t0, t1) where lambda has an extremum: checking a function of lambda alone there and
+  // at the ends finds every excursion past a threshold.
+  std::vector<double> extrema_between(double t0, double t1) const;
+
+ private:
+  Shape shape_;
+  double amplitude_, omega_, start_, end_;
+};
+
+class GroundMotionPieces {
+ public:
+  explicit GroundMotionPieces(const GroundMotion& motion);
+
+  const MotionPiece& piece_at(double t) const;  // the piece with start <= t < end
+  double lambda(double t) const { return piece_at(t).lambda(t); }
+  double max_abs_lambda() const;
+  // From this time on lambda is zero: the ground is still.
+  double quiet_after() const { return quiet_after_; }
+
+ private:
+  std::vector<MotionPiece> pieces_;
+  double quiet_after_ = 0.0;
+};
+
+}  // namespace blockfrag

@@ -1,0 +1,163 @@
+// The closed set of contact modes. Each mode that integrates an ODE is a small system: its
+// coordinates (chosen so its constraints hold exactly), right-hand side, guard functions (positive
+// while the mode holds; the mode ends where one reaches zero) and the map back to the full state.
+// Guards are dimensionless (lengths over R, forces over M g, velocities over sqrt(g R)).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <variant>
+
+#include "engine/block_state.hpp"
+#include "engine/contact_dynamics.hpp"
+#include "engine/ground_motion.hpp"
+#include "engine/ode_state.hpp"
+#include "engine/summary.hpp"
+
+namespace blockfrag {
+
+struct RestMode {};
+struct SlideMode {
+  int slip_sign;
+};
+struct RockMode {
+  Corner pivot;
+  double pivot_x;
+};
+struct SlideRockMode {
+  Corner pivot;
+  int slip_sign;
+};
+struct FlightMode {};
+using Mode = std::variant<RestMode, SlideMode, RockMode, SlideRockMode, FlightMode>;
+
+ModeKind mode_kind(const Mode& mode);
+
+// What every system shares: the block, the contact, the ground motion piece being integrated.
+struct SystemContext {
+  const BlockGeometry* geometry;
+  const MotionPiece* piece;
+  double g, mu;
+  double length_scale() const { return geometry->size(); }
+  double velocity_scale() const { return std::sqrt(g * geometry->size()); }
+};
+
+struct ContactForces {
+  double friction, normal;  // per unit mass
+};
+
+// The guard that stops the run: |theta| reaching pi/2.
+inline double overturn_margin(double theta) { return std::numbers::pi / 2 - std::abs(theta); }
+
+// Flat on the base, slipping with sign s: x'' = (lambda - s mu) g.  q = (x, vx).
+struct SlideSystem {
+  static constexpr int N = 2, kGuards = 1;
+  SystemContext c;
+  int s;
+
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq[0] = q[1];
+    dq[1] = (c.piece->lambda(t) - s * c.mu) * c.g;
+  }
+  std::array<double, kGuards> guards(double, const OdeState<N>& q) const {
+    return {s * q[1] / c.velocity_scale()};
+  }
+  BlockState full(double, const OdeState<N>& q) const {
+    return {q[0], c.geometry->rest_height(), 0.0, q[1], 0.0, 0.0};
+  }
+  ContactForces forces(double, const OdeState<N>&) const { return {-s * c.mu * c.g, c.g}; }
+  OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx}; }
+};
+
+// Rocking about a sticking corner.  q = (theta, omega); the pivot stays at (pivot_x, 0).
+struct RockSystem {
+  static constexpr int N = 2, kGuards = 4;
+  static constexpr int kOverturnGuard = 3;
+  SystemContext c;
+  Corner pivot;
+  double pivot_x;
+
+  Vec2 arm(double theta, Corner corner) const {
+    return rotate(c.geometry->base_corner(corner), std::cos(theta), std::sin(theta));
+  }
+  CornerContact contact(double t, const OdeState<N>& q) const {
+    return sticking_corner(arm(q[0], pivot), q[1], c.piece->lambda(t), c.g,
+                           c.geometry->inertia_per_mass());
+  }
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq[0] = q[1];
+    dq[1] = contact(t, q).theta_dd;
+  }
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    const CornerContact k = contact(t, q);
+    const Vec2 r = arm(q[0], pivot), r_other = arm(q[0], other(pivot));
+    return {k.normal / c.g, (c.mu * k.normal - std::abs(k.friction)) / c.g,
+            (r_other.y - r.y) / c.length_scale(), overturn_margin(q[0])};
+  }
+  BlockState full(double, const OdeState<N>& q) const {
+    const Vec2 r = arm(q[0], pivot);
+    return {pivot_x - r.x, -r.y, q[0], q[1] * r.y, -q[1] * r.x, q[1]};
+  }
+  ContactForces forces(double t, const OdeState<N>& q) const {
+    const CornerContact k = contact(t, q);
+    return {k.friction, k.normal};
+  }
+  OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }
+};
+
+// Rocking about a slipping corner.  q = (theta, omega, pivot x, pivot x velocity).
+struct SlideRockSystem {
+  static constexpr int N = 4, kGuards = 5;
+  static constexpr int kOverturnGuard = 3;
+  SystemContext c;
+  Corner pivot;
+  int s;
+
+  Vec2 arm(double theta, Corner corner) const {
+    return rotate(c.geometry->base_corner(corner), std::cos(theta), std::sin(theta));
+  }
+  double denominator(const OdeState<N>& q) const {
+    return slide_rock_denominator(arm(q[0], pivot), s, c.mu, c.geometry->inertia_per_mass());
+  }
+  CornerContact contact(double t, const OdeState<N>& q) const {
+    return slipping_corner(arm(q[0], pivot), q[1], s, c.piece->lambda(t), c.g, c.mu,
+                           c.geometry->inertia_per_mass());
+  }
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    const CornerContact k = contact(t, q);
+    dq = {q[1], k.theta_dd, q[3], k.corner_dd};
+  }
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    const double R = c.length_scale();
+    const double d = denominator(q) / c.geometry->inertia_per_mass() - kPainleveMargin;
+    const Vec2 r = arm(q[0], pivot), r_other = arm(q[0], other(pivot));
+    // Past the Painleve boundary the slip equations are meaningless: report only that guard.
+    const double normal = d > 0 ? contact(t, q).normal / c.g : 1.0;
+    return {normal, s * q[3] / c.velocity_scale(), (r_other.y - r.y) / R, overturn_margin(q[0]), d};
+  }
+  BlockState full(double, const OdeState<N>& q) const {
+    const Vec2 r = arm(q[0], pivot);
+    return {q[2] - r.x, -r.y, q[0], q[3] + q[1] * r.y, -q[1] * r.x, q[1]};
+  }
+  ContactForces forces(double t, const OdeState<N>& q) const {
+    const CornerContact k = contact(t, q);
+    return {k.friction, k.normal};
+  }
+  OdeState<N> coordinates(const BlockState& b) const {
+    const Vec2 r = arm(b.theta, pivot);
+    return {b.theta, b.omega, b.x + r.x, b.vx - b.omega * r.y};
+  }
+};
+
+// Free flight: theta and y are closed-form; only x feels the ground (x'' = lambda g).  q = (x, vx).
+struct FlightDriftSystem {
+  static constexpr int N = 2;
+  SystemContext c;
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq[0] = q[1];
+    dq[1] = c.piece->lambda(t) * c.g;
+  }
+};
+
+}  // namespace blockfrag

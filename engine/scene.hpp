@@ -1,0 +1,66 @@
+// One simulation's inputs: block, contact, excitation, solver. Plain values, SI units.
+#pragma once
+
+#include <variant>
+
+namespace blockfrag {
+
+// A rectangle of half-width a and half-height b resting on its base.
+struct RectangularBlock {
+  double half_width = 0.5;   // a, m
+  double half_height = 1.0;  // b, m
+  double mass = 1.0;         // kg; no result depends on it, impulses and forces scale with it
+};
+
+struct Contact {
+  double friction = 0.6;     // mu, Coulomb, static = kinetic
+  double restitution = 0.6;  // e, Newton's coefficient on the normal velocity of the impacting corner
+};
+
+// The ground's horizontal acceleration is -lambda(t) g; each pulse is zero outside its window.
+struct NoMotion {};
+struct CosinePulse {        // lambda = A cos(2 pi t / T) for 0 <= t < cycles T
+  double amplitude_g = 1.0;
+  double period = 2.0;
+  double cycles = 1.0;
+};
+struct SinePulse {          // lambda = A sin(2 pi t / T) for 0 <= t < cycles T
+  double amplitude_g = 1.0;
+  double period = 2.0;
+  double cycles = 1.0;
+};
+struct RectangularPulse {   // lambda = A for 0 <= t < duration
+  double amplitude_g = 1.0;
+  double duration = 1.0;
+};
+using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse>;
+
+enum class Method { rk4, adaptive };
+
+struct SolverSettings {
+  Method method = Method::adaptive;
+  double dt = 2.5e-4;        // rk4 step, s (the paper's)
+  double tolerance = 1e-8;   // adaptive: relative and scaled absolute error per step
+  // Safety net: a scene that exceeds any of these stops with status "failed".
+  long max_steps = 50'000'000;
+  long max_events = 1'000'000;
+  double max_wall_seconds = 600.0;
+};
+
+// A block released from rest, tilted by theta (rad, counter-clockwise positive) onto the corner
+// that is then lowest; theta = 0 is flat on its base.
+struct InitialState {
+  double theta = 0.0;
+};
+
+struct Scene {
+  RectangularBlock block;
+  Contact contact;
+  GroundMotion ground_motion = NoMotion{};
+  double duration = 4.0;  // s
+  double g = 9.81;        // m/s^2
+  SolverSettings solver;
+  InitialState initial;
+};
+
+}  // namespace blockfrag

@@ -1,0 +1,55 @@
+#include "engine/scene_validation.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace blockfrag {
+
+namespace {
+
+void require(bool ok, const char* rule) {
+  if (!ok) throw std::invalid_argument(std::string("invalid scene: ") + rule);
+}
+
+bool positive(double v) { return std::isfinite(v) && v > 0; }
+
+}  // namespace
+
+void validate_scene(const Scene& scene) {
+  require(positive(scene.block.half_width), "block half_width must be > 0");
+  require(positive(scene.block.half_height), "block half_height must be > 0");
+  require(positive(scene.block.mass), "block mass must be > 0");
+  require(std::isfinite(scene.contact.friction) && scene.contact.friction >= 0,
+          "friction must be >= 0");
+  require(scene.contact.restitution >= 0 && scene.contact.restitution <= 1,
+          "restitution must be in [0, 1]");
+  require(positive(scene.duration), "duration must be > 0");
+  require(positive(scene.g), "g must be > 0");
+  require(std::isfinite(scene.initial.theta) &&
+              std::abs(scene.initial.theta) < std::numbers::pi / 2,
+          "initial theta must be within (-pi/2, pi/2)");
+  const SolverSettings& solver = scene.solver;
+  require(positive(solver.dt), "solver dt must be > 0");
+  require(positive(solver.tolerance) && solver.tolerance <= 0.1,
+          "solver tolerance must be in (0, 0.1]");
+  require(solver.max_steps > 0 && solver.max_events > 0 && positive(solver.max_wall_seconds),
+          "solver budgets must be > 0");
+  std::visit(
+      [](const auto& m) {
+        using M = std::decay_t<decltype(m)>;
+        if constexpr (std::is_same_v<M, RectangularPulse>) {
+          require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
+          require(positive(m.duration), "pulse duration must be > 0");
+        } else if constexpr (!std::is_same_v<M, NoMotion>) {
+          require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
+          require(positive(m.period), "pulse period must be > 0");
+          require(positive(m.cycles), "pulse cycles must be > 0");
+        }
+      },
+      scene.ground_motion);
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,77 @@
+// Watches the trajectory as the simulation advances: the extremes the summary reports (found on
+// the dense output, not only at step ends) and the time history at a fixed output interval.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "engine/block_state.hpp"
+#include "engine/modes.hpp"
+#include "engine/root_finding.hpp"
+#include "engine/summary.hpp"
+
+namespace blockfrag {
+
+class SegmentObserver {
+ public:
+  SegmentObserver(Summary& summary, double output_interval, double g)
+      : summary_(summary), interval_(output_interval), g_(g) {}
+
+  void start(const BlockState& s) {
+    x0_ = s.x;
+    observe_state(s);
+  }
+
+  void observe_state(const BlockState& s) {
+    summary_.max_abs_theta = std::max(summary_.max_abs_theta, std::abs(s.theta));
+    summary_.max_abs_slide = std::max(summary_.max_abs_slide, std::abs(s.x - x0_));
+  }
+
+  // One step [t0, t1] of a segment in which state_at(t) and forces_at(t) (per unit mass) are
+  // defined; extremes of theta and x inside the step are where omega and vx change sign.
+  template <class StateAt, class ForcesAt>
+  void observe_step(double t0, double t1, const StateAt& state_at, const ForcesAt& forces_at,
+                    ModeKind mode) {
+    const BlockState a = state_at(t0), b = state_at(t1);
+    observe_state(b);
+    if (a.omega * b.omega < 0) observe_extremum(t0, t1, a.omega, state_at, &BlockState::omega);
+    if (a.vx * b.vx < 0) observe_extremum(t0, t1, a.vx, state_at, &BlockState::vx);
+    if (interval_ <= 0) return;
+    while (next_output_ <= t1 * (1 + 1e-15)) {
+      const double t = std::max(next_output_, t0);
+      record(t, state_at(t), forces_at(t), mode);
+      next_output_ = interval_ * static_cast<double>(++outputs_);
+    }
+  }
+
+  void finish(double t, const BlockState& s, const ContactForces& forces, ModeKind mode) {
+    if (interval_ > 0 && (history_.empty() || history_.back().t < t)) record(t, s, forces, mode);
+  }
+
+  double x0() const { return x0_; }
+  std::vector<HistoryRow>& history() { return history_; }
+
+ private:
+  template <class StateAt>
+  void observe_extremum(double t0, double t1, double rate0, const StateAt& state_at,
+                        double BlockState::*rate) {
+    const double sign = rate0 > 0 ? 1.0 : -1.0;
+    const auto f = [&](double t) { return sign * (state_at(t).*rate); };
+    const Bracket at = locate_crossing(f, t0, t1, f(t0), f(t1), 1e-13 * (t1 - t0));
+    observe_state(state_at(at.after));
+  }
+
+  void record(double t, const BlockState& s, const ContactForces& f, ModeKind mode) {
+    history_.push_back({t, s.x - x0_, s.y, s.theta, s.vx, s.vy, s.omega, mode, f.friction / g_,
+                        f.normal / g_});
+  }
+
+  Summary& summary_;
+  double interval_, g_;
+  double x0_ = 0.0;
+  double next_output_ = 0.0;
+  long outputs_ = 0;
+  std::vector<HistoryRow> history_;
+};
+
+}  // namespace blockfrag

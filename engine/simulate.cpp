@@ -1,0 +1,462 @@
+#include "engine/simulate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "engine/contact_resolution.hpp"
+#include "engine/dormand_prince_stepper.hpp"
+#include "engine/flight.hpp"
+#include "engine/modes.hpp"
+#include "engine/rk4_stepper.hpp"
+#include "engine/root_finding.hpp"
+#include "engine/scene_validation.hpp"
+#include "engine/segment_observer.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+// A budget was exceeded or no consistent contact outcome exists: the scene fails, loudly.
+struct SceneFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Guards this close to zero when a mode starts are armed only once they have moved away: the
+// event that started the mode left them there.
+constexpr double kArmingMargin = 1e-12;
+constexpr int kInteriorSamples = 16;
+constexpr int kMaxStalledEvents = 100;
+constexpr double kOnsetMargin = 1e-12;
+
+// Within a few ulps of the end: a step that short cannot advance t.
+bool reached(double t, double end) { return end - t <= 1e-14 * std::max(1.0, std::abs(end)); }
+
+class Simulation {
+ public:
+  Simulation(const Scene& scene, double output_interval)
+      : scene_(scene),
+        geometry_(scene.block),
+        motion_(scene.ground_motion),
+        resolver_(geometry_, scene.contact, scene.g),
+        observer_(summary_, output_interval, scene.g),
+        log_impacts_(output_interval > 0) {}
+
+  void run();
+  Summary& summary() { return summary_; }
+  std::vector<HistoryRow>& history() { return observer_.history(); }
+  std::vector<ImpactRecord>& impact_log() { return impact_log_; }
+
+ private:
+  SystemContext context(const MotionPiece& piece) const {
+    return {&geometry_, &piece, scene_.g, scene_.contact.friction};
+  }
+  BlockState initial_state() const;
+  void enter(const ContactOutcome& outcome);
+  void check_budget();
+  double step_cap(const MotionPiece& piece) const;
+  ContactForces resting_forces(const MotionPiece& piece, double t) const {
+    return {-piece.lambda(t) * scene_.g, scene_.g};
+  }
+  void overturn_at(double t, const BlockState& s);
+  ContactForces forces_now() const;
+
+  void advance(const RestMode&, const MotionPiece& piece, double t_stop);
+  void advance(const FlightMode&, const MotionPiece& piece, double t_stop);
+  void advance(const SlideMode& m, const MotionPiece& piece, double t_stop) {
+    integrate(SlideSystem{context(piece), m.slip_sign}, piece, t_stop,
+              {geometry_.size(), std::sqrt(scene_.g * geometry_.size())});
+  }
+  void advance(const RockMode& m, const MotionPiece& piece, double t_stop) {
+    integrate(RockSystem{context(piece), m.pivot, m.pivot_x}, piece, t_stop,
+              {1.0, std::sqrt(scene_.g / geometry_.size())});
+  }
+  void advance(const SlideRockMode& m, const MotionPiece& piece, double t_stop) {
+    const double R = geometry_.size(), g = scene_.g;
+    integrate(SlideRockSystem{context(piece), m.pivot, m.slip_sign}, piece, t_stop,
+              {1.0, std::sqrt(g / R), R, std::sqrt(g * R)});
+  }
+
+  template <class System>
+  void integrate(const System& system, const MotionPiece& piece, double t_stop,
+                 const OdeState<System::N>& scale);
+  template <class System, class Stepper>
+  void integrate_with(const System& system, Stepper& stepper, const MotionPiece& piece,
+                      double t_stop);
+
+  const Scene& scene_;
+  BlockGeometry geometry_;
+  GroundMotionPieces motion_;
+  ContactResolver resolver_;
+  Summary summary_;
+  SegmentObserver observer_;
+  double t_ = 0.0;
+  BlockState state_;
+  Mode mode_ = RestMode{};
+  bool stopped_ = false;
+  int stalled_events_ = 0;
+  bool log_impacts_;
+  std::vector<ImpactRecord> impact_log_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+};
+
+BlockState Simulation::initial_state() const {
+  BlockState s;
+  s.theta = scene_.initial.theta;
+  if (s.theta == 0.0) {
+    s.y = geometry_.rest_height();
+  } else {
+    // Released from rest on the corner that the tilt lowers.
+    const Corner pivot = s.theta < 0 ? Corner::right : Corner::left;
+    const Vec2 r = rotate(geometry_.base_corner(pivot), std::cos(s.theta), std::sin(s.theta));
+    s.y = -r.y;
+  }
+  return s;
+}
+
+void Simulation::enter(const ContactOutcome& outcome) {
+  if (!outcome.failure.empty()) throw SceneFailure(outcome.failure);
+  ++summary_.events;
+  if (outcome.impact) {
+    if (log_impacts_) {
+      impact_log_.push_back({t_, state_.omega, outcome.state.omega,
+                             kinetic_energy_per_mass(geometry_, state_),
+                             kinetic_energy_per_mass(geometry_, outcome.state),
+                             mode_kind(outcome.mode)});
+    }
+    ++summary_.impacts;
+    if (!summary_.first_impact_time) summary_.first_impact_time = t_;
+    summary_.max_impact_energy_gain =
+        std::max(summary_.max_impact_energy_gain, outcome.impact_energy_gain);
+  }
+  const bool first = summary_.modes.empty();
+  const ModeKind before = mode_kind(mode_);
+  const bool was_rocking =
+      std::holds_alternative<RockMode>(mode_) || std::holds_alternative<SlideRockMode>(mode_);
+  mode_ = outcome.mode;
+  state_ = outcome.state;
+  const ModeKind now = mode_kind(mode_);
+  if (first || now != before || (was_rocking && outcome.impact)) {
+    summary_.modes.push_back({t_, now});
+  }
+  if ((now == ModeKind::rock || now == ModeKind::slide_rock) && !summary_.rock_start_time) {
+    summary_.rock_start_time = t_;
+  }
+  if ((now == ModeKind::slide || now == ModeKind::slide_rock) && !summary_.slide_start_time) {
+    summary_.slide_start_time = t_;
+  }
+  observer_.observe_state(state_);
+  check_budget();
+}
+
+void Simulation::check_budget() {
+  const SolverSettings& solver = scene_.solver;
+  if (summary_.steps > solver.max_steps) {
+    throw SceneFailure("step budget exceeded (" + std::to_string(solver.max_steps) + " steps)");
+  }
+  if (summary_.events > solver.max_events) {
+    throw SceneFailure("event budget exceeded (" + std::to_string(solver.max_events) +
+                       " events): the contact state keeps changing");
+  }
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - started_;
+  if (elapsed.count() > solver.max_wall_seconds) {
+    throw SceneFailure("wall-time budget exceeded (" + std::to_string(solver.max_wall_seconds) +
+                       " s)");
+  }
+}
+
+double Simulation::step_cap(const MotionPiece& piece) const {
+  const double block_time = std::sqrt(geometry_.size() / scene_.g);
+  return std::min(0.5 * block_time, piece.time_scale() / 16.0);
+}
+
+void Simulation::overturn_at(double t, const BlockState& s) {
+  t_ = t;
+  state_ = s;
+  state_.theta = std::copysign(std::numbers::pi / 2, s.theta);
+  summary_.overturned = true;
+  summary_.overturn_time = t;
+  observer_.observe_state(state_);
+  stopped_ = true;
+}
+
+void Simulation::advance(const RestMode&, const MotionPiece& piece, double t_stop) {
+  const BlockState s = state_;
+  const auto state_at = [&](double) { return s; };
+  const auto forces_at = [&](double t) { return resting_forces(piece, t); };
+  // Rest holds while friction and both tipping moments hold; all depend on lambda alone, so its
+  // extremes and the stop time are the only places to look.
+  const double mu = scene_.contact.friction;
+  const double tip_right = geometry_.tip_threshold(Corner::right);
+  const double tip_left = geometry_.tip_threshold(Corner::left);
+  // The exit is placed where lambda is past a threshold by kOnsetMargin, so the modes it leads to
+  // see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
+  const auto margin = [&](double t) {
+    const double lambda = piece.lambda(t);
+    return kOnsetMargin + std::min({mu - std::abs(lambda), tip_right - lambda, tip_left + lambda});
+  };
+  if (piece.is_zero() ||
+      piece.max_abs_lambda() <= std::min({mu, tip_right, tip_left}) + kOnsetMargin) {
+    observer_.observe_step(t_, t_stop, state_at, forces_at, ModeKind::rest);
+    t_ = t_stop;
+    return;
+  }
+  std::vector<double> checks = piece.extrema_between(t_, t_stop);
+  checks.push_back(t_stop);
+  double previous = t_;
+  double previous_margin = margin(t_);
+  for (const double t : checks) {
+    const double m = margin(t);
+    if (m < 0) {
+      const auto flipped = [&](double x) { return margin(x) >= 0 ? 1.0 : -1.0 - margin(x); };
+      const double t_event =
+          previous_margin < 0
+              ? previous
+              : locate_crossing(flipped, previous, t, 1.0, -1.0 - m, 1e-15 * (1.0 + t)).after;
+      observer_.observe_step(t_, t_event, state_at, forces_at, ModeKind::rest);
+      t_ = t_event;
+      return;
+    }
+    previous = t;
+    previous_margin = m;
+  }
+  observer_.observe_step(t_, t_stop, state_at, forces_at, ModeKind::rest);
+  t_ = t_stop;
+}
+
+void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_stop) {
+  const double g = scene_.g;
+  const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
+  const double t0 = t_;
+  const double min_step = 1e-4 * std::sqrt(geometry_.size() / g);
+  double t_end = t_stop;
+  bool overturns = false;
+  if (start.omega != 0.0) {
+    const double tau = (std::copysign(std::numbers::pi / 2, start.omega) - start.theta) / start.omega;
+    if (tau > 0 && t0 + tau < t_end) {
+      t_end = t0 + tau;
+      overturns = true;
+    }
+  }
+  if (const auto landing = first_landing(geometry_, start, g, t_end - t0, min_step)) {
+    if (t0 + *landing <= t_end) {
+      t_end = t0 + *landing;
+      overturns = false;
+    }
+  }
+  // Only the horizontal drift feels the ground motion.
+  OdeState<2> q{state_.x, state_.vx};
+  const FlightDriftSystem drift{context(piece)};
+  const auto pose = [&](double t, const OdeState<2>& xq) {
+    BlockState s = flight_pose(start, g, t - t0);
+    s.x = xq[0];
+    s.vx = xq[1];
+    return s;
+  };
+  const auto forces_at = [](double) { return ContactForces{0.0, 0.0}; };
+  const auto run = [&](auto& stepper) {
+    double t = t0;
+    while (!reached(t, t_end)) {
+      const double from = t;
+      stepper.step(drift, t, q, std::min(t_end - t, step_cap(piece)));
+      if (reached(t, t_end)) t = t_end;
+      observer_.observe_step(from, t, [&](double x) { return pose(x, stepper.dense(x)); },
+                             forces_at, ModeKind::flight);
+    }
+    summary_.steps += stepper.steps();
+    summary_.rhs_evaluations += stepper.rhs_evaluations();
+  };
+  if (scene_.solver.method == Method::rk4) {
+    Rk4Stepper<2> stepper(scene_.solver.dt);
+    run(stepper);
+  } else {
+    DormandPrinceStepper<2> stepper(scene_.solver.tolerance,
+                                    {geometry_.size(), std::sqrt(g * geometry_.size())});
+    run(stepper);
+  }
+  const BlockState end = pose(t_end, q);
+  if (overturns) {
+    overturn_at(t_end, end);
+    return;
+  }
+  t_ = t_end;
+  state_ = end;
+}
+
+template <class System>
+void Simulation::integrate(const System& system, const MotionPiece& piece, double t_stop,
+                           const OdeState<System::N>& scale) {
+  if (scene_.solver.method == Method::rk4) {
+    Rk4Stepper<System::N> stepper(scene_.solver.dt);
+    integrate_with(system, stepper, piece, t_stop);
+  } else {
+    DormandPrinceStepper<System::N> stepper(scene_.solver.tolerance, scale);
+    integrate_with(system, stepper, piece, t_stop);
+  }
+}
+
+// Steps until a guard crosses zero or t_stop; a crossing is located on the dense output and the
+// state is left just after it, where the next mode's conditions hold.
+template <class System, class Stepper>
+void Simulation::integrate_with(const System& system, Stepper& stepper, const MotionPiece& piece,
+                                double t_stop) {
+  constexpr int G = System::kGuards;
+  auto q = system.coordinates(state_);
+  double t = t_;
+  std::array<double, G> guard = system.guards(t, q);
+  // Armed: clearly positive, fires at zero. Unarmed: near zero, fires once clearly negative.
+  // Below: starts clearly negative (a corner a hair below the ground, rising), fires only after
+  // it has risen and armed.
+  std::array<bool, G> armed{}, below{};
+  for (int i = 0; i < G; ++i) {
+    armed[i] = guard[i] > kArmingMargin;
+    below[i] = guard[i] < -kArmingMargin;
+  }
+  const double cap = step_cap(piece);
+  const auto forces_at = [&](double x) { return system.forces(x, stepper.dense(x)); };
+  const auto state_at = [&](double x) { return system.full(x, stepper.dense(x)); };
+  long steps_counted = 0, rhs_counted = 0;
+
+  while (!reached(t, t_stop)) {
+    const double t0 = t;
+    stepper.step(system, t, q, std::min(t_stop - t, cap));
+    if (reached(t, t_stop)) t = t_stop;
+    summary_.steps += stepper.steps() - steps_counted;
+    summary_.rhs_evaluations += stepper.rhs_evaluations() - rhs_counted;
+    steps_counted = stepper.steps();
+    rhs_counted = stepper.rhs_evaluations();
+    if ((summary_.steps & 1023) == 0) check_budget();
+
+    const std::array<double, G> next = system.guards(t, q);
+    double t_event = std::numeric_limits<double>::infinity();
+    int which = -1;
+    for (int i = 0; i < G; ++i) {
+      // An unarmed guard starts near zero: it fires once it is clearly below zero, whether or not
+      // it rose clearly above it first (a corner that lifts by less than the margin and comes
+      // back must still land).
+      const double offset = armed[i] ? 0.0 : kArmingMargin;
+      const auto f = [&](double x) { return system.guards(x, stepper.dense(x))[i] + offset; };
+      const double f_end = next[i] + offset;
+      if (f_end > 0 || below[i]) continue;
+      double a = t0, fa = guard[i] + offset;
+      if (!armed[i]) {
+        // Find where it rose inside the step, if it did, to bracket its fall.
+        fa = std::max(fa, 0.0);
+        for (int k = 1; k < kInteriorSamples; ++k) {
+          const double x = t0 + (t - t0) * k / kInteriorSamples;
+          const double fx = f(x);
+          if (fx <= 0) break;
+          a = x;
+          fa = fx;
+        }
+        if (fa <= 0) fa = std::numeric_limits<double>::min();
+      }
+      const double located = locate_crossing(f, a, t, fa, f_end, 1e-15 * (1.0 + t)).after;
+      if (located < t_event) {
+        t_event = located;
+        which = i;
+      }
+    }
+    for (int i = 0; i < G; ++i) {
+      armed[i] = armed[i] || next[i] > kArmingMargin;
+      below[i] = below[i] && !armed[i];
+    }
+    guard = next;
+
+    if (which < 0) {
+      observer_.observe_step(t0, t, state_at, forces_at, mode_kind(mode_));
+      continue;
+    }
+    observer_.observe_step(t0, t_event, state_at, forces_at, mode_kind(mode_));
+    const BlockState at_event = state_at(t_event);
+    if constexpr (requires { System::kOverturnGuard; }) {
+      if (which == System::kOverturnGuard) {
+        overturn_at(t_event, at_event);
+        return;
+      }
+    }
+    t_ = t_event;
+    state_ = at_event;
+    return;
+  }
+  t_ = t_stop;
+  state_ = system.full(t, q);
+}
+
+void Simulation::run() {
+  state_ = initial_state();
+  observer_.start(state_);
+  enter(resolver_.resolve(state_, motion_.lambda(0.0)));
+  const double t_end = scene_.duration;
+  while (!stopped_ && t_ < t_end) {
+    const MotionPiece& piece = motion_.piece_at(t_);
+    const double t_stop = std::min(t_end, piece.end());
+    const double t_before = t_;
+    std::visit([&](const auto& mode) { advance(mode, piece, t_stop); }, mode_);
+    if (stopped_ || t_ >= t_end) break;
+    stalled_events_ = t_ == t_before ? stalled_events_ + 1 : 0;
+    if (stalled_events_ > kMaxStalledEvents) {
+      throw SceneFailure("no progress: " + std::to_string(kMaxStalledEvents) +
+                         " contact changes at t = " + std::to_string(t_) + " s");
+    }
+    enter(resolver_.resolve(state_, motion_.lambda(t_)));
+  }
+  summary_.end_time = t_;
+  summary_.final_theta = state_.theta;
+  summary_.final_slide = state_.x - observer_.x0();
+  observer_.finish(t_, state_, forces_now(), mode_kind(mode_));
+}
+
+ContactForces Simulation::forces_now() const {
+  const MotionPiece& piece = motion_.piece_at(t_);
+  const auto overloaded = [&](const auto& mode) -> ContactForces {
+    using M = std::decay_t<decltype(mode)>;
+    if constexpr (std::is_same_v<M, RestMode>) {
+      return resting_forces(piece, t_);
+    } else if constexpr (std::is_same_v<M, SlideMode>) {
+      const SlideSystem system{context(piece), mode.slip_sign};
+      return system.forces(t_, system.coordinates(state_));
+    } else if constexpr (std::is_same_v<M, RockMode>) {
+      const RockSystem system{context(piece), mode.pivot, mode.pivot_x};
+      return system.forces(t_, system.coordinates(state_));
+    } else if constexpr (std::is_same_v<M, SlideRockMode>) {
+      const SlideRockSystem system{context(piece), mode.pivot, mode.slip_sign};
+      return system.forces(t_, system.coordinates(state_));
+    } else {
+      return {0.0, 0.0};
+    }
+  };
+  return stopped_ ? ContactForces{0.0, 0.0} : std::visit(overloaded, mode_);
+}
+
+SimulationWithHistory run_scene(const Scene& scene, double output_interval) {
+  validate_scene(scene);
+  Simulation simulation(scene, output_interval);
+  try {
+    simulation.run();
+  } catch (const SceneFailure& failure) {
+    simulation.summary().status = Status::failed;
+    simulation.summary().status_reason = failure.what();
+  } catch (const StepSizeUnderflow& failure) {
+    simulation.summary().status = Status::failed;
+    simulation.summary().status_reason = failure.what();
+  }
+  return {std::move(simulation.summary()), std::move(simulation.history()),
+          std::move(simulation.impact_log())};
+}
+
+}  // namespace
+
+Summary simulate(const Scene& scene) { return run_scene(scene, 0.0).summary; }
+
+SimulationWithHistory simulate_with_history(const Scene& scene, double output_interval) {
+  if (!(output_interval > 0)) throw std::invalid_argument("output interval must be > 0");
+  return run_scene(scene, output_interval);
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,22 @@
+// The engine's entry point: one scene in, its summary (and optionally its time history) out.
+#pragma once
+
+#include <vector>
+
+#include "engine/scene.hpp"
+#include "engine/summary.hpp"
+
+namespace blockfrag {
+
+// Never throws for a physically odd scene: failures (a budget exceeded) come back as
+// Summary::status. Throws std::invalid_argument for inputs that violate the scene's rules.
+Summary simulate(const Scene& scene);
+
+struct SimulationWithHistory {
+  Summary summary;
+  std::vector<HistoryRow> history;  // rows at t = 0, dt, 2 dt, ... and the end time
+  std::vector<ImpactRecord> impacts;
+};
+SimulationWithHistory simulate_with_history(const Scene& scene, double output_interval);
+
+}  // namespace blockfrag

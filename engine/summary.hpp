@@ -1,0 +1,61 @@
+// One simulation's outputs: what users judge a scene by, and what it cost.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace blockfrag {
+
+enum class ModeKind { rest, slide, rock, slide_rock, flight };
+
+const char* mode_name(ModeKind mode);
+
+struct ModeChange {
+  double time;
+  ModeKind mode;
+};
+
+enum class Status { ok, failed };
+
+struct Summary {
+  Status status = Status::ok;
+  std::string status_reason;  // empty when ok
+
+  bool overturned = false;
+  std::optional<double> overturn_time;
+  double max_abs_theta = 0.0;  // rad
+  double final_theta = 0.0;    // rad
+  double final_slide = 0.0;    // m, centre of mass relative to the ground, end minus start
+  double max_abs_slide = 0.0;  // m
+  std::optional<double> rock_start_time;   // first time a corner lifts
+  std::optional<double> slide_start_time;  // first time a contact point slips
+  std::optional<double> first_impact_time;
+  long impacts = 0;
+  std::vector<ModeChange> modes;
+  double end_time = 0.0;  // s, where the simulation stopped (duration, or overturning)
+
+  long steps = 0;
+  long rhs_evaluations = 0;
+  long events = 0;
+  // The largest kinetic-energy gain over any impact, relative to the energy before it (<= 0 is right).
+  double max_impact_energy_gain = 0.0;
+};
+
+// One impact event (all the corner impulses of one instant), for the history's impact log.
+struct ImpactRecord {
+  double time;
+  double omega_before, omega_after;  // rad/s
+  double kinetic_energy_before, kinetic_energy_after;  // per unit mass, J/kg
+  ModeKind mode_after;
+};
+
+// One row of the time history: the centre of mass relative to the ground, and the contact forces
+// divided by the block's weight M g.
+struct HistoryRow {
+  double t, x, y, theta, vx, vy, omega;
+  ModeKind mode;
+  double friction_per_weight, normal_per_weight;
+};
+
+}  // namespace blockfrag
