@@ -1,0 +1,31 @@
+// What sampling's validators report: every broken rule at once, each tied to the field it concerns,
+// so a config reader can prefix its own JSON path ("/inputs/mu/std_dev: must be > 0 (got -1)").
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace blockfrag {
+
+struct Violation {
+  std::string field;    // a member name ("std_dev") or a path inside a plan ("inputs/2/name");
+                        // empty when the rule concerns the whole object
+  std::string message;  // "must be > 0 (got -1)"
+};
+
+// Thrown by sampling code handed invalid input; what() lists every violation as "field: message".
+class SamplingError : public std::invalid_argument {
+ public:
+  explicit SamplingError(std::vector<Violation> violations);
+  const std::vector<Violation>& violations() const { return violations_; }
+
+ private:
+  std::vector<Violation> violations_;
+};
+
+// The shortest decimal that reads back as the same double ("-1", "0.3", "1e-07", "nan", "inf"),
+// independent of the locale, for messages that quote the offending value.
+std::string format_number(double value);
+
+}  // namespace blockfrag
