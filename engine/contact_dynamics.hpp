@@ -3,6 +3,8 @@
 // frame, w the angular velocity, k2 = I/M; forces are per unit mass (divide by g for per weight).
 #pragma once
 
+#include <algorithm>
+
 #include "engine/block_geometry.hpp"
 
 namespace blockfrag {
@@ -35,13 +37,16 @@ inline bool slide_rock_well_posed(Vec2 r, int slip_sign, double mu, double k2) {
   return slide_rock_denominator(r, slip_sign, mu, k2) > kPainleveMargin * k2;
 }
 
-// The corner slips with sign s = sign(u_x) and friction F = -s mu V. Call only with a positive
-// denominator.
+// The corner slips with sign s = sign(u_x) and friction F = -s mu V. Slide-rock stops at
+// kPainleveMargin; below half of it the denominator is held there, so a trial step of the
+// integrator that strays past the boundary sees large but finite forces of the sign they take as
+// the boundary is approached, and the guards on them stay continuous.
 inline CornerContact slipping_corner(Vec2 r, double w, int slip_sign, double lambda, double g,
                                      double mu, double k2) {
   const double s_mu = slip_sign * mu;
-  const double theta_dd =
-      (r.x + s_mu * r.y) * (g + w * w * r.y) / slide_rock_denominator(r, slip_sign, mu, k2);
+  const double denominator =
+      std::max(slide_rock_denominator(r, slip_sign, mu, k2), 0.5 * kPainleveMargin * k2);
+  const double theta_dd = (r.x + s_mu * r.y) * (g + w * w * r.y) / denominator;
   const double normal = g - theta_dd * r.x + w * w * r.y;
   const double friction = -s_mu * normal;
   const double x_dd = friction + lambda * g;

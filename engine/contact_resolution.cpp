@@ -97,8 +97,8 @@ bool ContactResolver::flat_impact(BlockState& s, double e) const {
   const std::array<double, 2> u_y = {kl.u_y, kr.u_y};
   const double u_x = 0.5 * (kl.u_x + kr.u_x);
 
-  for (const std::array<bool, 2> active : {std::array{true, true}, std::array{true, false},
-                                           std::array{false, true}}) {
+  for (const std::array<bool, 2> active : {std::array{true, false}, std::array{false, true},
+                                           std::array{true, true}}) {
     for (const int friction : {0, 1, -1}) {  // 0: stick, else slip direction
       std::array<std::array<double, 4>, 3> m{};
       for (int j = 0; j < 2; ++j) {
@@ -152,17 +152,25 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
     }
     const double e = -fastest < settle_velocity_ ? 0.0 : e_;
     const BlockState start = s;
-    if (!(flat && flat_impact(s, e))) {
-      const CornerKinematics& k = (left_hits && (!right_hits || kl.u_y <= kr.u_y)) ? kl : kr;
-      const CornerImpulse p = corner_impact({M, I, k.r.x, k.r.y, k.u_x, k.u_y, mu_, e});
-      set_velocity(s, apply_impulse(velocity_of(s), M, I, k.r.x, k.r.y, p));
+    // The paper's law at the corner that hits; when the block is flat and that would drive the
+    // other corner into the ground (a flat landing), both corners take their impulses together.
+    const bool left_first = left_hits && (!right_hits || kl.u_y <= kr.u_y);
+    const CornerKinematics& k = left_first ? kl : kr;
+    const CornerImpulse p = corner_impact({M, I, k.r.x, k.r.y, k.u_x, k.u_y, mu_, e});
+    set_velocity(s, apply_impulse(velocity_of(s), M, I, k.r.x, k.r.y, p));
+    if (flat && corner_kinematics(geometry_, s, left_first ? 1 : 0).u_y < -velocity_tol_) {
+      BlockState together = start;
+      if (flat_impact(together, e)) {
+        // Newton's law at two corners with friction can gain energy: then no bounce.
+        const double gained = kinetic_energy(velocity_of(together), M, I) - before;
+        if (gained > 1e-12 * before) {
+          together = start;
+          if (!flat_impact(together, 0.0)) lay_flat(together);
+        }
+        s = together;
+      }
     }
-    double after = kinetic_energy(velocity_of(s), M, I);
-    if (flat && after > before) {  // Newton's law at two corners with friction can gain energy.
-      s = start;
-      if (!flat_impact(s, 0.0)) lay_flat(s);
-      after = kinetic_energy(velocity_of(s), M, I);
-    }
+    const double after = kinetic_energy(velocity_of(s), M, I);
     if (before > 0) out.impact_energy_gain = std::max(out.impact_energy_gain, (after - before) / before);
   }
   return false;

@@ -132,9 +132,8 @@ struct SlideRockSystem {
     const double R = c.length_scale();
     const double d = denominator(q) / c.geometry->inertia_per_mass() - kPainleveMargin;
     const Vec2 r = arm(q[0], pivot), r_other = arm(q[0], other(pivot));
-    // Past the Painleve boundary the slip equations are meaningless: report only that guard.
-    const double normal = d > 0 ? contact(t, q).normal / c.g : 1.0;
-    return {normal, s * q[3] / c.velocity_scale(), (r_other.y - r.y) / R, overturn_margin(q[0]), d};
+    return {contact(t, q).normal / c.g, s * q[3] / c.velocity_scale(), (r_other.y - r.y) / R,
+            overturn_margin(q[0]), d};
   }
   BlockState full(double, const OdeState<N>& q) const {
     const Vec2 r = arm(q[0], pivot);

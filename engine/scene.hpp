@@ -35,7 +35,10 @@ struct RectangularPulse {   // lambda = A for 0 <= t < duration
 };
 using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse>;
 
-enum class Method { rk4, adaptive };
+// rk4: the paper's fixed step. adaptive: Dormand-Prince 5(4) with dense output (the production
+// method). gsl_rkf45, gsl_rk8pd: GSL's odeiv2 steppers with its standard step control, as a
+// well-known library's answer (cubic Hermite dense output for event location).
+enum class Method { rk4, adaptive, gsl_rkf45, gsl_rk8pd };
 
 struct SolverSettings {
   Method method = Method::adaptive;

@@ -12,6 +12,7 @@
 #include "engine/contact_resolution.hpp"
 #include "engine/dormand_prince_stepper.hpp"
 #include "engine/flight.hpp"
+#include "engine/gsl_stepper.hpp"
 #include "engine/modes.hpp"
 #include "engine/rk4_stepper.hpp"
 #include "engine/root_finding.hpp"
@@ -22,6 +23,32 @@ namespace blockfrag {
 
 namespace {
 
+// Calls fn with the stepper the scene's solver names; the mode loops are instantiated per stepper,
+// so no call per step or per right-hand side goes through a virtual function.
+template <int N, class Fn>
+void with_stepper(const SolverSettings& solver, const OdeState<N>& scale, Fn&& fn) {
+  switch (solver.method) {
+    case Method::rk4: {
+      Rk4Stepper<N> stepper(solver.dt);
+      fn(stepper);
+      return;
+    }
+    case Method::adaptive: {
+      DormandPrinceStepper<N> stepper(solver.tolerance, scale);
+      fn(stepper);
+      return;
+    }
+    case Method::gsl_rkf45:
+    case Method::gsl_rk8pd: {
+      GslStepper<N> stepper(solver.method == Method::gsl_rkf45 ? GslStepperKind::rkf45
+                                                               : GslStepperKind::rk8pd,
+                            solver.tolerance, scale);
+      fn(stepper);
+      return;
+    }
+  }
+}
+
 // A budget was exceeded or no consistent contact outcome exists: the scene fails, loudly.
 struct SceneFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -31,6 +58,7 @@ struct SceneFailure : std::runtime_error {
 // event that started the mode left them there.
 constexpr double kArmingMargin = 1e-12;
 constexpr int kInteriorSamples = 16;
+constexpr double kNearZero = 0.05;
 constexpr int kMaxStalledEvents = 100;
 constexpr double kOnsetMargin = 1e-12;
 
@@ -48,6 +76,7 @@ class Simulation {
         log_impacts_(output_interval > 0) {}
 
   void run();
+  void finish();
   Summary& summary() { return summary_; }
   std::vector<HistoryRow>& history() { return observer_.history(); }
   std::vector<ImpactRecord>& impact_log() { return impact_log_; }
@@ -122,6 +151,7 @@ BlockState Simulation::initial_state() const {
 void Simulation::enter(const ContactOutcome& outcome) {
   if (!outcome.failure.empty()) throw SceneFailure(outcome.failure);
   ++summary_.events;
+  if (outcome.painleve) ++summary_.painleve_events;
   if (outcome.impact) {
     if (log_impacts_) {
       impact_log_.push_back({t_, state_.omega, outcome.state.omega,
@@ -271,14 +301,7 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
     summary_.steps += stepper.steps();
     summary_.rhs_evaluations += stepper.rhs_evaluations();
   };
-  if (scene_.solver.method == Method::rk4) {
-    Rk4Stepper<2> stepper(scene_.solver.dt);
-    run(stepper);
-  } else {
-    DormandPrinceStepper<2> stepper(scene_.solver.tolerance,
-                                    {geometry_.size(), std::sqrt(g * geometry_.size())});
-    run(stepper);
-  }
+  with_stepper<2>(scene_.solver, {geometry_.size(), std::sqrt(g * geometry_.size())}, run);
   const BlockState end = pose(t_end, q);
   if (overturns) {
     overturn_at(t_end, end);
@@ -291,13 +314,9 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
 template <class System>
 void Simulation::integrate(const System& system, const MotionPiece& piece, double t_stop,
                            const OdeState<System::N>& scale) {
-  if (scene_.solver.method == Method::rk4) {
-    Rk4Stepper<System::N> stepper(scene_.solver.dt);
+  with_stepper<System::N>(scene_.solver, scale, [&](auto& stepper) {
     integrate_with(system, stepper, piece, t_stop);
-  } else {
-    DormandPrinceStepper<System::N> stepper(scene_.solver.tolerance, scale);
-    integrate_with(system, stepper, piece, t_stop);
-  }
+  });
 }
 
 // Steps until a guard crosses zero or t_stop; a crossing is located on the dense output and the
@@ -334,32 +353,59 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
 
     const std::array<double, G> next = system.guards(t, q);
     double t_event = std::numeric_limits<double>::infinity();
+    double t_last_inside = t;  // the last time the mode's conditions hold
     int which = -1;
     for (int i = 0; i < G; ++i) {
+      if (below[i]) continue;
       // An unarmed guard starts near zero: it fires once it is clearly below zero, whether or not
       // it rose clearly above it first (a corner that lifts by less than the margin and comes
       // back must still land).
       const double offset = armed[i] ? 0.0 : kArmingMargin;
       const auto f = [&](double x) { return system.guards(x, stepper.dense(x))[i] + offset; };
-      const double f_end = next[i] + offset;
-      if (f_end > 0 || below[i]) continue;
-      double a = t0, fa = guard[i] + offset;
-      if (!armed[i]) {
-        // Find where it rose inside the step, if it did, to bracket its fall.
-        fa = std::max(fa, 0.0);
+      double a = t0, fa = std::max(guard[i] + offset, std::numeric_limits<double>::min());
+      double b = t, fb = next[i] + offset;
+      // A guard close to zero may dip below it and come back inside one step: look inside.
+      if (!armed[i] || std::min(fa, fb) < kNearZero) {
         for (int k = 1; k < kInteriorSamples; ++k) {
           const double x = t0 + (t - t0) * k / kInteriorSamples;
           const double fx = f(x);
-          if (fx <= 0) break;
+          if (fx <= 0) {
+            b = x;
+            fb = fx;
+            break;
+          }
           a = x;
           fa = fx;
         }
-        if (fa <= 0) fa = std::numeric_limits<double>::min();
       }
-      const double located = locate_crossing(f, a, t, fa, f_end, 1e-15 * (1.0 + t)).after;
-      if (located < t_event) {
-        t_event = located;
+      if (fb > 0) continue;
+      const Bracket located = locate_crossing(f, a, b, fa, fb, 1e-15 * (1.0 + t));
+      if (located.after < t_event) {
+        t_event = located.after;
+        t_last_inside = located.before;
         which = i;
+      }
+    }
+    // Before accepting an event, make sure no other guard dipped below zero earlier in the step
+    // (near a singular boundary forces can swing through zero and back between samples).
+    if (which >= 0) {
+      for (int i = 0; i < G; ++i) {
+        if (i == which || !armed[i]) continue;
+        const auto f = [&](double x) { return system.guards(x, stepper.dense(x))[i]; };
+        double a = t0, fa = guard[i];
+        for (int k = 1; k <= kInteriorSamples; ++k) {
+          const double x = t0 + (t_event - t0) * k / kInteriorSamples;
+          const double fx = f(x);
+          if (fx <= 0) {
+            const Bracket located = locate_crossing(f, a, x, fa, fx, 1e-15 * (1.0 + t));
+            t_event = located.after;
+            t_last_inside = located.before;
+            which = i;
+            break;
+          }
+          a = x;
+          fa = fx;
+        }
       }
     }
     for (int i = 0; i < G; ++i) {
@@ -368,11 +414,15 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     }
     guard = next;
 
-    if (which < 0) {
-      observer_.observe_step(t0, t, state_at, forces_at, mode_kind(mode_));
-      continue;
-    }
-    observer_.observe_step(t0, t_event, state_at, forces_at, mode_kind(mode_));
+    // The contact laws at the end of what is kept of the step, inside the mode.
+    const double kept = which < 0 ? t : t_event;
+    const ContactForces contact = forces_at(t_last_inside);
+    summary_.max_contact_violation =
+        std::max({summary_.max_contact_violation, -contact.normal / scene_.g,
+                  (std::abs(contact.friction) - scene_.contact.friction * contact.normal) /
+                      scene_.g});
+    observer_.observe_step(t0, kept, state_at, forces_at, mode_kind(mode_));
+    if (which < 0) continue;
     const BlockState at_event = state_at(t_event);
     if constexpr (requires { System::kOverturnGuard; }) {
       if (which == System::kOverturnGuard) {
@@ -406,6 +456,11 @@ void Simulation::run() {
     }
     enter(resolver_.resolve(state_, motion_.lambda(t_)));
   }
+  finish();
+}
+
+// Also called when the scene fails: the summary then tells where it stopped.
+void Simulation::finish() {
   summary_.end_time = t_;
   summary_.final_theta = state_.theta;
   summary_.final_slide = state_.x - observer_.x0();
@@ -439,12 +494,10 @@ SimulationWithHistory run_scene(const Scene& scene, double output_interval) {
   Simulation simulation(scene, output_interval);
   try {
     simulation.run();
-  } catch (const SceneFailure& failure) {
+  } catch (const std::runtime_error& failure) {  // SceneFailure or StepSizeUnderflow
     simulation.summary().status = Status::failed;
     simulation.summary().status_reason = failure.what();
-  } catch (const StepSizeUnderflow& failure) {
-    simulation.summary().status = Status::failed;
-    simulation.summary().status_reason = failure.what();
+    simulation.finish();
   }
   return {std::move(simulation.summary()), std::move(simulation.history()),
           std::move(simulation.impact_log())};
