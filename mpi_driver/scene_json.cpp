@@ -1,0 +1,187 @@
+#include "mpi_driver/scene_json.hpp"
+
+#include <numbers>
+#include <optional>
+#include <type_traits>
+
+#include "mpi_driver/config_reader.hpp"
+#include "sampling/validation.hpp"  // format_number
+
+namespace blockfrag {
+
+namespace {
+
+using nlohmann::json;
+
+const Range positive = Range::greater_than(0.0);
+
+RectangularBlock read_block(ObjectReader reader) {
+  RectangularBlock block;
+  block.half_width = reader.required_number("half_width", positive).value_or(block.half_width);
+  block.half_height = reader.required_number("half_height", positive).value_or(block.half_height);
+  block.mass = reader.number_or("mass", block.mass, positive);
+  reader.finish();
+  return block;
+}
+
+Contact read_contact(ObjectReader reader) {
+  Contact contact;
+  contact.friction = reader.required_number("friction", Range::at_least(0.0)).value_or(contact.friction);
+  contact.restitution =
+      reader.required_number("restitution", Range::closed(0.0, 1.0)).value_or(contact.restitution);
+  reader.finish();
+  return contact;
+}
+
+// Cosine and sine pulses share their parameters.
+template <class Pulse>
+Pulse read_periodic_pulse(ObjectReader& reader) {
+  Pulse pulse;
+  pulse.amplitude_g = reader.required_number("amplitude_g").value_or(pulse.amplitude_g);
+  pulse.period = reader.required_number("period", positive).value_or(pulse.period);
+  pulse.cycles = reader.number_or("cycles", 1.0, positive);
+  return pulse;
+}
+
+RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
+  RectangularPulse pulse;
+  pulse.amplitude_g = reader.required_number("amplitude_g").value_or(pulse.amplitude_g);
+  pulse.duration = reader.required_number("duration", positive).value_or(pulse.duration);
+  return pulse;
+}
+
+GroundMotion read_ground_motion(ObjectReader reader) {
+  const auto type = reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse"});
+  // Without a valid type nobody knows which keys belong here: report nothing more.
+  if (!type) return NoMotion{};
+  GroundMotion motion = NoMotion{};
+  if (*type == "cosine_pulse") motion = read_periodic_pulse<CosinePulse>(reader);
+  if (*type == "sine_pulse") motion = read_periodic_pulse<SinePulse>(reader);
+  if (*type == "rectangular_pulse") motion = read_rectangular_pulse(reader);
+  reader.finish("for type \"" + *type + "\"");
+  return motion;
+}
+
+std::optional<Method> method_named(const std::optional<std::string>& name) {
+  if (name == "adaptive") return Method::adaptive;
+  if (name == "rk4") return Method::rk4;
+  if (name == "gsl_rkf45") return Method::gsl_rkf45;
+  if (name == "gsl_rk8pd") return Method::gsl_rk8pd;
+  return std::nullopt;
+}
+
+const char* method_name(Method method) {
+  switch (method) {
+    case Method::adaptive: return "adaptive";
+    case Method::rk4: return "rk4";
+    case Method::gsl_rkf45: return "gsl_rkf45";
+    case Method::gsl_rk8pd: return "gsl_rk8pd";
+  }
+  return "unknown";
+}
+
+SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) {
+  SolverSettings solver;
+  const auto method =
+      reader.has("method")
+          ? method_named(reader.required_choice("method", {"adaptive", "rk4", "gsl_rkf45", "gsl_rk8pd"}))
+          : std::optional<Method>(solver.method);
+  if (method == Method::rk4) {
+    const auto dt = reader.number("dt", positive);
+    if (dt) solver.dt = *dt;
+    if (dt && duration && *dt > *duration) {
+      reader.add_error("dt", "must be <= duration (" + format_number(*duration) + ") (got " + format_number(*dt) + ")");
+    }
+  } else if (method) {  // the step-size-controlled methods
+    solver.tolerance = reader.number_or("tolerance", solver.tolerance, Range::left_open(0.0, 0.1));
+  }
+  if (method) solver.method = *method;
+  solver.max_steps = reader.integer_or("max_steps", solver.max_steps, positive);
+  solver.max_events = reader.integer_or("max_events", solver.max_events, positive);
+  solver.max_wall_seconds = reader.number_or("max_wall_seconds", solver.max_wall_seconds, positive);
+  if (method) reader.finish("for method \"" + std::string(method_name(*method)) + "\"");
+  return solver;
+}
+
+InitialState read_initial(ObjectReader reader) {
+  InitialState initial;
+  const double half_pi = std::numbers::pi / 2;
+  initial.theta = reader.number_or("theta", initial.theta, Range::open(-half_pi, half_pi).labelled("-pi/2", "pi/2"));
+  reader.finish();
+  return initial;
+}
+
+json ground_motion_to_json(const GroundMotion& motion) {
+  return std::visit(
+      [](const auto& pulse) -> json {
+        using Pulse = std::decay_t<decltype(pulse)>;
+        if constexpr (std::is_same_v<Pulse, NoMotion>) {
+          return {{"type", "none"}};
+        } else if constexpr (std::is_same_v<Pulse, CosinePulse> || std::is_same_v<Pulse, SinePulse>) {
+          return {{"type", std::is_same_v<Pulse, CosinePulse> ? "cosine_pulse" : "sine_pulse"},
+                  {"amplitude_g", pulse.amplitude_g},
+                  {"period", pulse.period},
+                  {"cycles", pulse.cycles}};
+        } else {
+          static_assert(std::is_same_v<Pulse, RectangularPulse>);
+          return {{"type", "rectangular_pulse"}, {"amplitude_g", pulse.amplitude_g}, {"duration", pulse.duration}};
+        }
+      },
+      motion);
+}
+
+json solver_to_json(const SolverSettings& solver) {
+  json out = {{"method", method_name(solver.method)},
+              {"max_steps", solver.max_steps},
+              {"max_events", solver.max_events},
+              {"max_wall_seconds", solver.max_wall_seconds}};
+  if (solver.method == Method::rk4) {
+    out["dt"] = solver.dt;
+  } else {
+    out["tolerance"] = solver.tolerance;
+  }
+  return out;
+}
+
+}  // namespace
+
+Scene scene_from_json(const json& document, const std::string& source) {
+  ConfigErrors errors(source);
+  Scene scene = scene_from_json(document, JsonPointer{}, errors);
+  errors.throw_if_any();
+  return scene;
+}
+
+Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& errors) {
+  ObjectReader root(value, path, errors);
+  Scene scene;
+  scene.block = read_block(root.required_object("block"));
+  scene.contact = read_contact(root.required_object("contact"));
+  scene.ground_motion = read_ground_motion(root.required_object("ground_motion"));
+  const auto duration = root.required_number("duration", positive);
+  if (duration) scene.duration = *duration;
+  scene.g = root.number_or("g", scene.g, positive);
+  scene.solver = read_solver(root.object("solver"), duration);
+  scene.initial = read_initial(root.object("initial"));
+  root.finish();
+  return scene;
+}
+
+Scene read_scene_file(const std::filesystem::path& path) {
+  return scene_from_json(read_json_file(path), path.string());
+}
+
+json scene_to_json(const Scene& scene) {
+  return {{"block",
+           {{"half_width", scene.block.half_width},
+            {"half_height", scene.block.half_height},
+            {"mass", scene.block.mass}}},
+          {"contact", {{"friction", scene.contact.friction}, {"restitution", scene.contact.restitution}}},
+          {"ground_motion", ground_motion_to_json(scene.ground_motion)},
+          {"duration", scene.duration},
+          {"g", scene.g},
+          {"solver", solver_to_json(scene.solver)},
+          {"initial", {{"theta", scene.initial.theta}}}};
+}
+
+}  // namespace blockfrag
