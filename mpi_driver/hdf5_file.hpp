@@ -1,0 +1,50 @@
+// A small writer over the HDF5 C API for what the study output needs: groups, 1-D columns and
+// scalar attributes. Handles are closed by RAII; every failed call throws Hdf5Error naming the
+// object. Object modification times are not recorded, so the file's content depends only on what
+// is written.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace blockfrag {
+
+class Hdf5Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Hdf5Writer {
+ public:
+  // Creates the file, replacing any file at path.
+  explicit Hdf5Writer(const std::filesystem::path& path);
+  ~Hdf5Writer();
+  Hdf5Writer(const Hdf5Writer&) = delete;
+  Hdf5Writer& operator=(const Hdf5Writer&) = delete;
+
+  // Absolute paths ("/fragility/overturn"); the parent must exist.
+  void create_group(const std::string& path);
+  void write_column(const std::string& path, const std::vector<double>& values);
+  void write_column(const std::string& path, const std::vector<std::int64_t>& values);
+
+  // Attributes on an existing object ("/" for the file).
+  void set_attribute(const std::string& object, const std::string& name, const std::string& value);
+  void set_attribute(const std::string& object, const std::string& name, double value);
+  void set_attribute(const std::string& object, const std::string& name, std::int64_t value);
+
+  // Flushes and closes; the destructor closes too but cannot report a failure.
+  void close();
+
+ private:
+  std::int64_t file_ = -1;  // hid_t
+  std::string name_;
+};
+
+// The variable-length UTF-8 string attribute `name` of the file's root (h5py reads it as str);
+// throws Hdf5Error when the file or the attribute is missing.
+std::string read_root_string_attribute(const std::filesystem::path& path, const std::string& name);
+
+}  // namespace blockfrag

@@ -1,0 +1,74 @@
+"""Compares study outputs bitwise: every dataset under /samples, /results and /fragility (values
+and dtypes, NaN equal to NaN by bit pattern), the fragility attributes, and the config hash.
+
+usage: compare_study_outputs.py REFERENCE.h5 OTHER.h5 [OTHER.h5 ...]
+Also checks that each file's sample columns cover every sample exactly once (the level column is
+i // samples_per_level for i = 0..total-1), so a missing or duplicated sample cannot pass.
+"""
+import sys
+
+import h5py
+import numpy as np
+
+
+def datasets(f):
+    found = {}
+    for group in ("samples", "results", "fragility"):
+        f[group].visititems(lambda name, obj: found.__setitem__(f"{group}/{name}", obj[()])
+                            if isinstance(obj, h5py.Dataset) else None)
+    return found
+
+
+def fragility_attributes(f):
+    return {name: dict(f["fragility"][name].attrs) for name in f["fragility"]}
+
+
+def same_bits(a, b):
+    a, b = np.asarray(a), np.asarray(b)
+    return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+
+
+def check_complete(path, f):
+    total = int(f.attrs["total_samples"])
+    n = int(f.attrs["samples_per_level"])
+    expected_level = np.arange(total) // n
+    for name, obj in datasets(f).items():
+        if name.startswith(("samples/", "results/")) and obj.shape != (total,):
+            sys.exit(f"{path}: {name} has shape {obj.shape}, expected ({total},)")
+    if not np.array_equal(f["samples/level"][()], expected_level):
+        sys.exit(f"{path}: /samples/level is not i // {n}: a sample is missing, duplicated or out of place")
+    for name in f["fragility"]:
+        trials = f["fragility"][name]["trials"][()]
+        ok = int(np.sum(f["results/status"][()] == 0))
+        if int(trials.sum()) != ok:
+            sys.exit(f"{path}: /fragility/{name}: {trials.sum()} trials for {ok} successful samples")
+
+
+def main():
+    reference_path, others = sys.argv[1], sys.argv[2:]
+    with h5py.File(reference_path, "r") as reference:
+        check_complete(reference_path, reference)
+        ref_data = datasets(reference)
+        ref_attrs = fragility_attributes(reference)
+        ref_hash = reference.attrs["config_hash"]
+        for path in others:
+            with h5py.File(path, "r") as other:
+                check_complete(path, other)
+                data = datasets(other)
+                if sorted(data) != sorted(ref_data):
+                    sys.exit(f"{path}: datasets {sorted(data)} differ from {sorted(ref_data)}")
+                for name, values in ref_data.items():
+                    if not same_bits(values, data[name]):
+                        sys.exit(f"{path}: /{name} differs from {reference_path}")
+                attrs = fragility_attributes(other)
+                for group, group_attrs in ref_attrs.items():
+                    for key, value in group_attrs.items():
+                        if not same_bits(value, attrs[group][key]):
+                            sys.exit(f"{path}: /fragility/{group} attribute {key} differs")
+                if other.attrs["config_hash"] != ref_hash:
+                    sys.exit(f"{path}: config_hash differs")
+    print(f"identical: {reference_path} and {len(others)} other file(s)")
+
+
+if __name__ == "__main__":
+    main()

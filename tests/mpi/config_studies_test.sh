@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Every study in configs/ runs (with few samples per level, on 2 ranks) to a complete output; and
+# configs/slurm_study.sh, run with stand-ins for srun and scontrol, forwards a SIGTERM to the ranks,
+# requeues the interrupted job (exit 4), and on its resubmission finishes the study from the
+# checkpoint with the same output as an uninterrupted run.
+set -u
+
+: "${BLOCKFRAG:?path of the blockfrag executable}"
+: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
+PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
+COMPARE="$BLOCKFRAG_SOURCE_DIR/tests/mpi/compare_study_outputs.py"
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() {
+  echo "FAIL: $*" >&2
+  failed=$((failed + 1))
+}
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+
+for study in "$BLOCKFRAG_SOURCE_DIR"/configs/*_study.json; do
+  name=$(basename "$study" .json)
+  mpirun -n 2 --oversubscribe "$BLOCKFRAG" run "$study" --output "$name.h5" --samples-per-level 3 2>"$name.err"
+  code=$?
+  [[ $code -eq 0 ]] && pass || fail "$name: exit code $code: $(cat "$name.err")"
+  "$PYTHON" "$COMPARE" "$name.h5" >/dev/null && pass || fail "$name: incomplete output"
+done
+
+# --- slurm_study.sh with stand-ins ------------------------------------------------------------------
+mkdir bin
+cat >bin/srun <<'SH'
+#!/bin/bash
+# Stand-in for srun: drop srun's own options, run the command on 2 ranks, pass SIGTERM on to them.
+while [[ $1 == --* ]]; do shift; done
+mpirun -n 2 --oversubscribe "$@" &
+pid=$!
+trap 'kill -TERM $(pgrep -P $pid) 2>/dev/null' TERM
+wait $pid
+code=$?
+kill -0 $pid 2>/dev/null && { wait $pid; code=$?; }
+exit $code
+SH
+cat >bin/scontrol <<'SH'
+#!/bin/bash
+echo "$*" >>"$SCONTROL_LOG"
+SH
+chmod +x bin/srun bin/scontrol
+export PATH="$work/bin:$PATH" SCONTROL_LOG="$work/scontrol.log" SLURM_JOB_ID=4242
+
+# A slow study: 3000 samples with a checkpoint write held 0.2 s every 0.1 s (the test hook).
+sed -e 's/"checkpoint_interval_s": [0-9.]*/"checkpoint_interval_s": 0.1/' \
+  "$BLOCKFRAG_SOURCE_DIR/configs/example_study.json" >slurm.json
+export BLOCKFRAG BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=0.2
+slurm_args=(slurm.json --output slurm.h5 --samples-per-level 300)
+# The script itself in the background (not a subshell around it), so the signal reaches its trap.
+bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm.log 2>&1 &
+script=$!
+for _ in $(seq 1 300); do
+  [[ -e slurm.h5.checkpoint ]] && break
+  sleep 0.02
+done
+kill -TERM "$script"
+wait "$script"
+code=$?
+if [[ $code -eq 4 ]] && grep -q "requeue 4242" scontrol.log && [[ -e slurm.h5.checkpoint && ! -e slurm.h5 ]]; then
+  pass
+else
+  fail "slurm script after SIGTERM: exit $code, requeue: $(cat scontrol.log 2>/dev/null), log: $(tail -5 slurm.log)"
+fi
+bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm.log 2>&1
+code=$?
+[[ $code -eq 0 ]] && grep -q "resumed from slurm.h5.checkpoint" slurm.log && pass ||
+  fail "slurm script resubmitted: exit $code, $(tail -5 slurm.log)"
+"$BLOCKFRAG" run slurm.json --output reference.h5 --samples-per-level 300 2>/dev/null
+"$PYTHON" "$COMPARE" reference.h5 slurm.h5 >/dev/null && pass || fail "the requeued study differs from an uninterrupted run"
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]

@@ -1,0 +1,186 @@
+#!/usr/bin/env bash
+# A study killed with SIGKILL at random moments, once certainly inside a checkpoint write (the
+# documented hook BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S holds each write between its complete .tmp file
+# and the rename), and resumed each time with the same command, ends bitwise identical to an
+# uninterrupted run, with every sample exactly once. SIGTERM writes a checkpoint and exits with code
+# 4 ("interrupted"), and the resume completes; a second run while one is going is refused. A
+# resume with a changed config (seed, sample count) is refused with exit code 2 and a clear
+# message, leaving the checkpoint as it was.
+set -u
+
+: "${BLOCKFRAG:?path of the blockfrag executable}"
+: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
+PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
+COMPARE="$BLOCKFRAG_SOURCE_DIR/tests/mpi/compare_study_outputs.py"
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() {
+  echo "FAIL: $*" >&2
+  failed=$((failed + 1))
+}
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+
+# write_study FILE SEED: 4000 cheap samples, a checkpoint every 0.1 s. The jobs below also hold
+# every checkpoint write for a while (the test hook), so they last long enough to be interrupted
+# however fast the engine is.
+write_study() {
+  cat >"$1" <<JSON
+{
+  "scene": {
+    "block": {"half_width": 0.5, "half_height": 1.0},
+    "contact": {"friction": 0.7, "restitution": 0.7},
+    "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 1.0},
+    "duration": 2.0
+  },
+  "inputs": {
+    "friction": {"distribution": "uniform", "min": 0.55, "max": 0.9},
+    "restitution": {"distribution": "uniform", "min": 0.5, "max": 0.9},
+    "period": {"distribution": "lognormal", "median": 0.8, "beta": 0.3, "lower": 0.3, "upper": 2.0},
+    "direction": {"distribution": "random_sign"}
+  },
+  "intensity_measure": {"from": 0.3, "to": 1.8, "count": 10},
+  "samples_per_level": 400,
+  "design": "latin_hypercube",
+  "limit_states": [
+    {"name": "overturn", "type": "overturning"},
+    {"name": "slide_2cm", "type": "residual_slide", "threshold_m": 0.02}
+  ],
+  "seed": $2,
+  "output": "study.h5",
+  "checkpoint_interval_s": 0.1
+}
+JSON
+}
+write_study study.json 99
+write_study changed_seed.json 100
+
+if ! "$BLOCKFRAG" run study.json --output reference.h5 2>reference.err; then
+  echo "FAIL: the uninterrupted reference run failed: $(cat reference.err)" >&2
+  exit 1
+fi
+
+# start_job: mpirun -n 2 in the background, its pid in $job.
+start_job() {
+  BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=${pause:-0} mpirun -n 2 --oversubscribe "$BLOCKFRAG" run study.json \
+    2>>job.err &
+  job=$!
+}
+# wait_for_checkpoint: until a checkpoint exists.
+wait_for_checkpoint() {
+  for _ in $(seq 1 300); do
+    [[ -e study.h5.checkpoint ]] && return
+    sleep 0.02
+  done
+}
+# kill_job SIGNAL: the ranks first, then mpirun (as a node failure would), and wait for it.
+kill_job() {
+  local ranks
+  ranks=$(pgrep -P "$job")
+  [[ -n "$ranks" ]] && kill "-$1" $ranks 2>/dev/null
+  [[ "$1" == KILL ]] && kill -KILL "$job" 2>/dev/null
+  wait "$job" 2>/dev/null
+  code=$?
+}
+
+# --- SIGKILL at random moments, the first one inside a checkpoint write ----------------------------
+pause=0.2
+kills=0
+inside_write=0
+for attempt in $(seq 1 40); do
+  start_job
+  if [[ $attempt -eq 1 ]]; then
+    # Wait until a checkpoint write is paused between its .tmp file and the rename, then kill.
+    for _ in $(seq 1 200); do
+      [[ -e study.h5.checkpoint.tmp ]] && break
+      sleep 0.02
+    done
+    if [[ -e study.h5.checkpoint.tmp ]]; then inside_write=1; fi
+    kill_job KILL
+    kills=$((kills + 1))
+    continue
+  fi
+  # A random moment up to 0.4 s after the job's first checkpoint (or the one left by the job
+  # before: then also during start-up); the job may also finish before it.
+  wait_for_checkpoint
+  sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.4 * r / 32768 }')"
+  if kill -0 "$job" 2>/dev/null && [[ $kills -lt 5 ]]; then
+    kill_job KILL
+    kills=$((kills + 1))
+  else
+    wait "$job"
+    code=$?
+    [[ $code -eq 0 ]] && break
+  fi
+done
+[[ $inside_write -eq 1 ]] && pass || fail "no kill landed inside a checkpoint write"
+[[ $kills -ge 4 ]] && pass || fail "only $kills kills before the study finished (too fast to test)"
+if [[ $code -eq 0 && -e study.h5 ]]; then pass; else fail "the resumed study did not finish (exit $code): $(tail -5 job.err)"; fi
+grep -q "resumed from study.h5.checkpoint: [0-9]* of 4000 samples already done" job.err && pass ||
+  fail "no run resumed from a checkpoint"
+"$PYTHON" "$COMPARE" reference.h5 study.h5 && pass || fail "killed and resumed study differs from the reference"
+[[ ! -e study.h5.checkpoint ]] && pass || fail "the checkpoint is left after completion"
+
+# --- SIGTERM: checkpoint, exit code 4, resume ------------------------------------------------------
+rm -f study.h5 study.h5.checkpoint* job.err
+pause=0.2
+BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=$pause "$BLOCKFRAG" run study.json 2>term.err &
+job=$!
+wait_for_checkpoint
+# Meanwhile the same command again is refused: two runs would overwrite each other's checkpoints.
+"$BLOCKFRAG" run study.json 2>concurrent.err
+code=$?
+[[ $code -eq 2 ]] && grep -q "another run of this study is in progress" concurrent.err && pass ||
+  fail "a concurrent run: exit $code, $(cat concurrent.err)"
+kill -TERM "$job"
+wait "$job"
+code=$?
+if [[ $code -eq 4 ]] && grep -q "interrupted: checkpoint written to study.h5.checkpoint; resume with the same command" term.err \
+    && [[ -e study.h5.checkpoint && ! -e study.h5 ]]; then
+  pass
+else
+  fail "SIGTERM on one rank: exit $code, $(cat term.err)"
+fi
+
+# Under mpirun the ranks get the signal (as from Slurm), rank 0 gathers and checkpoints, all exit 4.
+touch job.err
+started=$(grep -c "^study " job.err)
+start_job
+for _ in $(seq 1 300); do
+  [[ $(grep -c "^study " job.err) -gt $started ]] && break
+  sleep 0.02
+done
+sleep 0.2
+kill_job TERM
+if [[ $code -eq 4 ]] && grep -q "resumed from" job.err && grep -q "interrupted: checkpoint written" job.err; then
+  pass
+else
+  fail "SIGTERM under mpirun: exit $code, $(cat job.err)"
+fi
+
+# --- A changed config is refused, the checkpoint left alone ------------------------------------------
+checkpoint_sum=$(md5sum <study.h5.checkpoint)
+"$BLOCKFRAG" run changed_seed.json --output study.h5 2>changed.err
+code=$?
+if [[ $code -eq 2 ]] && grep -q "refusing to resume: the checkpoint study.h5.checkpoint belongs to a different study config" changed.err; then
+  pass
+else
+  fail "changed seed: exit $code, $(cat changed.err)"
+fi
+"$BLOCKFRAG" run study.json --samples-per-level 200 2>changed.err
+code=$?
+[[ $code -eq 2 ]] && grep -q "different study config" changed.err && pass || fail "changed sample count: exit $code, $(cat changed.err)"
+[[ "$(md5sum <study.h5.checkpoint)" == "$checkpoint_sum" ]] && pass || fail "a refused resume changed the checkpoint"
+
+# Then the same command finishes it, identical to the reference.
+mpirun -n 2 --oversubscribe "$BLOCKFRAG" run study.json 2>final.err
+code=$?
+[[ $code -eq 0 ]] && pass || fail "final resume: exit $code, $(cat final.err)"
+"$PYTHON" "$COMPARE" reference.h5 study.h5 && pass || fail "SIGTERM-interrupted study differs from the reference"
+
+echo "$passed passed, $failed failed ($kills kills)"
+[[ $failed -eq 0 ]]
