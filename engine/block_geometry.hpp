@@ -32,7 +32,6 @@ class BlockGeometry {
                   {block.half_width, block.half_height},
                   {-block.half_width, block.half_height}}},
         size_(std::hypot(block.half_width, block.half_height)),
-        alpha_(std::atan2(block.half_width, block.half_height)),
         inertia_per_mass_(size_ * size_ / 3.0),
         rest_height_(block.half_height) {}
 
@@ -44,7 +43,6 @@ class BlockGeometry {
   double inertia() const { return mass_ * inertia_per_mass_; }
   double inertia_per_mass() const { return inertia_per_mass_; }  // I/M
   double size() const { return size_; }                          // R: the length scale
-  double alpha() const { return alpha_; }
   double rest_height() const { return rest_height_; }  // centre of mass above the base
 
   // Rocking about a base corner cannot start while lambda stays within these (a/b for a rectangle):
@@ -63,7 +61,7 @@ class BlockGeometry {
  private:
   double mass_;
   std::array<Vec2, kCorners> corners_;
-  double size_, alpha_, inertia_per_mass_, rest_height_;
+  double size_, inertia_per_mass_, rest_height_;
 };
 
 }  // namespace blockfrag

@@ -26,21 +26,17 @@ GroundMotionPieces::GroundMotionPieces(const GroundMotion& motion) {
   std::visit(
       [&](const auto& m) {
         using M = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<M, NoMotion>) {
-          quiet_after_ = 0.0;
-        } else if constexpr (std::is_same_v<M, RectangularPulse>) {
-          pieces_.emplace_back(MotionPiece::Shape::constant, m.amplitude_g, 0.0, 0.0, m.duration);
-          quiet_after_ = m.duration;
-        } else {
+        if constexpr (std::is_same_v<M, RectangularPulse>) {
+          pieces_.emplace_back(MotionPiece::Shape::constant, m.amplitude_g, 0.0, m.duration);
+        } else if constexpr (!std::is_same_v<M, NoMotion>) {
           const auto shape = std::is_same_v<M, CosinePulse> ? MotionPiece::Shape::cosine
                                                             : MotionPiece::Shape::sine;
           const double end = m.cycles * m.period;
-          pieces_.emplace_back(shape, m.amplitude_g, 2.0 * std::numbers::pi / m.period, 0.0, end);
-          quiet_after_ = end;
+          pieces_.emplace_back(shape, m.amplitude_g, 2.0 * std::numbers::pi / m.period, end);
         }
       },
       motion);
-  pieces_.emplace_back(MotionPiece::Shape::zero, 0.0, 0.0, quiet_after_, kForever);
+  pieces_.emplace_back(MotionPiece::Shape::zero, 0.0, 0.0, kForever);
 }
 
 const MotionPiece& GroundMotionPieces::piece_at(double t) const {
@@ -48,12 +44,6 @@ const MotionPiece& GroundMotionPieces::piece_at(double t) const {
     if (t < piece.end()) return piece;
   }
   return pieces_.back();
-}
-
-double GroundMotionPieces::max_abs_lambda() const {
-  double largest = 0.0;
-  for (const MotionPiece& piece : pieces_) largest = std::max(largest, piece.max_abs_lambda());
-  return largest;
 }
 
 }  // namespace blockfrag

@@ -16,10 +16,10 @@ class MotionPiece {
  public:
   enum class Shape { zero, constant, cosine, sine };
 
-  MotionPiece(Shape shape, double amplitude, double angular_frequency, double start, double end)
-      : shape_(shape), amplitude_(amplitude), omega_(angular_frequency), start_(start), end_(end) {}
+  // Valid from the previous piece's end (or t = 0) to end.
+  MotionPiece(Shape shape, double amplitude, double angular_frequency, double end)
+      : shape_(shape), amplitude_(amplitude), omega_(angular_frequency), end_(end) {}
 
-  double start() const { return start_; }
   double end() const { return end_; }
   bool is_zero() const { return shape_ == Shape::zero || amplitude_ == 0.0; }
 
@@ -47,22 +47,18 @@ class MotionPiece {
 
  private:
   Shape shape_;
-  double amplitude_, omega_, start_, end_;
+  double amplitude_, omega_, end_;
 };
 
 class GroundMotionPieces {
  public:
   explicit GroundMotionPieces(const GroundMotion& motion);
 
-  const MotionPiece& piece_at(double t) const;  // the piece with start <= t < end
+  const MotionPiece& piece_at(double t) const;  // the first piece with t < end
   double lambda(double t) const { return piece_at(t).lambda(t); }
-  double max_abs_lambda() const;
-  // From this time on lambda is zero: the ground is still.
-  double quiet_after() const { return quiet_after_; }
 
  private:
-  std::vector<MotionPiece> pieces_;
-  double quiet_after_ = 0.0;
+  std::vector<MotionPiece> pieces_;  // the last one is zero and lasts forever
 };
 
 }  // namespace blockfrag

@@ -1,0 +1,51 @@
+#include "engine/flight.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace blockfrag {
+namespace {
+
+const double g = 9.81;
+
+TEST(Flight, FlatBlockThrownUpLandsAfterTwiceTheRiseTime) {
+  const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
+  const FlightStart start{1.0, 0.0, 2.0, 0.0};  // on its base, rising at 2 m/s, not spinning
+  const auto landing = first_landing(block, start, g, 10.0, 1e-5);
+  ASSERT_TRUE(landing.has_value());
+  EXPECT_NEAR(*landing, 2 * 2.0 / g, 1e-12);
+}
+
+TEST(Flight, SpinningBlockLandsOnTheCornerItTurnsDown) {
+  // Rising at 1 m/s while turning counter-clockwise: the left base corner comes down first. Its
+  // height is y(t) - a sin(w t) - b cos(w t); the landing is its first root, found here by bisection.
+  const double a = 0.5, b = 1.0, w = 1.5, vy = 1.0;
+  const BlockGeometry block(RectangularBlock{a, b, 1.0});
+  const auto height = [&](double t) {
+    return b + vy * t - 0.5 * g * t * t - a * std::sin(w * t) - b * std::cos(w * t);
+  };
+  double lo = 0.05, hi = 1.0;  // height(lo) > 0 > height(hi)
+  ASSERT_GT(height(lo), 0);
+  ASSERT_LT(height(hi), 0);
+  for (int i = 0; i < 200; ++i) (height(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+  const auto landing = first_landing(block, FlightStart{b, 0.0, vy, w}, g, 10.0, 1e-5);
+  ASSERT_TRUE(landing.has_value());
+  EXPECT_NEAR(*landing, 0.5 * (lo + hi), 1e-12);
+}
+
+TEST(Flight, NoLandingWithinTheWindow) {
+  const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
+  EXPECT_FALSE(first_landing(block, FlightStart{1.0, 0.0, 2.0, 0.0}, g, 0.3, 1e-5).has_value());
+}
+
+TEST(Flight, PoseIsTheBallisticClosedForm) {
+  const BlockState s = flight_pose(FlightStart{1.0, 0.1, 3.0, -2.0}, g, 0.5);
+  EXPECT_DOUBLE_EQ(s.y, 1.0 + 1.5 - 0.5 * g * 0.25);
+  EXPECT_DOUBLE_EQ(s.vy, 3.0 - g * 0.5);
+  EXPECT_DOUBLE_EQ(s.theta, 0.1 - 1.0);
+  EXPECT_EQ(s.omega, -2.0);
+}
+
+}  // namespace
+}  // namespace blockfrag
