@@ -72,7 +72,9 @@ void write_fragility_sections(std::ostream& out, const AccuracyOptions& options,
 int run_accuracy(const AccuracyOptions& options, std::ostream& out, std::ostream& log) {
   const AccuracySuite suite = read_accuracy_suite(options.suite_path);
   // A bad study config is refused before the long part starts.
-  if (options.fragility_study) parse_study_config(read_json_file(*options.fragility_study), options.fragility_study->string());
+  if (options.fragility_study) {
+    parse_study_config(read_json_file(*options.fragility_study), options.fragility_study->string());
+  }
   AccuracyStudyOptions study_options;
   std::vector<SolverSetting> requested;
   for (const auto& text : options.settings) requested.push_back(parse_solver_setting(text));

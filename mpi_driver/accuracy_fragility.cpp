@@ -1,5 +1,6 @@
 #include "mpi_driver/accuracy_fragility.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,14 +32,19 @@ StudyResults run_in_process(const StudyConfig& config, const SceneEvaluator& eva
     const Scene scene = geometry.draw(i).scene;
     results.alphas.push_back(std::atan2(scene.block.half_width, scene.block.half_height));
   }
-  results.median_seconds = quantile(seconds, 0.5);
+  results.median_seconds = sample_quantile(seconds, 0.5);
   return results;
 }
+
+// A sample that takes longer than this fails (and is excluded from the trials) instead of holding
+// up the comparison: a rough study must not wait on one pathological sample.
+constexpr double sample_wall_seconds = 5.0;
 
 SceneEvaluator evaluator_for(const SolverSetting& setting) {
   return [setting](const Scene& scene) {
     Scene with = scene;
     with.solver = with_setting(with.solver, setting);
+    with.solver.max_wall_seconds = std::min(with.solver.max_wall_seconds, sample_wall_seconds);
     return simulate(with);
   };
 }
@@ -54,7 +60,7 @@ std::string number(double x, const char* format = "%.3g") {
   return buffer;
 }
 
-double sum_of_squares_root(const std::vector<double>& values) {
+double root_mean_square(const std::vector<double>& values) {
   double sum = 0;
   for (double v : values) sum += v * v;
   return values.empty() ? NAN : std::sqrt(sum / static_cast<double>(values.size()));
@@ -70,9 +76,13 @@ std::vector<FragilityDifference> compare_fragility(const StudyConfig& config,
   for (const SolverSetting& setting : settings) {
     const StudyResults results = run_in_process(config, evaluator_for(setting));
     for (const LimitState& state : config.limit_states) {
-      const FragilityCurve ref = fragility_curve(config, state, reference_results.records, reference_results.alphas);
+      const FragilityCurve ref =
+          fragility_curve(config, state, reference_results.records, reference_results.alphas);
       const FragilityCurve curve = fragility_curve(config, state, results.records, results.alphas);
       FragilityDifference row{setting, state.name};
+      for (const SampleRecord& record : results.records) {
+        row.failures += record.status != static_cast<std::int64_t>(SampleStatus::ok) ? 1 : 0;
+      }
       for (std::size_t i = 0; i < results.records.size(); ++i) {
         row.verdicts_changed += exceeds_at(state, results, i) != exceeds_at(state, reference_results, i) ? 1 : 0;
       }
@@ -80,7 +90,8 @@ std::vector<FragilityDifference> compare_fragility(const StudyConfig& config,
         if (ref.trials[level] == 0 || curve.trials[level] == 0) continue;
         row.max_probability_difference =
             std::max(row.max_probability_difference, std::abs(curve.probability[level] - ref.probability[level]));
-        row.max_sampling_half_width = std::max(row.max_sampling_half_width, (ref.ci_high[level] - ref.ci_low[level]) / 2);
+        const double half_width = (ref.ci_high[level] - ref.ci_low[level]) / 2;
+        row.max_sampling_half_width = std::max(row.max_sampling_half_width, half_width);
       }
       row.median = curve.median;
       row.reference_median = ref.median;
@@ -103,7 +114,7 @@ std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_do
     document["seed"] = seed;
     return parse_study_config(document, "design convergence");
   };
-  const SceneEvaluator evaluate = [](const Scene& scene) { return simulate(scene); };
+  const SceneEvaluator evaluate = evaluator_for(default_setting());
   const StudyConfig reference_config = configured("latin_hypercube", reference_samples_per_level, 1);
   const LimitState& state = reference_config.limit_states.front();
   const StudyResults reference_results = run_in_process(reference_config, evaluate);
@@ -118,12 +129,13 @@ std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_do
         // Seeds far from the reference's, so no replicate reuses its streams.
         const StudyConfig config = configured(design, size, 1000 + static_cast<std::uint64_t>(replicate));
         const StudyResults results = run_in_process(config, evaluate);
-        const FragilityCurve curve = fragility_curve(config, config.limit_states.front(), results.records, results.alphas);
+        const FragilityCurve curve =
+            fragility_curve(config, config.limit_states.front(), results.records, results.alphas);
         if (!std::isfinite(curve.median) || !std::isfinite(reference.median)) continue;
         median_errors.push_back(curve.median / reference.median - 1);
         beta_errors.push_back(curve.beta - reference.beta);
       }
-      rows.push_back({design, size, state.name, sum_of_squares_root(median_errors), sum_of_squares_root(beta_errors),
+      rows.push_back({design, size, state.name, root_mean_square(median_errors), root_mean_square(beta_errors),
                       static_cast<int>(median_errors.size())});
     }
   }
@@ -131,12 +143,13 @@ std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_do
 }
 
 void write_fragility_table(std::ostream& out, const std::vector<FragilityDifference>& rows) {
-  out << "| setting | limit state | samples with another verdict | max \\|P - P_ref\\| over levels "
+  out << "| setting | limit state | failed samples | samples with another verdict | max \\|P - P_ref\\| over levels "
          "| max Wilson 95 % half-width (sampling error) | fitted median (ref) | fitted beta (ref) "
          "| median time/sample (ms) |\n"
-      << "|---|---|---|---|---|---|---|---|\n";
+      << "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
-    out << "| " << setting_label(row.setting) << " | " << row.limit_state << " | " << row.verdicts_changed << " | "
+    out << "| " << setting_label(row.setting) << " | " << row.limit_state << " | " << row.failures << " | "
+        << row.verdicts_changed << " | "
         << number(row.max_probability_difference) << " | " << number(row.max_sampling_half_width) << " | "
         << number(row.median, "%.5g") << " (" << number(row.reference_median, "%.5g") << ") | "
         << number(row.beta, "%.4g") << " (" << number(row.reference_beta, "%.4g") << ") | "

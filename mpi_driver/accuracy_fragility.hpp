@@ -22,6 +22,7 @@ struct FragilityDifference {
   SolverSetting setting;
   std::string limit_state;
   std::int64_t verdicts_changed = 0;      // samples whose exceedance differs from the reference's
+  std::int64_t failures = 0;              // samples that failed (a budget, or over 5 s) with this setting
   double max_probability_difference = 0;  // max over levels of |p - p_reference|
   double max_sampling_half_width = 0;     // max over levels of the reference's Wilson half-width
   double median = 0, reference_median = 0;  // of the lognormal fits (NaN when a fit does not exist)
@@ -44,7 +45,7 @@ struct DesignConvergence {
   int fitted_replicates = 0;
 };
 
-// For each design and size, `replicates` seeds of the study (with the base scene's solver); errors
+// For each design and size, `replicates` seeds of the study (with the production default); errors
 // of the lognormal fit of the first limit state against one Latin hypercube run of
 // reference_samples_per_level samples per level.
 std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_document,

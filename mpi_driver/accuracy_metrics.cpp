@@ -46,7 +46,7 @@ OutputErrors output_errors(const Summary& reference, const Summary& candidate) {
   return errors;
 }
 
-double quantile(std::vector<double> values, double q) {
+double sample_quantile(std::vector<double> values, double q) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::sort(values.begin(), values.end());
   const double position = q * static_cast<double>(values.size() - 1);
@@ -64,7 +64,7 @@ SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors, co
                                        &OutputErrors::final_slide, &OutputErrors::first_impact_time}) {
     const auto values = column(errors, output);
     stats.max_error.*output = values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
-    stats.median_error.*output = quantile(values, 0.5);
+    stats.median_error.*output = sample_quantile(values, 0.5);
   }
   for (const auto& e : errors) {
     stats.wrong_verdicts += e.wrong_verdict ? 1 : 0;
@@ -75,15 +75,15 @@ SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors, co
   stats.max_error.failed = stats.failures > 0;
   stats.wrong_verdict_rate =
       errors.empty() ? 0.0 : static_cast<double>(stats.wrong_verdicts) / static_cast<double>(errors.size());
-  stats.median_seconds = quantile(seconds, 0.5);
-  stats.p95_seconds = quantile(seconds, 0.95);
-  stats.median_rhs_evaluations = quantile(as_doubles(rhs_evaluations), 0.5);
+  stats.median_seconds = sample_quantile(seconds, 0.5);
+  stats.p95_seconds = sample_quantile(seconds, 0.95);
+  stats.median_rhs_evaluations = sample_quantile(as_doubles(rhs_evaluations), 0.5);
   stats.mean_rhs_evaluations =
       rhs_evaluations.empty()
           ? 0.0
           : static_cast<double>(std::accumulate(rhs_evaluations.begin(), rhs_evaluations.end(), 0L)) /
                 static_cast<double>(rhs_evaluations.size());
-  stats.median_steps = quantile(as_doubles(steps), 0.5);
+  stats.median_steps = sample_quantile(as_doubles(steps), 0.5);
   return stats;
 }
 

@@ -29,7 +29,7 @@ int run_bench(const BenchOptions& options, std::ostream& out) {
       {"scene", options.scene_path.string()},
       {"solver", scene_to_json(scene)["solver"]},
       {"repeat", options.repeat},
-      {"median_us", quantile(microseconds, 0.5)},
+      {"median_us", sample_quantile(microseconds, 0.5)},
       {"min_us", *std::min_element(microseconds.begin(), microseconds.end())},
       {"max_us", *std::max_element(microseconds.begin(), microseconds.end())},
       {"steps", summary.steps},

@@ -34,6 +34,7 @@ run() {
   samples=$(sed -n 's/.*(\([0-9]*\) samples computed in this run.*/\1/p' "$work/err")
   checkpoints=$(sed -n 's/.*, \([0-9]*\) checkpoints taking \([0-9.e-]*\) s).*/\1 (\2 s)/p' "$work/err")
   rate=$(awk -v n="$samples" -v s="$seconds" 'BEGIN { printf "%.0f", n / s }')
+  cpu=$user
   printf "%-26s %5d %8d %7s %7s %12s   %s\n" "$label" "$ranks" "$samples" "$seconds" "$user" "$rate" "$checkpoints"
   rm -f "$output"
 }
@@ -42,14 +43,17 @@ printf "%-26s %5s %8s %7s %7s %12s   %s\n" "run" "ranks" "samples" "wall_s" "use
   "checkpoints (time writing)"
 run "no checkpoints" 1 "$work/none.json"
 rate1=$rate
+cpu1=$cpu
 run "no checkpoints" 2 "$work/none.json"
 rate2=$rate
+cpu2=$cpu
 run "checkpoint every 0.01 s" 2 "$work/often.json"
 rate2c=$rate
 run "checkpoint every 1 s" 2 "$work/second.json"
 rate2s=$rate
 echo
-awk -v r1="$rate1" -v r2="$rate2" -v rc="$rate2c" -v rs="$rate2s" 'BEGIN {
+awk -v r1="$rate1" -v r2="$rate2" -v rc="$rate2c" -v rs="$rate2s" -v c1="$cpu1" -v c2="$cpu2" 'BEGIN {
   printf "parallel efficiency, 2 ranks: %.2f\n", r2 / (2 * r1)
+  printf "CPU-time efficiency, 2 ranks (user_s 1 rank / user_s 2 ranks; MPI polling counts as work): %.2f\n", c1 / c2
   printf "checkpoint overhead, 2 ranks: every 0.01 s %.1f %%, every 1 s %.1f %%\n", 100 * (r2 - rc) / r2, 100 * (r2 - rs) / r2
 }'

@@ -123,5 +123,20 @@ run accuracy "$work/with_solver.json" --setting rk4:0.001 --output "$work/bad.h5
 check "a suite that sets a solver exits 2 (got $code)" test "$code" -eq 2
 check "its message names the path" grep -q '/scenes/0/scene/solver: must be absent' "$work/err"
 
+# --- the fragility comparison on a tiny study ---------------------------------------------------------
+"$PYTHON" - "$BLOCKFRAG_SOURCE_DIR/configs/example_study.json" "$work/tiny_study.json" <<'PY'
+import json, sys
+study = json.load(open(sys.argv[1]))
+study["samples_per_level"] = 3
+json.dump(study, open(sys.argv[2], "w"))
+PY
+run accuracy "$work/mini.json" --setting adaptive:1e-6 --output "$work/frag.h5" --fragility-study "$work/tiny_study.json" \
+  --replicates 2 --design-sizes 2 3 --reference-samples 4 --min-batch-ms 0.1
+check "accuracy --fragility-study exits 0 (got $code: $(head -c 300 "$work/err"))" test "$code" -eq 0
+check "the fragility table has a row per limit state" \
+  test "$(grep -c '^| adaptive tol=1e-06 | \(overturn\|rocking_half_alpha\|slide_5cm\) |' "$work/out")" -eq 3
+check "the design table has both designs" grep -q '^| latin_hypercube | 3 | overturn |' "$work/out"
+check "the design table has Monte Carlo" grep -q '^| monte_carlo | 2 | overturn |' "$work/out"
+
 echo "$passed passed, $failed failed"
 test "$failed" -eq 0

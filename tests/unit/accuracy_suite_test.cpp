@@ -15,11 +15,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
+#include "mpi_driver/accuracy_fragility.hpp"
 #include "mpi_driver/accuracy_metrics.hpp"
 #include "mpi_driver/accuracy_settings.hpp"
 #include "mpi_driver/accuracy_study.hpp"
 #include "mpi_driver/accuracy_suite.hpp"
 #include "mpi_driver/config_reader.hpp"
+#include "mpi_driver/study_config.hpp"
 
 namespace blockfrag {
 namespace {
@@ -170,13 +172,13 @@ TEST(AccuracyMetrics, ErrorsAreAbsoluteDifferencesWithMissingImpactsInfinite) {
 }
 
 TEST(AccuracyMetrics, QuantilesInterpolateLikeNumpy) {
-  // numpy.quantile([4, 1, 3, 2], q) for q = 0.5, 0.95, 0, 1.
-  EXPECT_DOUBLE_EQ(quantile({4, 1, 3, 2}, 0.5), 2.5);
-  EXPECT_DOUBLE_EQ(quantile({4, 1, 3, 2}, 0.95), 3.85);
-  EXPECT_DOUBLE_EQ(quantile({4, 1, 3, 2}, 0.0), 1.0);
-  EXPECT_DOUBLE_EQ(quantile({4, 1, 3, 2}, 1.0), 4.0);
-  EXPECT_EQ(quantile({1, infinity, 2}, 1.0), infinity);
-  EXPECT_TRUE(std::isnan(quantile({}, 0.5)));
+  // numpy.sample_quantile([4, 1, 3, 2], q) for q = 0.5, 0.95, 0, 1.
+  EXPECT_DOUBLE_EQ(sample_quantile({4, 1, 3, 2}, 0.5), 2.5);
+  EXPECT_DOUBLE_EQ(sample_quantile({4, 1, 3, 2}, 0.95), 3.85);
+  EXPECT_DOUBLE_EQ(sample_quantile({4, 1, 3, 2}, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(sample_quantile({4, 1, 3, 2}, 1.0), 4.0);
+  EXPECT_EQ(sample_quantile({1, infinity, 2}, 1.0), infinity);
+  EXPECT_TRUE(std::isnan(sample_quantile({}, 0.5)));
 }
 
 TEST(AccuracyMetrics, StatisticsOverScenes) {
@@ -260,6 +262,33 @@ TEST(AccuracyStudy, ReferenceMatchesClosedFormsAndItsCheck) {
   const SettingResult same = evaluate_setting({Method::adaptive, 1e-12}, itself, study.reference);
   EXPECT_EQ(same.statistics.max_error.max_abs_theta, 0.0);
   EXPECT_EQ(same.statistics.max_error.first_impact_time, 0.0);
+}
+
+// The fragility comparison of a setting with itself finds no difference, and one with a coarse
+// setting counts the samples whose verdict changed consistently with the curves: a level's
+// probability can move by at most (changed verdicts at that level) / trials.
+TEST(AccuracyFragility, ASettingAgainstItselfChangesNothing) {
+  nlohmann::json document = read_json_file(std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "configs/example_study.json");
+  document["samples_per_level"] = 4;
+  const StudyConfig config = parse_study_config(document, "example_study.json");
+  const SolverSetting reference{Method::adaptive, 1e-10};
+  const auto rows = compare_fragility(config, {reference, {Method::adaptive, 1e-3}}, reference);
+  ASSERT_EQ(rows.size(), 2 * config.limit_states.size());
+  for (std::size_t i = 0; i < config.limit_states.size(); ++i) {
+    const FragilityDifference& same = rows[i];
+    EXPECT_EQ(same.limit_state, config.limit_states[i].name);
+    EXPECT_EQ(same.verdicts_changed, 0);
+    EXPECT_EQ(same.max_probability_difference, 0.0);
+    EXPECT_GT(same.max_sampling_half_width, 0.0);
+    EXPECT_TRUE(std::isnan(same.median) ? std::isnan(same.reference_median) : same.median == same.reference_median);
+    const FragilityDifference& coarse = rows[config.limit_states.size() + i];
+    EXPECT_LE(coarse.max_probability_difference, static_cast<double>(coarse.verdicts_changed) / 4 + 1e-12);
+  }
+  const auto convergence = design_convergence(document, {2, 4}, 2, 8);
+  ASSERT_EQ(convergence.size(), 4u);
+  EXPECT_EQ(convergence[0].design, "monte_carlo");
+  EXPECT_EQ(convergence[3].design, "latin_hypercube");
+  EXPECT_EQ(convergence[3].samples_per_level, 4);
 }
 
 }  // namespace
