@@ -40,6 +40,10 @@ struct SystemContext {
   const MotionPiece* piece;
   double g, mu;
   double length_scale() const { return geometry->size(); }
+  // A base corner relative to the centre of mass, in the world frame.
+  Vec2 arm(double theta, Corner corner) const {
+    return rotate(geometry->base_corner(corner), std::cos(theta), std::sin(theta));
+  }
   double velocity_scale() const { return std::sqrt(g * geometry->size()); }
 };
 
@@ -78,9 +82,7 @@ struct RockSystem {
   Corner pivot;
   double pivot_x;
 
-  Vec2 arm(double theta, Corner corner) const {
-    return rotate(c.geometry->base_corner(corner), std::cos(theta), std::sin(theta));
-  }
+  Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
   CornerContact contact(double t, const OdeState<N>& q) const {
     return sticking_corner(arm(q[0], pivot), q[1], c.piece->lambda(t), c.g,
                            c.geometry->inertia_per_mass());
@@ -114,9 +116,7 @@ struct SlideRockSystem {
   Corner pivot;
   int s;
 
-  Vec2 arm(double theta, Corner corner) const {
-    return rotate(c.geometry->base_corner(corner), std::cos(theta), std::sin(theta));
-  }
+  Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
   double denominator(const OdeState<N>& q) const {
     return slide_rock_denominator(arm(q[0], pivot), s, c.mu, c.geometry->inertia_per_mass());
   }

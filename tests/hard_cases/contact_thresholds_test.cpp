@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "../support/both_integrators.hpp"
 #include "../support/scene_builders.hpp"
 #include "engine/simulate.hpp"
 
@@ -10,14 +11,8 @@ namespace blockfrag {
 namespace {
 
 using testing::block_scene;
-using testing::rk4;
 
-class BothMethods : public ::testing::TestWithParam<Method> {
- protected:
-  Scene with_method(Scene scene) const {
-    return GetParam() == Method::rk4 ? rk4(scene, 2.5e-4) : scene;
-  }
-};
+using testing::BothMethods;
 
 TEST_P(BothMethods, FrictionExactlyAtAspectRatioIsContinuous) {
   // mu = a/b: flat sliding keeps one corner at zero normal force, slide-rock has no rotation;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../support/both_integrators.hpp"
 #include "../support/scene_builders.hpp"
 #include "engine/simulate.hpp"
 
@@ -12,14 +13,8 @@ namespace blockfrag {
 namespace {
 
 using testing::block_scene;
-using testing::rk4;
 
-class BothMethods : public ::testing::TestWithParam<Method> {
- protected:
-  Scene with_method(Scene scene) const {
-    return GetParam() == Method::rk4 ? rk4(scene, 2.5e-4) : scene;
-  }
-};
+using testing::BothMethods;
 
 TEST_P(BothMethods, VerySlenderBlockRocksWithHousnersRatio) {
   const double a = 0.05, b = 1.0, alpha = std::atan(a / b);

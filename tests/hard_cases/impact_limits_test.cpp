@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "../support/both_integrators.hpp"
 #include "../support/scene_builders.hpp"
 #include "engine/simulate.hpp"
 
@@ -11,14 +12,8 @@ namespace blockfrag {
 namespace {
 
 using testing::block_scene;
-using testing::rk4;
 
-class BothMethods : public ::testing::TestWithParam<Method> {
- protected:
-  Scene with_method(Scene scene) const {
-    return GetParam() == Method::rk4 ? rk4(scene, 2.5e-4) : scene;
-  }
-};
+using testing::BothMethods;
 
 Scene free_rocking(double e, double duration) {
   Scene scene = block_scene(0.5, 1.0, 5.0, e, NoMotion{}, duration);
