@@ -4,26 +4,14 @@
 # suite with 2 settings, writes its HDF5 file and its table, and refuses bad settings and suites;
 # plot_work_precision.py draws the diagram from that file. Prints "N passed, M failed" last.
 set -u
+source "$(dirname "$0")/../support/script_test.sh"
 
-: "${BLOCKFRAG:?path of the blockfrag executable}"
-: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
-PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
-
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  echo "FAIL: $*" >&2
-  failed=$((failed + 1))
-}
 check() {
   local name=$1
   shift
   if "$@"; then pass; else fail "$name"; fi
 }
 
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 suite="$BLOCKFRAG_SOURCE_DIR/configs/accuracy_suite.json"
 
 run() {

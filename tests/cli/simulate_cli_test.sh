@@ -4,18 +4,8 @@
 # object with every summary key, a report, and a history CSV; command-line errors exit 2, I/O
 # errors 1, a failed simulation 3. Prints "N passed, M failed" last; exits non-zero on any failure.
 set -u
+source "$(dirname "$0")/../support/script_test.sh"
 
-: "${BLOCKFRAG:?path of the blockfrag executable}"
-: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
-PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
-
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  echo "FAIL: $*" >&2
-  failed=$((failed + 1))
-}
 # check NAME COMMAND...: one pass or one fail.
 check() {
   local name=$1
@@ -23,8 +13,6 @@ check() {
   if "$@"; then pass; else fail "$name"; fi
 }
 
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 example="$BLOCKFRAG_SOURCE_DIR/configs/paper_example.json"
 
 # Runs blockfrag with the given arguments; stdout in $work/out, stderr in $work/err, exit code in $code.

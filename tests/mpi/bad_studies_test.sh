@@ -3,20 +3,8 @@
 # message fragment of the .expected file on stderr (the first fragment starts with the JSON path), no output
 # or checkpoint written. Under mpirun the refusal is the same and printed once, not once per rank.
 set -u
+source "$(dirname "$0")/../support/script_test.sh"
 
-: "${BLOCKFRAG:?path of the blockfrag executable}"
-: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
-
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  echo "FAIL: $*" >&2
-  failed=$((failed + 1))
-}
-
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
 
 # check_refusal NAME EXPECTED: exit code 2 and every fragment of EXPECTED in $work/err.

@@ -4,22 +4,10 @@
 # requeues the interrupted job (exit 4), and on its resubmission finishes the study from the
 # checkpoint with the same output as an uninterrupted run.
 set -u
+source "$(dirname "$0")/../support/script_test.sh"
 
-: "${BLOCKFRAG:?path of the blockfrag executable}"
-: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
-PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
 COMPARE="$BLOCKFRAG_SOURCE_DIR/tests/mpi/compare_study_outputs.py"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  echo "FAIL: $*" >&2
-  failed=$((failed + 1))
-}
-
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
 
 for study in "$BLOCKFRAG_SOURCE_DIR"/configs/*_study.json; do

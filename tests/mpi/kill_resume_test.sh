@@ -7,22 +7,10 @@
 # resume with a changed config (seed, sample count) is refused with exit code 2 and a clear
 # message, leaving the checkpoint as it was.
 set -u
+source "$(dirname "$0")/../support/script_test.sh"
 
-: "${BLOCKFRAG:?path of the blockfrag executable}"
-: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
-PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
 COMPARE="$BLOCKFRAG_SOURCE_DIR/tests/mpi/compare_study_outputs.py"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  echo "FAIL: $*" >&2
-  failed=$((failed + 1))
-}
-
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
 
 # write_study FILE SEED: 4000 cheap samples, a checkpoint every 0.1 s. The jobs below also hold

@@ -3,22 +3,10 @@
 # 2 and 3 ranks (oversubscribed), for a Latin hypercube and a Monte Carlo study; every sample is
 # present exactly once; running a finished study again reports it complete and leaves the file alone.
 set -u
+source "$(dirname "$0")/../support/script_test.sh"
 
-: "${BLOCKFRAG:?path of the blockfrag executable}"
-: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
-PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
 COMPARE="$BLOCKFRAG_SOURCE_DIR/tests/mpi/compare_study_outputs.py"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  echo "FAIL: $*" >&2
-  failed=$((failed + 1))
-}
-
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
 
 # write_study FILE DESIGN: a small study (90 samples, 2 s scenes) with every kind of input and limit state.

@@ -1,0 +1,16 @@
+# Sourced by the script tests (tests/*/*_test.sh): the environment ctest gives them, a scratch
+# folder removed on exit, and the pass/fail counters behind their closing 'N passed, M failed' line.
+: "${BLOCKFRAG:?path of the blockfrag executable}"
+: "${BLOCKFRAG_SOURCE_DIR:?path of the source tree}"
+PYTHON=${BLOCKFRAG_PYTHON:-/usr/bin/python3}
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() {
+  echo "FAIL: $*" >&2
+  failed=$((failed + 1))
+}
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
