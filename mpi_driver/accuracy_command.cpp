@@ -15,6 +15,7 @@
 #include "mpi_driver/atomic_file.hpp"
 #include "mpi_driver/config_reader.hpp"
 #include "mpi_driver/study_config.hpp"
+#include "mpi_driver/cli_validators.hpp"
 
 namespace blockfrag {
 
@@ -27,17 +28,6 @@ std::string valid_setting(const std::string& text) {
   } catch (const std::invalid_argument& error) {
     return error.what();
   }
-}
-
-// CLI11's PositiveNumber lets "nan" through.
-std::string positive_finite(const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double x = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(x) && x > 0) return {};
-  } catch (const std::exception&) {
-  }
-  return "must be a positive number (got " + text + ")";
 }
 
 // The settings whose fragility curves are compared when the command line names none: the paper's,
@@ -113,12 +103,12 @@ void add_accuracy_command(CLI::App& app, std::function<int()>& command) {
       ->add_option("--reference-tolerance", options->reference_tolerance,
                    "Tolerance of the reference (adaptive) and of its check (gsl_rk8pd)")
       ->capture_default_str()
-      ->check(CLI::Validator(positive_finite, "TOL"));
+      ->check(positive_finite_number("TOL"));
   accuracy
       ->add_option("--min-batch-ms", options->min_batch_ms,
                    "Each scene is repeated until a timed batch takes at least this long")
       ->capture_default_str()
-      ->check(CLI::Validator(positive_finite, "MS"));
+      ->check(positive_finite_number("MS"));
   accuracy
       ->add_option("--fragility-study", options->fragility_study,
                    "Also compare this study's fragility curves per setting, and MC against LHS convergence")

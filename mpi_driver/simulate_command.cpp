@@ -10,6 +10,7 @@
 #include "mpi_driver/history_csv.hpp"
 #include "mpi_driver/scene_json.hpp"
 #include "mpi_driver/summary_json.hpp"
+#include "mpi_driver/cli_validators.hpp"
 
 namespace blockfrag {
 
@@ -27,17 +28,6 @@ std::string fixed(double x) {
 
 std::string time_or_never(const std::optional<double>& time) {
   return time ? "t = " + fixed(*time) + " s" : "never";
-}
-
-// CLI11's PositiveNumber lets "nan" through.
-std::string positive_finite(const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double x = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(x) && x > 0) return {};
-  } catch (const std::exception&) {
-  }
-  return "must be a positive number of seconds (got " + text + ")";
 }
 
 }  // namespace
@@ -101,7 +91,7 @@ void add_simulate_command(CLI::App& app, std::function<int()>& command) {
           ->type_name("FILE.csv");
   simulate->add_option("--history-interval", options->history_interval, "Time between history rows, s")
       ->capture_default_str()
-      ->check(CLI::Validator(positive_finite, "SECONDS"))
+      ->check(positive_finite_number("SECONDS"))
       ->needs(history);
   simulate->callback([options, &command] {
     command = [options] { return run_simulate(*options, std::cout); };
