@@ -1,6 +1,6 @@
-// The ground motion as smooth pieces: lambda(t) is smooth inside each piece and may jump between
-// pieces, so the integrator never steps across a piece boundary and each stage evaluates the
-// formula of the piece it lies in (the left limit at the piece's end, not the next piece's value).
+// The ground motion as smooth pieces: lambda(t) is smooth inside each piece and may jump (or kink)
+// between pieces, so the integrator never steps across a piece boundary and each stage evaluates
+// the formula of the piece it lies in (the left limit at the piece's end, not the next piece's).
 #pragma once
 
 #include <cmath>
@@ -14,31 +14,47 @@ namespace blockfrag {
 
 class MotionPiece {
  public:
-  enum class Shape { zero, constant, cosine, sine };
+  enum class Shape { zero, constant, linear, cosine, sine };
 
-  // Valid from the previous piece's end (or t = 0) to end.
-  MotionPiece(Shape shape, double amplitude, double angular_frequency, double end)
-      : shape_(shape), amplitude_(amplitude), omega_(angular_frequency), end_(end) {}
+  // lambda(t) for one shape; unused parameters stay zero.
+  struct Formula {
+    Shape shape = Shape::zero;
+    double amplitude = 0.0;          // the value (constant, linear at origin) or the peak
+    double angular_frequency = 0.0;  // cosine, sine: A cos(omega t + phase)
+    double phase = 0.0;
+    double origin = 0.0;             // linear: lambda = A + slope (t - origin)
+    double slope = 0.0;
+  };
 
+  // Valid from start (the previous piece's end, or 0) to end.
+  MotionPiece(const Formula& formula, double start, double end)
+      : f_(formula), start_(start), end_(end) {}
+
+  double start() const { return start_; }
   double end() const { return end_; }
-  bool is_zero() const { return shape_ == Shape::zero || amplitude_ == 0.0; }
+  bool is_zero() const {
+    return f_.shape == Shape::zero || (f_.amplitude == 0.0 && f_.slope == 0.0);
+  }
 
   // The piece's formula, also at its end point (the left limit there).
   double lambda(double t) const {
-    switch (shape_) {
+    switch (f_.shape) {
       case Shape::zero: return 0.0;
-      case Shape::constant: return amplitude_;
-      case Shape::cosine: return amplitude_ * std::cos(omega_ * t);
-      case Shape::sine: return amplitude_ * std::sin(omega_ * t);
+      case Shape::constant: return f_.amplitude;
+      case Shape::linear: return f_.amplitude + f_.slope * (t - f_.origin);
+      case Shape::cosine: return f_.amplitude * std::cos(f_.angular_frequency * t + f_.phase);
+      case Shape::sine: return f_.amplitude * std::sin(f_.angular_frequency * t + f_.phase);
     }
     return 0.0;
   }
 
-  double max_abs_lambda() const { return is_zero() ? 0.0 : std::abs(amplitude_); }
+  // An upper bound of |lambda| over the piece.
+  double max_abs_lambda() const;
 
-  // How fast lambda changes: its period for oscillating pieces, unbounded for constant ones.
+  // How fast lambda changes: its period for oscillating pieces, unbounded for polynomial ones.
   double time_scale() const {
-    return omega_ > 0 ? 2.0 * std::numbers::pi / omega_ : std::numeric_limits<double>::infinity();
+    const double omega = f_.angular_frequency;
+    return omega > 0 ? 2.0 * std::numbers::pi / omega : std::numeric_limits<double>::infinity();
   }
 
   // Times in (t0, t1) where lambda has an extremum: checking a function of lambda alone there and
@@ -46,19 +62,25 @@ class MotionPiece {
   std::vector<double> extrema_between(double t0, double t1) const;
 
  private:
-  Shape shape_;
-  double amplitude_, omega_, end_;
+  Formula f_;
+  double start_, end_;
 };
 
 class GroundMotionPieces {
  public:
   explicit GroundMotionPieces(const GroundMotion& motion);
+  // lambda given at increasing times, linear in between, zero outside [times.front(), times.back()].
+  GroundMotionPieces(const std::vector<double>& times, const std::vector<double>& lambdas);
 
   const MotionPiece& piece_at(double t) const;  // the first piece with t < end
   double lambda(double t) const { return piece_at(t).lambda(t); }
+  const std::vector<MotionPiece>& pieces() const { return pieces_; }
 
  private:
-  std::vector<MotionPiece> pieces_;  // the last one is zero and lasts forever
+  void add(const MotionPiece::Formula& formula, double end);
+  void close();  // appends the zero piece that lasts forever
+
+  std::vector<MotionPiece> pieces_;
 };
 
 }  // namespace blockfrag
