@@ -16,6 +16,7 @@
 #include "engine/modes.hpp"
 #include "engine/rk4_stepper.hpp"
 #include "engine/root_finding.hpp"
+#include "engine/scene_motion.hpp"
 #include "engine/scene_validation.hpp"
 #include "engine/segment_observer.hpp"
 
@@ -70,7 +71,7 @@ class Simulation {
   Simulation(const Scene& scene, double output_interval)
       : scene_(scene),
         geometry_(scene.block),
-        motion_(scene.ground_motion),
+        motion_(scene_motion(scene)),
         resolver_(geometry_, scene.contact, scene.g),
         observer_(summary_, output_interval, scene.g),
         log_impacts_(output_interval > 0) {}
