@@ -49,6 +49,7 @@ GroundMotionPieces::GroundMotionPieces(const std::vector<double>& times,
                                        const std::vector<double>& lambdas) {
   if (!times.empty() && times.front() > 0) add({}, times.front());
   for (std::size_t i = 0; i + 1 < times.size(); ++i) {
+    if (times[i + 1] == times[i]) continue;  // a repeated time: lambda jumps there
     const double slope = (lambdas[i + 1] - lambdas[i]) / (times[i + 1] - times[i]);
     add({.shape = MotionPiece::Shape::linear,
          .amplitude = lambdas[i],

@@ -70,6 +70,7 @@ class GroundMotionPieces {
  public:
   explicit GroundMotionPieces(const GroundMotion& motion);
   // lambda given at increasing times, linear in between, zero outside [times.front(), times.back()].
+  // A time given twice in a row is a jump: the first value ends one piece, the second starts the next.
   GroundMotionPieces(const std::vector<double>& times, const std::vector<double>& lambdas);
 
   const MotionPiece& piece_at(double t) const;  // the first piece with t < end

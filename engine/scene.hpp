@@ -1,6 +1,7 @@
 // One simulation's inputs: block, contact, excitation, solver. Plain values, SI units.
 #pragma once
 
+#include <optional>
 #include <variant>
 
 namespace blockfrag {
@@ -35,6 +36,22 @@ struct RectangularPulse {   // lambda = A for 0 <= t < duration
 };
 using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse>;
 
+// The block sits on the crest of a gravity dam: the foundation motion reaches it through the dam's
+// fundamental mode, a damped oscillator (engine/dam_crest.hpp). The period is given, or estimated
+// from the dam's height and concrete modulus (Fenves & Chopra 1987).
+struct DamPeriod {
+  double period = 0.25;  // T1, s
+};
+struct DamSize {
+  double height = 100.0;           // H, m
+  double elastic_modulus = 25e9;   // E, Pa
+};
+struct DamCrest {
+  std::variant<DamPeriod, DamSize> stiffness = DamPeriod{};
+  double damping = 0.05;       // zeta, of critical
+  double participation = 1.0;  // Gamma_1 phi_1(crest): the mode's participation times its crest ordinate
+};
+
 // rk4: the paper's fixed step. adaptive: Dormand-Prince 5(4) with dense output (the production
 // method). gsl_rkf45, gsl_rk8pd: GSL's odeiv2 steppers with its standard step control, as a
 // well-known library's answer (cubic Hermite dense output for event location).
@@ -60,6 +77,7 @@ struct Scene {
   RectangularBlock block;
   Contact contact;
   GroundMotion ground_motion = NoMotion{};
+  std::optional<DamCrest> dam;  // none: the block stands on the foundation
   double duration = 4.0;  // s
   double g = 9.81;        // m/s^2
   SolverSettings solver;

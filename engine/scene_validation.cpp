@@ -16,6 +16,19 @@ void require(bool ok, const char* rule) {
 
 bool positive(double v) { return std::isfinite(v) && v > 0; }
 
+void validate_dam(const DamCrest& dam) {
+  if (const auto* given = std::get_if<DamPeriod>(&dam.stiffness)) {
+    require(positive(given->period), "dam period must be > 0");
+  } else {
+    const auto& size = std::get<DamSize>(dam.stiffness);
+    require(positive(size.height), "dam height must be > 0");
+    require(positive(size.elastic_modulus), "dam elastic_modulus must be > 0");
+  }
+  // The filter is the underdamped oscillator's closed form.
+  require(dam.damping >= 0 && dam.damping < 1, "dam damping must be in [0, 1)");
+  require(positive(dam.participation), "dam participation must be > 0");
+}
+
 }  // namespace
 
 void validate_scene(const Scene& scene) {
@@ -50,6 +63,7 @@ void validate_scene(const Scene& scene) {
         }
       },
       scene.ground_motion);
+  if (scene.dam) validate_dam(*scene.dam);
 }
 
 }  // namespace blockfrag
