@@ -4,6 +4,8 @@
 #include <optional>
 #include <variant>
 
+#include "engine/near_fault_pulses.hpp"
+
 namespace blockfrag {
 
 // A rectangle of half-width a and half-height b resting on its base.
@@ -34,7 +36,10 @@ struct RectangularPulse {   // lambda = A for 0 <= t < duration
   double amplitude_g = 1.0;
   double duration = 1.0;
 };
-using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse>;
+// The near-fault pulses (Makris A, B, C_n, Ricker, Mavroeidis-Papageorgiou) are in
+// engine/near_fault_pulses.hpp with their formulas.
+using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse, MakrisPulseA, MakrisPulseB,
+                                  MakrisPulseC, RickerWavelet, MavroeidisPapageorgiouPulse>;
 
 // The block sits on the crest of a gravity dam: the foundation motion reaches it through the dam's
 // fundamental mode, a damped oscillator (engine/dam_crest.hpp). The period is given, or estimated

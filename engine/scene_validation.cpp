@@ -16,6 +16,30 @@ void require(bool ok, const char* rule) {
 
 bool positive(double v) { return std::isfinite(v) && v > 0; }
 
+// The near-fault pulses (engine/near_fault_pulses.hpp).
+void require_valid(const MakrisPulseA& m) {
+  require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
+  require(positive(m.period), "pulse period must be > 0");
+}
+void require_valid(const MakrisPulseB& m) { require_valid(MakrisPulseA{m.amplitude_g, m.period}); }
+void require_valid(const MakrisPulseC& m) {
+  require_valid(MakrisPulseA{m.amplitude_g, m.period});
+  require(m.n >= 1, "Makris type C pulse n must be >= 1");
+}
+void require_valid(const RickerWavelet& m) {
+  require_valid(MakrisPulseA{m.amplitude_g, m.period});
+  require(!m.t0 || positive(*m.t0), "Ricker wavelet t0 must be > 0");
+}
+void require_valid(const MavroeidisPapageorgiouPulse& m) {
+  require(std::isfinite(m.velocity_amplitude), "pulse velocity amplitude must be finite");
+  require(positive(m.period), "pulse period must be > 0");
+  require(std::isfinite(m.gamma) && m.gamma > 1, "Mavroeidis-Papageorgiou gamma must be > 1");
+  require(std::isfinite(m.phase), "Mavroeidis-Papageorgiou phase must be finite");
+  // The pulse must start at t >= 0: a block at rest on a ground already moving is another problem.
+  require(!m.t0 || (std::isfinite(*m.t0) && *m.t0 >= (1.0 - 1e-12) * m.half_width()),
+          "Mavroeidis-Papageorgiou t0 must be >= gamma period / 2 (the pulse starts at t >= 0)");
+}
+
 void validate_dam(const DamCrest& dam) {
   if (const auto* given = std::get_if<DamPeriod>(&dam.stiffness)) {
     require(positive(given->period), "dam period must be > 0");
@@ -56,6 +80,10 @@ void validate_scene(const Scene& scene) {
         if constexpr (std::is_same_v<M, RectangularPulse>) {
           require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
           require(positive(m.duration), "pulse duration must be > 0");
+        } else if constexpr (std::is_same_v<M, MakrisPulseA> || std::is_same_v<M, MakrisPulseB> ||
+                             std::is_same_v<M, MakrisPulseC> || std::is_same_v<M, RickerWavelet> ||
+                             std::is_same_v<M, MavroeidisPapageorgiouPulse>) {
+          require_valid(m);
         } else if constexpr (!std::is_same_v<M, NoMotion>) {
           require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
           require(positive(m.period), "pulse period must be > 0");

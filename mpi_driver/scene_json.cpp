@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "mpi_driver/config_reader.hpp"
+#include "mpi_driver/pulse_json.hpp"
 #include "sampling/validation.hpp"  // format_number
 
 namespace blockfrag {
@@ -51,13 +52,16 @@ RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
 }
 
 GroundMotion read_ground_motion(ObjectReader reader) {
-  const auto type = reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse"});
+  const auto type = reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", makris_a_type,
+                                                    makris_b_type, makris_c_type, ricker_type,
+                                                    mavroeidis_papageorgiou_type});
   // Without a valid type nobody knows which keys belong here: report nothing more.
   if (!type) return NoMotion{};
   GroundMotion motion = NoMotion{};
   if (*type == "cosine_pulse") motion = read_periodic_pulse<CosinePulse>(reader);
   if (*type == "sine_pulse") motion = read_periodic_pulse<SinePulse>(reader);
   if (*type == "rectangular_pulse") motion = read_rectangular_pulse(reader);
+  if (auto pulse = read_near_fault_pulse(*type, reader)) motion = *pulse;
   reader.finish("for type \"" + *type + "\"");
   return motion;
 }
@@ -122,6 +126,10 @@ json ground_motion_to_json(const GroundMotion& motion) {
                   {"amplitude_g", pulse.amplitude_g},
                   {"period", pulse.period},
                   {"cycles", pulse.cycles}};
+        } else if constexpr (std::is_same_v<Pulse, MakrisPulseA> || std::is_same_v<Pulse, MakrisPulseB> ||
+                             std::is_same_v<Pulse, MakrisPulseC> || std::is_same_v<Pulse, RickerWavelet> ||
+                             std::is_same_v<Pulse, MavroeidisPapageorgiouPulse>) {
+          return pulse_to_json(pulse);
         } else {
           static_assert(std::is_same_v<Pulse, RectangularPulse>);
           return {{"type", "rectangular_pulse"}, {"amplitude_g", pulse.amplitude_g}, {"duration", pulse.duration}};

@@ -334,6 +334,11 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
   if (scene_valid && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
     root.add_error("intensity_measure", "scales the pulse amplitude, but /scene/ground_motion has type \"none\"");
   }
+  if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
+      scene_valid && mp && mp->velocity_amplitude == 0.0) {
+    root.add_error("intensity_measure", "scales the pulse's peak acceleration, but /scene/ground_motion has "
+                                        "velocity_amplitude 0");
+  }
   const Range samples_range = Range::closed(1, 2147483648.0);
   const auto samples = root.required_integer("samples_per_level", samples_range);
   if (overrides.samples_per_level) {

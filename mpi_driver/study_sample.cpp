@@ -4,18 +4,26 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "engine/ground_motion.hpp"
+
 namespace blockfrag {
 namespace {
 
 // A random sign is drawn as a uniform on (-1, 1) (equal halves of u) and reduced to its sign.
 double sign_of(double value) { return value < 0.0 ? -1.0 : 1.0; }
 
-void set_pulse(GroundMotion& motion, double amplitude_g, const double* period) {
+void set_pulse(GroundMotion& motion, double amplitude_g, const double* period, double g) {
   std::visit(
       [&](auto& pulse) {
         using T = std::decay_t<decltype(pulse)>;
         if constexpr (std::is_same_v<T, NoMotion>) {
           throw std::invalid_argument("a study's base scene needs a pulse to scale");
+        } else if constexpr (std::is_same_v<T, MavroeidisPapageorgiouPulse>) {
+          // Given by its velocity: scaled so its peak |lambda| (its PGA in g) is the intensity
+          // (study_config refuses a zero velocity amplitude).
+          if (period) throw std::invalid_argument("a period input needs a cosine or sine pulse");
+          pulse.velocity_amplitude =
+              amplitude_g * std::abs(pulse.velocity_amplitude) / GroundMotionPieces(pulse, g).peak_abs_lambda();
         } else {
           pulse.amplitude_g = amplitude_g;
           if constexpr (std::is_same_v<T, CosinePulse> || std::is_same_v<T, SinePulse>) {
@@ -65,7 +73,7 @@ Scene apply_sample(const StudyConfig& config, const std::vector<double>& values,
     scene.block.half_width = radius_value * std::sin(alpha_value);
     scene.block.half_height = radius_value * std::cos(alpha_value);
   }
-  set_pulse(scene.ground_motion, direction * im, period);
+  set_pulse(scene.ground_motion, direction * im, period, scene.g);
   return scene;
 }
 

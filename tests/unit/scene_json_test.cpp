@@ -142,10 +142,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "/ground_motion/amplitude_g: must be a finite number (got \"NaN\"; JSON has no NaN or Infinity)"},
         RuleCase{"/ground_motion/type", "cosine",
                  "/ground_motion/type: must be one of \"none\", \"cosine_pulse\", \"sine_pulse\", "
-                 "\"rectangular_pulse\" (got \"cosine\")"},
+                 "\"rectangular_pulse\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
+                 "\"mavroeidis_papageorgiou\" (got \"cosine\")"},
         RuleCase{"/ground_motion/type", "sine_puls",
                  "/ground_motion/type: must be one of \"none\", \"cosine_pulse\", \"sine_pulse\", "
-                 "\"rectangular_pulse\" (got \"sine_puls\"; did you mean \"sine_pulse\"?)"},
+                 "\"rectangular_pulse\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
+                 "\"mavroeidis_papageorgiou\" (got \"sine_puls\"; did you mean \"sine_pulse\"?)"},
         RuleCase{"/duration", 0, "/duration: must be > 0 (got 0)"},
         RuleCase{"/duration", "4", "/duration: must be a number, not a string (got \"4\")"},
         RuleCase{"/g", -9.81, "/g: must be > 0 (got -9.81)"},
