@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "mpi_driver/config_reader.hpp"
+#include "mpi_driver/dam_json.hpp"
 #include "mpi_driver/pulse_json.hpp"
 #include "sampling/validation.hpp"  // format_number
 
@@ -166,6 +167,7 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
   scene.block = read_block(root.required_object("block"));
   scene.contact = read_contact(root.required_object("contact"));
   scene.ground_motion = read_ground_motion(root.required_object("ground_motion"));
+  scene.dam = read_dam(root.object("dam"));
   const auto duration = root.required_number("duration", positive);
   if (duration) scene.duration = *duration;
   scene.g = root.number_or("g", scene.g, positive);
@@ -180,7 +182,7 @@ Scene read_scene_file(const std::filesystem::path& path) {
 }
 
 json scene_to_json(const Scene& scene) {
-  return {{"block",
+  json out = {{"block",
            {{"half_width", scene.block.half_width},
             {"half_height", scene.block.half_height},
             {"mass", scene.block.mass}}},
@@ -190,6 +192,8 @@ json scene_to_json(const Scene& scene) {
           {"g", scene.g},
           {"solver", solver_to_json(scene.solver)},
           {"initial", {{"theta", scene.initial.theta}}}};
+  if (scene.dam) out["dam"] = dam_to_json(*scene.dam);
+  return out;
 }
 
 }  // namespace blockfrag
