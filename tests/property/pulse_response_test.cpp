@@ -100,7 +100,8 @@ TEST(PulseResponse, RockingStartsWhereEachPulseFirstExceedsTheAspectRatio) {
     const double omega = 2 * pi / Tp;
     const auto excess = [&](double t) {
       const double x = omega * (t - t0);
-      const double lambda = vp * omega / (2 * g) * (k * std::sin(k * x) * std::cos(x + nu) + (1 + std::cos(k * x)) * std::sin(x + nu));
+      const double lambda = vp * omega / (2 * g) *
+                            (k * std::sin(k * x) * std::cos(x + nu) + (1 + std::cos(k * x)) * std::sin(x + nu));
       return std::abs(lambda) - beta;
     };
     expect_rocking_onset(MavroeidisPapageorgiouPulse{vp, Tp, gamma, nu, {}}, beta, first_crossing(excess, 0.0, 2 * t0),

@@ -85,7 +85,8 @@ TEST(PulseJson, RulesAreRefusedAtTheirPath) {
   EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/gamma: must be > 1 (got 1)");
   bad = mp;
   bad["t0"] = 0.4;
-  EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/t0: must be >= gamma period / 2 = 0.5 (the pulse starts at t >= 0) (got 0.4)");
+  EXPECT_EQ(errors_of(bad),
+            "scene.json: /ground_motion/t0: must be >= gamma period / 2 = 0.5 (the pulse starts at t >= 0) (got 0.4)");
   bad = mp;
   bad["amplitude_g"] = 1.0;  // this pulse is given by its velocity
   EXPECT_EQ(errors_of(bad),
