@@ -40,7 +40,8 @@ std::vector<double> mavroeidis_papageorgiou_extrema(const MotionPiece::Formula& 
 double MotionPiece::max_abs_lambda() const {
   if (is_zero()) return 0.0;
   if (f_.shape == Shape::linear) return std::max(std::abs(lambda(start_)), std::abs(lambda(end_)));
-  if (f_.shape == Shape::mavroeidis_papageorgiou) return 2.0 * std::abs(f_.amplitude);  // 3 sines, 1 + (1+k)/2 + (1-k)/2
+  // Mavroeidis-Papageorgiou: three sines of amplitudes 1, (1 + k)/2, (1 - k)/2 add to at most 2.
+  if (f_.shape == Shape::mavroeidis_papageorgiou) return 2.0 * std::abs(f_.amplitude);
   return std::abs(f_.amplitude);  // the Ricker wavelet's peak is at its centre
 }
 
