@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -108,10 +109,11 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
     grids.push_back(grid_of(piece, duration, period));
     nodes += static_cast<std::size_t>(grids.back().steps) + 1;  // + 1: a possible repeated node
     if (nodes > kMaxCrestNodes) {
-      throw std::invalid_argument(
-          "invalid scene: the dam's period (" + std::to_string(period) +
-          " s) is too short for the duration: the crest motion would need more than " +
-          std::to_string(kMaxCrestNodes) + " nodes (one per period / 100)");
+      std::ostringstream why;
+      why << "invalid scene: the dam's period (" << period << " s) is too short for the duration ("
+          << duration << " s): the crest motion would need more than " << kMaxCrestNodes
+          << " nodes (one per period / 100)";
+      throw std::invalid_argument(why.str());
     }
   }
 
