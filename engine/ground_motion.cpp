@@ -103,6 +103,11 @@ GroundMotionPieces::GroundMotionPieces(const GroundMotion& motion, double g) {
                .origin = m.center(),
                .modulation = 1.0 / m.gamma},
               m.center() + m.half_width());
+        } else if constexpr (std::is_same_v<M, RecordedMotion>) {
+          std::vector<double> lambdas;  // the record is the ground's acceleration, -lambda g
+          lambdas.reserve(m.record->acceleration_g.size());
+          for (const double a : m.record->acceleration_g) lambdas.push_back(-m.scale * a);
+          add_tabulated(m.record->times, lambdas);
         }
       },
       motion);
@@ -111,6 +116,11 @@ GroundMotionPieces::GroundMotionPieces(const GroundMotion& motion, double g) {
 
 GroundMotionPieces::GroundMotionPieces(const std::vector<double>& times,
                                        const std::vector<double>& lambdas) {
+  add_tabulated(times, lambdas);
+  close();
+}
+
+void GroundMotionPieces::add_tabulated(const std::vector<double>& times, const std::vector<double>& lambdas) {
   if (!times.empty() && times.front() > 0) add({}, times.front());
   for (std::size_t i = 0; i + 1 < times.size(); ++i) {
     if (times[i + 1] == times[i]) continue;  // a repeated time: lambda jumps there
@@ -121,7 +131,6 @@ GroundMotionPieces::GroundMotionPieces(const std::vector<double>& times,
          .slope = slope},
         times[i + 1]);
   }
-  close();
 }
 
 void GroundMotionPieces::add(const MotionPiece::Formula& formula, double end) {

@@ -96,6 +96,7 @@ class GroundMotionPieces {
 
  private:
   void add(const MotionPiece::Formula& formula, double end);
+  void add_tabulated(const std::vector<double>& times, const std::vector<double>& lambdas);
   void close();  // appends the zero piece that lasts forever
 
   std::vector<MotionPiece> pieces_;

@@ -4,8 +4,24 @@
 
 namespace blockfrag {
 
+namespace {
+
+// Every sample of a record is a piece boundary, and the fixed-step rk4 cuts its step at each one:
+// a record whose step does not fit the solver's would make rk4 take a short step per sample (and so
+// not be the method it claims to be). Such a record is resampled, linearly, onto the dt grid; the
+// adaptive methods take the record as it is.
+GroundMotion fitted_to_solver(const GroundMotion& motion, const SolverSettings& solver) {
+  const auto* recorded = std::get_if<RecordedMotion>(&motion);
+  if (!recorded || solver.method != Method::rk4 || on_step_grid(*recorded->record, solver.dt)) return motion;
+  RecordedMotion resampled = *recorded;
+  resampled.record = std::make_shared<const Accelerogram>(resample(*recorded->record, solver.dt));
+  return resampled;
+}
+
+}  // namespace
+
 GroundMotionPieces scene_motion(const Scene& scene) {
-  GroundMotionPieces foundation(scene.ground_motion, scene.g);
+  GroundMotionPieces foundation(fitted_to_solver(scene.ground_motion, scene.solver), scene.g);
   if (!scene.dam) return foundation;
   return dam_crest_motion(foundation, *scene.dam, scene.duration, scene.g);
 }

@@ -9,7 +9,8 @@ namespace blockfrag {
 
 namespace {
 
-SuiteScene read_suite_scene(ObjectReader reader, std::set<std::string>& names) {
+SuiteScene read_suite_scene(ObjectReader reader, std::set<std::string>& names,
+                            const std::filesystem::path& base_folder) {
   SuiteScene entry;
   entry.name = reader.required_string("name").value_or("");
   if (reader.has("name") && entry.name.empty()) reader.add_error("name", "must not be empty");
@@ -25,7 +26,7 @@ SuiteScene read_suite_scene(ObjectReader reader, std::set<std::string>& names) {
       reader.errors().add(reader.path_of("scene") / "solver",
                           "must be absent: the accuracy study sets the solver of every scene");
     } else {
-      entry.scene = scene_from_json(*scene, reader.path_of("scene"), reader.errors());
+      entry.scene = scene_from_json(*scene, reader.path_of("scene"), reader.errors(), base_folder);
     }
   } else if (reader.valid()) {
     reader.add_error("scene", "is required");
@@ -44,7 +45,7 @@ AccuracySuite accuracy_suite_from_json(const nlohmann::json& document, const std
   AccuracySuite suite;
   std::set<std::string> names;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    suite.scenes.push_back(read_suite_scene(scenes.object(i), names));
+    suite.scenes.push_back(read_suite_scene(scenes.object(i), names, std::filesystem::path(source).parent_path()));
   }
   root.finish();
   errors.throw_if_any();

@@ -8,7 +8,8 @@
 //    "g": 9.81, "initial": {"theta": 0.0}}
 // block, contact, ground_motion and duration are required; everything else has the defaults of
 // engine/scene.hpp. Ground motion types: "none"; "cosine_pulse" and "sine_pulse" (amplitude_g,
-// period, optional cycles); "rectangular_pulse" (amplitude_g, duration). Solver methods: "adaptive",
+// period, optional cycles); "rectangular_pulse" (amplitude_g, duration); "record" (file, optional
+// scale or target_pga_g; see engine/accelerogram.hpp for the formats). Solver methods: "adaptive",
 // "gsl_rkf45" and "gsl_rk8pd" (optional tolerance), and "rk4" (optional dt). A key of another type
 // or method is an unknown key.
 #pragma once
@@ -23,12 +24,15 @@
 
 namespace blockfrag {
 
-// Throws ConfigError listing every rule the document breaks; `source` names it in the messages.
+// Throws ConfigError listing every rule the document breaks; `source` is the document's file: it
+// names it in the messages, and a record's relative "file" is taken from its folder.
 Scene scene_from_json(const nlohmann::json& document, const std::string& source);
 
-// Reads a scene embedded at `path` in a larger document (a study's "scene"), adding its errors, with
-// their full paths, to the caller's `errors`. The Scene means something only if none were added.
-Scene scene_from_json(const nlohmann::json& value, const JsonPointer& path, ConfigErrors& errors);
+// Reads a scene embedded at `path` in a larger document (an accuracy suite's scene), adding its
+// errors, with their full paths, to the caller's `errors`; a record's relative "file" is taken from
+// base_folder (the document's folder). The Scene means something only if no errors were added.
+Scene scene_from_json(const nlohmann::json& value, const JsonPointer& path, ConfigErrors& errors,
+                      const std::filesystem::path& base_folder);
 
 // Reads and checks a scene file (ConfigError for a malformed or invalid one, std::system_error if
 // it cannot be read).

@@ -18,6 +18,10 @@ void set_pulse(GroundMotion& motion, double amplitude_g, const double* period, d
         using T = std::decay_t<decltype(pulse)>;
         if constexpr (std::is_same_v<T, NoMotion>) {
           throw std::invalid_argument("a study's base scene needs a pulse to scale");
+        } else if constexpr (std::is_same_v<T, RecordedMotion>) {
+          // A record's intensity is its peak ground acceleration (study_config refuses a zero peak).
+          if (period) throw std::invalid_argument("a period input needs a cosine or sine pulse");
+          pulse.scale = amplitude_g / peak_acceleration_g(*pulse.record);
         } else if constexpr (std::is_same_v<T, MavroeidisPapageorgiouPulse>) {
           // Given by its velocity: scaled so its peak |lambda| (its PGA in g) is the intensity
           // (study_config refuses a zero velocity amplitude).

@@ -2,7 +2,8 @@
 # `blockfrag simulate` end to end: every scene of tests/data/bad_scenes is refused with exit code 2
 # and the messages of its .expected file on stderr; the paper's example gives exactly one JSON
 # object with every summary key, a report, and a history CSV; command-line errors exit 2, I/O
-# errors 1, a failed simulation 3. Prints "N passed, M failed" last; exits non-zero on any failure.
+# errors 1, a failed simulation 3; a scene with a recorded ground motion named relative to its folder
+# runs, and a missing record exits 2. Prints "N passed, M failed" last; exits non-zero on any failure.
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
 
@@ -124,6 +125,42 @@ for key in ("status", "overturned", "overturn_time", "max_abs_theta", "final_the
             "modes", "end_time"):
     assert plain[key] == observed[key], (key, plain[key], observed[key])
 ' "$work/summary.json" "$work/out"
+
+# --- A recorded ground motion --------------------------------------------------------------------------------
+# The scene names its record by a path relative to the scene file's folder, not to the working folder.
+# Scaled to a PGA of 0.15 g, below a/b = 0.2 and mu = 0.7, the block cannot move at all; scaled to 0.5 g
+# it rocks.
+record_scene="$BLOCKFRAG_SOURCE_DIR/tests/data/records/record_scene.json"
+(cd "$work" && "$BLOCKFRAG" simulate "$record_scene" --summary-json >"$work/out" 2>"$work/err")
+code=$?
+check "a scene with a relative record exits 0 from another folder (got $code: $(head -c 300 "$work/err"))" \
+  test "$code" -eq 0
+check "below a/b and mu the record does not move the block" "$PYTHON" -c '
+import json, sys
+summary = json.load(open(sys.argv[1]))
+assert summary["status"] == "ok", summary["status"]
+assert summary["max_abs_theta"] == 0 and summary["final_slide"] == 0, summary
+assert [mode for t, mode in summary["modes"]] == ["rest"], summary["modes"]
+' "$work/out"
+"$PYTHON" -c '
+import json, sys
+scene = json.load(open(sys.argv[1]))
+scene["ground_motion"]["file"] = sys.argv[3] + "/decaying_sine.AT2"
+scene["ground_motion"]["target_pga_g"] = 0.5
+json.dump(scene, open(sys.argv[2], "w"))
+scene["ground_motion"]["file"] = "no_such_record.AT2"
+json.dump(scene, open(sys.argv[2] + ".missing", "w"))
+' "$record_scene" "$work/record_strong.json" "$(dirname "$record_scene")"
+run simulate "$work/record_strong.json" --summary-json
+check "the record scaled to 0.5 g rocks the block (exit $code)" "$PYTHON" -c '
+import json, sys
+summary = json.load(open(sys.argv[1]))
+assert summary["status"] == "ok" and summary["max_abs_theta"] > 1e-3, summary
+' "$work/out"
+run simulate "$work/record_strong.json.missing"
+check "a missing record exits 2 naming the file (got $code: $(head -c 300 "$work/err"))" \
+  grep -qF "/ground_motion/file: $work/no_such_record.AT2: no such file" "$work/err"
+check "and exits 2" test "$code" -eq 2
 
 # --- Exit codes --------------------------------------------------------------------------------------------
 run simulate "$work/no_such_scene.json"

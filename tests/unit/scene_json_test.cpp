@@ -142,11 +142,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "/ground_motion/amplitude_g: must be a finite number (got \"NaN\"; JSON has no NaN or Infinity)"},
         RuleCase{"/ground_motion/type", "cosine",
                  "/ground_motion/type: must be one of \"none\", \"cosine_pulse\", \"sine_pulse\", "
-                 "\"rectangular_pulse\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
+                 "\"rectangular_pulse\", \"record\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
                  "\"mavroeidis_papageorgiou\" (got \"cosine\")"},
         RuleCase{"/ground_motion/type", "sine_puls",
                  "/ground_motion/type: must be one of \"none\", \"cosine_pulse\", \"sine_pulse\", "
-                 "\"rectangular_pulse\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
+                 "\"rectangular_pulse\", \"record\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
                  "\"mavroeidis_papageorgiou\" (got \"sine_puls\"; did you mean \"sine_pulse\"?)"},
         RuleCase{"/duration", 0, "/duration: must be > 0 (got 0)"},
         RuleCase{"/duration", "4", "/duration: must be a number, not a string (got \"4\")"},
@@ -220,7 +220,7 @@ TEST(SceneJson, EmbeddedSceneReportsFullPathsIntoTheCallersErrors) {
   const json study = {{"seed", 1}, {"scene", with(paper_scene(), "/contact/friction", -1)}};
   ConfigErrors errors("study.json");
   errors.add(JsonPointer("/seed"), "an earlier error");
-  scene_from_json(study["scene"], JsonPointer("/scene"), errors);
+  scene_from_json(study["scene"], JsonPointer("/scene"), errors, "");
   try {
     errors.throw_if_any();
     FAIL() << "accepted";
