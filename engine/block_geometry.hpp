@@ -1,8 +1,11 @@
 // The rigid block's shape and mass properties, in body coordinates centred on the centre of mass.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "engine/scene.hpp"
 
@@ -23,26 +26,30 @@ inline Corner other(Corner corner) { return corner == Corner::left ? Corner::rig
 
 class BlockGeometry {
  public:
-  static constexpr int kCorners = 4;
-
+  // A rectangle is the polygon with its four corners: one path for every block, so a polygon given
+  // a rectangle's vertices is that rectangle to the last bit.
   explicit BlockGeometry(const RectangularBlock& block)
-      : mass_(block.mass),
-        corners_{{{-block.half_width, -block.half_height},
-                  {block.half_width, -block.half_height},
-                  {block.half_width, block.half_height},
-                  {-block.half_width, block.half_height}}},
-        size_(std::hypot(block.half_width, block.half_height)),
-        inertia_per_mass_(size_ * size_ / 3.0),
-        rest_height_(block.half_height) {}
+      : BlockGeometry(PolygonBlock{{{-block.half_width, -block.half_height},
+                                    {block.half_width, -block.half_height},
+                                    {block.half_width, block.half_height},
+                                    {-block.half_width, block.half_height}},
+                                   block.mass}) {}
+  // Mass properties from the polygon (engine/polygon_properties.hpp); it must have no defect.
+  explicit BlockGeometry(const PolygonBlock& block);
 
-  // Corners 0 and 1 are the base's left and right ends; 2 and 3 the top's.
+  // Corners 0 and 1 are the base's left and right ends; the others follow counter-clockwise
+  // (2 and 3 are the top's right and left for a rectangle). A polygon's corners are its convex
+  // hull's: a reflex corner never touches a flat ground.
+  int corner_count() const { return static_cast<int>(corners_.size()); }
   Vec2 corner(int i) const { return corners_[static_cast<std::size_t>(i)]; }
   Vec2 base_corner(Corner c) const { return corner(static_cast<int>(c)); }
 
   double mass() const { return mass_; }
   double inertia() const { return mass_ * inertia_per_mass_; }
   double inertia_per_mass() const { return inertia_per_mass_; }  // I/M
-  double size() const { return size_; }                          // R: the length scale
+  // R, the length scale: the largest distance of a corner from the centre of mass (the rectangle's
+  // half-diagonal), so omega^2 R bounds every corner's centripetal acceleration.
+  double size() const { return size_; }
   double rest_height() const { return rest_height_; }  // centre of mass above the base
 
   // Rocking about a base corner cannot start while lambda stays within these (a/b for a rectangle):
@@ -51,17 +58,48 @@ class BlockGeometry {
     const Vec2 r = base_corner(c);
     return std::abs(r.x) / -r.y;
   }
-  // Flat sliding keeps both base corners down only while friction's moment about the centre of mass
-  // is below what the normal forces can balance: mu <= a/b for a rectangle.
+  // Flat sliding with slip sign s keeps both base corners down only while friction's moment about
+  // the centre of mass is below what the normal forces can balance: mu <= the leading corner's
+  // tip threshold (the right corner's when sliding to +x), a/b for a rectangle either way.
+  double flat_slide_friction_limit(int slip_sign) const {
+    return tip_threshold(slip_sign > 0 ? Corner::right : Corner::left);
+  }
+  // The same for whichever way it slides.
   double flat_slide_friction_limit() const {
-    const Vec2 l = base_corner(Corner::left), r = base_corner(Corner::right);
-    return std::min(-l.x, r.x) / -l.y;
+    return std::min(tip_threshold(Corner::left), tip_threshold(Corner::right));
+  }
+  // |theta| at which rocking about this base corner lays the face next to it on the ground (the
+  // block has overturned): counter-clockwise about the left corner, clockwise about the right; pi/2
+  // for a rectangle. While theta stays within (-angle(right), angle(left)) only base corners can be
+  // the lowest point of the block (a corner of its convex hull).
+  double overturn_angle(Corner c) const { return overturn_angle_[static_cast<std::size_t>(c)]; }
+  // theta that lays the block on the face next to the corner it rotates towards (sign of theta).
+  double overturn_theta(double direction) const {
+    return direction > 0 ? overturn_angle(Corner::left) : -overturn_angle(Corner::right);
+  }
+  // How far theta is from overturning either way (> 0 inside; pi/2 - |theta| for a rectangle).
+  double overturn_margin(double theta) const {
+    return std::min(overturn_angle(Corner::left) - theta, overturn_angle(Corner::right) + theta);
   }
 
  private:
   double mass_;
-  std::array<Vec2, kCorners> corners_;
+  std::vector<Vec2> corners_;
   double size_, inertia_per_mass_, rest_height_;
+  std::array<double, 2> overturn_angle_;  // by Corner
 };
+
+// The geometry of the scene's block: its polygon if it has one, else the rectangle.
+inline BlockGeometry scene_geometry(const Scene& scene) {
+  return scene.polygon ? BlockGeometry(*scene.polygon) : BlockGeometry(scene.block);
+}
+
+// alpha, the angle results are measured in (max |theta| / alpha): atan(a/b) for a rectangle; for a
+// polygon, atan of the easier corner's tip threshold, the tilt at which the block balances on that
+// corner (the smaller of its two alphas).
+inline double block_alpha(const Scene& scene) {
+  if (!scene.polygon) return std::atan2(scene.block.half_width, scene.block.half_height);
+  return std::atan(BlockGeometry(*scene.polygon).flat_slide_friction_limit());
+}
 
 }  // namespace blockfrag

@@ -207,7 +207,7 @@ Mode ContactResolver::classify_flat(BlockState& s, double lambda) const {
   lay_flat(s);
   if (std::abs(s.vx) > velocity_tol_) {
     const int slip = sign_of(s.vx);
-    if (mu_ <= geometry_.flat_slide_friction_limit()) return SlideMode{slip};
+    if (mu_ <= geometry_.flat_slide_friction_limit(slip)) return SlideMode{slip};
     const Corner leading = slip > 0 ? Corner::right : Corner::left;
     for (const Corner k : {leading, other(leading)}) {
       if (can_slide_rock(s, k, slip, lambda, true)) return SlideRockMode{k, slip};

@@ -55,7 +55,7 @@ std::optional<double> first_landing(const BlockGeometry& geometry, const FlightS
                                     double tau_max, double min_step) {
   const double bound = g + f.omega * f.omega * geometry.size();
   std::optional<double> first;
-  for (int corner = 0; corner < BlockGeometry::kCorners; ++corner) {
+  for (int corner = 0; corner < geometry.corner_count(); ++corner) {
     const CornerHeight h{geometry, f, g, corner};
     const double limit = first ? *first : tau_max;
     const double tolerance = 4e-16 * (1.0 + limit);

@@ -45,14 +45,14 @@ struct SystemContext {
     return rotate(geometry->base_corner(corner), std::cos(theta), std::sin(theta));
   }
   double velocity_scale() const { return std::sqrt(g * geometry->size()); }
+  // The guard that stops the run: the block lies on another face (|theta| = pi/2 for a rectangle).
+  double overturn_margin(double theta) const { return geometry->overturn_margin(theta); }
 };
 
 struct ContactForces {
   double friction, normal;  // per unit mass
 };
 
-// The guard that stops the run: |theta| reaching pi/2.
-inline double overturn_margin(double theta) { return std::numbers::pi / 2 - std::abs(theta); }
 
 // Flat on the base, slipping with sign s: x'' = (lambda - s mu) g.  q = (x, vx).
 struct SlideSystem {
@@ -95,7 +95,7 @@ struct RockSystem {
     const CornerContact k = contact(t, q);
     const Vec2 r = arm(q[0], pivot), r_other = arm(q[0], other(pivot));
     return {k.normal / c.g, (c.mu * k.normal - std::abs(k.friction)) / c.g,
-            (r_other.y - r.y) / c.length_scale(), overturn_margin(q[0])};
+            (r_other.y - r.y) / c.length_scale(), c.overturn_margin(q[0])};
   }
   BlockState full(double, const OdeState<N>& q) const {
     const Vec2 r = arm(q[0], pivot);
@@ -133,7 +133,7 @@ struct SlideRockSystem {
     const double d = denominator(q) / c.geometry->inertia_per_mass() - kPainleveMargin;
     const Vec2 r = arm(q[0], pivot), r_other = arm(q[0], other(pivot));
     return {contact(t, q).normal / c.g, s * q[3] / c.velocity_scale(), (r_other.y - r.y) / R,
-            overturn_margin(q[0]), d};
+            c.overturn_margin(q[0]), d};
   }
   BlockState full(double, const OdeState<N>& q) const {
     const Vec2 r = arm(q[0], pivot);

@@ -1,13 +1,11 @@
 // One simulation's inputs: block, contact, excitation, solver. Plain values, SI units.
 #pragma once
 
-#include <filesystem>
-#include <memory>
+#include <array>
 #include <optional>
-#include <string>
 #include <variant>
+#include <vector>
 
-#include "engine/accelerogram.hpp"
 #include "engine/near_fault_pulses.hpp"
 
 namespace blockfrag {
@@ -17,6 +15,15 @@ struct RectangularBlock {
   double half_width = 0.5;   // a, m
   double half_height = 1.0;  // b, m
   double mass = 1.0;         // kg; no result depends on it, impulses and forces scale with it
+};
+
+// Any simple polygon resting on its one lowest edge: vertices (x, y) in metres, counter-clockwise,
+// from any vertex and in any frame (the centre of mass is computed; uniform density). Rocks about
+// the two ends of the base edge; the ground touches only its convex hull; it lies on another face
+// of the hull (overturns) when that face reaches the ground.
+struct PolygonBlock {
+  std::vector<std::array<double, 2>> vertices;
+  double mass = 1.0;  // kg, of the whole block (e.g. per metre of a dam's length)
 };
 
 struct Contact {
@@ -40,19 +47,10 @@ struct RectangularPulse {   // lambda = A for 0 <= t < duration
   double amplitude_g = 1.0;
   double duration = 1.0;
 };
-// A recorded accelerogram a(t) (in g) is the ground's acceleration: lambda = -scale a(t), linear
-// between samples, zero before the first and after the last. The samples are shared, not copied,
-// when scenes are copied.
-struct RecordedMotion {
-  std::string file;            // as the scene gave it (for output)
-  std::filesystem::path path;  // resolved, absolute
-  double scale = 1.0;
-  std::shared_ptr<const Accelerogram> record;
-};
 // The near-fault pulses (Makris A, B, C_n, Ricker, Mavroeidis-Papageorgiou) are in
 // engine/near_fault_pulses.hpp with their formulas.
-using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse, RecordedMotion, MakrisPulseA,
-                                  MakrisPulseB, MakrisPulseC, RickerWavelet, MavroeidisPapageorgiouPulse>;
+using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse, MakrisPulseA, MakrisPulseB,
+                                  MakrisPulseC, RickerWavelet, MavroeidisPapageorgiouPulse>;
 
 // The block sits on the crest of a gravity dam: the foundation motion reaches it through the dam's
 // fundamental mode, a damped oscillator (engine/dam_crest.hpp). The period is given, or estimated
@@ -93,6 +91,8 @@ struct InitialState {
 
 struct Scene {
   RectangularBlock block;
+  // When set, the block is this polygon and `block` above is not used.
+  std::optional<PolygonBlock> polygon;
   Contact contact;
   GroundMotion ground_motion = NoMotion{};
   std::optional<DamCrest> dam;  // none: the block stands on the foundation

@@ -70,7 +70,7 @@ class Simulation {
  public:
   Simulation(const Scene& scene, double output_interval)
       : scene_(scene),
-        geometry_(scene.block),
+        geometry_(scene_geometry(scene)),
         motion_(scene_motion(scene)),
         resolver_(geometry_, scene.contact, scene.g),
         observer_(summary_, output_interval, scene.g),
@@ -209,7 +209,7 @@ double Simulation::step_cap(const MotionPiece& piece) const {
 void Simulation::overturn_at(double t, const BlockState& s) {
   t_ = t;
   state_ = s;
-  state_.theta = std::copysign(std::numbers::pi / 2, s.theta);
+  state_.theta = geometry_.overturn_theta(s.theta);
   summary_.overturned = true;
   summary_.overturn_time = t;
   observer_.observe_state(state_);
@@ -268,7 +268,7 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
   double t_end = t_stop;
   bool overturns = false;
   if (start.omega != 0.0) {
-    const double tau = (std::copysign(std::numbers::pi / 2, start.omega) - start.theta) / start.omega;
+    const double tau = (geometry_.overturn_theta(start.omega) - start.theta) / start.omega;
     if (tau > 0 && t0 + tau < t_end) {
       t_end = t0 + tau;
       overturns = true;
