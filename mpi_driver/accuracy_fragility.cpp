@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/block_geometry.hpp"
 #include "engine/simulate.hpp"
 #include "mpi_driver/accuracy_metrics.hpp"
 #include "mpi_driver/study_runner.hpp"
@@ -30,7 +31,7 @@ StudyResults run_in_process(const StudyConfig& config, const SceneEvaluator& eva
     results.records.push_back(evaluate_sample(sampler, i, evaluate));
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     const Scene scene = geometry.draw(i).scene;
-    results.alphas.push_back(std::atan2(scene.block.half_width, scene.block.half_height));
+    results.alphas.push_back(block_alpha(scene));
   }
   results.median_seconds = sample_quantile(seconds, 0.5);
   return results;

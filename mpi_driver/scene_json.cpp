@@ -1,14 +1,14 @@
 #include "mpi_driver/scene_json.hpp"
 
-#include <filesystem>
-#include <memory>
 #include <numbers>
 #include <optional>
 #include <type_traits>
 
-#include "engine/accelerogram.hpp"
+#include "engine/block_geometry.hpp"
+#include "engine/polygon_properties.hpp"
 #include "mpi_driver/config_reader.hpp"
 #include "mpi_driver/dam_json.hpp"
+#include "mpi_driver/polygon_json.hpp"
 #include "mpi_driver/pulse_json.hpp"
 #include "sampling/validation.hpp"  // format_number
 
@@ -20,13 +20,23 @@ using nlohmann::json;
 
 const Range positive = Range::greater_than(0.0);
 
-RectangularBlock read_block(ObjectReader reader) {
-  RectangularBlock block;
-  block.half_width = reader.required_number("half_width", positive).value_or(block.half_width);
-  block.half_height = reader.required_number("half_height", positive).value_or(block.half_height);
-  block.mass = reader.number_or("mass", block.mass, positive);
+// A rectangle (half_width, half_height) or a polygon (mpi_driver/polygon_json.hpp).
+void read_block(ObjectReader reader, Scene& scene) {
+  RectangularBlock& block = scene.block;
+  if (reader.has("polygon")) {
+    PolygonBlock polygon;
+    polygon.vertices = read_polygon(*reader.raw("polygon"), reader.path_of("polygon"), reader.errors());
+    for (const char* key : {"half_width", "half_height"}) {
+      if (reader.has(key)) reader.add_error(key, "give either polygon or half_width and half_height, not both");
+    }
+    polygon.mass = reader.number_or("mass", polygon.mass, positive);
+    scene.polygon = std::move(polygon);
+  } else {
+    block.half_width = reader.required_number("half_width", positive).value_or(block.half_width);
+    block.half_height = reader.required_number("half_height", positive).value_or(block.half_height);
+    block.mass = reader.number_or("mass", block.mass, positive);
+  }
   reader.finish();
-  return block;
 }
 
 Contact read_contact(ObjectReader reader) {
@@ -55,48 +65,16 @@ RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
   return pulse;
 }
 
-// The samples are read here, so a record that cannot be used is refused with the scene, at
-// /ground_motion/file, with the reader's "<file>:<line>: <reason>".
-RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& base_folder) {
-  RecordedMotion motion;
-  const auto file = reader.required_string("file");
-  const auto scale = reader.number("scale");
-  const auto target_pga = reader.number("target_pga_g", positive);
-  if (scale && target_pga) reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
-  if (file && file->empty()) reader.add_error("file", "must not be empty");
-  if (!file || file->empty()) return motion;
-  motion.file = *file;
-  const std::filesystem::path path = base_folder / *file;  // an absolute file replaces the folder
-  motion.path = std::filesystem::absolute(path).lexically_normal();
-  try {
-    motion.record = std::make_shared<const Accelerogram>(read_accelerogram(path));
-  } catch (const RecordError& error) {
-    reader.add_error("file", error.what());
-    return motion;
-  }
-  motion.scale = scale.value_or(1.0);
-  if (target_pga) {
-    const double peak = peak_acceleration_g(*motion.record);
-    if (peak > 0) {
-      motion.scale = *target_pga / peak;
-    } else {
-      reader.add_error("target_pga_g", "cannot scale " + path.string() + " to a peak: its accelerations are all 0");
-    }
-  }
-  return motion;
-}
-
-GroundMotion read_ground_motion(ObjectReader reader, const std::filesystem::path& base_folder) {
-  const auto type =
-      reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", "record", makris_a_type,
-                                      makris_b_type, makris_c_type, ricker_type, mavroeidis_papageorgiou_type});
+GroundMotion read_ground_motion(ObjectReader reader) {
+  const auto type = reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", makris_a_type,
+                                                    makris_b_type, makris_c_type, ricker_type,
+                                                    mavroeidis_papageorgiou_type});
   // Without a valid type nobody knows which keys belong here: report nothing more.
   if (!type) return NoMotion{};
   GroundMotion motion = NoMotion{};
   if (*type == "cosine_pulse") motion = read_periodic_pulse<CosinePulse>(reader);
   if (*type == "sine_pulse") motion = read_periodic_pulse<SinePulse>(reader);
   if (*type == "rectangular_pulse") motion = read_rectangular_pulse(reader);
-  if (*type == "record") motion = read_record(reader, base_folder);
   if (auto pulse = read_near_fault_pulse(*type, reader)) motion = *pulse;
   reader.finish("for type \"" + *type + "\"");
   return motion;
@@ -143,6 +121,18 @@ SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) 
   return solver;
 }
 
+// A polygon may lay a face next to its base on the ground before pi/2: the tilt must stop short.
+void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPointer& path, ConfigErrors& errors) {
+  if (polygon_defect(polygon.vertices)) return;  // reported at the polygon
+  const BlockGeometry geometry(polygon);
+  const double low = -geometry.overturn_angle(Corner::right), high = geometry.overturn_angle(Corner::left);
+  if (!(theta > low && theta < high)) {
+    errors.add(path, "must be in (" + format_number(low) + ", " + format_number(high) +
+                         ") for this polygon, the tilts that lay a face next to its base on the ground (got " +
+                         format_number(theta) + ")");
+  }
+}
+
 InitialState read_initial(ObjectReader reader) {
   InitialState initial;
   const double half_pi = std::numbers::pi / 2;
@@ -162,8 +152,6 @@ json ground_motion_to_json(const GroundMotion& motion) {
                   {"amplitude_g", pulse.amplitude_g},
                   {"period", pulse.period},
                   {"cycles", pulse.cycles}};
-        } else if constexpr (std::is_same_v<Pulse, RecordedMotion>) {
-          return {{"type", "record"}, {"file", pulse.file}, {"scale", pulse.scale}};
         } else if constexpr (std::is_same_v<Pulse, MakrisPulseA> || std::is_same_v<Pulse, MakrisPulseB> ||
                              std::is_same_v<Pulse, MakrisPulseC> || std::is_same_v<Pulse, RickerWavelet> ||
                              std::is_same_v<Pulse, MavroeidisPapageorgiouPulse>) {
@@ -193,24 +181,24 @@ json solver_to_json(const SolverSettings& solver) {
 
 Scene scene_from_json(const json& document, const std::string& source) {
   ConfigErrors errors(source);
-  Scene scene = scene_from_json(document, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
+  Scene scene = scene_from_json(document, JsonPointer{}, errors);
   errors.throw_if_any();
   return scene;
 }
 
-Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& errors,
-                      const std::filesystem::path& base_folder) {
+Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& errors) {
   ObjectReader root(value, path, errors);
   Scene scene;
-  scene.block = read_block(root.required_object("block"));
+  read_block(root.required_object("block"), scene);
   scene.contact = read_contact(root.required_object("contact"));
-  scene.ground_motion = read_ground_motion(root.required_object("ground_motion"), base_folder);
+  scene.ground_motion = read_ground_motion(root.required_object("ground_motion"));
   scene.dam = read_dam(root.object("dam"));
   const auto duration = root.required_number("duration", positive);
   if (duration) scene.duration = *duration;
   scene.g = root.number_or("g", scene.g, positive);
   scene.solver = read_solver(root.object("solver"), duration);
   scene.initial = read_initial(root.object("initial"));
+  if (scene.polygon) check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);
   root.finish();
   return scene;
 }
@@ -221,9 +209,10 @@ Scene read_scene_file(const std::filesystem::path& path) {
 
 json scene_to_json(const Scene& scene) {
   json out = {{"block",
-           {{"half_width", scene.block.half_width},
-            {"half_height", scene.block.half_height},
-            {"mass", scene.block.mass}}},
+           scene.polygon ? polygon_to_json(*scene.polygon)
+                         : json{{"half_width", scene.block.half_width},
+                                {"half_height", scene.block.half_height},
+                                {"mass", scene.block.mass}}},
           {"contact", {{"friction", scene.contact.friction}, {"restitution", scene.contact.restitution}}},
           {"ground_motion", ground_motion_to_json(scene.ground_motion)},
           {"duration", scene.duration},

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "engine/block_geometry.hpp"
 #include "engine/simulate.hpp"
 #include "mpi_driver/history_csv.hpp"
 #include "mpi_driver/scene_json.hpp"
@@ -33,7 +34,7 @@ std::string time_or_never(const std::optional<double>& time) {
 }  // namespace
 
 void write_simulate_report(std::ostream& out, const Scene& scene, const Summary& summary) {
-  const double alpha = std::atan(scene.block.half_width / scene.block.half_height);
+  const double alpha = block_alpha(scene);
   if (summary.status == Status::failed) {
     out << "verdict: simulation FAILED at t = " << fixed(summary.end_time) << " s: " << summary.status_reason
         << "\n";
@@ -43,7 +44,8 @@ void write_simulate_report(std::ostream& out, const Scene& scene, const Summary&
     out << "verdict: did not overturn\n";
   }
   out << "max |theta|: " << fixed(summary.max_abs_theta) << " rad = " << fixed(summary.max_abs_theta / alpha)
-      << " alpha (alpha = atan(a/b) = " << fixed(alpha) << " rad)\n"
+      << " alpha (alpha = " << (scene.polygon ? "atan(easier corner's tip threshold)" : "atan(a/b)") << " = "
+      << fixed(alpha) << " rad)\n"
       << "final theta: " << fixed(summary.final_theta) << " rad\n"
       << "slide: final " << fixed(summary.final_slide) << " m, max |slide| " << fixed(summary.max_abs_slide)
       << " m\n"

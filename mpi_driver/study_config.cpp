@@ -165,6 +165,16 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
                      "give the geometry either as half_width/half_height or as alpha/R, not both");
   }
   if (!scene_valid) return;
+  // Sampling draws a rectangle's sizes; a polygon block keeps its shape (friction, restitution,
+  // period and direction still vary).
+  if (base.polygon) {
+    for (const StudyInput input : {StudyInput::half_width, StudyInput::half_height, StudyInput::alpha, StudyInput::R}) {
+      if (has(input)) {
+        reader.add_error(input_key(input), "varies a rectangle's size, but /scene/block is a polygon (studies keep "
+                                           "a polygon's shape)");
+      }
+    }
+  }
   const bool has_pulse = !std::holds_alternative<NoMotion>(base.ground_motion);
   const bool periodic = std::holds_alternative<CosinePulse>(base.ground_motion) ||
                         std::holds_alternative<SinePulse>(base.ground_motion);
@@ -333,11 +343,6 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
   config.intensity.levels = read_levels(root.required_object("intensity_measure"));
   if (scene_valid && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
     root.add_error("intensity_measure", "scales the pulse amplitude, but /scene/ground_motion has type \"none\"");
-  }
-  if (const auto* record = std::get_if<RecordedMotion>(&config.base_scene.ground_motion);
-      scene_valid && record && !(peak_acceleration_g(*record->record) > 0)) {
-    root.add_error("intensity_measure", "scales the record's peak acceleration, but every sample of " +
-                                            record->file + " is 0");
   }
   if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
       scene_valid && mp && mp->velocity_amplitude == 0.0) {

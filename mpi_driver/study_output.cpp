@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "engine/block_geometry.hpp"
 #include "mpi_driver/atomic_file.hpp"
 #include "mpi_driver/hdf5_file.hpp"
 #include "mpi_driver/study_fragility.hpp"
@@ -31,7 +32,7 @@ void write_samples(Hdf5Writer& file, const StudyConfig& config, std::vector<doub
     for (std::size_t k = 0; k < inputs.size(); ++k) inputs[k][i] = sample.values[k];
     level[i] = sample.level;
     im[i] = sample.im;
-    alphas[i] = std::atan2(sample.scene.block.half_width, sample.scene.block.half_height);
+    alphas[i] = block_alpha(sample.scene);
   }
   file.create_group("/samples");
   for (std::size_t k = 0; k < inputs.size(); ++k) {
