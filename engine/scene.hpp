@@ -1,11 +1,15 @@
 // One simulation's inputs: block, contact, excitation, solver. Plain values, SI units.
 #pragma once
 
-#include <array>
+#include <filesystem>
+#include <memory>
 #include <optional>
+#include <string>
+#include <array>
 #include <variant>
 #include <vector>
 
+#include "engine/accelerogram.hpp"
 #include "engine/near_fault_pulses.hpp"
 
 namespace blockfrag {
@@ -47,10 +51,19 @@ struct RectangularPulse {   // lambda = A for 0 <= t < duration
   double amplitude_g = 1.0;
   double duration = 1.0;
 };
+// A recorded accelerogram a(t) (in g) is the ground's acceleration: lambda = -scale a(t), linear
+// between samples, zero before the first and after the last. The samples are shared, not copied,
+// when scenes are copied.
+struct RecordedMotion {
+  std::string file;            // as the scene gave it (for output)
+  std::filesystem::path path;  // resolved, absolute
+  double scale = 1.0;
+  std::shared_ptr<const Accelerogram> record;
+};
 // The near-fault pulses (Makris A, B, C_n, Ricker, Mavroeidis-Papageorgiou) are in
 // engine/near_fault_pulses.hpp with their formulas.
-using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse, MakrisPulseA, MakrisPulseB,
-                                  MakrisPulseC, RickerWavelet, MavroeidisPapageorgiouPulse>;
+using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse, RecordedMotion, MakrisPulseA,
+                                  MakrisPulseB, MakrisPulseC, RickerWavelet, MavroeidisPapageorgiouPulse>;
 
 // The block sits on the crest of a gravity dam: the foundation motion reaches it through the dam's
 // fundamental mode, a damped oscillator (engine/dam_crest.hpp). The period is given, or estimated

@@ -102,6 +102,10 @@ void validate_scene(const Scene& scene) {
         if constexpr (std::is_same_v<M, RectangularPulse>) {
           require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
           require(positive(m.duration), "pulse duration must be > 0");
+        } else if constexpr (std::is_same_v<M, RecordedMotion>) {
+          require(m.record != nullptr, "a recorded motion needs its samples");
+          require(std::isfinite(m.scale), "record scale must be finite");
+          check_accelerogram(*m.record);
         } else if constexpr (std::is_same_v<M, MakrisPulseA> || std::is_same_v<M, MakrisPulseB> ||
                              std::is_same_v<M, MakrisPulseC> || std::is_same_v<M, RickerWavelet> ||
                              std::is_same_v<M, MavroeidisPapageorgiouPulse>) {

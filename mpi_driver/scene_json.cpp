@@ -1,9 +1,12 @@
 #include "mpi_driver/scene_json.hpp"
 
+#include <filesystem>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <type_traits>
 
+#include "engine/accelerogram.hpp"
 #include "engine/block_geometry.hpp"
 #include "engine/polygon_properties.hpp"
 #include "mpi_driver/config_reader.hpp"
@@ -65,16 +68,48 @@ RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
   return pulse;
 }
 
-GroundMotion read_ground_motion(ObjectReader reader) {
-  const auto type = reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", makris_a_type,
-                                                    makris_b_type, makris_c_type, ricker_type,
-                                                    mavroeidis_papageorgiou_type});
+// The samples are read here, so a record that cannot be used is refused with the scene, at
+// /ground_motion/file, with the reader's "<file>:<line>: <reason>".
+RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& base_folder) {
+  RecordedMotion motion;
+  const auto file = reader.required_string("file");
+  const auto scale = reader.number("scale");
+  const auto target_pga = reader.number("target_pga_g", positive);
+  if (scale && target_pga) reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
+  if (file && file->empty()) reader.add_error("file", "must not be empty");
+  if (!file || file->empty()) return motion;
+  motion.file = *file;
+  const std::filesystem::path path = base_folder / *file;  // an absolute file replaces the folder
+  motion.path = std::filesystem::absolute(path).lexically_normal();
+  try {
+    motion.record = std::make_shared<const Accelerogram>(read_accelerogram(path));
+  } catch (const RecordError& error) {
+    reader.add_error("file", error.what());
+    return motion;
+  }
+  motion.scale = scale.value_or(1.0);
+  if (target_pga) {
+    const double peak = peak_acceleration_g(*motion.record);
+    if (peak > 0) {
+      motion.scale = *target_pga / peak;
+    } else {
+      reader.add_error("target_pga_g", "cannot scale " + path.string() + " to a peak: its accelerations are all 0");
+    }
+  }
+  return motion;
+}
+
+GroundMotion read_ground_motion(ObjectReader reader, const std::filesystem::path& base_folder) {
+  const auto type =
+      reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", "record", makris_a_type,
+                                      makris_b_type, makris_c_type, ricker_type, mavroeidis_papageorgiou_type});
   // Without a valid type nobody knows which keys belong here: report nothing more.
   if (!type) return NoMotion{};
   GroundMotion motion = NoMotion{};
   if (*type == "cosine_pulse") motion = read_periodic_pulse<CosinePulse>(reader);
   if (*type == "sine_pulse") motion = read_periodic_pulse<SinePulse>(reader);
   if (*type == "rectangular_pulse") motion = read_rectangular_pulse(reader);
+  if (*type == "record") motion = read_record(reader, base_folder);
   if (auto pulse = read_near_fault_pulse(*type, reader)) motion = *pulse;
   reader.finish("for type \"" + *type + "\"");
   return motion;
@@ -152,6 +187,8 @@ json ground_motion_to_json(const GroundMotion& motion) {
                   {"amplitude_g", pulse.amplitude_g},
                   {"period", pulse.period},
                   {"cycles", pulse.cycles}};
+        } else if constexpr (std::is_same_v<Pulse, RecordedMotion>) {
+          return {{"type", "record"}, {"file", pulse.file}, {"scale", pulse.scale}};
         } else if constexpr (std::is_same_v<Pulse, MakrisPulseA> || std::is_same_v<Pulse, MakrisPulseB> ||
                              std::is_same_v<Pulse, MakrisPulseC> || std::is_same_v<Pulse, RickerWavelet> ||
                              std::is_same_v<Pulse, MavroeidisPapageorgiouPulse>) {
@@ -181,17 +218,18 @@ json solver_to_json(const SolverSettings& solver) {
 
 Scene scene_from_json(const json& document, const std::string& source) {
   ConfigErrors errors(source);
-  Scene scene = scene_from_json(document, JsonPointer{}, errors);
+  Scene scene = scene_from_json(document, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
   errors.throw_if_any();
   return scene;
 }
 
-Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& errors) {
+Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& errors,
+                      const std::filesystem::path& base_folder) {
   ObjectReader root(value, path, errors);
   Scene scene;
   read_block(root.required_object("block"), scene);
   scene.contact = read_contact(root.required_object("contact"));
-  scene.ground_motion = read_ground_motion(root.required_object("ground_motion"));
+  scene.ground_motion = read_ground_motion(root.required_object("ground_motion"), base_folder);
   scene.dam = read_dam(root.object("dam"));
   const auto duration = root.required_number("duration", positive);
   if (duration) scene.duration = *duration;

@@ -344,6 +344,11 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
   if (scene_valid && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
     root.add_error("intensity_measure", "scales the pulse amplitude, but /scene/ground_motion has type \"none\"");
   }
+  if (const auto* record = std::get_if<RecordedMotion>(&config.base_scene.ground_motion);
+      scene_valid && record && !(peak_acceleration_g(*record->record) > 0)) {
+    root.add_error("intensity_measure", "scales the record's peak acceleration, but every sample of " +
+                                            record->file + " is 0");
+  }
   if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
       scene_valid && mp && mp->velocity_amplitude == 0.0) {
     root.add_error("intensity_measure", "scales the pulse's peak acceleration, but /scene/ground_motion has "
