@@ -108,6 +108,23 @@ struct RockSystem {
   OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }
 };
 
+// Housner's rocking block: rocks on a corner that never slips or lifts (so no contact-force guards);
+// the other corner's landing and overturning end the mode.  q = (theta, omega).
+struct HousnerRockSystem {
+  static constexpr int N = 2, kGuards = 2;
+  static constexpr int kOverturnGuard = 1;
+  RockSystem rock;
+
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const { rock(t, q, dq); }
+  std::array<double, kGuards> guards(double, const OdeState<N>& q) const {
+    const Vec2 r = rock.arm(q[0], rock.pivot), r_other = rock.arm(q[0], other(rock.pivot));
+    return {(r_other.y - r.y) / rock.c.length_scale(), rock.c.overturn_margin(q[0])};
+  }
+  BlockState full(double t, const OdeState<N>& q) const { return rock.full(t, q); }
+  ContactForces forces(double t, const OdeState<N>& q) const { return rock.forces(t, q); }
+  OdeState<N> coordinates(const BlockState& b) const { return rock.coordinates(b); }
+};
+
 // Rocking about a slipping corner.  q = (theta, omega, pivot x, pivot x velocity).
 struct SlideRockSystem {
   static constexpr int N = 4, kGuards = 5;

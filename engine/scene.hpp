@@ -102,7 +102,18 @@ struct InitialState {
   double theta = 0.0;
 };
 
+// The physics a scene simulates ("effects" in a scene file). automatic ("auto"): everything the
+// inputs make possible, pruning what they make impossible (never changing a result). Otherwise the
+// flags name one model: rocking (+ impact): Housner's rocking block, which never slides or lifts off
+// (impacts with Housner's ratio; without impact the pivot changes without loss); sliding alone:
+// Newmark's sliding block, which never rocks; all four: the full model.
+struct Effects {
+  bool automatic = true;
+  bool rocking = true, sliding = true, impact = true, flight = true;
+};
+
 struct Scene {
+  Effects effects;
   RectangularBlock block;
   // When set, the block is this polygon and `block` above is not used.
   std::optional<PolygonBlock> polygon;

@@ -1,6 +1,7 @@
 #include "engine/scene_validation.hpp"
 
 #include "engine/block_geometry.hpp"
+#include "engine/model_choice.hpp"
 #include "engine/polygon_properties.hpp"
 
 #include <cmath>
@@ -18,6 +19,30 @@ void require(bool ok, const char* rule) {
 }
 
 bool positive(double v) { return std::isfinite(v) && v > 0; }
+
+// The block's shape and mass, and an initial tilt that leaves it on one of its base corners.
+void validate_block(const Scene& scene) {
+  const double theta = scene.initial.theta;
+  if (!scene.polygon) {
+    require(positive(scene.block.half_width), "block half_width must be > 0");
+    require(positive(scene.block.half_height), "block half_height must be > 0");
+    require(positive(scene.block.mass), "block mass must be > 0");
+    require(std::isfinite(theta) && std::abs(theta) < std::numbers::pi / 2,
+            "initial theta must be within (-pi/2, pi/2)");
+    return;
+  }
+  if (const auto defect = polygon_defect(scene.polygon->vertices)) {
+    const std::string where =
+        defect->vertex < 0 ? "" : " vertex " + std::to_string(defect->vertex) + ":";
+    throw std::invalid_argument("invalid scene: block polygon:" + where + " " + defect->rule);
+  }
+  require(positive(scene.polygon->mass), "block mass must be > 0");
+  const BlockGeometry geometry(*scene.polygon);
+  require(std::isfinite(theta) && theta > -geometry.overturn_angle(Corner::right) &&
+              theta < geometry.overturn_angle(Corner::left),
+          "initial theta must be within the tilts that lay the polygon on the faces next to its "
+          "base");
+}
 
 // The near-fault pulses (engine/near_fault_pulses.hpp).
 void require_valid(const MakrisPulseA& m) {
@@ -56,30 +81,6 @@ void validate_dam(const DamCrest& dam) {
   require(positive(dam.participation), "dam participation must be > 0");
 }
 
-// The block's shape and mass, and an initial tilt that leaves it on one of its base corners.
-void validate_block(const Scene& scene) {
-  const double theta = scene.initial.theta;
-  if (!scene.polygon) {
-    require(positive(scene.block.half_width), "block half_width must be > 0");
-    require(positive(scene.block.half_height), "block half_height must be > 0");
-    require(positive(scene.block.mass), "block mass must be > 0");
-    require(std::isfinite(theta) && std::abs(theta) < std::numbers::pi / 2,
-            "initial theta must be within (-pi/2, pi/2)");
-    return;
-  }
-  if (const auto defect = polygon_defect(scene.polygon->vertices)) {
-    const std::string where =
-        defect->vertex < 0 ? "" : " vertex " + std::to_string(defect->vertex) + ":";
-    throw std::invalid_argument("invalid scene: block polygon:" + where + " " + defect->rule);
-  }
-  require(positive(scene.polygon->mass), "block mass must be > 0");
-  const BlockGeometry geometry(*scene.polygon);
-  require(std::isfinite(theta) && theta > -geometry.overturn_angle(Corner::right) &&
-              theta < geometry.overturn_angle(Corner::left),
-          "initial theta must be within the tilts that lay the polygon on the faces next to its "
-          "base");
-}
-
 }  // namespace
 
 void validate_scene(const Scene& scene) {
@@ -90,6 +91,7 @@ void validate_scene(const Scene& scene) {
           "restitution must be in [0, 1]");
   require(positive(scene.duration), "duration must be > 0");
   require(positive(scene.g), "g must be > 0");
+  model_named_by(scene.effects);
   const SolverSettings& solver = scene.solver;
   require(positive(solver.dt), "solver dt must be > 0");
   require(positive(solver.tolerance) && solver.tolerance <= 0.1,

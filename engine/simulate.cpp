@@ -13,7 +13,9 @@
 #include "engine/dormand_prince_stepper.hpp"
 #include "engine/flight.hpp"
 #include "engine/gsl_stepper.hpp"
+#include "engine/model_choice.hpp"
 #include "engine/modes.hpp"
+#include "engine/reduced_contact.hpp"
 #include "engine/rk4_stepper.hpp"
 #include "engine/root_finding.hpp"
 #include "engine/scene_motion.hpp"
@@ -72,9 +74,14 @@ class Simulation {
       : scene_(scene),
         geometry_(scene_geometry(scene)),
         motion_(scene_motion(scene)),
+        model_(choose_model(scene, motion_, geometry_)),
         resolver_(geometry_, scene.contact, scene.g),
+        housner_(geometry_, scene.effects.automatic || scene.effects.impact, scene.g),
+        newmark_(geometry_, scene.contact.friction, scene.g),
         observer_(summary_, output_interval, scene.g),
-        log_impacts_(output_interval > 0) {}
+        log_impacts_(output_interval > 0) {
+    summary_.model = model_;
+  }
 
   void run();
   void finish();
@@ -87,6 +94,7 @@ class Simulation {
     return {&geometry_, &piece, scene_.g, scene_.contact.friction};
   }
   BlockState initial_state() const;
+  ContactOutcome resolve_contact() const;
   void enter(const ContactOutcome& outcome);
   void check_budget();
   double step_cap(const MotionPiece& piece) const;
@@ -103,8 +111,13 @@ class Simulation {
               {geometry_.size(), std::sqrt(scene_.g * geometry_.size())});
   }
   void advance(const RockMode& m, const MotionPiece& piece, double t_stop) {
-    integrate(RockSystem{context(piece), m.pivot, m.pivot_x}, piece, t_stop,
-              {1.0, std::sqrt(scene_.g / geometry_.size())});
+    const RockSystem rock{context(piece), m.pivot, m.pivot_x};
+    const OdeState<2> scale{1.0, std::sqrt(scene_.g / geometry_.size())};
+    if (model_ == Model::housner_rocking) {
+      integrate(HousnerRockSystem{rock}, piece, t_stop, scale);
+    } else {
+      integrate(rock, piece, t_stop, scale);
+    }
   }
   void advance(const SlideRockMode& m, const MotionPiece& piece, double t_stop) {
     const double R = geometry_.size(), g = scene_.g;
@@ -122,13 +135,17 @@ class Simulation {
   const Scene& scene_;
   BlockGeometry geometry_;
   GroundMotionPieces motion_;
+  Model model_;
   ContactResolver resolver_;
+  HousnerRules housner_;
+  NewmarkRules newmark_;
   Summary summary_;
   SegmentObserver observer_;
   double t_ = 0.0;
   BlockState state_;
   Mode mode_ = RestMode{};
   bool stopped_ = false;
+  int last_event_guard_ = -1;  // the guard that ended the last integrated stretch; -1: none did
   int stalled_events_ = 0;
   bool log_impacts_;
   std::vector<ImpactRecord> impact_log_;
@@ -147,6 +164,25 @@ BlockState Simulation::initial_state() const {
     s.y = -r.y;
   }
   return s;
+}
+
+ContactOutcome Simulation::resolve_contact() const {
+  const double lambda = motion_.lambda(t_);
+  switch (model_) {
+    case Model::newmark_sliding: return newmark_.resolve(state_, lambda);
+    case Model::housner_rocking:
+      if (const auto* rock = std::get_if<RockMode>(&mode_)) {
+        if (last_event_guard_ == 0) return housner_.impact(state_, rock->pivot, lambda);
+        ContactOutcome carry_on;
+        carry_on.mode = *rock;
+        carry_on.state = state_;
+        return carry_on;
+      }
+      return housner_.start(state_, lambda);
+    case Model::at_rest:
+    case Model::full: break;
+  }
+  return resolver_.resolve(state_, lambda);
 }
 
 void Simulation::enter(const ContactOutcome& outcome) {
@@ -222,9 +258,12 @@ void Simulation::advance(const RestMode&, const MotionPiece& piece, double t_sto
   const auto forces_at = [&](double t) { return resting_forces(piece, t); };
   // Rest holds while friction and both tipping moments hold; all depend on lambda alone, so its
   // extremes and the stop time are the only places to look.
-  const double mu = scene_.contact.friction;
-  const double tip_right = geometry_.tip_threshold(Corner::right);
-  const double tip_left = geometry_.tip_threshold(Corner::left);
+  // Housner's block never slides and Newmark's never tips.
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  const double mu = model_ == Model::housner_rocking ? kNever : scene_.contact.friction;
+  const bool tips = model_ != Model::newmark_sliding;
+  const double tip_right = tips ? geometry_.tip_threshold(Corner::right) : kNever;
+  const double tip_left = tips ? geometry_.tip_threshold(Corner::left) : kNever;
   // The exit is placed where lambda is past a threshold by kOnsetMargin, so the modes it leads to
   // see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
   const auto margin = [&](double t) {
@@ -433,6 +472,7 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     }
     t_ = t_event;
     state_ = at_event;
+    last_event_guard_ = which;
     return;
   }
   t_ = t_stop;
@@ -442,12 +482,13 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
 void Simulation::run() {
   state_ = initial_state();
   observer_.start(state_);
-  enter(resolver_.resolve(state_, motion_.lambda(0.0)));
+  enter(resolve_contact());
   const double t_end = scene_.duration;
   while (!stopped_ && t_ < t_end) {
     const MotionPiece& piece = motion_.piece_at(t_);
     const double t_stop = std::min(t_end, piece.end());
     const double t_before = t_;
+    last_event_guard_ = -1;
     std::visit([&](const auto& mode) { advance(mode, piece, t_stop); }, mode_);
     if (stopped_ || t_ >= t_end) break;
     stalled_events_ = t_ == t_before ? stalled_events_ + 1 : 0;
@@ -455,7 +496,7 @@ void Simulation::run() {
       throw SceneFailure("no progress: " + std::to_string(kMaxStalledEvents) +
                          " contact changes at t = " + std::to_string(t_) + " s");
     }
-    enter(resolver_.resolve(state_, motion_.lambda(t_)));
+    enter(resolve_contact());
   }
   finish();
 }

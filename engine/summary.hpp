@@ -18,9 +18,18 @@ struct ModeChange {
 
 enum class Status { ok, failed };
 
+// The model a scene ran: what its effects asked for, or what "auto" kept. at_rest: the ground never
+// reaches a threshold, answered without integrating.
+enum class Model { at_rest, newmark_sliding, housner_rocking, full };
+
+const char* model_name(Model model);
+// The effects the model simulates, e.g. {"rocking", "impact"}.
+std::vector<const char*> model_effects(Model model);
+
 struct Summary {
   Status status = Status::ok;
   std::string status_reason;  // empty when ok
+  Model model = Model::full;
 
   bool overturned = false;
   std::optional<double> overturn_time;

@@ -11,6 +11,7 @@
 #include "engine/polygon_properties.hpp"
 #include "mpi_driver/config_reader.hpp"
 #include "mpi_driver/dam_json.hpp"
+#include "mpi_driver/effects_json.hpp"
 #include "mpi_driver/polygon_json.hpp"
 #include "mpi_driver/pulse_json.hpp"
 #include "sampling/validation.hpp"  // format_number
@@ -227,6 +228,7 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
                       const std::filesystem::path& base_folder) {
   ObjectReader root(value, path, errors);
   Scene scene;
+  scene.effects = read_effects(root.raw("effects"), root.path_of("effects"), errors);
   read_block(root.required_object("block"), scene);
   scene.contact = read_contact(root.required_object("contact"));
   scene.ground_motion = read_ground_motion(root.required_object("ground_motion"), base_folder);
@@ -246,7 +248,8 @@ Scene read_scene_file(const std::filesystem::path& path) {
 }
 
 json scene_to_json(const Scene& scene) {
-  json out = {{"block",
+  json out = {{"effects", effects_to_json(scene.effects)},
+          {"block",
            scene.polygon ? polygon_to_json(*scene.polygon)
                          : json{{"half_width", scene.block.half_width},
                                 {"half_height", scene.block.half_height},

@@ -18,6 +18,8 @@ nlohmann::json summary_to_json(const Summary& summary) {
   const bool ok = summary.status == Status::ok;
   return {{"status", ok ? "ok" : "failed"},
           {"status_reason", ok ? nlohmann::json(nullptr) : nlohmann::json(summary.status_reason)},
+          {"model", model_name(summary.model)},
+          {"effects", model_effects(summary.model)},
           {"overturned", summary.overturned},
           {"overturn_time", optional_time(summary.overturn_time)},
           {"max_abs_theta", summary.max_abs_theta},

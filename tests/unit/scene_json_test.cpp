@@ -169,7 +169,29 @@ INSTANTIATE_TEST_SUITE_P(
                  "/ground_motion/duration: unknown key for type \"cosine_pulse\" (known keys: amplitude_g cycles "
                  "period type)"},
         RuleCase{"/solver/dt", json{{"nested", 1}}, "/solver/dt: must be a number (got an object)"},
-        RuleCase{"/durration", 4, "/durration: unknown key; did you mean \"duration\"?"}));
+        RuleCase{"/durration", 4, "/durration: unknown key; did you mean \"duration\"?"},
+        RuleCase{"/effects", "all", "/effects: must be \"auto\" or a list of effects"},
+        RuleCase{"/effects", json::array(), "/effects: must be \"auto\" or a non-empty list of effects"},
+        RuleCase{"/effects", json{"rocking", "rocking"}, "/effects/1: \"rocking\" is listed twice"},
+        RuleCase{"/effects", json{"rockin"},
+                 "/effects/0: must be one of \"rocking\", \"sliding\", \"impact\", \"flight\", \"vertical\" "
+                 "(got \"rockin\"; did you mean \"rocking\"?)"},
+        RuleCase{"/effects", json{"sliding", "impact"},
+                 "/effects: effects name no model: use [\"rocking\"] or [\"rocking\", \"impact\"] (Housner), "
+                 "[\"sliding\"] (Newmark), all of rocking, sliding, impact, flight (full), or \"auto\""}));
+
+TEST(SceneJson, EffectsNameAModelAndRoundTrip) {
+  const Scene housner = scene_from_json(with(paper_scene(), "/effects", json{"impact", "rocking"}), "scene.json");
+  EXPECT_FALSE(housner.effects.automatic);
+  EXPECT_TRUE(housner.effects.rocking && housner.effects.impact);
+  EXPECT_FALSE(housner.effects.sliding || housner.effects.flight);
+  EXPECT_EQ(scene_to_json(housner)["effects"], json({"rocking", "impact"}));
+  const Scene newmark = scene_from_json(with(paper_scene(), "/effects", json{"sliding"}), "scene.json");
+  EXPECT_EQ(scene_to_json(newmark)["effects"], json({"sliding"}));
+  EXPECT_TRUE(scene_from_json(with(paper_scene(), "/effects", "auto"), "scene.json").effects.automatic);
+  EXPECT_EQ(errors_of(with(paper_scene(), "/effects", json{"vertical"})),
+            "scene.json: /effects/0: vertical ground motion is not simulated yet");
+}
 
 TEST(SceneJson, KeysOfAnotherMethodOrTypeAreUnknown) {
   EXPECT_EQ(errors_of(with(paper_scene(), "/solver/dt", 0.001)),
@@ -238,6 +260,7 @@ TEST(SceneJson, RootMustBeAnObject) {
 TEST(SceneJson, CanonicalFormHasEveryKeyWithDefaults) {
   const json canonical = scene_to_json(scene_from_json(paper_scene(), "scene.json"));
   const json expected = json::parse(R"({
+    "effects": "auto",
     "block": {"half_width": 0.5, "half_height": 1.0, "mass": 1.0},
     "contact": {"friction": 0.6, "restitution": 0.6},
     "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 2.0, "cycles": 1.0},
