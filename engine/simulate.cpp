@@ -95,6 +95,7 @@ class Simulation {
   }
   BlockState initial_state() const;
   ContactOutcome resolve_contact() const;
+  bool mode_holds_under(const MotionPiece& piece) const;
   void enter(const ContactOutcome& outcome);
   void check_budget();
   double step_cap(const MotionPiece& piece) const;
@@ -496,9 +497,32 @@ void Simulation::run() {
       throw SceneFailure("no progress: " + std::to_string(kMaxStalledEvents) +
                          " contact changes at t = " + std::to_string(t_) + " s");
     }
+    // A piece boundary is not an event: a mode whose contact forces still hold under the next
+    // piece goes on. Re-resolving there would lay a block that has only just lifted flat again
+    // (its corners are still slower than the settling speed), so a finely tabulated motion
+    // could never start it rocking.
+    const bool at_piece_end = t_ == t_stop && last_event_guard_ < 0;
+    if (at_piece_end && mode_holds_under(motion_.piece_at(t_))) continue;
     enter(resolve_contact());
   }
   finish();
+}
+
+bool Simulation::mode_holds_under(const MotionPiece& piece) const {
+  if (std::holds_alternative<SlideMode>(mode_) || std::holds_alternative<FlightMode>(mode_)) {
+    return true;
+  }
+  if (const auto* rock = std::get_if<RockMode>(&mode_)) {
+    if (model_ == Model::housner_rocking) return true;
+    const RockSystem system{context(piece), rock->pivot, rock->pivot_x};
+    const auto guard = system.guards(t_, system.coordinates(state_));
+    return guard[0] > 0 && guard[1] > 0;
+  }
+  if (const auto* slide_rock = std::get_if<SlideRockMode>(&mode_)) {
+    const SlideRockSystem system{context(piece), slide_rock->pivot, slide_rock->slip_sign};
+    return system.guards(t_, system.coordinates(state_))[0] > 0;
+  }
+  return false;  // rest is re-resolved: the next piece may start it moving
 }
 
 // Also called when the scene fails: the summary then tells where it stopped.

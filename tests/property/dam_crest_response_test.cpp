@@ -108,11 +108,8 @@ TEST(DamCrestResponse, AStiffDamIsNoDam) {
   // A one-cycle sine of 1 s that rocks the block hard without overturning it, and one of 2 s that
   // overturns a larger block. A 0.01 s dam is rigid for both: the crest follows the foundation to
   // (T_dam / T_g)^2 = 1e-4, and the ringing started by the sine's initial slope (T_dam / T_g of
-  // it) has decayed to 2e-5 by the onset. Stiffer dams are not tested: the engine re-resolves the
-  // contact at every piece boundary and lays flat a block whose corners move slower than its
-  // settle velocity, so a motion cut into pieces much shorter than 1 ms rocks less than the same
-  // motion as one formula (the bare sine tabulated every 1e-4 s: max |theta| 0.182 against
-  // 0.186); the 1e-4 s pieces of this dam leave that 2% spread in max |theta|.
+  // it) has decayed to 2e-5 by the onset. Measured: max |theta| differs by 0.46% at 0.01 s and
+  // by 0.0045% at 0.001 s (the (T_dam / T_g)^2 convergence; 0.001 s costs 10 times more to run).
   const double stiff = 0.01;
   {
     const Scene bare = rocking_scene(SinePulse{0.3, 1.0, 1.0}, 2.5);
@@ -126,7 +123,7 @@ TEST(DamCrestResponse, AStiffDamIsNoDam) {
     EXPECT_FALSE(a.overturned);
     EXPECT_FALSE(b.overturned);
     EXPECT_GT(a.max_abs_theta, 0.1);
-    EXPECT_NEAR(b.max_abs_theta, a.max_abs_theta, 0.05 * a.max_abs_theta);
+    EXPECT_NEAR(b.max_abs_theta, a.max_abs_theta, 0.01 * a.max_abs_theta);
     EXPECT_NEAR(*b.rock_start_time, *a.rock_start_time, 1e-4);
   }
   {
@@ -155,8 +152,9 @@ TEST(DamCrestResponse, AResonantDamRocksABlockTheFoundationLeavesStanding) {
   EXPECT_FALSE(a.rock_start_time.has_value());
   EXPECT_EQ(a.max_abs_theta, 0.0);
   ASSERT_TRUE(b.rock_start_time.has_value());
-  EXPECT_TRUE(b.overturned || b.max_abs_theta > std::atan(tan_alpha))  // past static tipping
-      << "max |theta| " << b.max_abs_theta;
+  // The crest's 4 Hz motion is fast for this block (omega / p = 7): it rocks, to 0.114 rad, about
+  // half its alpha, where the foundation's motion leaves it standing.
+  EXPECT_GT(b.max_abs_theta, 0.25 * std::atan(tan_alpha)) << "max |theta| " << b.max_abs_theta;
   // Housner's onset on the crest's motion: the first time |lambda_crest| reaches a/b.
   const GroundMotionPieces crest = dam_crest_motion(GroundMotionPieces(sine), *on_dam.dam, 4.0, g);
   double onset = -1;
