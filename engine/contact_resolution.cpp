@@ -176,11 +176,11 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
   return false;
 }
 
-bool ContactResolver::can_rock(const BlockState& s, Corner pivot, double lambda,
+bool ContactResolver::can_rock(const BlockState& s, Corner pivot, double lambda, double gravity,
                                bool from_flat) const {
   const double c = std::cos(s.theta), sn = std::sin(s.theta);
   const Vec2 r = rotate(geometry_.base_corner(pivot), c, sn);
-  const CornerContact k = sticking_corner(r, s.omega, lambda, g_, geometry_.inertia_per_mass());
+  const CornerContact k = sticking_corner(r, s.omega, lambda, gravity, geometry_.inertia_per_mass());
   if (k.normal < 0 || std::abs(k.friction) > mu_ * k.normal) return false;
   if (!from_flat) return true;
   const Vec2 r_other = rotate(geometry_.base_corner(other(pivot)), c, sn);
@@ -188,12 +188,12 @@ bool ContactResolver::can_rock(const BlockState& s, Corner pivot, double lambda,
 }
 
 bool ContactResolver::can_slide_rock(const BlockState& s, Corner pivot, int slip, double lambda,
-                                     bool from_flat) const {
+                                     double gravity, bool from_flat) const {
   const double c = std::cos(s.theta), sn = std::sin(s.theta);
   const Vec2 r = rotate(geometry_.base_corner(pivot), c, sn);
   const double k2 = geometry_.inertia_per_mass();
   if (!slide_rock_well_posed(r, slip, mu_, k2)) return false;
-  const CornerContact k = slipping_corner(r, s.omega, slip, lambda, g_, mu_, k2);
+  const CornerContact k = slipping_corner(r, s.omega, slip, lambda, gravity, mu_, k2);
   if (k.normal < 0) return false;
   const double u_x = s.vx - s.omega * r.y;
   // Starting from stick, the corner must accelerate the way it is assumed to slip.
@@ -203,14 +203,14 @@ bool ContactResolver::can_slide_rock(const BlockState& s, Corner pivot, int slip
   return other_corner_lift_acceleration(r, r_other, s.omega, k.theta_dd) > 0;
 }
 
-Mode ContactResolver::classify_flat(BlockState& s, double lambda) const {
+Mode ContactResolver::classify_flat(BlockState& s, double lambda, double gravity) const {
   lay_flat(s);
   if (std::abs(s.vx) > velocity_tol_) {
     const int slip = sign_of(s.vx);
     if (mu_ <= geometry_.flat_slide_friction_limit(slip)) return SlideMode{slip};
     const Corner leading = slip > 0 ? Corner::right : Corner::left;
     for (const Corner k : {leading, other(leading)}) {
-      if (can_slide_rock(s, k, slip, lambda, true)) return SlideRockMode{k, slip};
+      if (can_slide_rock(s, k, slip, lambda, gravity, true)) return SlideRockMode{k, slip};
     }
     return SlideMode{slip};
   }
@@ -222,16 +222,16 @@ Mode ContactResolver::classify_flat(BlockState& s, double lambda) const {
   }
   const Corner k = lambda > 0 ? Corner::right : Corner::left;
   const int slip = sign_of(lambda);
-  if (can_rock(s, k, lambda, true)) {
+  if (can_rock(s, k, lambda, gravity, true)) {
     return RockMode{k, s.x + geometry_.base_corner(k).x};
   }
-  if (can_slide_rock(s, k, slip, lambda, true)) return SlideRockMode{k, slip};
+  if (can_slide_rock(s, k, slip, lambda, gravity, true)) return SlideRockMode{k, slip};
   if (!friction_holds) return SlideMode{slip};
   return RestMode{};
 }
 
 Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double lambda,
-                                          ContactOutcome& out) const {
+                                          double gravity, ContactOutcome& out) const {
   const double c = std::cos(s.theta), sn = std::sin(s.theta);
   const Vec2 r = rotate(geometry_.base_corner(pivot), c, sn);
   const double k2 = geometry_.inertia_per_mass();
@@ -243,7 +243,7 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
   if (std::abs(u_x) > velocity_tol_) {
     const int slip = sign_of(u_x);
     if (slide_rock_well_posed(r, slip, mu_, k2)) {
-      if (slipping_corner(r, s.omega, slip, lambda, g_, mu_, k2).normal < 0) return FlightMode{};
+      if (slipping_corner(r, s.omega, slip, lambda, gravity, mu_, k2).normal < 0) return FlightMode{};
       return SlideRockMode{pivot, slip};
     }
     // Within the margin of the boundary the jam's impulse may lie outside the cone by that
@@ -258,23 +258,24 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
     u_x = 0.0;
   }
   s.vx = s.omega * r.y;  // u_x = 0: the corner sticks for now
-  if (can_rock(s, pivot, lambda, false)) return RockMode{pivot, s.x + r.x};
+  if (can_rock(s, pivot, lambda, gravity, false)) return RockMode{pivot, s.x + r.x};
   // Slip the way friction cannot hold it first, then the other way (with V >= 0 either may be
   // the consistent one when sticking would need a pull from the ground).
-  const CornerContact stick = sticking_corner(r, s.omega, lambda, g_, k2);
+  const CornerContact stick = sticking_corner(r, s.omega, lambda, gravity, k2);
   const int slip = stick.friction > 0 ? -1 : 1;
   for (const int direction : {slip, -slip}) {
-    if (can_slide_rock(s, pivot, direction, lambda, false)) return SlideRockMode{pivot, direction};
+    if (can_slide_rock(s, pivot, direction, lambda, gravity, false)) return SlideRockMode{pivot, direction};
   }
   // Free, the corner would accelerate upward: it leaves the ground.
-  if (-g_ - s.omega * s.omega * r.y >= 0) return FlightMode{};
+  if (-gravity - s.omega * s.omega * r.y >= 0) return FlightMode{};
   // Painleve with the corner at rest: neither stick, slip nor lift-off is consistent; stick, and
   // say so.
   out.painleve = true;
   return RockMode{pivot, s.x + r.x};
 }
 
-ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda) const {
+ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
+                                        double gravity_factor) const {
   ContactOutcome out;
   out.state = state;
   BlockState& s = out.state;
@@ -295,10 +296,17 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda) 
                        std::max(std::abs(kl.u_y), std::abs(kr.u_y)) < settle_velocity_;
   const bool left = settles || (touches(kl) && kl.u_y <= velocity_tol_);
   const bool right = settles || (touches(kr) && kr.u_y <= velocity_tol_);
+  // The ground falling faster than g carries no load: nothing holds the block to it.
+  if (gravity_factor <= 0) {
+    out.mode = FlightMode{};
+    return out;
+  }
+  const double effective_lambda = lambda / gravity_factor, gravity = g_ * gravity_factor;
   if (left && right) {
-    out.mode = classify_flat(s, lambda);
+    out.mode = classify_flat(s, effective_lambda, gravity);
   } else if (left || right) {
-    out.mode = classify_one_corner(s, left ? Corner::left : Corner::right, lambda, out);
+    out.mode = classify_one_corner(s, left ? Corner::left : Corner::right, effective_lambda,
+                                   gravity, out);
   } else {
     out.mode = FlightMode{};
   }

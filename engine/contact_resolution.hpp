@@ -35,7 +35,8 @@ class ContactResolver {
   ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g,
                   ContactTolerances tolerances = {});
 
-  ContactOutcome resolve(const BlockState& state, double lambda) const;
+  // gravity_factor: 1 + lambda_v, gravity in the ground's frame over g.
+  ContactOutcome resolve(const BlockState& state, double lambda, double gravity_factor = 1.0) const;
 
  private:
   bool touches(const CornerKinematics& k) const { return k.height <= height_tol_; }
@@ -43,10 +44,13 @@ class ContactResolver {
   bool resolve_impacts(BlockState& s, ContactOutcome& out) const;
   bool flat_impact(BlockState& s, double e) const;
   void lay_flat(BlockState& s) const;
-  Mode classify_flat(BlockState& s, double lambda) const;
-  Mode classify_one_corner(BlockState& s, Corner pivot, double lambda, ContactOutcome& out) const;
-  bool can_rock(const BlockState& s, Corner pivot, double lambda, bool from_flat) const;
-  bool can_slide_rock(const BlockState& s, Corner pivot, int slip, double lambda,
+  // lambda and gravity here are the effective ones: lambda g / g_v and g_v = g (1 + lambda_v).
+  Mode classify_flat(BlockState& s, double lambda, double gravity) const;
+  Mode classify_one_corner(BlockState& s, Corner pivot, double lambda, double gravity,
+                           ContactOutcome& out) const;
+  bool can_rock(const BlockState& s, Corner pivot, double lambda, double gravity,
+                bool from_flat) const;
+  bool can_slide_rock(const BlockState& s, Corner pivot, int slip, double lambda, double gravity,
                       bool from_flat) const;
 
   const BlockGeometry& geometry_;

@@ -11,6 +11,7 @@ const char* model_name(Model model) {
     case Model::newmark_sliding: return "newmark_sliding";
     case Model::housner_rocking: return "housner_rocking";
     case Model::full: return "full";
+    case Model::full_vertical: return "full_vertical";
   }
   return "unknown";
 }
@@ -21,6 +22,7 @@ std::vector<const char*> model_effects(Model model) {
     case Model::newmark_sliding: return {"sliding"};
     case Model::housner_rocking: return {"rocking", "impact"};
     case Model::full: return {"rocking", "sliding", "impact", "flight"};
+    case Model::full_vertical: return {"rocking", "sliding", "impact", "flight", "vertical"};
   }
   return {};
 }
@@ -29,6 +31,11 @@ Model model_named_by(const Effects& effects) {
   if (effects.automatic) return Model::full;
   const Effects& e = effects;
   if (e.rocking && e.sliding && e.impact && e.flight) return Model::full;
+  if (e.vertical) {
+    throw std::invalid_argument(
+        "invalid scene: effects: vertical ground motion needs the full model (rocking, sliding, "
+        "impact, flight)");
+  }
   if (e.rocking && !e.sliding && !e.flight) return Model::housner_rocking;
   if (e.sliding && !e.rocking && !e.impact && !e.flight) return Model::newmark_sliding;
   throw std::invalid_argument(
@@ -45,6 +52,7 @@ double peak_abs_lambda(const GroundMotionPieces& motion) {
 
 Model choose_model(const Scene& scene, const GroundMotionPieces& motion,
                    const BlockGeometry& geometry) {
+  if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) return Model::full_vertical;
   if (!scene.effects.automatic) return model_named_by(scene.effects);
   const double mu = scene.contact.friction;
   const double tip = std::min(geometry.tip_threshold(Corner::left),

@@ -34,11 +34,20 @@ using Mode = std::variant<RestMode, SlideMode, RockMode, SlideRockMode, FlightMo
 
 ModeKind mode_kind(const Mode& mode);
 
-// What every system shares: the block, the contact, the ground motion piece being integrated.
+// What every system shares: the block, the contact, the ground motion pieces being integrated.
 struct SystemContext {
   const BlockGeometry* geometry;
-  const MotionPiece* piece;
+  const MotionPiece* piece;     // horizontal: lambda
+  const MotionPiece* vertical;  // lambda_v
   double g, mu;
+  // Gravity in the ground's frame over g: 1 + lambda_v. With it, each contact mode's equations are
+  // the horizontal-only ones with g_v = g (1 + lambda_v) for g and lambda g / g_v for lambda (an
+  // exact identity when lambda_v = 0). Exactly zero it would divide by zero: the contact has
+  // lost its load there, so any sign-preserving tiny value gives the same guard outcome.
+  double gravity_factor(double t) const {
+    const double factor = 1.0 + vertical->lambda(t);
+    return factor == 0.0 ? 1e-300 : factor;
+  }
   double length_scale() const { return geometry->size(); }
   // A base corner relative to the centre of mass, in the world frame.
   Vec2 arm(double theta, Corner corner) const {
@@ -54,23 +63,27 @@ struct ContactForces {
 };
 
 
-// Flat on the base, slipping with sign s: x'' = (lambda - s mu) g.  q = (x, vx).
+// Flat on the base, slipping with sign s: x'' = (lambda - s mu (1 + lambda_v)) g.  q = (x, vx).
+// Ends when the slip stops or the ground falls away faster than g (the load vanishes).
 struct SlideSystem {
-  static constexpr int N = 2, kGuards = 1;
+  static constexpr int N = 2, kGuards = 2;
   SystemContext c;
   int s;
 
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
     dq[0] = q[1];
-    dq[1] = (c.piece->lambda(t) - s * c.mu) * c.g;
+    dq[1] = (c.piece->lambda(t) - s * c.mu * c.gravity_factor(t)) * c.g;
   }
-  std::array<double, kGuards> guards(double, const OdeState<N>& q) const {
-    return {s * q[1] / c.velocity_scale()};
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    return {s * q[1] / c.velocity_scale(), c.gravity_factor(t)};
   }
   BlockState full(double, const OdeState<N>& q) const {
     return {q[0], c.geometry->rest_height(), 0.0, q[1], 0.0, 0.0};
   }
-  ContactForces forces(double, const OdeState<N>&) const { return {-s * c.mu * c.g, c.g}; }
+  ContactForces forces(double t, const OdeState<N>&) const {
+    const double normal = c.g * c.gravity_factor(t);
+    return {-s * c.mu * normal, normal};
+  }
   OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx}; }
 };
 
@@ -84,7 +97,8 @@ struct RockSystem {
 
   Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
   CornerContact contact(double t, const OdeState<N>& q) const {
-    return sticking_corner(arm(q[0], pivot), q[1], c.piece->lambda(t), c.g,
+    const double factor = c.gravity_factor(t);
+    return sticking_corner(arm(q[0], pivot), q[1], c.piece->lambda(t) / factor, c.g * factor,
                            c.geometry->inertia_per_mass());
   }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
@@ -138,7 +152,8 @@ struct SlideRockSystem {
     return slide_rock_denominator(arm(q[0], pivot), s, c.mu, c.geometry->inertia_per_mass());
   }
   CornerContact contact(double t, const OdeState<N>& q) const {
-    return slipping_corner(arm(q[0], pivot), q[1], s, c.piece->lambda(t), c.g, c.mu,
+    const double factor = c.gravity_factor(t);
+    return slipping_corner(arm(q[0], pivot), q[1], s, c.piece->lambda(t) / factor, c.g * factor, c.mu,
                            c.geometry->inertia_per_mass());
   }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
@@ -164,6 +179,31 @@ struct SlideRockSystem {
     const Vec2 r = arm(b.theta, pivot);
     return {b.theta, b.omega, b.x + r.x, b.vx - b.omega * r.y};
   }
+};
+
+// Free flight under vertical ground motion: the height above the ground feels g (1 + lambda_v), so
+// it is integrated with x; theta turns at its constant rate.  q = (x, vx, y, vy).
+struct FlightSystem {
+  static constexpr int N = 4, kGuards = 2;
+  static constexpr int kOverturnGuard = 1;
+  SystemContext c;
+  double t0, theta0, omega;
+
+  double theta(double t) const { return theta0 + omega * (t - t0); }
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq = {q[1], c.piece->lambda(t) * c.g, q[3], -c.g * (1.0 + c.vertical->lambda(t))};
+  }
+  // Within the overturning range only a base corner can be lowest.
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    const double th = theta(t);
+    const double lowest = std::min(c.arm(th, Corner::left).y, c.arm(th, Corner::right).y);
+    return {(q[2] + lowest) / c.length_scale(), c.overturn_margin(th)};
+  }
+  BlockState full(double t, const OdeState<N>& q) const {
+    return {q[0], q[2], theta(t), q[1], q[3], omega};
+  }
+  ContactForces forces(double, const OdeState<N>&) const { return {0.0, 0.0}; }
+  OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx, b.y, b.vy}; }
 };
 
 // Free flight: theta and y are closed-form; only x feels the ground (x'' = lambda g).  q = (x, vx).

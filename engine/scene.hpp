@@ -106,10 +106,11 @@ struct InitialState {
 // inputs make possible, pruning what they make impossible (never changing a result). Otherwise the
 // flags name one model: rocking (+ impact): Housner's rocking block, which never slides or lifts off
 // (impacts with Housner's ratio; without impact the pivot changes without loss); sliding alone:
-// Newmark's sliding block, which never rocks; all four: the full model.
+// Newmark's sliding block, which never rocks; all four: the full model, which alone also takes
+// vertical ground motion (the fifth flag, set exactly when the scene has one).
 struct Effects {
   bool automatic = true;
-  bool rocking = true, sliding = true, impact = true, flight = true;
+  bool rocking = true, sliding = true, impact = true, flight = true, vertical = false;
 };
 
 struct Scene {
@@ -119,6 +120,9 @@ struct Scene {
   std::optional<PolygonBlock> polygon;
   Contact contact;
   GroundMotion ground_motion = NoMotion{};
+  // The ground's upward acceleration is lambda_v(t) g: gravity in the ground's frame is
+  // g (1 + lambda_v), and the block leaves the ground when the ground falls faster than g.
+  GroundMotion vertical_motion = NoMotion{};
   std::optional<DamCrest> dam;  // none: the block stands on the foundation
   double duration = 4.0;  // s
   double g = 9.81;        // m/s^2

@@ -92,13 +92,17 @@ void validate_scene(const Scene& scene) {
   require(positive(scene.duration), "duration must be > 0");
   require(positive(scene.g), "g must be > 0");
   model_named_by(scene.effects);
+  const bool has_vertical = !std::holds_alternative<NoMotion>(scene.vertical_motion);
+  require(scene.effects.automatic || has_vertical == scene.effects.vertical,
+          "effects list \"vertical\" exactly when the scene has a vertical_motion");
   const SolverSettings& solver = scene.solver;
   require(positive(solver.dt), "solver dt must be > 0");
   require(positive(solver.tolerance) && solver.tolerance <= 0.1,
           "solver tolerance must be in (0, 0.1]");
   require(solver.max_steps > 0 && solver.max_events > 0 && positive(solver.max_wall_seconds),
           "solver budgets must be > 0");
-  std::visit(
+  const auto validate_motion = [](const GroundMotion& motion) {
+    std::visit(
       [](const auto& m) {
         using M = std::decay_t<decltype(m)>;
         if constexpr (std::is_same_v<M, RectangularPulse>) {
@@ -118,7 +122,10 @@ void validate_scene(const Scene& scene) {
           require(positive(m.cycles), "pulse cycles must be > 0");
         }
       },
-      scene.ground_motion);
+      motion);
+  };
+  validate_motion(scene.ground_motion);
+  validate_motion(scene.vertical_motion);
   if (scene.dam) validate_dam(*scene.dam);
 }
 

@@ -19,8 +19,9 @@ struct ModeChange {
 enum class Status { ok, failed };
 
 // The model a scene ran: what its effects asked for, or what "auto" kept. at_rest: the ground never
-// reaches a threshold, answered without integrating.
-enum class Model { at_rest, newmark_sliding, housner_rocking, full };
+// reaches a threshold, answered without integrating. full_vertical: the full model with vertical
+// ground motion.
+enum class Model { at_rest, newmark_sliding, housner_rocking, full, full_vertical };
 
 const char* model_name(Model model);
 // The effects the model simulates, e.g. {"rocking", "impact"}.

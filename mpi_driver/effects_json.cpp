@@ -26,15 +26,11 @@ Effects read_effects(const nlohmann::json* value, const JsonPointer& path, Confi
       readable = false;
       continue;
     }
-    if (*name == "vertical") {
-      errors.add(path / i, "vertical ground motion is not simulated yet");
-      readable = false;
-      continue;
-    }
     bool& flag = *name == "rocking"   ? effects.rocking
                  : *name == "sliding" ? effects.sliding
                  : *name == "impact"  ? effects.impact
-                                      : effects.flight;
+                 : *name == "flight"  ? effects.flight
+                                      : effects.vertical;
     if (flag) errors.add(path / i, "\"" + *name + "\" is listed twice");
     flag = true;
   }
@@ -49,7 +45,7 @@ Effects read_effects(const nlohmann::json* value, const JsonPointer& path, Confi
 
 nlohmann::json effects_to_json(const Effects& effects) {
   if (effects.automatic) return "auto";
-  return model_effects(model_named_by(effects));
+  return model_effects(effects.vertical ? Model::full_vertical : model_named_by(effects));
 }
 
 }  // namespace blockfrag

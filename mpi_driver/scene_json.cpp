@@ -232,6 +232,13 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
   read_block(root.required_object("block"), scene);
   scene.contact = read_contact(root.required_object("contact"));
   scene.ground_motion = read_ground_motion(root.required_object("ground_motion"), base_folder);
+  if (root.has("vertical_motion")) {
+    scene.vertical_motion = read_ground_motion(root.object("vertical_motion"), base_folder);
+  }
+  if (!scene.effects.automatic &&
+      scene.effects.vertical == std::holds_alternative<NoMotion>(scene.vertical_motion)) {
+    errors.add(path / "effects", "lists \"vertical\" exactly when the scene has a vertical_motion");
+  }
   scene.dam = read_dam(root.object("dam"));
   const auto duration = root.required_number("duration", positive);
   if (duration) scene.duration = *duration;
@@ -261,6 +268,9 @@ json scene_to_json(const Scene& scene) {
           {"solver", solver_to_json(scene.solver)},
           {"initial", {{"theta", scene.initial.theta}}}};
   if (scene.dam) out["dam"] = dam_to_json(*scene.dam);
+  if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) {
+    out["vertical_motion"] = ground_motion_to_json(scene.vertical_motion);
+  }
   return out;
 }
 

@@ -189,8 +189,26 @@ TEST(SceneJson, EffectsNameAModelAndRoundTrip) {
   const Scene newmark = scene_from_json(with(paper_scene(), "/effects", json{"sliding"}), "scene.json");
   EXPECT_EQ(scene_to_json(newmark)["effects"], json({"sliding"}));
   EXPECT_TRUE(scene_from_json(with(paper_scene(), "/effects", "auto"), "scene.json").effects.automatic);
-  EXPECT_EQ(errors_of(with(paper_scene(), "/effects", json{"vertical"})),
-            "scene.json: /effects/0: vertical ground motion is not simulated yet");
+  EXPECT_EQ(errors_of(with(paper_scene(), "/effects", json{"rocking", "vertical"})),
+            "scene.json: /effects: effects: vertical ground motion needs the full model (rocking, "
+            "sliding, impact, flight)\nscene.json: /effects: lists \"vertical\" exactly when the scene "
+            "has a vertical_motion");
+}
+
+TEST(SceneJson, VerticalMotionTakesAnyGroundMotionTypeAndTheFullModel) {
+  const json vertical = {{"type", "rectangular_pulse"}, {"amplitude_g", -0.5}, {"duration", 0.3}};
+  const json document = with(paper_scene(), "/vertical_motion", vertical);
+  const Scene automatic = scene_from_json(document, "scene.json");
+  ASSERT_TRUE(std::holds_alternative<RectangularPulse>(automatic.vertical_motion));
+  EXPECT_EQ(std::get<RectangularPulse>(automatic.vertical_motion).amplitude_g, -0.5);
+  EXPECT_EQ(scene_to_json(automatic)["vertical_motion"], vertical);
+  const json all = {"rocking", "sliding", "impact", "flight", "vertical"};
+  EXPECT_EQ(scene_to_json(scene_from_json(with(document, "/effects", all), "scene.json"))["effects"], all);
+  EXPECT_EQ(errors_of(with(document, "/effects", json{"rocking", "sliding", "impact", "flight"})),
+            "scene.json: /effects: lists \"vertical\" exactly when the scene has a vertical_motion");
+  EXPECT_EQ(errors_of(with(document, "/vertical_motion/duration", 0)),
+            "scene.json: /vertical_motion/duration: must be > 0 (got 0)");
+  EXPECT_FALSE(scene_to_json(scene_from_json(paper_scene(), "scene.json")).contains("vertical_motion"));
 }
 
 TEST(SceneJson, KeysOfAnotherMethodOrTypeAreUnknown) {
