@@ -398,7 +398,9 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
   std::array<bool, G> armed{}, below{};
   for (int i = 0; i < G; ++i) {
     armed[i] = guard[i] > kArmingMargin;
-    below[i] = guard[i] < -kArmingMargin;
+    // An unarmed guard's event leaves it just past -kArmingMargin: the next mode must see that as
+    // near zero, not below, or a bounce that fits in one step would never arm it and be missed.
+    below[i] = guard[i] < -2 * kArmingMargin;
   }
   const double cap = step_cap(piece);
   const auto forces_at = [&](double x) { return system.forces(x, stepper.dense(x)); };
