@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "../support/scene_json_errors.hpp"
 #include "mpi_driver/config_reader.hpp"
 #include "mpi_driver/scene_json.hpp"
 
@@ -24,14 +25,7 @@ json scene_with_dam(const json& dam) {
   return scene;
 }
 
-std::string errors_of(const json& document) {
-  try {
-    scene_from_json(document, "scene.json");
-  } catch (const ConfigError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
+std::string errors_of(const json& document) { return testing::scene_errors(document); }
 
 TEST(DamJson, NoDamUnlessTheSceneAsks) {
   json document = scene_with_dam(nullptr);

@@ -5,6 +5,7 @@
 #include <string>
 #include <variant>
 
+#include "../support/scene_json_errors.hpp"
 #include "engine/scene_validation.hpp"
 #include "mpi_driver/config_reader.hpp"
 #include "mpi_driver/scene_json.hpp"
@@ -21,14 +22,7 @@ json scene_with(const json& motion) {
           {"duration", 3.0}};
 }
 
-std::string errors_of(const json& motion) {
-  try {
-    scene_from_json(scene_with(motion), "scene.json");
-  } catch (const ConfigError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
+std::string errors_of(const json& motion) { return testing::scene_errors(scene_with(motion)); }
 
 TEST(PulseJson, EachTypeReadsIntoItsPulse) {
   const auto c = scene_from_json(scene_with({{"type", "makris_c"}, {"amplitude_g", -0.4}, {"period", 0.6}, {"n", 3}}),

@@ -14,6 +14,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "../support/scene_json_errors.hpp"
 #include "mpi_driver/config_reader.hpp"
 
 namespace blockfrag {
@@ -45,15 +46,7 @@ json without(json document, const std::string& pointer) {
   return document;
 }
 
-// what() of the ConfigError the document raises, or "(accepted)".
-std::string errors_of(const json& document) {
-  try {
-    scene_from_json(document, "scene.json");
-  } catch (const ConfigError& error) {
-    return error.what();
-  }
-  return "(accepted)";
-}
+std::string errors_of(const json& document) { return testing::scene_errors(document); }
 
 std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 
