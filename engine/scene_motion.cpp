@@ -18,12 +18,27 @@ GroundMotion fitted_to_solver(const GroundMotion& motion, const SolverSettings& 
   return resampled;
 }
 
+// Read as lambda_v, the ground's upward acceleration over g. Pulses given by their lambda are that
+// as they are; a record's a(t) and a velocity pulse's dv/dt are the ground's acceleration, which the
+// horizontal reading turns into lambda = -a/g and the vertical one must keep as +a/g.
+GroundMotion upward(GroundMotion motion) {
+  if (auto* recorded = std::get_if<RecordedMotion>(&motion)) recorded->scale = -recorded->scale;
+  if (auto* pulse = std::get_if<MavroeidisPapageorgiouPulse>(&motion)) {
+    pulse->velocity_amplitude = -pulse->velocity_amplitude;
+  }
+  return motion;
+}
+
 }  // namespace
 
 GroundMotionPieces scene_motion(const Scene& scene) {
   GroundMotionPieces foundation(fitted_to_solver(scene.ground_motion, scene.solver), scene.g);
   if (!scene.dam) return foundation;
   return dam_crest_motion(foundation, *scene.dam, scene.duration, scene.g);
+}
+
+GroundMotionPieces scene_vertical_motion(const Scene& scene) {
+  return GroundMotionPieces(upward(fitted_to_solver(scene.vertical_motion, scene.solver)), scene.g);
 }
 
 }  // namespace blockfrag

@@ -74,7 +74,7 @@ class Simulation {
       : scene_(scene),
         geometry_(scene_geometry(scene)),
         motion_(scene_motion(scene)),
-        vertical_(scene.vertical_motion, scene.g),
+        vertical_(scene_vertical_motion(scene)),
         model_(choose_model(scene, motion_, geometry_)),
         resolver_(geometry_, scene.contact, scene.g),
         housner_(geometry_, scene.effects.automatic || scene.effects.impact, scene.g),
@@ -534,8 +534,10 @@ void Simulation::run() {
 }
 
 bool Simulation::mode_holds_under(const MotionPiece& piece) const {
-  if (std::holds_alternative<SlideMode>(mode_) || std::holds_alternative<FlightMode>(mode_)) {
-    return true;
+  if (std::holds_alternative<FlightMode>(mode_)) return true;
+  if (const auto* slide = std::get_if<SlideMode>(&mode_)) {
+    const SlideSystem system{context(piece), slide->slip_sign};
+    return system.guards(t_, system.coordinates(state_))[1] > 0;  // still pressed on the ground
   }
   if (const auto* rock = std::get_if<RockMode>(&mode_)) {
     if (model_ == Model::housner_rocking) return true;

@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <vector>
 
 #include "../support/scene_builders.hpp"
+#include "engine/accelerogram.hpp"
 #include "engine/simulate.hpp"
 
 namespace blockfrag {
@@ -71,6 +74,41 @@ TEST(VerticalMotion, TheBlockLiftsOffOnlyWhenTheGroundFallsFasterThanG) {
   ASSERT_EQ(held.modes.size(), 1u);
   EXPECT_EQ(held.modes[0].mode, ModeKind::rest);
   EXPECT_EQ(held.impacts, 0);
+}
+
+RecordedMotion record_of(std::vector<double> times, std::vector<double> acceleration_g) {
+  auto record = std::make_shared<Accelerogram>();
+  record->times = std::move(times);
+  record->acceleration_g = std::move(acceleration_g);
+  RecordedMotion motion;
+  motion.record = record;
+  return motion;
+}
+
+TEST(VerticalMotion, ARecordsAccelerationIsTheGroundsUpwardAcceleration) {
+  // a(t) = +0.3 g upward throughout is lambda_v = +0.3 (unlike the horizontal lambda = -a).
+  Scene pulse = block_scene(0.3, 1.0, 0.8, 0.5, SinePulse{0.6, 1.0, 1.0}, 3.0);
+  pulse.vertical_motion = RectangularPulse{0.3, 10.0};
+  Scene recorded = pulse;
+  recorded.vertical_motion = record_of({0.0, 10.0}, {0.3, 0.3});
+  const Summary a = simulate(pulse), b = simulate(recorded);
+  ASSERT_TRUE(a.rock_start_time.has_value());
+  EXPECT_NEAR(*b.rock_start_time, *a.rock_start_time, 1e-12);
+  EXPECT_NEAR(b.max_abs_theta, a.max_abs_theta, 1e-12);
+}
+
+TEST(VerticalMotion, ASlideEndsInFlightWhereTheGroundStartsFallingFasterThanG) {
+  // Sliding at lambda = 0.5 > mu = 0.3 on a stocky block; at t = 0.3 s the ground drops away at
+  // 1.5 g for 0.2 s (reached over 1 ns in the record): the slide must end there, not slip on with
+  // no load.
+  Scene scene = block_scene(1.0, 1.0, 0.3, 0.0, RectangularPulse{0.5, 1.0}, 1.0);
+  scene.vertical_motion =
+      record_of({0.0, 0.3, 0.3 + 1e-9, 0.5, 0.5 + 1e-9, 1.0}, {0.0, 0.0, -1.5, -1.5, 0.0, 0.0});
+  const Summary s = simulate(scene);
+  ASSERT_GE(s.modes.size(), 3u);
+  EXPECT_EQ(s.modes[0].mode, ModeKind::slide);
+  EXPECT_EQ(s.modes[1].mode, ModeKind::flight);
+  EXPECT_NEAR(s.modes[1].time, 0.3 + 1e-9 / 1.5, 1e-12);
 }
 
 // Shenton's thresholds with g replaced by g (1 + lambda_v): a constant lambda below them starts
