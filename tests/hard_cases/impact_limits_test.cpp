@@ -57,20 +57,30 @@ TEST_P(BothMethods, SmallRestitutionBouncingSettlesInFiniteTime) {
 }
 
 TEST_P(BothMethods, PainleveJamResolvesWithinTheContactLaws) {
-  // A slender block with high friction that slide-rocks into the Painleve region (found by a
-  // random search over slender blocks and high friction).
-  Scene scene = with_method(block_scene(0.222, 1.0, 4.023, 0.3, CosinePulse{0.322, 1.782, 1}, 6.0));
-  const auto run = simulate_with_history(scene, 0.001);
-  const Summary& s = run.summary;
-  EXPECT_EQ(s.status, Status::ok);
-  EXPECT_GT(s.painleve_events, 0);
-  EXPECT_LT(s.max_contact_violation, 1e-9);
-  EXPECT_LE(s.max_impact_energy_gain, 1e-12);
-  for (const HistoryRow& row : run.history) {
-    EXPECT_GE(row.normal_per_weight, -1e-9) << "t = " << row.t;
-    EXPECT_LE(std::abs(row.friction_per_weight), 4.023 * row.normal_per_weight + 1e-9)
-        << "t = " << row.t;
+  // Slender blocks with high friction that slide-rock into the Painleve region (found by a random
+  // search over slender blocks and high friction). Jams are rare and sensitive (a one-ulp change in
+  // I/M moved one scene out of it), so a neighbourhood of 15 scenes is run: every one keeps the
+  // contact laws, and some jam (3 of 15 when this was written, with either method).
+  int jammed = 0;
+  for (const double amplitude : {0.31, 0.316, 0.322, 0.328, 0.334}) {
+    for (const double mu : {3.6, 4.023, 4.4}) {
+      const Scene scene =
+          with_method(block_scene(0.222, 1.0, mu, 0.3, CosinePulse{amplitude, 1.782, 1}, 6.0));
+      const auto run = simulate_with_history(scene, 0.001);
+      const Summary& s = run.summary;
+      SCOPED_TRACE("amplitude " + std::to_string(amplitude) + ", mu " + std::to_string(mu));
+      EXPECT_EQ(s.status, Status::ok);
+      EXPECT_LT(s.max_contact_violation, 1e-9);
+      EXPECT_LE(s.max_impact_energy_gain, 1e-12);
+      jammed += s.painleve_events > 0;
+      for (const HistoryRow& row : run.history) {
+        EXPECT_GE(row.normal_per_weight, -1e-9) << "t = " << row.t;
+        EXPECT_LE(std::abs(row.friction_per_weight), mu * row.normal_per_weight + 1e-9)
+            << "t = " << row.t;
+      }
+    }
   }
+  EXPECT_GE(jammed, 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, BothMethods,
