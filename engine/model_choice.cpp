@@ -44,12 +44,6 @@ Model model_named_by(const Effects& effects) {
       "\"auto\"");
 }
 
-double peak_abs_lambda(const GroundMotionPieces& motion) {
-  double peak = 0.0;
-  for (const MotionPiece& piece : motion.pieces()) peak = std::max(peak, piece.max_abs_lambda());
-  return peak;
-}
-
 Model choose_model(const Scene& scene, const GroundMotionPieces& motion,
                    const BlockGeometry& geometry) {
   if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) return Model::full_vertical;
@@ -59,7 +53,7 @@ Model choose_model(const Scene& scene, const GroundMotionPieces& motion,
                               geometry.tip_threshold(Corner::right));
   // A block released tilted is already rocking.
   if (scene.initial.theta != 0.0) return Model::full;
-  if (peak_abs_lambda(motion) < std::min(mu, tip)) return Model::at_rest;
+  if (motion.peak_abs_lambda() < std::min(mu, tip)) return Model::at_rest;
   if (mu < tip && mu <= geometry.flat_slide_friction_limit()) return Model::newmark_sliding;
   return Model::full;
 }

@@ -12,9 +12,6 @@ namespace blockfrag {
 // Throws std::invalid_argument for a set of effects that names no model.
 Model model_named_by(const Effects& effects);
 
-// The largest |lambda| the block can feel, an upper bound over every piece.
-double peak_abs_lambda(const GroundMotionPieces& motion);
-
 // "auto" prunes only what is impossible:
 // - the ground never reaches friction or either tipping threshold: the block rests throughout;
 // - friction is below both tipping thresholds and below the flat-sliding limit (mu <= a/b for a
