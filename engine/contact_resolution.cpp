@@ -267,10 +267,18 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
     if (can_slide_rock(s, pivot, direction, lambda, gravity, false)) return SlideRockMode{pivot, direction};
   }
   // Free, the corner would accelerate upward: it leaves the ground.
-  if (-gravity - s.omega * s.omega * r.y >= 0) return FlightMode{};
-  // Painleve with the corner at rest: neither stick, slip nor lift-off is consistent; stick, and
-  // say so.
+  const double free_lift = -gravity - s.omega * s.omega * r.y;
+  if (free_lift >= 0) return FlightMode{};
+  // With exact arithmetic one of the above holds (at most one slip direction is Painleve, and
+  // then stick or the other slip is consistent). None does only within the well-posedness margin
+  // of slide-rock, where a slip reaches the Painleve boundary together with free_lift = 0 (the
+  // singular point of Genot & Brogliato 1999). Take the option that breaks its law by less: the
+  // free corner's pull into the ground, or the stick force's excess over the cone. Lift-off is
+  // taken there in practice, and the flight's own guards keep the contact laws from then on.
   out.painleve = true;
+  const double stick_excess =
+      std::abs(stick.friction) - mu_ * stick.normal + std::max(0.0, -stick.normal);
+  if (-free_lift <= stick_excess) return FlightMode{};
   return RockMode{pivot, s.x + r.x};
 }
 

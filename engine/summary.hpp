@@ -53,7 +53,7 @@ struct Summary {
   // The largest breach of the contact laws at any step, per weight: max(-V, |F| - mu V) / (M g);
   // 0 when the contact force stayed in Coulomb's cone with V >= 0 throughout.
   double max_contact_violation = 0.0;
-  long painleve_events = 0;  // jams resolved by a tangential impulse, or stick forced at rest
+  long painleve_events = 0;  // jams resolved by a tangential impulse, singular points passed
 };
 
 // One impact event (all the corner impulses of one instant), for the history's impact log.
