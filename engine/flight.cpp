@@ -1,6 +1,7 @@
 #include "engine/flight.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "engine/root_finding.hpp"
 
@@ -23,7 +24,8 @@ struct CornerHeight {
 };
 
 std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
-                                     double min_step, double time_tolerance) {
+                                     double min_step, double time_tolerance,
+                                     double height_noise) {
   double tau = 0.0;
   double value = h.height(0.0);
   if (value <= 0.0) {
@@ -40,7 +42,7 @@ std::optional<double> corner_landing(const CornerHeight& h, double bound, double
     const double next_value = h.height(next);
     if (next_value <= 0.0) {
       return locate_crossing([&](double t) { return h.height(t); }, tau, next, value, next_value,
-                             time_tolerance)
+                             time_tolerance, height_noise)
           .after;
     }
     tau = next;
@@ -59,7 +61,10 @@ std::optional<double> first_landing(const BlockGeometry& geometry, const FlightS
     const CornerHeight h{geometry, f, g, corner};
     const double limit = first ? *first : tau_max;
     const double tolerance = 4e-16 * (1.0 + limit);
-    if (auto tau = corner_landing(h, bound, limit, min_step, tolerance)) {
+    // A corner's height is y plus an arm of size R: its rounding error is a few ulps of their sum.
+    const double height_noise =
+        4 * std::numeric_limits<double>::epsilon() * (std::abs(f.y) + geometry.size());
+    if (auto tau = corner_landing(h, bound, limit, min_step, tolerance, height_noise)) {
       if (!first || *tau < *first) first = tau;
     }
   }

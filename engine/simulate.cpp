@@ -301,11 +301,13 @@ void Simulation::advance(const RestMode&, const MotionPiece& piece, double t_sto
   for (const double t : checks) {
     const double m = margin(t);
     if (m < 0) {
-      const auto flipped = [&](double x) { return margin(x) >= 0 ? 1.0 : -1.0 - margin(x); };
       const double t_event =
           previous_margin < 0
               ? previous
-              : locate_crossing(flipped, previous, t, 1.0, -1.0 - m, 1e-15 * (1.0 + t)).after;
+              : locate_crossing(margin, previous, t,
+                                std::max(previous_margin, std::numeric_limits<double>::min()), m,
+                                1e-15 * (1.0 + t))
+                    .after;
       observer_.observe_step(t_, t_event, state_at, forces_at, ModeKind::rest);
       t_ = t_event;
       return;
