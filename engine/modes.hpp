@@ -53,6 +53,15 @@ struct SystemContext {
   Vec2 arm(double theta, Corner corner) const {
     return rotate(geometry->base_corner(corner), std::cos(theta), std::sin(theta));
   }
+  // Both base corners at once (guards need both; one sine and cosine serve them).
+  struct Arms {
+    Vec2 pivot, other;
+  };
+  Arms arms(double theta, Corner pivot) const {
+    const double cos_theta = std::cos(theta), sin_theta = std::sin(theta);
+    return {rotate(geometry->base_corner(pivot), cos_theta, sin_theta),
+            rotate(geometry->base_corner(blockfrag::other(pivot)), cos_theta, sin_theta)};
+  }
   double velocity_scale() const { return std::sqrt(g * geometry->size()); }
   // The guard that stops the run: the block lies on another face (|theta| = pi/2 for a rectangle).
   double overturn_margin(double theta) const { return geometry->overturn_margin(theta); }
@@ -97,8 +106,11 @@ struct RockSystem {
 
   Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
   CornerContact contact(double t, const OdeState<N>& q) const {
+    return contact_at(t, q, arm(q[0], pivot));
+  }
+  CornerContact contact_at(double t, const OdeState<N>& q, Vec2 r) const {
     const double factor = c.gravity_factor(t);
-    return sticking_corner(arm(q[0], pivot), q[1], c.piece->lambda(t) / factor, c.g * factor,
+    return sticking_corner(r, q[1], c.piece->lambda(t) / factor, c.g * factor,
                            c.geometry->inertia_per_mass());
   }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
@@ -106,8 +118,8 @@ struct RockSystem {
     dq[1] = contact(t, q).theta_dd;
   }
   std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
-    const CornerContact k = contact(t, q);
-    const Vec2 r = arm(q[0], pivot), r_other = arm(q[0], other(pivot));
+    const auto [r, r_other] = c.arms(q[0], pivot);
+    const CornerContact k = contact_at(t, q, r);
     return {k.normal / c.g, (c.mu * k.normal - std::abs(k.friction)) / c.g,
             (r_other.y - r.y) / c.length_scale(), c.overturn_margin(q[0])};
   }
@@ -131,7 +143,7 @@ struct HousnerRockSystem {
 
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const { rock(t, q, dq); }
   std::array<double, kGuards> guards(double, const OdeState<N>& q) const {
-    const Vec2 r = rock.arm(q[0], rock.pivot), r_other = rock.arm(q[0], other(rock.pivot));
+    const auto [r, r_other] = rock.c.arms(q[0], rock.pivot);
     return {(r_other.y - r.y) / rock.c.length_scale(), rock.c.overturn_margin(q[0])};
   }
   BlockState full(double t, const OdeState<N>& q) const { return rock.full(t, q); }
@@ -148,12 +160,12 @@ struct SlideRockSystem {
   int s;
 
   Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
-  double denominator(const OdeState<N>& q) const {
-    return slide_rock_denominator(arm(q[0], pivot), s, c.mu, c.geometry->inertia_per_mass());
-  }
   CornerContact contact(double t, const OdeState<N>& q) const {
+    return contact_at(t, q, arm(q[0], pivot));
+  }
+  CornerContact contact_at(double t, const OdeState<N>& q, Vec2 r) const {
     const double factor = c.gravity_factor(t);
-    return slipping_corner(arm(q[0], pivot), q[1], s, c.piece->lambda(t) / factor, c.g * factor, c.mu,
+    return slipping_corner(r, q[1], s, c.piece->lambda(t) / factor, c.g * factor, c.mu,
                            c.geometry->inertia_per_mass());
   }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
@@ -161,10 +173,10 @@ struct SlideRockSystem {
     dq = {q[1], k.theta_dd, q[3], k.corner_dd};
   }
   std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
-    const double R = c.length_scale();
-    const double d = denominator(q) / c.geometry->inertia_per_mass() - kPainleveMargin;
-    const Vec2 r = arm(q[0], pivot), r_other = arm(q[0], other(pivot));
-    return {contact(t, q).normal / c.g, s * q[3] / c.velocity_scale(), (r_other.y - r.y) / R,
+    const double R = c.length_scale(), k2 = c.geometry->inertia_per_mass();
+    const auto [r, r_other] = c.arms(q[0], pivot);
+    const double d = slide_rock_denominator(r, s, c.mu, k2) / k2 - kPainleveMargin;
+    return {contact_at(t, q, r).normal / c.g, s * q[3] / c.velocity_scale(), (r_other.y - r.y) / R,
             c.overturn_margin(q[0]), d};
   }
   BlockState full(double, const OdeState<N>& q) const {

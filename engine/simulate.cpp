@@ -423,31 +423,45 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     double t_event = std::numeric_limits<double>::infinity();
     double t_last_inside = t;  // the last time the mode's conditions hold
     int which = -1;
+    // An unarmed guard starts near zero: it fires once it is clearly below zero, whether or not it
+    // rose clearly above it first (a corner that lifts by less than the margin and comes back must
+    // still land).
+    std::array<double, G> offset{}, a{}, fa{}, b{}, fb{};
+    std::array<bool, G> sampled{};
+    bool any_sampled = false;
     for (int i = 0; i < G; ++i) {
-      if (below[i]) continue;
-      // An unarmed guard starts near zero: it fires once it is clearly below zero, whether or not
-      // it rose clearly above it first (a corner that lifts by less than the margin and comes
-      // back must still land).
-      const double offset = armed[i] ? 0.0 : kArmingMargin;
-      const auto f = [&](double x) { return system.guards(x, stepper.dense(x))[i] + offset; };
-      double a = t0, fa = std::max(guard[i] + offset, std::numeric_limits<double>::min());
-      double b = t, fb = next[i] + offset;
+      offset[i] = armed[i] ? 0.0 : kArmingMargin;
+      a[i] = t0;
+      fa[i] = std::max(guard[i] + offset[i], std::numeric_limits<double>::min());
+      b[i] = t;
+      fb[i] = next[i] + offset[i];
       // A guard close to zero may dip below it and come back inside one step: look inside.
-      if (!armed[i] || std::min(fa, fb) < kNearZero) {
-        for (int k = 1; k < kInteriorSamples; ++k) {
-          const double x = t0 + (t - t0) * k / kInteriorSamples;
-          const double fx = f(x);
-          if (fx <= 0) {
-            b = x;
-            fb = fx;
-            break;
-          }
-          a = x;
-          fa = fx;
+      sampled[i] = !below[i] && (!armed[i] || std::min(fa[i], fb[i]) < kNearZero);
+      any_sampled = any_sampled || sampled[i];
+    }
+    // One evaluation of all guards per interior sample serves every guard that is looked inside.
+    for (int k = 1; any_sampled && k < kInteriorSamples; ++k) {
+      const double x = t0 + (t - t0) * k / kInteriorSamples;
+      const std::array<double, G> at_x = system.guards(x, stepper.dense(x));
+      any_sampled = false;
+      for (int i = 0; i < G; ++i) {
+        if (!sampled[i]) continue;
+        const double fx = at_x[i] + offset[i];
+        if (fx <= 0) {
+          b[i] = x;
+          fb[i] = fx;
+          sampled[i] = false;
+          continue;
         }
+        a[i] = x;
+        fa[i] = fx;
+        any_sampled = true;
       }
-      if (fb > 0) continue;
-      const Bracket located = locate_crossing(f, a, b, fa, fb, 1e-15 * (1.0 + t));
+    }
+    for (int i = 0; i < G; ++i) {
+      if (below[i] || fb[i] > 0) continue;
+      const auto f = [&](double x) { return system.guards(x, stepper.dense(x))[i] + offset[i]; };
+      const Bracket located = locate_crossing(f, a[i], b[i], fa[i], fb[i], 1e-15 * (1.0 + t));
       if (located.after < t_event) {
         t_event = located.after;
         t_last_inside = located.before;
@@ -457,23 +471,30 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     // Before accepting an event, make sure no other guard dipped below zero earlier in the step
     // (near a singular boundary forces can swing through zero and back between samples).
     if (which >= 0) {
-      for (int i = 0; i < G; ++i) {
-        if (i == which || !armed[i]) continue;
-        const auto f = [&](double x) { return system.guards(x, stepper.dense(x))[i]; };
-        double a = t0, fa = guard[i];
-        for (int k = 1; k <= kInteriorSamples; ++k) {
-          const double x = t0 + (t_event - t0) * k / kInteriorSamples;
-          const double fx = f(x);
-          if (fx <= 0) {
-            const Bracket located = locate_crossing(f, a, x, fa, fx, 1e-15 * (1.0 + t));
+      std::array<bool, G> watched{};
+      for (int i = 0; i < G; ++i) watched[i] = i != which && armed[i];
+      std::array<double, G> before = guard;
+      const double t_found = t_event;
+      double x_before = t0;
+      for (int k = 1; k <= kInteriorSamples; ++k) {
+        const double x = t0 + (t_found - t0) * k / kInteriorSamples;
+        const std::array<double, G> at_x = system.guards(x, stepper.dense(x));
+        bool dipped = false;
+        for (int i = 0; i < G; ++i) {
+          if (!watched[i] || at_x[i] > 0) continue;
+          const auto f = [&](double y) { return system.guards(y, stepper.dense(y))[i]; };
+          const Bracket located =
+              locate_crossing(f, x_before, x, before[i], at_x[i], 1e-15 * (1.0 + t));
+          if (located.after < t_event) {
             t_event = located.after;
             t_last_inside = located.before;
             which = i;
-            break;
           }
-          a = x;
-          fa = fx;
+          dipped = true;
         }
+        if (dipped) break;
+        before = at_x;
+        x_before = x;
       }
     }
     for (int i = 0; i < G; ++i) {
