@@ -17,6 +17,8 @@ namespace blockfrag {
 template <int N>
 class Rk4Stepper {
  public:
+  static constexpr bool kFixedStep = true;  // no error control: its caller checks events itself
+
   explicit Rk4Stepper(double dt) : dt_(dt) {
     if (!(dt > 0.0) || !std::isfinite(dt)) {
       throw std::invalid_argument("Rk4Stepper: dt must be positive and finite");

@@ -408,10 +408,19 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
   const auto forces_at = [&](double x) { return system.forces(x, stepper.dense(x)); };
   const auto state_at = [&](double x) { return system.full(x, stepper.dense(x)); };
   long steps_counted = 0, rhs_counted = 0;
+  // A fixed step that crosses an event is taken again, ending just past the located event: the
+  // step may have run through what ends the mode (near a Painleve pole), so its end and its
+  // Hermite interpolant are not the trajectory there. The second location is kept; if the retaken
+  // step finds no event, stepping goes on from its end, at least 1/100 of the step further.
+  constexpr bool kRetakesStepToEvent = requires { Stepper::kFixedStep; };
+  double retake_until = std::numeric_limits<double>::infinity();
 
   while (!reached(t, t_stop)) {
     const double t0 = t;
-    stepper.step(system, t, q, std::min(t_stop - t, cap));
+    const auto q0 = q;
+    const bool retaking = std::isfinite(retake_until);
+    stepper.step(system, t, q, std::min({t_stop - t, cap, retake_until - t}));
+    retake_until = std::numeric_limits<double>::infinity();
     if (reached(t, t_stop)) t = t_stop;
     summary_.steps += stepper.steps() - steps_counted;
     summary_.rhs_evaluations += stepper.rhs_evaluations() - rhs_counted;
@@ -496,6 +505,12 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
         before = at_x;
         x_before = x;
       }
+    }
+    if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {
+      retake_until = t_event + 0.01 * (t - t_event);
+      t = t0;
+      q = q0;
+      continue;
     }
     for (int i = 0; i < G; ++i) {
       armed[i] = armed[i] || next[i] > kArmingMargin;
