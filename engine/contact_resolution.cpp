@@ -270,16 +270,24 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
   const double free_lift = -gravity - s.omega * s.omega * r.y;
   if (free_lift >= 0) return FlightMode{};
   // With exact arithmetic one of the above holds (at most one slip direction is Painleve, and
-  // then stick or the other slip is consistent). None does only within the well-posedness margin
-  // of slide-rock, where a slip reaches the Painleve boundary together with free_lift = 0 (the
-  // singular point of Genot & Brogliato 1999). Take the option that breaks its law by less: the
-  // free corner's pull into the ground, or the stick force's excess over the cone. Lift-off is
-  // taken there in practice, and the flight's own guards keep the contact laws from then on.
+  // then stick or the other slip is consistent). Rounding can break a tie at the cone's edge,
+  // where stick needs exactly mu V and the slip that way starts with zero acceleration. Slip
+  // then: if the corner does not go on slipping, the slip guard ends it at once and stick holds.
+  const double cone_edge = 1e-12 * (std::abs(stick.friction) + mu_ * stick.normal);
+  if (stick.normal >= 0 && std::abs(stick.friction) - mu_ * stick.normal <= cone_edge &&
+      slide_rock_well_posed(r, slip, mu_, k2) &&
+      slipping_corner(r, s.omega, slip, lambda, gravity, mu_, k2).normal >= 0) {
+    return SlideRockMode{pivot, slip};
+  }
+  // Otherwise none holds only within the well-posedness margin of slide-rock, where a slip
+  // reaches the Painleve boundary together with free_lift = 0 (the singular point of Genot &
+  // Brogliato 1999), each option breaking its law by a hair. Lift off: no contact force, so none
+  // outside the cone. Past the singular point either the corner rises (lift-off was consistent)
+  // or it comes back within the contact tolerance and lands slower than the settle velocity,
+  // where stick or slip is consistent again. Sticking instead can leave friction outside the cone
+  // for as long as the rock mode lasts.
   out.painleve = true;
-  const double stick_excess =
-      std::abs(stick.friction) - mu_ * stick.normal + std::max(0.0, -stick.normal);
-  if (-free_lift <= stick_excess) return FlightMode{};
-  return RockMode{pivot, s.x + r.x};
+  return FlightMode{};
 }
 
 ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,

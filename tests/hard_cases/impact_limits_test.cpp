@@ -57,12 +57,10 @@ TEST_P(BothMethods, SmallRestitutionBouncingSettlesInFiniteTime) {
   }
 }
 
-TEST_P(BothMethods, PainleveJamResolvesWithinTheContactLaws) {
-  // Slender blocks with high friction that slide-rock into the Painleve region (found by a random
-  // search over slender blocks and high friction). Jams are rare and sensitive (a one-ulp change in
-  // I/M moved one scene out of it), so a neighbourhood of 15 scenes is run: every one keeps the
-  // contact laws, and some jam (3 of 15 when this was written, with either method).
-  int jammed = 0;
+TEST_P(BothMethods, SlenderHighFrictionSlideRockKeepsTheContactLaws) {
+  // Slender blocks with high friction that rock, fly, land and slide-rock to overturning (found by
+  // a random search for Painleve cases). A neighbourhood of 15 scenes: every one keeps the contact
+  // laws along its history and ends in slide-rock.
   for (const double amplitude : {0.31, 0.316, 0.322, 0.328, 0.334}) {
     for (const double mu : {3.6, 4.023, 4.4}) {
       const Scene scene =
@@ -73,7 +71,8 @@ TEST_P(BothMethods, PainleveJamResolvesWithinTheContactLaws) {
       EXPECT_EQ(s.status, Status::ok);
       EXPECT_LT(s.max_contact_violation, 1e-9);
       EXPECT_LE(s.max_impact_energy_gain, 1e-12);
-      jammed += s.painleve_events > 0;
+      ASSERT_FALSE(s.modes.empty());
+      EXPECT_EQ(s.modes.back().mode, ModeKind::slide_rock);
       for (const HistoryRow& row : run.history) {
         EXPECT_GE(row.normal_per_weight, -1e-9) << "t = " << row.t;
         EXPECT_LE(std::abs(row.friction_per_weight), mu * row.normal_per_weight + 1e-9)
@@ -81,7 +80,6 @@ TEST_P(BothMethods, PainleveJamResolvesWithinTheContactLaws) {
       }
     }
   }
-  EXPECT_GE(jammed, 2);
 }
 
 // Slide-rock of a stocky block with high friction under a strong pulse (found by the random scenes
