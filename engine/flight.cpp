@@ -1,52 +1,83 @@
 #include "engine/flight.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "engine/root_finding.hpp"
 
 namespace blockfrag {
 
 namespace {
 
+// A corner's height above the ground and its rate, from one sine and cosine.
 struct CornerHeight {
   const BlockGeometry& geometry;
   const FlightStart& f;
   double g;
   int corner;
 
-  double height(double tau) const {
-    return corner_kinematics(geometry, flight_pose(f, g, tau), corner).height;
-  }
-  double rate(double tau) const {
-    return corner_kinematics(geometry, flight_pose(f, g, tau), corner).u_y;
+  struct Sample {
+    double height, rate;
+  };
+  Sample at(double tau) const {
+    const CornerKinematics k = corner_kinematics(geometry, flight_pose(f, g, tau), corner);
+    return {k.height, k.u_y};
   }
 };
+
+// Newton on the height inside [lo, hi] (height(lo) > 0 >= height(hi)): the rate is its
+// derivative, so a step costs one evaluation and converges quadratically from either side. A step
+// that would leave the bracket bisects it; one kept half a tolerance inside it ends a search that
+// converges from above by landing just past the crossing. Returns a time at or below the ground
+// within the time tolerance of the crossing, or within the height's rounding noise of it.
+double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight::Sample s,
+                      double time_tolerance, double height_noise) {
+  double x = lo;
+  for (int iteration = 0; iteration < 200 && hi - lo > time_tolerance; ++iteration) {
+    const double inside = 0.5 * time_tolerance;
+    double next = s.rate != 0 ? x - s.height / s.rate : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    x = std::clamp(next, lo + inside, hi - inside);
+    s = h.at(x);
+    if (s.height > 0) {
+      lo = x;
+    } else {
+      hi = x;
+      if (s.height >= -height_noise) break;
+    }
+  }
+  return hi;
+}
 
 std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
                                      double min_step, double time_tolerance,
                                      double height_noise) {
   double tau = 0.0;
-  double value = h.height(0.0);
-  if (value <= 0.0) {
-    // Leaving the ground: start where it has risen (half the earliest possible return).
-    const double rate = h.rate(0.0);
-    tau = rate > 0 ? rate / bound : min_step;
-    value = h.height(tau);
-    if (value <= 0.0) return std::nullopt;  // it does not leave: not a flight for this corner
+  CornerHeight::Sample now = h.at(0.0);
+  if (now.height <= 0.0) {
+    // Leaving the ground: start where it has risen (half the earliest possible return). A corner
+    // that has not risen by then is watched until it has; one that turns down first never left
+    // the ground, and lands at once (ignoring it let a corner that left at 1e-8 m/s sink through
+    // the ground for the rest of the flight).
+    tau = now.rate > 0 ? now.rate / bound : min_step;
+    now = h.at(tau);
+    while (now.height <= 0.0) {
+      if (now.rate <= 0.0) return tau;
+      tau *= 2.0;
+      if (tau >= tau_max) return std::nullopt;
+      now = h.at(tau);
+    }
   }
   while (tau < tau_max) {
-    const double rate = h.rate(tau);
-    const double safe = (rate + std::sqrt(rate * rate + 2.0 * bound * value)) / bound;
+    const double safe =
+        (now.rate + std::sqrt(now.rate * now.rate + 2.0 * bound * now.height)) / bound;
     const double next = std::min(tau + std::max(safe, min_step), tau_max);
-    const double next_value = h.height(next);
-    if (next_value <= 0.0) {
-      return locate_crossing([&](double t) { return h.height(t); }, tau, next, value, next_value,
-                             time_tolerance, height_noise)
-          .after;
+    const CornerHeight::Sample then = h.at(next);
+    if (then.height <= 0.0) {
+      return locate_landing(h, tau, next, now, time_tolerance, height_noise);
     }
     tau = next;
-    value = next_value;
+    now = then;
   }
   return std::nullopt;
 }

@@ -34,6 +34,19 @@ TEST(Flight, SpinningBlockLandsOnTheCornerItTurnsDown) {
   EXPECT_NEAR(*landing, 0.5 * (lo + hi), 1e-12);
 }
 
+TEST(Flight, ACornerThatBarelyLeavesAndTurnsDownIsNotLost) {
+  // A tall block rotating clockwise about its right base corner leaves the ground with that
+  // corner rising at 1e-8 m/s. The corner's height is y(t) - b cos(theta) + a sin(theta) with
+  // theta = w t, y = b + vy t - g t^2 / 2: the rotation brings it back down at once. It used to be
+  // ignored for the flight ("it does not leave"), and the block sank through the ground.
+  const double a = 0.17, b = 2.19, w = -0.743;
+  const BlockGeometry block(RectangularBlock{a, b, 1.0});
+  const double vy = 1e-8 - a * w;  // the right corner's u_y = vy + w r_x = 1e-8
+  const auto landing = first_landing(block, FlightStart{b, 0.0, vy, w}, g, 10.0, 1e-5);
+  ASSERT_TRUE(landing.has_value());
+  EXPECT_LT(*landing, 1e-4);
+}
+
 TEST(Flight, NoLandingWithinTheWindow) {
   const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
   EXPECT_FALSE(first_landing(block, FlightStart{1.0, 0.0, 2.0, 0.0}, g, 0.3, 1e-5).has_value());
