@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <vector>
 
 #include "../support/both_integrators.hpp"
 #include "../support/scene_builders.hpp"
@@ -45,20 +44,13 @@ TEST(ConeEdge, RockingCornerWhoseFrictionReachesTheConeStartsToSlipWithEitherMet
   // passes (found by the random scenes test: once stuck, friction left the cone by 10 times the
   // weight; once lifted off, the corner sank and lifted again 100 times without progress). The
   // engine slips, and both methods agree on when.
-  std::vector<Summary> runs;
-  for (const Method method : {Method::adaptive, Method::rk4}) {
-    Scene scene = block_scene(0.1931987790827837, 3.7951718334652136, 1.0317457839360753,
-                              0.8744984373642026, SinePulse{-0.21603642182750804, 4.365718416599842, 2},
-                              10.0, 3.4430244803815032e-09);
-    scene.solver.method = method;
-    runs.push_back(simulate(scene));
-    const Summary& s = runs.back();
-    EXPECT_EQ(s.status, Status::ok);
-    EXPECT_LT(s.max_contact_violation, 1e-9);
-    ASSERT_EQ(s.modes.size(), 3u);
-    EXPECT_EQ(s.modes[1].mode, ModeKind::rock);
-    EXPECT_EQ(s.modes[2].mode, ModeKind::slide_rock);
-  }
+  const auto runs = testing::simulate_with_both_methods(
+      block_scene(0.1931987790827837, 3.7951718334652136, 1.0317457839360753, 0.8744984373642026,
+                  SinePulse{-0.21603642182750804, 4.365718416599842, 2}, 10.0,
+                  3.4430244803815032e-09),
+      {ModeKind::rest, ModeKind::rock, ModeKind::slide_rock});
+  ASSERT_EQ(runs[0].modes.size(), 3u);
+  ASSERT_EQ(runs[1].modes.size(), 3u);
   EXPECT_NEAR(runs[0].modes[2].time, runs[1].modes[2].time, 1e-7);
   EXPECT_EQ(runs[0].overturned, runs[1].overturned);
 }

@@ -3,7 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <initializer_list>
+
 #include "engine/scene.hpp"
+#include "engine/simulate.hpp"
 
 namespace blockfrag::testing {
 
@@ -18,5 +22,29 @@ class BothMethods : public ::testing::TestWithParam<Method> {
     return scene;
   }
 };
+
+// One scene with the adaptive method and with the paper's RK4 (its dt), for tests that compare them:
+// each run must finish inside the contact laws and begin with the given modes.
+inline std::array<Summary, 2> simulate_with_both_methods(Scene scene,
+                                                         std::initializer_list<ModeKind> first_modes) {
+  std::array<Summary, 2> runs;
+  for (const Method method : {Method::adaptive, Method::rk4}) {
+    scene.solver.method = method;
+    Summary& s = runs[method == Method::adaptive ? 0 : 1];
+    s = simulate(scene);
+    SCOPED_TRACE(method == Method::adaptive ? "adaptive" : "rk4");
+    EXPECT_EQ(s.status, Status::ok);
+    EXPECT_LT(s.max_contact_violation, 1e-9);
+    EXPECT_GE(s.modes.size(), first_modes.size());
+    std::size_t i = 0;
+    for (const ModeKind mode : first_modes) {
+      if (i < s.modes.size()) {
+        EXPECT_EQ(s.modes[i].mode, mode) << "mode " << i;
+      }
+      ++i;
+    }
+  }
+  return runs;
+}
 
 }  // namespace blockfrag::testing
