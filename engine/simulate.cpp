@@ -13,6 +13,7 @@
 #include "engine/dormand_prince_stepper.hpp"
 #include "engine/flight.hpp"
 #include "engine/gsl_stepper.hpp"
+#include "engine/guard_crossing.hpp"
 #include "engine/model_choice.hpp"
 #include "engine/modes.hpp"
 #include "engine/reduced_contact.hpp"
@@ -57,11 +58,6 @@ struct SceneFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Guards this close to zero when a mode starts are armed only once they have moved away: the
-// event that started the mode left them there.
-constexpr double kArmingMargin = 1e-12;
-constexpr int kInteriorSamples = 16;
-constexpr double kNearZero = 0.05;
 constexpr int kMaxStalledEvents = 100;
 constexpr double kOnsetMargin = 1e-12;
 
@@ -390,20 +386,9 @@ void Simulation::integrate(const System& system, const MotionPiece& piece, doubl
 template <class System, class Stepper>
 void Simulation::integrate_with(const System& system, Stepper& stepper, const MotionPiece& piece,
                                 double t_stop) {
-  constexpr int G = System::kGuards;
   auto q = system.coordinates(state_);
   double t = t_;
-  std::array<double, G> guard = system.guards(t, q);
-  // Armed: clearly positive, fires at zero. Unarmed: near zero, fires once clearly negative.
-  // Below: starts clearly negative (a corner a hair below the ground, rising), fires only after
-  // it has risen and armed.
-  std::array<bool, G> armed{}, below{};
-  for (int i = 0; i < G; ++i) {
-    armed[i] = guard[i] > kArmingMargin;
-    // An unarmed guard's event leaves it just past -kArmingMargin: the next mode must see that as
-    // near zero, not below, or a bounce that fits in one step would never arm it and be missed.
-    below[i] = guard[i] < -2 * kArmingMargin;
-  }
+  GuardWatch<System::kGuards> watch(system.guards(t, q));
   const double cap = step_cap(piece);
   const auto forces_at = [&](double x) { return system.forces(x, stepper.dense(x)); };
   const auto state_at = [&](double x) { return system.full(x, stepper.dense(x)); };
@@ -428,99 +413,22 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     rhs_counted = stepper.rhs_evaluations();
     if ((summary_.steps & 1023) == 0) check_budget();
 
-    const std::array<double, G> next = system.guards(t, q);
-    double t_event = std::numeric_limits<double>::infinity();
-    double t_last_inside = t;  // the last time the mode's conditions hold
-    int which = -1;
-    // An unarmed guard starts near zero: it fires once it is clearly below zero, whether or not it
-    // rose clearly above it first (a corner that lifts by less than the margin and comes back must
-    // still land).
-    std::array<double, G> offset{}, a{}, fa{}, b{}, fb{};
-    std::array<bool, G> sampled{};
-    bool any_sampled = false;
-    for (int i = 0; i < G; ++i) {
-      offset[i] = armed[i] ? 0.0 : kArmingMargin;
-      a[i] = t0;
-      fa[i] = std::max(guard[i] + offset[i], std::numeric_limits<double>::min());
-      b[i] = t;
-      fb[i] = next[i] + offset[i];
-      // A guard close to zero may dip below it and come back inside one step: look inside.
-      sampled[i] = !below[i] && (!armed[i] || std::min(fa[i], fb[i]) < kNearZero);
-      any_sampled = any_sampled || sampled[i];
-    }
-    // One evaluation of all guards per interior sample serves every guard that is looked inside.
-    for (int k = 1; any_sampled && k < kInteriorSamples; ++k) {
-      const double x = t0 + (t - t0) * k / kInteriorSamples;
-      const std::array<double, G> at_x = system.guards(x, stepper.dense(x));
-      any_sampled = false;
-      for (int i = 0; i < G; ++i) {
-        if (!sampled[i]) continue;
-        const double fx = at_x[i] + offset[i];
-        if (fx <= 0) {
-          b[i] = x;
-          fb[i] = fx;
-          sampled[i] = false;
-          continue;
-        }
-        a[i] = x;
-        fa[i] = fx;
-        any_sampled = true;
-      }
-    }
-    for (int i = 0; i < G; ++i) {
-      if (below[i] || fb[i] > 0) continue;
-      const auto f = [&](double x) { return system.guards(x, stepper.dense(x))[i] + offset[i]; };
-      const Bracket located = locate_crossing(f, a[i], b[i], fa[i], fb[i], 1e-15 * (1.0 + t));
-      if (located.after < t_event) {
-        t_event = located.after;
-        t_last_inside = located.before;
-        which = i;
-      }
-    }
-    // Before accepting an event, make sure no other guard dipped below zero earlier in the step
-    // (near a singular boundary forces can swing through zero and back between samples).
-    if (which >= 0) {
-      std::array<bool, G> watched{};
-      for (int i = 0; i < G; ++i) watched[i] = i != which && armed[i];
-      std::array<double, G> before = guard;
-      const double t_found = t_event;
-      double x_before = t0;
-      for (int k = 1; k <= kInteriorSamples; ++k) {
-        const double x = t0 + (t_found - t0) * k / kInteriorSamples;
-        const std::array<double, G> at_x = system.guards(x, stepper.dense(x));
-        bool dipped = false;
-        for (int i = 0; i < G; ++i) {
-          if (!watched[i] || at_x[i] > 0) continue;
-          const auto f = [&](double y) { return system.guards(y, stepper.dense(y))[i]; };
-          const Bracket located =
-              locate_crossing(f, x_before, x, before[i], at_x[i], 1e-15 * (1.0 + t));
-          if (located.after < t_event) {
-            t_event = located.after;
-            t_last_inside = located.before;
-            which = i;
-          }
-          dipped = true;
-        }
-        if (dipped) break;
-        before = at_x;
-        x_before = x;
-      }
-    }
+    const auto next = system.guards(t, q);
+    const auto guards_at = [&](double x) { return system.guards(x, stepper.dense(x)); };
+    const auto crossing = watch.first_crossing(guards_at, t0, t, next);
+    const int which = crossing.which;
+    const double t_event = crossing.after;
     if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {
       retake_until = t_event + 0.01 * (t - t_event);
       t = t0;
       q = q0;
       continue;
     }
-    for (int i = 0; i < G; ++i) {
-      armed[i] = armed[i] || next[i] > kArmingMargin;
-      below[i] = below[i] && !armed[i];
-    }
-    guard = next;
+    watch.advance(next);
 
     // The contact laws at the end of what is kept of the step, inside the mode.
     const double kept = which < 0 ? t : t_event;
-    const ContactForces contact = forces_at(t_last_inside);
+    const ContactForces contact = forces_at(crossing.before);
     summary_.max_contact_violation =
         std::max({summary_.max_contact_violation, -contact.normal / scene_.g,
                   (std::abs(contact.friction) - scene_.contact.friction * contact.normal) /

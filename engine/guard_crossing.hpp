@@ -1,0 +1,132 @@
+// Where inside one step a mode's guards first cross zero: the guards are positive while the mode
+// holds, and the step's dense output says where one stops being so.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+#include "engine/root_finding.hpp"
+
+namespace blockfrag {
+
+// Guards this close to zero when a mode starts are armed only once they have moved away: the
+// event that started the mode left them there.
+constexpr double kArmingMargin = 1e-12;
+constexpr int kInteriorSamples = 16;
+constexpr double kNearZero = 0.05;
+
+// How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: near zero, fires
+// once clearly negative, whether or not it rose clearly above zero first (a corner that lifts by
+// less than the margin and comes back must still land). Below: starts clearly negative (a corner a
+// hair below the ground, rising), fires only after it has risen and armed.
+template <int G>
+class GuardWatch {
+ public:
+  explicit GuardWatch(const std::array<double, G>& at_start) : value_(at_start) {
+    for (int i = 0; i < G; ++i) {
+      armed_[i] = at_start[i] > kArmingMargin;
+      // An unarmed guard's event leaves it just past -kArmingMargin: the next mode must see that
+      // as near zero, not below, or a bounce that fits in one step would never arm it.
+      below_[i] = at_start[i] < -2 * kArmingMargin;
+    }
+  }
+
+  struct Crossing {
+    int which = -1;  // the guard that crossed first, -1 if none
+    double after = std::numeric_limits<double>::infinity();  // just past the crossing
+    double before = 0.0;  // the last time the mode's conditions hold
+  };
+
+  // The first crossing in the step [t0, t1] whose guards at t1 are `next`; guards_at(x) evaluates
+  // all guards on the step's dense output.
+  template <class GuardsAt>
+  Crossing first_crossing(const GuardsAt& guards_at, double t0, double t1,
+                          const std::array<double, G>& next) const {
+    const double time_tolerance = 1e-15 * (1.0 + t1);
+    Crossing found;
+    found.before = t1;
+    std::array<double, G> offset{}, a{}, fa{}, b{}, fb{};
+    std::array<bool, G> sampled{};
+    bool any_sampled = false;
+    for (int i = 0; i < G; ++i) {
+      offset[i] = armed_[i] ? 0.0 : kArmingMargin;
+      a[i] = t0;
+      fa[i] = std::max(value_[i] + offset[i], std::numeric_limits<double>::min());
+      b[i] = t1;
+      fb[i] = next[i] + offset[i];
+      // A guard close to zero may dip below it and come back inside one step: look inside.
+      sampled[i] = !below_[i] && (!armed_[i] || std::min(fa[i], fb[i]) < kNearZero);
+      any_sampled = any_sampled || sampled[i];
+    }
+    // One evaluation of all guards per interior sample serves every guard that is looked inside.
+    for (int k = 1; any_sampled && k < kInteriorSamples; ++k) {
+      const double x = t0 + (t1 - t0) * k / kInteriorSamples;
+      const std::array<double, G> at_x = guards_at(x);
+      any_sampled = false;
+      for (int i = 0; i < G; ++i) {
+        if (!sampled[i]) continue;
+        const double fx = at_x[i] + offset[i];
+        if (fx <= 0) {
+          b[i] = x;
+          fb[i] = fx;
+          sampled[i] = false;
+          continue;
+        }
+        a[i] = x;
+        fa[i] = fx;
+        any_sampled = true;
+      }
+    }
+    for (int i = 0; i < G; ++i) {
+      if (below_[i] || fb[i] > 0) continue;
+      const auto f = [&](double x) { return guards_at(x)[i] + offset[i]; };
+      const Bracket located = locate_crossing(f, a[i], b[i], fa[i], fb[i], time_tolerance);
+      if (located.after < found.after) found = {i, located.after, located.before};
+    }
+    if (found.which >= 0) found = no_earlier_dip(guards_at, t0, found, time_tolerance);
+    return found;
+  }
+
+  // The step is kept: its end values become the next step's start.
+  void advance(const std::array<double, G>& next) {
+    for (int i = 0; i < G; ++i) {
+      armed_[i] = armed_[i] || next[i] > kArmingMargin;
+      below_[i] = below_[i] && !armed_[i];
+    }
+    value_ = next;
+  }
+
+ private:
+  // Before accepting an event, make sure no other armed guard dipped below zero earlier in the
+  // step (near a singular boundary forces can swing through zero and back between samples).
+  template <class GuardsAt>
+  Crossing no_earlier_dip(const GuardsAt& guards_at, double t0, Crossing found,
+                          double time_tolerance) const {
+    std::array<double, G> before = value_;
+    const double t_found = found.after;
+    const int first_found = found.which;
+    double x_before = t0;
+    for (int k = 1; k <= kInteriorSamples; ++k) {
+      const double x = t0 + (t_found - t0) * k / kInteriorSamples;
+      const std::array<double, G> at_x = guards_at(x);
+      bool dipped = false;
+      for (int i = 0; i < G; ++i) {
+        if (i == first_found || !armed_[i] || at_x[i] > 0) continue;
+        const auto f = [&](double y) { return guards_at(y)[i]; };
+        const Bracket located = locate_crossing(f, x_before, x, before[i], at_x[i], time_tolerance);
+        if (located.after < found.after) found = {i, located.after, located.before};
+        dipped = true;
+      }
+      if (dipped) break;
+      before = at_x;
+      x_before = x;
+    }
+    return found;
+  }
+
+  std::array<double, G> value_;
+  std::array<bool, G> armed_{}, below_{};
+};
+
+}  // namespace blockfrag
