@@ -17,7 +17,8 @@ constexpr int kInteriorSamples = 16;
 constexpr double kNearZero = 0.05;
 
 // How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: near zero, fires
-// once clearly negative, whether or not it rose clearly above zero first (a corner that lifts by
+// once clearly negative (a margin below zero, and below its start), whether or not it rose clearly
+// above zero first (a corner that lifts by
 // less than the margin and comes back must still land). Below: starts clearly negative (a corner a
 // hair below the ground, rising), fires only after it has risen and armed.
 template <int G>
@@ -29,6 +30,10 @@ class GuardWatch {
       // An unarmed guard's event leaves it just past -kArmingMargin: the next mode must see that
       // as near zero, not below, or a bounce that fits in one step would never arm it.
       below_[i] = at_start[i] < -2 * kArmingMargin;
+      // Such a start, a hair past -kArmingMargin, must go lower still to fire: fired at once
+      // (its value at the start already past the margin), a corner rising at 3e-7 m/s that gravity
+      // brings back within 6e-8 s started flight after flight 1e-15 s apart.
+      unarmed_offset_[i] = std::max(kArmingMargin, -at_start[i] * (1 + 1e-9));
     }
   }
 
@@ -50,7 +55,7 @@ class GuardWatch {
     std::array<bool, G> sampled{};
     bool any_sampled = false;
     for (int i = 0; i < G; ++i) {
-      offset[i] = armed_[i] ? 0.0 : kArmingMargin;
+      offset[i] = armed_[i] ? 0.0 : unarmed_offset_[i];
       a[i] = t0;
       fa[i] = std::max(value_[i] + offset[i], std::numeric_limits<double>::min());
       b[i] = t1;
@@ -126,6 +131,7 @@ class GuardWatch {
   }
 
   std::array<double, G> value_;
+  std::array<double, G> unarmed_offset_{};  // an unarmed guard fires below minus this
   std::array<bool, G> armed_{}, below_{};
 };
 
