@@ -1,12 +1,15 @@
-// A randomized stress test over wide input ranges: every scene finishes with finite outputs, no
-// impact gains energy, the contact force stays in Coulomb's cone with V >= 0, and the work is
-// bounded. A failing scene is printed as a scene JSON to replay with `blockfrag simulate`.
+// A randomized stress test over wide input ranges (rectangles and polygons, three pulse shapes,
+// vertical motion, dam crests): every scene finishes with finite outputs, no impact gains energy,
+// the contact force stays in Coulomb's cone with V >= 0, and the work is bounded. A failing scene
+// is printed as a scene JSON to replay with `blockfrag simulate`.
 // BLOCKFRAG_RANDOM_SCENES sets the count (default 100000; CI's sanitizer pass uses fewer).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <vector>
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/scene_json.hpp"
@@ -39,6 +42,23 @@ Scene random_scene(std::mt19937_64& rng) {
   if (kind == 1) s.ground_motion = SinePulse{A, T, 0.5 * std::floor(1 + 6 * u(rng))};
   if (kind == 2) s.ground_motion = RectangularPulse{A, T};
   s.duration = std::min(10.0, 2 * T + 2);
+  // The inputs of later issues: vertical motion (lift-off beyond 1 g), polygon blocks (a
+  // trapezoid, or a pentagon with a gable), a dam crest between the ground and the block.
+  if (u(rng) < 0.3) {
+    const double Av = log_uniform(rng, 0.05, 2.0) * (u(rng) < 0.5 ? -1 : 1);
+    const double Tv = log_uniform(rng, 0.05, 5.0);
+    s.vertical_motion = SinePulse{Av, Tv, 0.5 * std::floor(1 + 6 * u(rng))};
+  }
+  if (u(rng) < 0.3) {
+    const double w = s.block.half_width, h = 2 * s.block.half_height;
+    const double top_left = -w + 0.9 * w * u(rng), top_right = w - 0.9 * w * u(rng);
+    std::vector<std::array<double, 2>> v = {{-w, 0}, {w, 0}, {top_right, h}, {top_left, h}};
+    if (u(rng) < 0.5) {
+      v.insert(v.begin() + 3, {0.5 * (top_left + top_right), h * (1 + 0.3 * u(rng))});
+    }
+    s.polygon = PolygonBlock{v, 1.0};
+  }
+  if (u(rng) < 0.2) s.dam = DamCrest{DamPeriod{log_uniform(rng, 0.05, 0.5)}, 0.05, 1.0};
   s.solver.tolerance = log_uniform(rng, 1e-10, 1e-6);
   s.solver.max_wall_seconds = 20;
   return s;
