@@ -16,8 +16,8 @@ namespace blockfrag {
 
 class SegmentObserver {
  public:
-  SegmentObserver(Summary& summary, double output_interval, double g)
-      : summary_(summary), interval_(output_interval), g_(g) {}
+  SegmentObserver(Summary& summary, const BlockGeometry& geometry, double output_interval, double g)
+      : summary_(summary), geometry_(geometry), interval_(output_interval), g_(g) {}
 
   void start(const BlockState& s) {
     x0_ = s.x;
@@ -27,6 +27,12 @@ class SegmentObserver {
   void observe_state(const BlockState& s) {
     summary_.max_abs_theta = std::max(summary_.max_abs_theta, std::abs(s.theta));
     summary_.max_abs_slide = std::max(summary_.max_abs_slide, std::abs(s.x - x0_));
+    const double c = std::cos(s.theta), sn = std::sin(s.theta);
+    double lowest = 0.0;
+    for (int i = 0; i < geometry_.corner_count(); ++i) {
+      lowest = std::min(lowest, s.y + rotate(geometry_.corner(i), c, sn).y);
+    }
+    summary_.max_penetration = std::max(summary_.max_penetration, -lowest / geometry_.size());
   }
 
   // One step [t0, t1] of a segment in which state_at(t) and forces_at(t) (per unit mass) are
@@ -73,6 +79,7 @@ class SegmentObserver {
   }
 
   Summary& summary_;
+  const BlockGeometry& geometry_;
   double interval_, g_;
   double x0_ = 0.0;
   double next_output_ = 0.0;

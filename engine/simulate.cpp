@@ -75,7 +75,7 @@ class Simulation {
         resolver_(geometry_, scene.contact, scene.g),
         housner_(geometry_, scene.effects.automatic || scene.effects.impact, scene.g),
         newmark_(geometry_, scene.contact.friction, scene.g),
-        observer_(summary_, output_interval, scene.g),
+        observer_(summary_, geometry_, output_interval, scene.g),
         log_impacts_(output_interval > 0) {
     summary_.model = model_;
   }

@@ -53,6 +53,9 @@ struct Summary {
   // The largest breach of the contact laws at any step, per weight: max(-V, |F| - mu V) / (M g);
   // 0 when the contact force stayed in Coulomb's cone with V >= 0 throughout.
   double max_contact_violation = 0.0;
+  // The deepest any corner of the block went below the ground at a step's end or at an extreme of
+  // theta or x, over R: event location keeps it near 1e-12.
+  double max_penetration = 0.0;
   long painleve_events = 0;  // jams resolved by a tangential impulse, singular points passed
 };
 

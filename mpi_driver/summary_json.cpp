@@ -37,6 +37,7 @@ nlohmann::json summary_to_json(const Summary& summary) {
           {"events", summary.events},
           {"max_impact_energy_gain", summary.max_impact_energy_gain},
           {"max_contact_violation", summary.max_contact_violation},
+          {"max_penetration", summary.max_penetration},
           {"painleve_events", summary.painleve_events}};
 }
 

@@ -49,6 +49,7 @@ TEST_P(BothMethods, SmallRestitutionBouncingSettlesInFiniteTime) {
     EXPECT_EQ(s.status, Status::ok);
     ASSERT_FALSE(s.modes.empty());
     EXPECT_EQ(s.modes.back().mode, ModeKind::rest) << "e = " << e;
+    EXPECT_LT(s.max_penetration, 1e-9) << "e = " << e;
     EXPECT_LT(s.modes.back().time, 5.0);
     EXPECT_EQ(s.final_theta, 0.0);
     EXPECT_GT(s.impacts, 5);

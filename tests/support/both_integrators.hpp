@@ -24,7 +24,7 @@ class BothMethods : public ::testing::TestWithParam<Method> {
 };
 
 // One scene with the adaptive method and with the paper's RK4 (its dt), for tests that compare them:
-// each run must finish inside the contact laws and begin with the given modes.
+// each run must finish inside the contact laws, above the ground, and begin with the given modes.
 inline std::array<Summary, 2> simulate_with_both_methods(Scene scene,
                                                          std::initializer_list<ModeKind> first_modes) {
   std::array<Summary, 2> runs;
@@ -35,6 +35,7 @@ inline std::array<Summary, 2> simulate_with_both_methods(Scene scene,
     SCOPED_TRACE(method == Method::adaptive ? "adaptive" : "rk4");
     EXPECT_EQ(s.status, Status::ok);
     EXPECT_LT(s.max_contact_violation, 1e-9);
+    EXPECT_LT(s.max_penetration, 1e-9);
     EXPECT_GE(s.modes.size(), first_modes.size());
     std::size_t i = 0;
     for (const ModeKind mode : first_modes) {

@@ -1,0 +1,34 @@
+// The summary's extremes as the observer records them: the deepest corner below the ground.
+#include "engine/segment_observer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace blockfrag {
+namespace {
+
+TEST(SegmentObserver, PenetrationIsTheDeepestCornerBelowTheGroundOverR) {
+  const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
+  Summary summary;
+  SegmentObserver observer(summary, block, 0.0, 9.81);
+  BlockState resting;
+  resting.y = 1.0;
+  observer.start(resting);
+  EXPECT_EQ(summary.max_penetration, 0.0);
+
+  // Tilted by 0.1 rad about its centre, 0.9 m up: the lower base corner is at
+  // 0.9 - 0.5 sin 0.1 - cos 0.1, under the ground.
+  BlockState sunk;
+  sunk.y = 0.9;
+  sunk.theta = 0.1;
+  observer.observe_state(sunk);
+  const double depth = -(0.9 - 0.5 * std::sin(0.1) - std::cos(0.1));
+  EXPECT_NEAR(summary.max_penetration, depth / std::hypot(0.5, 1.0), 1e-15);
+
+  observer.observe_state(resting);  // the deepest stays
+  EXPECT_NEAR(summary.max_penetration, depth / std::hypot(0.5, 1.0), 1e-15);
+}
+
+}  // namespace
+}  // namespace blockfrag
