@@ -16,23 +16,22 @@ constexpr double kArmingMargin = 1e-12;
 constexpr int kInteriorSamples = 16;
 constexpr double kNearZero = 0.05;
 
-// How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: near zero, fires
-// once clearly negative (a margin below zero, and below its start), whether or not it rose clearly
-// above zero first (a corner that lifts by
-// less than the margin and comes back must still land). Below: starts clearly negative (a corner a
-// hair below the ground, rising), fires only after it has risen and armed.
+// How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: not clearly positive,
+// fires once clearly below both zero and its start, whether or not it rose clearly above zero first
+// (a corner that lifts by less than the margin and comes back must still land), and fires at zero
+// once it has risen and armed. A guard that starts a hair below zero is unarmed too: a corner the
+// contact tolerance left under the ground, turned further down by the new mode, must land there;
+// one that never fired until it armed sank through the ground.
 template <int G>
 class GuardWatch {
  public:
   explicit GuardWatch(const std::array<double, G>& at_start) : value_(at_start) {
     for (int i = 0; i < G; ++i) {
       armed_[i] = at_start[i] > kArmingMargin;
-      // An unarmed guard's event leaves it just past -kArmingMargin: the next mode must see that
-      // as near zero, not below, or a bounce that fits in one step would never arm it.
-      below_[i] = at_start[i] < -2 * kArmingMargin;
-      // Such a start, a hair past -kArmingMargin, must go lower still to fire: fired at once
-      // (its value at the start already past the margin), a corner rising at 3e-7 m/s that gravity
-      // brings back within 6e-8 s started flight after flight 1e-15 s apart.
+      // A start below -kArmingMargin (an unarmed guard's event leaves it there) must go lower
+      // still to fire: fired at once (its value at the start already past the margin), a corner
+      // rising at 3e-7 m/s that gravity brings back within 6e-8 s started flight after flight
+      // 1e-15 s apart.
       unarmed_offset_[i] = std::max(kArmingMargin, -at_start[i] * (1 + 1e-9));
     }
   }
@@ -61,7 +60,7 @@ class GuardWatch {
       b[i] = t1;
       fb[i] = next[i] + offset[i];
       // A guard close to zero may dip below it and come back inside one step: look inside.
-      sampled[i] = !below_[i] && (!armed_[i] || std::min(fa[i], fb[i]) < kNearZero);
+      sampled[i] = !armed_[i] || std::min(fa[i], fb[i]) < kNearZero;
       any_sampled = any_sampled || sampled[i];
     }
     // One evaluation of all guards per interior sample serves every guard that is looked inside.
@@ -84,7 +83,7 @@ class GuardWatch {
       }
     }
     for (int i = 0; i < G; ++i) {
-      if (below_[i] || fb[i] > 0) continue;
+      if (fb[i] > 0) continue;
       const auto f = [&](double x) { return guards_at(x)[i] + offset[i]; };
       const Bracket located = locate_crossing(f, a[i], b[i], fa[i], fb[i], time_tolerance);
       if (located.after < found.after) found = {i, located.after, located.before};
@@ -95,10 +94,7 @@ class GuardWatch {
 
   // The step is kept: its end values become the next step's start.
   void advance(const std::array<double, G>& next) {
-    for (int i = 0; i < G; ++i) {
-      armed_[i] = armed_[i] || next[i] > kArmingMargin;
-      below_[i] = below_[i] && !armed_[i];
-    }
+    for (int i = 0; i < G; ++i) armed_[i] = armed_[i] || next[i] > kArmingMargin;
     value_ = next;
   }
 
@@ -132,7 +128,7 @@ class GuardWatch {
 
   std::array<double, G> value_;
   std::array<double, G> unarmed_offset_{};  // an unarmed guard fires below minus this
-  std::array<bool, G> armed_{}, below_{};
+  std::array<bool, G> armed_{};
 };
 
 }  // namespace blockfrag
