@@ -88,6 +88,28 @@ TEST(MicroBounces, ACornerLiftedByAHairUnderVerticalMotionLandsAgain) {
   EXPECT_NEAR(runs[0].final_slide, runs[1].final_slide, 1e-7);
 }
 
+TEST(CornerUnderTheGround, ABouncingCornerTheContactToleranceLeftUnderTheGroundLandsThere) {
+  // A near-flat block making small bounces (found by the random scenes test once it measured
+  // penetration): one corner lands and bounces off while the other, 9.5e-10 R up, is within the
+  // contact tolerance; the rock mode about it puts it on the ground, which leaves the bouncing
+  // corner 9.5e-10 R under. Its landing guard, starting below zero, was never armed: the block
+  // rotated on through the ground to 0.2 R. It is watched like any unarmed guard now. Bound: no
+  // corner deeper than the contact tolerance (the helper's 1e-9 R); the mirrored pulse mirrors
+  // the response.
+  Scene scene = block_scene(0.09431906616914858, 0.07975991013875293, 1.6036322979355901,
+                            0.06288283695023845, CosinePulse{1.3788519599203863, 0.3090951492387029, 2.0},
+                            2.6181902984774057, 1.5497186686440278e-08);
+  const auto runs = testing::simulate_with_both_methods(scene, {ModeKind::rock, ModeKind::flight});
+  EXPECT_EQ(runs[0].impacts, runs[1].impacts);
+  EXPECT_NEAR(runs[0].max_abs_theta, runs[1].max_abs_theta, 1e-8);
+
+  std::get<CosinePulse>(scene.ground_motion).amplitude_g *= -1;
+  const Summary mirrored = simulate(scene);
+  EXPECT_EQ(mirrored.impacts, runs[0].impacts);
+  EXPECT_NEAR(mirrored.max_abs_theta, runs[0].max_abs_theta, 1e-12);
+  EXPECT_NEAR(mirrored.final_slide, -runs[0].final_slide, 1e-12);
+}
+
 TEST(LongRecord, SixHundredSecondsOfShakingFinishInBoundedWork) {
   // 600 s of a sine that keeps the block rocking and bouncing without overturning; the adaptive
   // method only (RK4 at the paper's dt would take 2.4 M steps).
