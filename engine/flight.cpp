@@ -8,6 +8,10 @@ namespace blockfrag {
 
 namespace {
 
+// How far below its start a corner that begins a flight at the ground may go before it is seen
+// landing (over R; the guards' arming margin).
+constexpr double kLandingSinkAllowance = 1e-12;
+
 // A corner's height above the ground and its rate, from one sine and cosine.
 struct CornerHeight {
   const BlockGeometry& geometry;
@@ -50,15 +54,19 @@ double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight:
 
 std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
                                      double min_step, double time_tolerance,
-                                     double height_noise) {
+                                     double height_noise, double sink_allowance) {
   double tau = 0.0;
   CornerHeight::Sample now = h.at(0.0);
   if (now.height <= 0.0) {
     // Leaving the ground: start where it has risen (half the earliest possible return). A corner
     // that has not risen by then is watched until it has; one that turns down first never left
     // the ground, and lands at once (ignoring it let a corner that left at 1e-8 m/s sink through
-    // the ground for the rest of the flight).
-    tau = now.rate > 0 ? now.rate / bound : min_step;
+    // the ground for the rest of the flight). One not rising at the start is looked at again
+    // before it can sink by more than the allowance (after min_step, a corner moving down at
+    // the end of a vertical pulse sank 5e-9 R).
+    tau = now.rate > 0 ? now.rate / bound
+                       : (now.rate + std::sqrt(now.rate * now.rate + 2 * bound * sink_allowance)) /
+                             bound;
     now = h.at(tau);
     while (now.height <= 0.0) {
       if (now.rate <= 0.0) return tau;
@@ -94,7 +102,8 @@ std::optional<double> first_landing(const BlockGeometry& geometry, const FlightS
     // A corner's height is y plus an arm of size R: its rounding error is a few ulps of their sum.
     const double height_noise =
         4 * std::numeric_limits<double>::epsilon() * (std::abs(f.y) + geometry.size());
-    if (auto tau = corner_landing(h, bound, limit, min_step, tolerance, height_noise)) {
+    if (auto tau = corner_landing(h, bound, limit, min_step, tolerance, height_noise,
+                                  kLandingSinkAllowance * geometry.size())) {
       if (!first || *tau < *first) first = tau;
     }
   }

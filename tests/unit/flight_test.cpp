@@ -47,6 +47,21 @@ TEST(Flight, ACornerThatBarelyLeavesAndTurnsDownIsNotLost) {
   EXPECT_LT(*landing, 1e-4);
 }
 
+TEST(Flight, ACornerStartingAtTheGroundMovingDownLandsBeforeItSinks) {
+  // A flat block that starts a flight with its base a hair under the ground and moving down (a
+  // flight carried past the end of a vertical pulse, found by the random scenes test): it was
+  // looked at again only after min_step, 5e-9 R under the ground. Bound: its base sinks by at
+  // most the landing allowance, 1e-12 R (with the start's depth, 1e-13 R).
+  const double a = 4.9, b = 25.7, min_step = 1.8e-4;
+  const BlockGeometry block(RectangularBlock{a, b, 1.0});
+  const double R = block.size(), y0 = b - 1e-13 * R, vy = -4.5e-5;
+  const auto landing = first_landing(block, FlightStart{y0, 0.0, vy, 0.0}, g, 10.0, min_step);
+  ASSERT_TRUE(landing.has_value());
+  const double base = flight_pose(FlightStart{y0, 0.0, vy, 0.0}, g, *landing).y - b;
+  EXPECT_GT(base, -1.1e-12 * R - 1e-13 * R);
+  EXPECT_LT(*landing, min_step / 10);
+}
+
 TEST(Flight, NoLandingWithinTheWindow) {
   const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
   EXPECT_FALSE(first_landing(block, FlightStart{1.0, 0.0, 2.0, 0.0}, g, 0.3, 1e-5).has_value());
