@@ -52,6 +52,12 @@ double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight:
   return hi;
 }
 
+// The earliest time a point `depth` above a level, moving up at `rate`, can reach it when its
+// downward acceleration is at most `bound`.
+double earliest_fall(double depth, double rate, double bound) {
+  return (rate + std::sqrt(rate * rate + 2.0 * bound * depth)) / bound;
+}
+
 std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
                                      double min_step, double time_tolerance,
                                      double height_noise, double sink_allowance) {
@@ -64,9 +70,7 @@ std::optional<double> corner_landing(const CornerHeight& h, double bound, double
     // the ground for the rest of the flight). One not rising at the start is looked at again
     // before it can sink by more than the allowance (after min_step, a corner moving down at
     // the end of a vertical pulse sank 5e-9 R).
-    tau = now.rate > 0 ? now.rate / bound
-                       : (now.rate + std::sqrt(now.rate * now.rate + 2 * bound * sink_allowance)) /
-                             bound;
+    tau = now.rate > 0 ? now.rate / bound : earliest_fall(sink_allowance, now.rate, bound);
     now = h.at(tau);
     while (now.height <= 0.0) {
       if (now.rate <= 0.0) return tau;
@@ -76,8 +80,7 @@ std::optional<double> corner_landing(const CornerHeight& h, double bound, double
     }
   }
   while (tau < tau_max) {
-    const double safe =
-        (now.rate + std::sqrt(now.rate * now.rate + 2.0 * bound * now.height)) / bound;
+    const double safe = earliest_fall(now.height, now.rate, bound);
     const double next = std::min(tau + std::max(safe, min_step), tau_max);
     const CornerHeight::Sample then = h.at(next);
     if (then.height <= 0.0) {

@@ -54,7 +54,8 @@ struct Summary {
   // 0 when the contact force stayed in Coulomb's cone with V >= 0 throughout.
   double max_contact_violation = 0.0;
   // The deepest any corner of the block went below the ground at a step's end or at an extreme of
-  // theta or x, over R: event location keeps it near 1e-12.
+  // theta or x, over R: at most about the contact tolerance (1e-9), which lets a corner put on the
+  // ground leave the other that far under.
   double max_penetration = 0.0;
   long painleve_events = 0;  // jams resolved by a tangential impulse, singular points passed
 };
