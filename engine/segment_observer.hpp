@@ -7,9 +7,9 @@
 #include <limits>
 #include <vector>
 
-#include "engine/block_state.hpp"
-#include "engine/modes.hpp"
-#include "engine/root_finding.hpp"
+#include "engine/scene/block_state.hpp"
+#include "engine/modes/modes.hpp"
+#include "engine/integrate/root_finding.hpp"
 #include "engine/summary.hpp"
 
 namespace blockfrag {

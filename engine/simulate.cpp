@@ -9,18 +9,18 @@
 #include <string>
 #include <type_traits>
 
-#include "engine/contact_resolution.hpp"
-#include "engine/dormand_prince_stepper.hpp"
-#include "engine/flight.hpp"
-#include "engine/gsl_stepper.hpp"
-#include "engine/guard_crossing.hpp"
-#include "engine/model_choice.hpp"
-#include "engine/modes.hpp"
-#include "engine/reduced_contact.hpp"
-#include "engine/rk4_stepper.hpp"
-#include "engine/root_finding.hpp"
-#include "engine/scene_motion.hpp"
-#include "engine/scene_validation.hpp"
+#include "engine/contact/contact_resolution.hpp"
+#include "engine/integrate/dormand_prince_stepper.hpp"
+#include "engine/modes/flight.hpp"
+#include "engine/integrate/gsl_stepper.hpp"
+#include "engine/integrate/guard_crossing.hpp"
+#include "engine/contact/model_choice.hpp"
+#include "engine/modes/modes.hpp"
+#include "engine/contact/reduced_contact.hpp"
+#include "engine/integrate/rk4_stepper.hpp"
+#include "engine/integrate/root_finding.hpp"
+#include "engine/motion/scene_motion.hpp"
+#include "engine/scene/scene_validation.hpp"
 #include "engine/segment_observer.hpp"
 
 namespace blockfrag {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "engine/scene.hpp"
+#include "engine/scene/scene.hpp"
 #include "engine/summary.hpp"
 
 namespace blockfrag {

@@ -14,16 +14,13 @@
 
 #include <CLI/CLI.hpp>
 
-#include "mpi_driver/accuracy_command.hpp"
-#include "mpi_driver/bench_command.hpp"
-#include "mpi_driver/config_reader.hpp"
-#include "mpi_driver/run_command.hpp"
-#include "mpi_driver/simulate_command.hpp"
+#include "mpi_driver/cli/accuracy_command.hpp"
+#include "mpi_driver/cli/bench_command.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/cli/run_command.hpp"
+#include "mpi_driver/cli/simulate_command.hpp"
 
 namespace {
-
-// Keep in step with project(VERSION) in the top-level CMakeLists.txt.
-constexpr const char* blockfrag_version = "0.1.0";
 
 constexpr int exit_code_other_error = 1;
 constexpr int exit_code_bad_input = 2;
@@ -32,7 +29,7 @@ constexpr int exit_code_bad_input = 2;
 
 int main(int argc, char** argv) {
   CLI::App app{"blockfrag: rigid-block rocking, sliding and overturning under ground pulses"};
-  app.set_version_flag("--version", std::string("blockfrag ") + blockfrag_version);
+  app.set_version_flag("--version", std::string("blockfrag ") + BLOCKFRAG_VERSION);
   app.require_subcommand(1);
 
   std::function<int()> command;

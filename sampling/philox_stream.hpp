@@ -1,7 +1,7 @@
 // Counter-based random numbers: every value is a pure function of (seed, stream, index, draw).
 //
 // Generator: Random123's Philox4x32-10, the bijection checked against Random123's own known-answer
-// vectors in tests/unit/sampling_stream_test.cpp. One call maps
+// vectors in tests/unit/sampling/sampling_stream_test.cpp. One call maps
 //   key     = {seed & 0xffffffff, seed >> 32}
 //   counter = {index & 0xffffffff, index >> 32, stream, draw}
 // to four 32-bit words out[0..3]; the first two are joined, first word high, into the 64-bit

@@ -10,8 +10,8 @@
 #include <benchmark/benchmark.h>
 
 #include "engine/simulate.hpp"
-#include "mpi_driver/accuracy_settings.hpp"
-#include "mpi_driver/accuracy_suite.hpp"
+#include "mpi_driver/accuracy/accuracy_settings.hpp"
+#include "mpi_driver/accuracy/accuracy_suite.hpp"
 
 namespace blockfrag {
 namespace {

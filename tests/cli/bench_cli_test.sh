@@ -92,7 +92,7 @@ with h5py.File(sys.argv[1], "r") as f:
     assert f["scenes/check_error_max_abs_theta"][...].max() < 1e-9
 PY
 
-check "the work-precision diagram is drawn" "$PYTHON" "$BLOCKFRAG_SOURCE_DIR/postproc/plot_work_precision.py" \
+check "the work-precision diagram is drawn" "$PYTHON" "$BLOCKFRAG_SOURCE_DIR/postproc/plots/plot_work_precision.py" \
   "$work/mini.h5" "$work/wp.png"
 check "the diagram is a PNG" "$PYTHON" -c 'import sys; assert open(sys.argv[1], "rb").read(8) == b"\x89PNG\r\n\x1a\n"' "$work/wp.png"
 

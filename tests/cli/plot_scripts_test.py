@@ -21,8 +21,8 @@ import matplotlib.image
 import numpy as np
 
 SOURCE = Path(os.environ.get("BLOCKFRAG_SOURCE_DIR", Path(__file__).resolve().parents[2]))
-PLOT_HISTORY = SOURCE / "postproc" / "plot_history.py"
-PLOT_FRAGILITY = SOURCE / "postproc" / "plot_fragility.py"
+PLOT_HISTORY = SOURCE / "postproc" / "plots" / "plot_history.py"
+PLOT_FRAGILITY = SOURCE / "postproc" / "plots" / "plot_fragility.py"
 
 # Colours the scripts promise: the mode shading of plot_history.py and the first two limit-state
 # colours of plot_fragility.py.

@@ -6,7 +6,7 @@
 #include <array>
 #include <initializer_list>
 
-#include "engine/scene.hpp"
+#include "engine/scene/scene.hpp"
 #include "engine/simulate.hpp"
 
 namespace blockfrag::testing {

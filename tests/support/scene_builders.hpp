@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "engine/scene.hpp"
+#include "engine/scene/scene.hpp"
 
 namespace blockfrag::testing {
 

@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mpi_driver/config_reader.hpp"
-#include "mpi_driver/scene_json.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/scene_json.hpp"
 
 namespace blockfrag::testing {
 

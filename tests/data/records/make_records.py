@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the synthetic records of tests/data/records/ (not earthquakes: formulas the tests know).
 
-Run from anywhere: python3 make_records.py. tests/unit/accelerogram_test.cpp checks the values
+Run from anywhere: python3 make_records.py. tests/unit/engine/accelerogram_test.cpp checks the values
 against the same formulas, so a change here must change them there.
   decaying_sine.AT2  PEER NGA (NGA-West2 header), a(t) = 0.3 exp(-t) sin(4 pi t) g, DT 0.005 s,
                      NPTS 400 (2 s), 5 values per line in Fortran's 1P5E15.7 style.

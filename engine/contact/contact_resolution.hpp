@@ -1,0 +1,61 @@
+// What happens at an event: impacts until no corner moves into the ground, then the one contact
+// mode consistent with the state and the ground's current lambda (Shenton's onset conditions,
+// stick/slip, lift-off, return to rest come out of the same consistency checks).
+#pragma once
+
+#include <string>
+
+#include "engine/scene/block_state.hpp"
+#include "engine/modes/modes.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace blockfrag {
+
+// Thresholds in units of the block's size R and of sqrt(g R), so they scale with the block.
+struct ContactTolerances {
+  double contact_height = 1e-9;     // a corner this close to the ground touches it
+  double resting_velocity = 1e-9;   // slower than this, a touching corner rests (or slips) on it
+  // An impact slower than this loses its bounce (e = 0), and one that would leave a flat block
+  // rocking or bouncing lays it flat: ends Zeno sequences in finite time; the energy left out is of
+  // the order of this velocity squared.
+  double settle_velocity = 1e-6;
+};
+
+struct ContactOutcome {
+  Mode mode = FlightMode{};
+  BlockState state;  // after impacts, projected onto the mode's constraints
+  bool impact = false;
+  bool painleve = false;              // a Painleve jump to stick was applied
+  double impact_energy_gain = 0.0;    // largest relative kinetic-energy change over the impacts
+  std::string failure;                // non-empty: no consistent outcome (reported, never hidden)
+};
+
+class ContactResolver {
+ public:
+  ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g,
+                  ContactTolerances tolerances = {});
+
+  // gravity_factor: 1 + lambda_v, gravity in the ground's frame over g.
+  ContactOutcome resolve(const BlockState& state, double lambda, double gravity_factor = 1.0) const;
+
+ private:
+  bool touches(const CornerKinematics& k) const { return k.height <= height_tol_; }
+  // Impacts, one contact point at a time, until no corner approaches; false if it does not end.
+  bool resolve_impacts(BlockState& s, ContactOutcome& out) const;
+  bool flat_impact(BlockState& s, double e) const;
+  void lay_flat(BlockState& s) const;
+  // lambda and gravity here are the effective ones: lambda g / g_v and g_v = g (1 + lambda_v).
+  Mode classify_flat(BlockState& s, double lambda, double gravity) const;
+  Mode classify_one_corner(BlockState& s, Corner pivot, double lambda, double gravity,
+                           ContactOutcome& out) const;
+  bool can_rock(const BlockState& s, Corner pivot, double lambda, double gravity,
+                bool from_flat) const;
+  bool can_slide_rock(const BlockState& s, Corner pivot, int slip, double lambda, double gravity,
+                      bool from_flat) const;
+
+  const BlockGeometry& geometry_;
+  double mu_, e_, g_;
+  double height_tol_, velocity_tol_, settle_velocity_;
+};
+
+}  // namespace blockfrag

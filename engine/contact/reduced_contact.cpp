@@ -1,0 +1,80 @@
+#include "engine/contact/reduced_contact.hpp"
+
+#include <cmath>
+
+namespace blockfrag {
+
+double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot) {
+  const Vec2 r_old = geometry.base_corner(old_pivot);
+  const Vec2 r_new = geometry.base_corner(other(old_pivot));
+  const double k2 = geometry.inertia_per_mass();
+  return (k2 + r_new.x * r_old.x + r_new.y * r_old.y) / (k2 + r_new.x * r_new.x + r_new.y * r_new.y);
+}
+
+HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
+                           ContactTolerances tolerances)
+    : geometry_(geometry),
+      impacts_lose_energy_(impacts_lose_energy),
+      settle_velocity_(tolerances.settle_velocity * std::sqrt(g * geometry.size())) {}
+
+ContactOutcome HousnerRules::rock_on(BlockState s, Corner pivot) const {
+  const Vec2 r = rotate(geometry_.base_corner(pivot), std::cos(s.theta), std::sin(s.theta));
+  s.y = -r.y;
+  s.vx = s.omega * r.y;
+  s.vy = -s.omega * r.x;
+  ContactOutcome out;
+  out.mode = RockMode{pivot, s.x + r.x};
+  out.state = s;
+  return out;
+}
+
+ContactOutcome HousnerRules::start(const BlockState& state, double lambda) const {
+  if (state.theta != 0.0) return rock_on(state, state.theta < 0 ? Corner::right : Corner::left);
+  BlockState s = state;
+  s.y = geometry_.rest_height();
+  s.vx = s.vy = s.omega = 0.0;
+  if (lambda > geometry_.tip_threshold(Corner::right)) return rock_on(s, Corner::right);
+  if (-lambda > geometry_.tip_threshold(Corner::left)) return rock_on(s, Corner::left);
+  ContactOutcome out;
+  out.mode = RestMode{};
+  out.state = s;
+  return out;
+}
+
+ContactOutcome HousnerRules::impact(const BlockState& state, Corner pivot, double lambda) const {
+  BlockState s = state;
+  s.theta = 0.0;
+  // Zeno: the impacts accumulate in finite time. As in the full model, a corner that lands, or
+  // leaves the ground after the impact, slower than the settling speed lays the block flat.
+  const double base_width =
+      geometry_.base_corner(Corner::right).x - geometry_.base_corner(Corner::left).x;
+  const auto settles = [&] { return std::abs(s.omega) * base_width < settle_velocity_; };
+  if (!settles() && impacts_lose_energy_) s.omega *= housner_impact_ratio(geometry_, pivot);
+  ContactOutcome out;
+  if (settles()) {
+    s.omega = 0.0;
+    out = start(s, lambda);
+  } else {
+    out = rock_on(s, other(pivot));
+  }
+  out.impact = impacts_lose_energy_;
+  return out;
+}
+
+NewmarkRules::NewmarkRules(const BlockGeometry& geometry, double mu, double g,
+                           ContactTolerances tolerances)
+    : mu_(mu), velocity_tol_(tolerances.resting_velocity * std::sqrt(g * geometry.size())) {}
+
+ContactOutcome NewmarkRules::resolve(const BlockState& state, double lambda) const {
+  ContactOutcome out;
+  out.state = state;
+  if (std::abs(state.vx) > velocity_tol_) {
+    out.mode = SlideMode{state.vx > 0 ? 1 : -1};
+    return out;
+  }
+  out.state.vx = 0.0;
+  out.mode = std::abs(lambda) > mu_ ? Mode{SlideMode{lambda > 0 ? 1 : -1}} : Mode{RestMode{}};
+  return out;
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,43 @@
+// The contact rules of the two one-degree-of-freedom models: what follows an event in Housner's
+// rocking block (never slides, never lifts off) and in Newmark's sliding block (never rocks).
+#pragma once
+
+#include "engine/contact/contact_resolution.hpp"
+
+namespace blockfrag {
+
+// omega after an impact on the other base corner that sticks and does not bounce (angular momentum
+// about it is conserved): (I/M + r_new . r_old) / (I/M + |r_new|^2), Housner's 1 - 1.5 sin^2(alpha)
+// for a rectangle.
+double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot);
+
+class HousnerRules {
+ public:
+  HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
+               ContactTolerances tolerances = {});
+
+  // From rest (or a release from a tilt): rocks once lambda exceeds a tipping threshold.
+  ContactOutcome start(const BlockState& state, double lambda) const;
+  // The rocking block came back to theta = 0 on `pivot`: the other corner takes over.
+  ContactOutcome impact(const BlockState& state, Corner pivot, double lambda) const;
+
+ private:
+  ContactOutcome rock_on(BlockState s, Corner pivot) const;
+
+  const BlockGeometry& geometry_;
+  bool impacts_lose_energy_;
+  double settle_velocity_;
+};
+
+class NewmarkRules {
+ public:
+  NewmarkRules(const BlockGeometry& geometry, double mu, double g, ContactTolerances tolerances = {});
+
+  // Slides while the base moves relative to the ground, or from a stop once |lambda| exceeds mu.
+  ContactOutcome resolve(const BlockState& state, double lambda) const;
+
+ private:
+  double mu_, velocity_tol_;
+};
+
+}  // namespace blockfrag

@@ -1,0 +1,116 @@
+#include "engine/modes/flight.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace blockfrag {
+
+namespace {
+
+// How far below its start a corner that begins a flight at the ground may go before it is seen
+// landing (over R; the guards' arming margin).
+constexpr double kLandingSinkAllowance = 1e-12;
+
+// A corner's height above the ground and its rate, from one sine and cosine.
+struct CornerHeight {
+  const BlockGeometry& geometry;
+  const FlightStart& f;
+  double g;
+  int corner;
+
+  struct Sample {
+    double height, rate;
+  };
+  Sample at(double tau) const {
+    const CornerKinematics k = corner_kinematics(geometry, flight_pose(f, g, tau), corner);
+    return {k.height, k.u_y};
+  }
+};
+
+// Newton on the height inside [lo, hi] (height(lo) > 0 >= height(hi)): the rate is its
+// derivative, so a step costs one evaluation and converges quadratically from either side. A step
+// that would leave the bracket bisects it; one kept half a tolerance inside it ends a search that
+// converges from above by landing just past the crossing. Returns a time at or below the ground
+// within the time tolerance of the crossing, or within the height's rounding noise of it.
+double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight::Sample s,
+                      double time_tolerance, double height_noise) {
+  double x = lo;
+  for (int iteration = 0; iteration < 200 && hi - lo > time_tolerance; ++iteration) {
+    const double inside = 0.5 * time_tolerance;
+    double next = s.rate != 0 ? x - s.height / s.rate : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    x = std::clamp(next, lo + inside, hi - inside);
+    s = h.at(x);
+    if (s.height > 0) {
+      lo = x;
+    } else {
+      hi = x;
+      if (s.height >= -height_noise) break;
+    }
+  }
+  return hi;
+}
+
+// The earliest time a point `depth` above a level, moving up at `rate`, can reach it when its
+// downward acceleration is at most `bound`.
+double earliest_fall(double depth, double rate, double bound) {
+  return (rate + std::sqrt(rate * rate + 2.0 * bound * depth)) / bound;
+}
+
+std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
+                                     double min_step, double time_tolerance,
+                                     double height_noise, double sink_allowance) {
+  double tau = 0.0;
+  CornerHeight::Sample now = h.at(0.0);
+  if (now.height <= 0.0) {
+    // Leaving the ground: start where it has risen (half the earliest possible return). A corner
+    // that has not risen by then is watched until it has; one that turns down first never left
+    // the ground, and lands at once (ignoring it let a corner that left at 1e-8 m/s sink through
+    // the ground for the rest of the flight). One not rising at the start is looked at again
+    // before it can sink by more than the allowance (after min_step, a corner moving down at
+    // the end of a vertical pulse sank 5e-9 R).
+    tau = now.rate > 0 ? now.rate / bound : earliest_fall(sink_allowance, now.rate, bound);
+    now = h.at(tau);
+    while (now.height <= 0.0) {
+      if (now.rate <= 0.0) return tau;
+      tau *= 2.0;
+      if (tau >= tau_max) return std::nullopt;
+      now = h.at(tau);
+    }
+  }
+  while (tau < tau_max) {
+    const double safe = earliest_fall(now.height, now.rate, bound);
+    const double next = std::min(tau + std::max(safe, min_step), tau_max);
+    const CornerHeight::Sample then = h.at(next);
+    if (then.height <= 0.0) {
+      return locate_landing(h, tau, next, now, time_tolerance, height_noise);
+    }
+    tau = next;
+    now = then;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<double> first_landing(const BlockGeometry& geometry, const FlightStart& f, double g,
+                                    double tau_max, double min_step) {
+  const double bound = g + f.omega * f.omega * geometry.size();
+  std::optional<double> first;
+  for (int corner = 0; corner < geometry.corner_count(); ++corner) {
+    const CornerHeight h{geometry, f, g, corner};
+    const double limit = first ? *first : tau_max;
+    const double tolerance = 4e-16 * (1.0 + limit);
+    // A corner's height is y plus an arm of size R: its rounding error is a few ulps of their sum.
+    const double height_noise =
+        4 * std::numeric_limits<double>::epsilon() * (std::abs(f.y) + geometry.size());
+    if (auto tau = corner_landing(h, bound, limit, min_step, tolerance, height_noise,
+                                  kLandingSinkAllowance * geometry.size())) {
+      if (!first || *tau < *first) first = tau;
+    }
+  }
+  return first;
+}
+
+}  // namespace blockfrag

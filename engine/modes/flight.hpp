@@ -1,0 +1,31 @@
+// Free flight in closed form: theta and y do not feel the horizontal ground motion, so where the
+// block is and when a corner lands need no integration.
+#pragma once
+
+#include <optional>
+
+#include "engine/scene/block_state.hpp"
+
+namespace blockfrag {
+
+struct FlightStart {
+  double y, theta, vy, omega;
+};
+
+inline BlockState flight_pose(const FlightStart& f, double g, double tau) {
+  BlockState s;
+  s.y = f.y + f.vy * tau - 0.5 * g * tau * tau;
+  s.vy = f.vy - g * tau;
+  s.theta = f.theta + f.omega * tau;
+  s.omega = f.omega;
+  return s;
+}
+
+// The first tau in (0, tau_max] at which a corner reaches the ground moving down, if any.
+// Conservative advancement: a corner's height has |h''| <= g + omega^2 R, so a step that keeps
+// h + h' dt - K dt^2 / 2 >= 0 cannot skip a touchdown; steps shorter than min_step are taken as
+// min_step, so a graze shallower than K min_step^2 / 8 may go unseen.
+std::optional<double> first_landing(const BlockGeometry& geometry, const FlightStart& f, double g,
+                                    double tau_max, double min_step);
+
+}  // namespace blockfrag

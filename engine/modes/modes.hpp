@@ -1,0 +1,231 @@
+// The closed set of contact modes. Each mode that integrates an ODE is a small system: its
+// coordinates (chosen so its constraints hold exactly), right-hand side, guard functions (positive
+// while the mode holds; the mode ends where one reaches zero) and the map back to the full state.
+// Guards are dimensionless (lengths over R, forces over M g, velocities over sqrt(g R)).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <variant>
+
+#include "engine/scene/block_state.hpp"
+#include "engine/contact/contact_dynamics.hpp"
+#include "engine/motion/ground_motion.hpp"
+#include "engine/integrate/ode_state.hpp"
+#include "engine/summary.hpp"
+
+namespace blockfrag {
+
+struct RestMode {};
+struct SlideMode {
+  int slip_sign;
+};
+struct RockMode {
+  Corner pivot;
+  double pivot_x;
+};
+struct SlideRockMode {
+  Corner pivot;
+  int slip_sign;
+};
+struct FlightMode {};
+using Mode = std::variant<RestMode, SlideMode, RockMode, SlideRockMode, FlightMode>;
+
+ModeKind mode_kind(const Mode& mode);
+
+// What every system shares: the block, the contact, the ground motion pieces being integrated.
+struct SystemContext {
+  const BlockGeometry* geometry;
+  const MotionPiece* piece;     // horizontal: lambda
+  const MotionPiece* vertical;  // lambda_v
+  double g, mu;
+  // Gravity in the ground's frame over g: 1 + lambda_v. With it, each contact mode's equations are
+  // the horizontal-only ones with g_v = g (1 + lambda_v) for g and lambda g / g_v for lambda (an
+  // exact identity when lambda_v = 0). Exactly zero it would divide by zero: the contact has
+  // lost its load there, so any sign-preserving tiny value gives the same guard outcome.
+  double gravity_factor(double t) const {
+    const double factor = 1.0 + vertical->lambda(t);
+    return factor == 0.0 ? 1e-300 : factor;
+  }
+  double length_scale() const { return geometry->size(); }
+  // A base corner relative to the centre of mass, in the world frame.
+  Vec2 arm(double theta, Corner corner) const {
+    return rotate(geometry->base_corner(corner), std::cos(theta), std::sin(theta));
+  }
+  // Both base corners at once (guards need both; one sine and cosine serve them).
+  struct Arms {
+    Vec2 pivot, other;
+  };
+  Arms arms(double theta, Corner pivot) const {
+    const double cos_theta = std::cos(theta), sin_theta = std::sin(theta);
+    return {rotate(geometry->base_corner(pivot), cos_theta, sin_theta),
+            rotate(geometry->base_corner(blockfrag::other(pivot)), cos_theta, sin_theta)};
+  }
+  double velocity_scale() const { return std::sqrt(g * geometry->size()); }
+  // The guard that stops the run: the block lies on another face (|theta| = pi/2 for a rectangle).
+  double overturn_margin(double theta) const { return geometry->overturn_margin(theta); }
+};
+
+struct ContactForces {
+  double friction, normal;  // per unit mass
+};
+
+
+// Flat on the base, slipping with sign s: x'' = (lambda - s mu (1 + lambda_v)) g.  q = (x, vx).
+// Ends when the slip stops or the ground falls away faster than g (the load vanishes).
+struct SlideSystem {
+  static constexpr int N = 2, kGuards = 2;
+  SystemContext c;
+  int s;
+
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq[0] = q[1];
+    dq[1] = (c.piece->lambda(t) - s * c.mu * c.gravity_factor(t)) * c.g;
+  }
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    return {s * q[1] / c.velocity_scale(), c.gravity_factor(t)};
+  }
+  BlockState full(double, const OdeState<N>& q) const {
+    return {q[0], c.geometry->rest_height(), 0.0, q[1], 0.0, 0.0};
+  }
+  ContactForces forces(double t, const OdeState<N>&) const {
+    const double normal = c.g * c.gravity_factor(t);
+    return {-s * c.mu * normal, normal};
+  }
+  OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx}; }
+};
+
+// Rocking about a sticking corner.  q = (theta, omega); the pivot stays at (pivot_x, 0).
+struct RockSystem {
+  static constexpr int N = 2, kGuards = 4;
+  static constexpr int kOverturnGuard = 3;
+  SystemContext c;
+  Corner pivot;
+  double pivot_x;
+
+  Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
+  CornerContact contact(double t, const OdeState<N>& q) const {
+    return contact_at(t, q, arm(q[0], pivot));
+  }
+  CornerContact contact_at(double t, const OdeState<N>& q, Vec2 r) const {
+    const double factor = c.gravity_factor(t);
+    return sticking_corner(r, q[1], c.piece->lambda(t) / factor, c.g * factor,
+                           c.geometry->inertia_per_mass());
+  }
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq[0] = q[1];
+    dq[1] = contact(t, q).theta_dd;
+  }
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    const auto [r, r_other] = c.arms(q[0], pivot);
+    const CornerContact k = contact_at(t, q, r);
+    return {k.normal / c.g, (c.mu * k.normal - std::abs(k.friction)) / c.g,
+            (r_other.y - r.y) / c.length_scale(), c.overturn_margin(q[0])};
+  }
+  BlockState full(double, const OdeState<N>& q) const {
+    const Vec2 r = arm(q[0], pivot);
+    return {pivot_x - r.x, -r.y, q[0], q[1] * r.y, -q[1] * r.x, q[1]};
+  }
+  ContactForces forces(double t, const OdeState<N>& q) const {
+    const CornerContact k = contact(t, q);
+    return {k.friction, k.normal};
+  }
+  OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }
+};
+
+// Housner's rocking block: rocks on a corner that never slips or lifts (so no contact-force guards);
+// the other corner's landing and overturning end the mode.  q = (theta, omega).
+struct HousnerRockSystem {
+  static constexpr int N = 2, kGuards = 2;
+  static constexpr int kOverturnGuard = 1;
+  RockSystem rock;
+
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const { rock(t, q, dq); }
+  std::array<double, kGuards> guards(double, const OdeState<N>& q) const {
+    const auto [r, r_other] = rock.c.arms(q[0], rock.pivot);
+    return {(r_other.y - r.y) / rock.c.length_scale(), rock.c.overturn_margin(q[0])};
+  }
+  BlockState full(double t, const OdeState<N>& q) const { return rock.full(t, q); }
+  ContactForces forces(double t, const OdeState<N>& q) const { return rock.forces(t, q); }
+  OdeState<N> coordinates(const BlockState& b) const { return rock.coordinates(b); }
+};
+
+// Rocking about a slipping corner.  q = (theta, omega, pivot x, pivot x velocity).
+struct SlideRockSystem {
+  static constexpr int N = 4, kGuards = 5;
+  static constexpr int kOverturnGuard = 3;
+  SystemContext c;
+  Corner pivot;
+  int s;
+
+  Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
+  CornerContact contact(double t, const OdeState<N>& q) const {
+    return contact_at(t, q, arm(q[0], pivot));
+  }
+  CornerContact contact_at(double t, const OdeState<N>& q, Vec2 r) const {
+    const double factor = c.gravity_factor(t);
+    return slipping_corner(r, q[1], s, c.piece->lambda(t) / factor, c.g * factor, c.mu,
+                           c.geometry->inertia_per_mass());
+  }
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    const CornerContact k = contact(t, q);
+    dq = {q[1], k.theta_dd, q[3], k.corner_dd};
+  }
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    const double R = c.length_scale(), k2 = c.geometry->inertia_per_mass();
+    const auto [r, r_other] = c.arms(q[0], pivot);
+    const double d = slide_rock_denominator(r, s, c.mu, k2) / k2 - kPainleveMargin;
+    return {contact_at(t, q, r).normal / c.g, s * q[3] / c.velocity_scale(), (r_other.y - r.y) / R,
+            c.overturn_margin(q[0]), d};
+  }
+  BlockState full(double, const OdeState<N>& q) const {
+    const Vec2 r = arm(q[0], pivot);
+    return {q[2] - r.x, -r.y, q[0], q[3] + q[1] * r.y, -q[1] * r.x, q[1]};
+  }
+  ContactForces forces(double t, const OdeState<N>& q) const {
+    const CornerContact k = contact(t, q);
+    return {k.friction, k.normal};
+  }
+  OdeState<N> coordinates(const BlockState& b) const {
+    const Vec2 r = arm(b.theta, pivot);
+    return {b.theta, b.omega, b.x + r.x, b.vx - b.omega * r.y};
+  }
+};
+
+// Free flight under vertical ground motion: the height above the ground feels g (1 + lambda_v), so
+// it is integrated with x; theta turns at its constant rate.  q = (x, vx, y, vy).
+struct FlightSystem {
+  static constexpr int N = 4, kGuards = 2;
+  static constexpr int kOverturnGuard = 1;
+  SystemContext c;
+  double t0, theta0, omega;
+
+  double theta(double t) const { return theta0 + omega * (t - t0); }
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq = {q[1], c.piece->lambda(t) * c.g, q[3], -c.g * (1.0 + c.vertical->lambda(t))};
+  }
+  // Within the overturning range only a base corner can be lowest.
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    const double th = theta(t);
+    const double lowest = std::min(c.arm(th, Corner::left).y, c.arm(th, Corner::right).y);
+    return {(q[2] + lowest) / c.length_scale(), c.overturn_margin(th)};
+  }
+  BlockState full(double t, const OdeState<N>& q) const {
+    return {q[0], q[2], theta(t), q[1], q[3], omega};
+  }
+  ContactForces forces(double, const OdeState<N>&) const { return {0.0, 0.0}; }
+  OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx, b.y, b.vy}; }
+};
+
+// Free flight: theta and y are closed-form; only x feels the ground (x'' = lambda g).  q = (x, vx).
+struct FlightDriftSystem {
+  static constexpr int N = 2;
+  SystemContext c;
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    dq[0] = q[1];
+    dq[1] = c.piece->lambda(t) * c.g;
+  }
+};
+
+}  // namespace blockfrag

@@ -1,0 +1,105 @@
+// The ground motion as smooth pieces: lambda(t) is smooth inside each piece and may jump (or kink)
+// between pieces, so the integrator never steps across a piece boundary and each stage evaluates
+// the formula of the piece it lies in (the left limit at the piece's end, not the next piece's).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "engine/motion/pulse_shapes.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace blockfrag {
+
+class MotionPiece {
+ public:
+  enum class Shape { zero, constant, linear, cosine, sine, ricker, mavroeidis_papageorgiou };
+
+  // lambda(t) for one shape; unused parameters stay zero.
+  struct Formula {
+    Shape shape = Shape::zero;
+    double amplitude = 0.0;          // the value (constant, linear at origin) or the peak
+    double angular_frequency = 0.0;  // cosine, sine: A cos(omega t + phase)
+    double phase = 0.0;
+    double origin = 0.0;             // linear: lambda = A + slope (t - origin)
+    double slope = 0.0;
+    // ricker: A pulse::ricker(omega (t - origin)), omega = pi / Tp.
+    // mavroeidis_papageorgiou: A pulse::mavroeidis_papageorgiou(omega (t - origin), modulation,
+    // phase), omega = 2 pi / Tp, modulation = 1 / gamma.
+    double modulation = 0.0;
+  };
+
+  // Valid from start (the previous piece's end, or 0) to end.
+  MotionPiece(const Formula& formula, double start, double end)
+      : f_(formula), start_(start), end_(end) {}
+
+  double start() const { return start_; }
+  double end() const { return end_; }
+  bool is_zero() const {
+    return f_.shape == Shape::zero || (f_.amplitude == 0.0 && f_.slope == 0.0);
+  }
+
+  // The piece's formula, also at its end point (the left limit there).
+  double lambda(double t) const {
+    switch (f_.shape) {
+      case Shape::zero: return 0.0;
+      case Shape::constant: return f_.amplitude;
+      case Shape::linear: return f_.amplitude + f_.slope * (t - f_.origin);
+      case Shape::cosine: return f_.amplitude * std::cos(f_.angular_frequency * t + f_.phase);
+      case Shape::sine: return f_.amplitude * std::sin(f_.angular_frequency * t + f_.phase);
+      case Shape::ricker: return f_.amplitude * pulse::ricker(f_.angular_frequency * (t - f_.origin));
+      case Shape::mavroeidis_papageorgiou:
+        return f_.amplitude *
+               pulse::mavroeidis_papageorgiou(f_.angular_frequency * (t - f_.origin), f_.modulation, f_.phase);
+    }
+    return 0.0;
+  }
+
+  // An upper bound of |lambda| over the piece.
+  double max_abs_lambda() const;
+
+  // How fast lambda changes: its period for oscillating pieces (the Ricker wavelet's Tp, the
+  // fastest of the Mavroeidis-Papageorgiou pulse's three sines), unbounded for polynomial ones.
+  double time_scale() const {
+    const double omega = f_.angular_frequency;
+    if (!(omega > 0)) return std::numeric_limits<double>::infinity();
+    if (f_.shape == Shape::ricker) return std::numbers::pi / omega;
+    if (f_.shape == Shape::mavroeidis_papageorgiou) return 2.0 * std::numbers::pi / (omega * (1.0 + f_.modulation));
+    return 2.0 * std::numbers::pi / omega;
+  }
+
+  // Times in (t0, t1) where lambda has an extremum: checking a function of lambda alone there and
+  // at the ends finds every excursion past a threshold.
+  std::vector<double> extrema_between(double t0, double t1) const;
+
+ private:
+  Formula f_;
+  double start_, end_;
+};
+
+class GroundMotionPieces {
+ public:
+  // g converts the pulses given by a ground velocity in m/s (Mavroeidis-Papageorgiou) into lambda;
+  // every other motion is given in g already.
+  explicit GroundMotionPieces(const GroundMotion& motion, double g = 9.81);
+  // lambda given at increasing times, linear in between, zero outside [times.front(), times.back()].
+  // A time given twice in a row is a jump: the first value ends one piece, the second starts the next.
+  GroundMotionPieces(const std::vector<double>& times, const std::vector<double>& lambdas);
+
+  const MotionPiece& piece_at(double t) const;  // the first piece with t < end
+  double lambda(double t) const { return piece_at(t).lambda(t); }
+  const std::vector<MotionPiece>& pieces() const { return pieces_; }
+  // The largest |lambda| (the peak ground acceleration in g): at the pieces' ends and extrema.
+  double peak_abs_lambda() const;
+
+ private:
+  void add(const MotionPiece::Formula& formula, double end);
+  void add_tabulated(const std::vector<double>& times, const std::vector<double>& lambdas);
+  void close();  // appends the zero piece that lasts forever
+
+  std::vector<MotionPiece> pieces_;
+};
+
+}  // namespace blockfrag

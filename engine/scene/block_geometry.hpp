@@ -1,0 +1,105 @@
+// The rigid block's shape and mass properties, in body coordinates centred on the centre of mass.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "engine/scene/scene.hpp"
+
+namespace blockfrag {
+
+struct Vec2 {
+  double x, y;
+};
+
+// Rot(theta) c: a body vector seen in the world frame (theta counter-clockwise).
+inline Vec2 rotate(Vec2 c, double cos_theta, double sin_theta) {
+  return {c.x * cos_theta - c.y * sin_theta, c.x * sin_theta + c.y * cos_theta};
+}
+
+enum class Corner { left = 0, right = 1 };
+
+inline Corner other(Corner corner) { return corner == Corner::left ? Corner::right : Corner::left; }
+
+class BlockGeometry {
+ public:
+  // A rectangle is the polygon with its four corners: one path for every block, so a polygon given
+  // a rectangle's vertices is that rectangle to the last bit.
+  explicit BlockGeometry(const RectangularBlock& block)
+      : BlockGeometry(PolygonBlock{{{-block.half_width, -block.half_height},
+                                    {block.half_width, -block.half_height},
+                                    {block.half_width, block.half_height},
+                                    {-block.half_width, block.half_height}},
+                                   block.mass}) {}
+  // Mass properties from the polygon (engine/scene/polygon_properties.hpp); it must have no defect.
+  explicit BlockGeometry(const PolygonBlock& block);
+
+  // Corners 0 and 1 are the base's left and right ends; the others follow counter-clockwise
+  // (2 and 3 are the top's right and left for a rectangle). A polygon's corners are its convex
+  // hull's: a reflex corner never touches a flat ground.
+  int corner_count() const { return static_cast<int>(corners_.size()); }
+  Vec2 corner(int i) const { return corners_[static_cast<std::size_t>(i)]; }
+  Vec2 base_corner(Corner c) const { return corner(static_cast<int>(c)); }
+
+  double mass() const { return mass_; }
+  double inertia() const { return mass_ * inertia_per_mass_; }
+  double inertia_per_mass() const { return inertia_per_mass_; }  // I/M
+  // R, the length scale: the largest distance of a corner from the centre of mass (the rectangle's
+  // half-diagonal), so omega^2 R bounds every corner's centripetal acceleration.
+  double size() const { return size_; }
+  double rest_height() const { return rest_height_; }  // centre of mass above the base
+
+  // Rocking about a base corner cannot start while lambda stays within these (a/b for a rectangle):
+  // the moment of the inertial force about the corner is below gravity's.
+  double tip_threshold(Corner c) const {
+    const Vec2 r = base_corner(c);
+    return std::abs(r.x) / -r.y;
+  }
+  // Flat sliding with slip sign s keeps both base corners down only while friction's moment about
+  // the centre of mass is below what the normal forces can balance: mu <= the leading corner's
+  // tip threshold (the right corner's when sliding to +x), a/b for a rectangle either way.
+  double flat_slide_friction_limit(int slip_sign) const {
+    return tip_threshold(slip_sign > 0 ? Corner::right : Corner::left);
+  }
+  // The same for whichever way it slides.
+  double flat_slide_friction_limit() const {
+    return std::min(tip_threshold(Corner::left), tip_threshold(Corner::right));
+  }
+  // |theta| at which rocking about this base corner lays the face next to it on the ground (the
+  // block has overturned): counter-clockwise about the left corner, clockwise about the right; pi/2
+  // for a rectangle. While theta stays within (-angle(right), angle(left)) only base corners can be
+  // the lowest point of the block (a corner of its convex hull).
+  double overturn_angle(Corner c) const { return overturn_angle_[static_cast<std::size_t>(c)]; }
+  // theta that lays the block on the face next to the corner it rotates towards (sign of theta).
+  double overturn_theta(double direction) const {
+    return direction > 0 ? overturn_angle(Corner::left) : -overturn_angle(Corner::right);
+  }
+  // How far theta is from overturning either way (> 0 inside; pi/2 - |theta| for a rectangle).
+  double overturn_margin(double theta) const {
+    return std::min(overturn_angle(Corner::left) - theta, overturn_angle(Corner::right) + theta);
+  }
+
+ private:
+  double mass_;
+  std::vector<Vec2> corners_;
+  double size_, inertia_per_mass_, rest_height_;
+  std::array<double, 2> overturn_angle_;  // by Corner
+};
+
+// The geometry of the scene's block: its polygon if it has one, else the rectangle.
+inline BlockGeometry scene_geometry(const Scene& scene) {
+  return scene.polygon ? BlockGeometry(*scene.polygon) : BlockGeometry(scene.block);
+}
+
+// alpha, the angle results are measured in (max |theta| / alpha): atan(a/b) for a rectangle; for a
+// polygon, atan of the easier corner's tip threshold, the tilt at which the block balances on that
+// corner (the smaller of its two alphas).
+inline double block_alpha(const Scene& scene) {
+  if (!scene.polygon) return std::atan2(scene.block.half_width, scene.block.half_height);
+  return std::atan(BlockGeometry(*scene.polygon).flat_slide_friction_limit());
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,182 @@
+#include "mpi_driver/cli/run_command.hpp"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "engine/simulate.hpp"
+#include "mpi_driver/parallel/checkpoint.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/parallel/progress.hpp"
+#include "mpi_driver/parallel/signals.hpp"
+#include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/parallel/study_lock.hpp"
+#include "mpi_driver/io/study_output.hpp"
+
+namespace blockfrag {
+namespace {
+
+constexpr int exit_code_bad_input = 2;
+
+// MPI_Init in the constructor, MPI_Finalize in the destructor, so every return and every exception
+// leaves MPI finalised.
+class MpiSession {
+ public:
+  MpiSession() {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized) {
+      MPI_Init(nullptr, nullptr);
+      owner_ = true;
+    }
+  }
+  ~MpiSession() {
+    if (owner_) MPI_Finalize();
+  }
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+ private:
+  bool owner_ = false;
+};
+
+double checkpoint_pause_from_environment() {
+  const char* text = std::getenv("BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S");
+  return text ? std::strtod(text, nullptr) : 0.0;
+}
+
+enum class Verdict : int { run = 0, already_complete = 1, refused = 2 };
+
+// Rank 0 looks at an existing output: the same study already finished, or another study's file
+// that this run would replace. A checkpoint means the run did not finish: run (and rewrite).
+Verdict judge_existing_output(const StudyConfig& config, const std::filesystem::path& checkpoint,
+                              std::string& message) {
+  const auto folder = config.output.parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+    // Found now rather than when the first checkpoint or the output is due.
+    message = config.output.string() + ": the folder " + folder.string() + " does not exist";
+    return Verdict::refused;
+  }
+  if (!std::filesystem::exists(config.output) || std::filesystem::exists(checkpoint)) return Verdict::run;
+  const std::string hash = output_config_hash(config.output);
+  if (hash == hash_to_hex(config.hash)) {
+    message = "study already complete: " + config.output.string() + " (config hash " + hash + ")";
+    return Verdict::already_complete;
+  }
+  message = config.output.string() + ": refusing to replace an existing file that is not this study's output" +
+            (hash.empty() ? std::string(" (not a blockfrag study output)")
+                          : " (config hash " + hash + ", this config " + hash_to_hex(config.hash) + ")") +
+            "; remove it or choose another --output";
+  return Verdict::refused;
+}
+
+// Any error inside the distributed run leaves other ranks waiting on messages: abort them all.
+[[noreturn]] void abort_run(MPI_Comm comm, int rank, const std::exception& error) {
+  std::cerr << "blockfrag: rank " << rank << ": " << error.what() << '\n' << std::flush;
+  MPI_Abort(comm, 1);
+  std::abort();
+}
+
+}  // namespace
+
+int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate) {
+  // First of all, so that a signal during start-up is a clean interruption too.
+  install_interrupt_handlers();
+  MpiSession session;
+  const MPI_Comm comm = MPI_COMM_WORLD;
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+
+  StudyConfig config;
+  try {
+    config = read_study_config(options.study_path, {options.output, options.samples_per_level});
+  } catch (const ConfigError&) {
+    if (rank == 0) throw;
+    return exit_code_bad_input;
+  } catch (const std::system_error&) {
+    if (rank == 0) throw;
+    return 1;
+  }
+
+  RunSettings settings;
+  settings.checkpoint = checkpoint_path_for(config.output);
+  settings.checkpoint_interval_s = config.checkpoint_interval_s;
+  settings.checkpoint_hooks.pause_before_rename_s = checkpoint_pause_from_environment();
+  settings.log = rank == 0 ? &std::cerr : nullptr;
+  settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
+
+  std::string message;
+  int verdict = static_cast<int>(Verdict::run);
+  std::optional<StudyLock> lock;
+  if (rank == 0) {
+    lock.emplace(config.output);
+    // Without the folder the lock cannot be taken either; judge_existing_output says so.
+    const bool other_run = !lock->held() && std::filesystem::exists(lock->path());
+    if (other_run) {
+      message = config.output.string() + ": another run of this study is in progress (it holds " +
+                lock->path().string() + "); wait for it to end, or stop it first";
+      verdict = static_cast<int>(Verdict::refused);
+    } else {
+      verdict = static_cast<int>(judge_existing_output(config, settings.checkpoint, message));
+    }
+  }
+  MPI_Bcast(&verdict, 1, MPI_INT, 0, comm);
+  if (verdict == static_cast<int>(Verdict::already_complete)) {
+    if (rank == 0) std::cerr << message << '\n';
+    return 0;
+  }
+  if (verdict == static_cast<int>(Verdict::refused)) {
+    if (rank == 0) throw ConfigError({message});
+    return exit_code_bad_input;
+  }
+
+  const SceneEvaluator engine = evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
+  if (rank == 0) {
+    std::cerr << "study " << options.study_path.string() << ": " << config.total_samples() << " samples ("
+              << config.intensity.levels.size() << " levels x " << config.samples_per_level << ") on " << ranks
+              << (ranks == 1 ? " rank" : " ranks") << ", config hash " << hash_to_hex(config.hash) << '\n';
+  }
+  RunResult result;
+  try {
+    result = run_study_samples(comm, config, settings, engine);
+  } catch (const StudyMismatchError& error) {
+    if (rank == 0) throw ConfigError({error.what()});
+    return exit_code_bad_input;
+  } catch (const std::exception& error) {
+    abort_run(comm, rank, error);
+  }
+
+  int outcome = static_cast<int>(result.outcome);
+  MPI_Bcast(&outcome, 1, MPI_INT, 0, comm);
+  if (outcome == static_cast<int>(RunOutcome::interrupted)) {
+    if (rank == 0) {
+      std::cerr << "interrupted: checkpoint written to " << settings.checkpoint.string()
+                << "; resume with the same command\n";
+    }
+    return exit_code_interrupted;
+  }
+  if (rank == 0) {
+    write_study_output(config.output, config, result.records);
+    std::filesystem::remove(settings.checkpoint);
+    std::cerr << "wrote " << config.output.string() << " (" << result.computed << " samples computed in this run, "
+              << result.checkpoints << " checkpoints taking " << result.checkpoint_seconds << " s)\n";
+  }
+  return 0;
+}
+
+void add_run_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* run = app.add_subcommand("run", "Run a batch study (under mpirun for several ranks)");
+  run->add_option("study", options->study_path, "Study config (JSON)")->required()->check(CLI::ExistingFile);
+  run->add_option("--output", options->output, "Output HDF5 file (replaces the config's \"output\")");
+  run->add_option("--samples-per-level", options->samples_per_level,
+                  "Samples per intensity level (replaces the config's \"samples_per_level\")")
+      ->check(CLI::PositiveNumber);
+  run->callback([options, &command] { command = [options] { return run_study_command(*options); }; });
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,103 @@
+#include "mpi_driver/cli/simulate_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "engine/scene/block_geometry.hpp"
+#include "engine/simulate.hpp"
+#include "mpi_driver/io/history_csv.hpp"
+#include "mpi_driver/config/scene_json.hpp"
+#include "mpi_driver/io/summary_json.hpp"
+#include "mpi_driver/cli/cli_validators.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+// Past this many the mode sequence of a chattering block says nothing more to a reader.
+constexpr std::size_t modes_shown = 20;
+
+// Six significant digits: enough to read, not to compare (--summary-json is for that).
+std::string fixed(double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+std::string time_or_never(const std::optional<double>& time) {
+  return time ? "t = " + fixed(*time) + " s" : "never";
+}
+
+}  // namespace
+
+void write_simulate_report(std::ostream& out, const Scene& scene, const Summary& summary) {
+  const double alpha = block_alpha(scene);
+  if (summary.status == Status::failed) {
+    out << "verdict: simulation FAILED at t = " << fixed(summary.end_time) << " s: " << summary.status_reason
+        << "\n";
+  } else if (summary.overturned) {
+    out << "verdict: overturned at " << time_or_never(summary.overturn_time) << "\n";
+  } else {
+    out << "verdict: did not overturn\n";
+  }
+  out << "max |theta|: " << fixed(summary.max_abs_theta) << " rad = " << fixed(summary.max_abs_theta / alpha)
+      << " alpha (alpha = " << (scene.polygon ? "atan(easier corner's tip threshold)" : "atan(a/b)") << " = "
+      << fixed(alpha) << " rad)\n"
+      << "final theta: " << fixed(summary.final_theta) << " rad\n"
+      << "slide: final " << fixed(summary.final_slide) << " m, max |slide| " << fixed(summary.max_abs_slide)
+      << " m\n"
+      << "rocking starts: " << time_or_never(summary.rock_start_time) << "\n"
+      << "sliding starts: " << time_or_never(summary.slide_start_time) << "\n"
+      << "first impact: " << time_or_never(summary.first_impact_time) << "; impacts: " << summary.impacts << "\n"
+      << "modes:";
+  for (std::size_t i = 0; i < summary.modes.size() && i < modes_shown; ++i) {
+    out << (i == 0 ? " " : " -> ") << mode_name(summary.modes[i].mode) << " (" << fixed(summary.modes[i].time)
+        << " s)";
+  }
+  if (summary.modes.size() > modes_shown) out << " ... and " << summary.modes.size() - modes_shown << " more";
+  out << "\n"
+      << "end time: " << fixed(summary.end_time) << " s; " << summary.steps << " steps, "
+      << summary.rhs_evaluations << " right-hand-side evaluations, " << summary.events << " events\n";
+}
+
+int run_simulate(const SimulateOptions& options, std::ostream& out) {
+  const Scene scene = read_scene_file(options.scene_path);
+  Summary summary;
+  if (options.history_path) {
+    auto result = simulate_with_history(scene, options.history_interval);
+    write_history_csv_file(*options.history_path, result.history);
+    summary = std::move(result.summary);
+  } else {
+    summary = simulate(scene);
+  }
+  if (options.summary_json) {
+    out << summary_to_json(summary).dump() << '\n';
+  } else {
+    write_simulate_report(out, scene, summary);
+  }
+  out.flush();
+  return summary.status == Status::ok ? 0 : exit_code_simulation_failed;
+}
+
+void add_simulate_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* simulate = app.add_subcommand("simulate", "Simulate one scene and print its summary");
+  simulate->add_option("scene", options->scene_path, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+  simulate->add_flag("--summary-json", options->summary_json,
+                     "Print the summary as exactly one JSON object on stdout, nothing else");
+  auto* history =
+      simulate->add_option("--history", options->history_path, "Also write the time history to this CSV file")
+          ->type_name("FILE.csv");
+  simulate->add_option("--history-interval", options->history_interval, "Time between history rows, s")
+      ->capture_default_str()
+      ->check(positive_finite_number("SECONDS"))
+      ->needs(history);
+  simulate->callback([options, &command] {
+    command = [options] { return run_simulate(*options, std::cout); };
+  });
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,39 @@
+// `blockfrag simulate SCENE.json [--summary-json] [--history FILE.csv] [--history-interval SECONDS]`:
+// one scene, its summary on stdout (a short report, or exactly one JSON object), and optionally its
+// time history as CSV.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+
+#include "engine/scene/scene.hpp"
+#include "engine/summary.hpp"
+
+namespace blockfrag {
+
+// main's exit code for a simulation whose status is "failed" (its summary is still printed).
+inline constexpr int exit_code_simulation_failed = 3;
+
+struct SimulateOptions {
+  std::filesystem::path scene_path;
+  bool summary_json = false;
+  std::optional<std::filesystem::path> history_path;
+  double history_interval = 0.005;  // s
+};
+
+// Runs the command and returns its exit code: 0, or exit_code_simulation_failed. Throws
+// ConfigError for a bad scene, std::system_error when the scene cannot be read and FileError
+// when the history cannot be written.
+int run_simulate(const SimulateOptions& options, std::ostream& out);
+
+// The human-readable report: verdict, rotation against alpha, onset times, impacts, modes.
+void write_simulate_report(std::ostream& out, const Scene& scene, const Summary& summary);
+
+// Declares the `simulate` subcommand on `app`; once it has been parsed, `command` runs it.
+void add_simulate_command(CLI::App& app, std::function<int()>& command);
+
+}  // namespace blockfrag

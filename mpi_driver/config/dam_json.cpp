@@ -1,0 +1,57 @@
+#include "mpi_driver/config/dam_json.hpp"
+
+#include <string>
+
+#include "sampling/validation.hpp"  // format_number
+
+namespace blockfrag {
+
+namespace {
+
+const Range positive = Range::greater_than(0.0);
+
+}  // namespace
+
+std::optional<DamCrest> read_dam(ObjectReader reader) {
+  if (!reader.valid()) return std::nullopt;
+  DamCrest dam;
+  const bool by_period = reader.has("period");
+  const bool has_height = reader.has("height"), has_modulus = reader.has("elastic_modulus");
+  const bool by_size = has_height || has_modulus;
+  if (by_period && by_size) {
+    reader.add_error("period", "give either period or height and elastic_modulus, not both");
+  } else if (by_period) {
+    dam.stiffness = DamPeriod{reader.required_number("period", positive).value_or(DamPeriod{}.period)};
+  } else if (by_size) {
+    DamSize size;
+    size.height = reader.required_number("height", positive).value_or(size.height);
+    size.elastic_modulus = reader.required_number("elastic_modulus", positive).value_or(size.elastic_modulus);
+    dam.stiffness = size;
+  } else {
+    reader.errors().add(reader.path(), "needs period, or height and elastic_modulus");
+  }
+  // Underdamped: the crest filter is the damped oscillator's closed form for zeta < 1.
+  const auto damping = reader.number("damping");
+  if (damping && (*damping < 0 || *damping >= 1)) {
+    reader.add_error("damping", "must be in [0, 1) (got " + format_number(*damping) + ")");
+  } else if (damping) {
+    dam.damping = *damping;
+  }
+  dam.participation = reader.number_or("participation", dam.participation, positive);
+  reader.finish();
+  return dam;
+}
+
+nlohmann::json dam_to_json(const DamCrest& dam) {
+  nlohmann::json out = {{"damping", dam.damping}, {"participation", dam.participation}};
+  if (const auto* given = std::get_if<DamPeriod>(&dam.stiffness)) {
+    out["period"] = given->period;
+  } else {
+    const auto& size = std::get<DamSize>(dam.stiffness);
+    out["height"] = size.height;
+    out["elastic_modulus"] = size.elastic_modulus;
+  }
+  return out;
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,277 @@
+#include "mpi_driver/config/scene_json.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <type_traits>
+
+#include "engine/motion/accelerogram.hpp"
+#include "engine/scene/block_geometry.hpp"
+#include "engine/scene/polygon_properties.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/dam_json.hpp"
+#include "mpi_driver/config/effects_json.hpp"
+#include "mpi_driver/config/polygon_json.hpp"
+#include "mpi_driver/config/pulse_json.hpp"
+#include "sampling/validation.hpp"  // format_number
+
+namespace blockfrag {
+
+namespace {
+
+using nlohmann::json;
+
+const Range positive = Range::greater_than(0.0);
+
+// A rectangle (half_width, half_height) or a polygon (mpi_driver/config/polygon_json.hpp).
+void read_block(ObjectReader reader, Scene& scene) {
+  RectangularBlock& block = scene.block;
+  if (reader.has("polygon")) {
+    PolygonBlock polygon;
+    polygon.vertices = read_polygon(*reader.raw("polygon"), reader.path_of("polygon"), reader.errors());
+    for (const char* key : {"half_width", "half_height"}) {
+      if (reader.has(key)) reader.add_error(key, "give either polygon or half_width and half_height, not both");
+    }
+    polygon.mass = reader.number_or("mass", polygon.mass, positive);
+    scene.polygon = std::move(polygon);
+  } else {
+    block.half_width = reader.required_number("half_width", positive).value_or(block.half_width);
+    block.half_height = reader.required_number("half_height", positive).value_or(block.half_height);
+    block.mass = reader.number_or("mass", block.mass, positive);
+  }
+  reader.finish();
+}
+
+Contact read_contact(ObjectReader reader) {
+  Contact contact;
+  contact.friction = reader.required_number("friction", Range::at_least(0.0)).value_or(contact.friction);
+  contact.restitution =
+      reader.required_number("restitution", Range::closed(0.0, 1.0)).value_or(contact.restitution);
+  reader.finish();
+  return contact;
+}
+
+// Cosine and sine pulses share their parameters.
+template <class Pulse>
+Pulse read_periodic_pulse(ObjectReader& reader) {
+  Pulse pulse;
+  pulse.amplitude_g = reader.required_number("amplitude_g").value_or(pulse.amplitude_g);
+  pulse.period = reader.required_number("period", positive).value_or(pulse.period);
+  pulse.cycles = reader.number_or("cycles", 1.0, positive);
+  return pulse;
+}
+
+RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
+  RectangularPulse pulse;
+  pulse.amplitude_g = reader.required_number("amplitude_g").value_or(pulse.amplitude_g);
+  pulse.duration = reader.required_number("duration", positive).value_or(pulse.duration);
+  return pulse;
+}
+
+// The samples are read here, so a record that cannot be used is refused with the scene, at
+// /ground_motion/file, with the reader's "<file>:<line>: <reason>".
+RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& base_folder) {
+  RecordedMotion motion;
+  const auto file = reader.required_string("file");
+  const auto scale = reader.number("scale");
+  const auto target_pga = reader.number("target_pga_g", positive);
+  if (scale && target_pga) reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
+  if (file && file->empty()) reader.add_error("file", "must not be empty");
+  if (!file || file->empty()) return motion;
+  motion.file = *file;
+  const std::filesystem::path path = base_folder / *file;  // an absolute file replaces the folder
+  motion.path = std::filesystem::absolute(path).lexically_normal();
+  try {
+    motion.record = std::make_shared<const Accelerogram>(read_accelerogram(path));
+  } catch (const RecordError& error) {
+    reader.add_error("file", error.what());
+    return motion;
+  }
+  motion.scale = scale.value_or(1.0);
+  if (target_pga) {
+    const double peak = peak_acceleration_g(*motion.record);
+    if (peak > 0) {
+      motion.scale = *target_pga / peak;
+    } else {
+      reader.add_error("target_pga_g", "cannot scale " + path.string() + " to a peak: its accelerations are all 0");
+    }
+  }
+  return motion;
+}
+
+GroundMotion read_ground_motion(ObjectReader reader, const std::filesystem::path& base_folder) {
+  const auto type =
+      reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", "record", makris_a_type,
+                                      makris_b_type, makris_c_type, ricker_type, mavroeidis_papageorgiou_type});
+  // Without a valid type nobody knows which keys belong here: report nothing more.
+  if (!type) return NoMotion{};
+  GroundMotion motion = NoMotion{};
+  if (*type == "cosine_pulse") motion = read_periodic_pulse<CosinePulse>(reader);
+  if (*type == "sine_pulse") motion = read_periodic_pulse<SinePulse>(reader);
+  if (*type == "rectangular_pulse") motion = read_rectangular_pulse(reader);
+  if (*type == "record") motion = read_record(reader, base_folder);
+  if (auto pulse = read_near_fault_pulse(*type, reader)) motion = *pulse;
+  reader.finish("for type \"" + *type + "\"");
+  return motion;
+}
+
+std::optional<Method> method_named(const std::optional<std::string>& name) {
+  if (name == "adaptive") return Method::adaptive;
+  if (name == "rk4") return Method::rk4;
+  if (name == "gsl_rkf45") return Method::gsl_rkf45;
+  if (name == "gsl_rk8pd") return Method::gsl_rk8pd;
+  return std::nullopt;
+}
+
+const char* method_name(Method method) {
+  switch (method) {
+    case Method::adaptive: return "adaptive";
+    case Method::rk4: return "rk4";
+    case Method::gsl_rkf45: return "gsl_rkf45";
+    case Method::gsl_rk8pd: return "gsl_rk8pd";
+  }
+  return "unknown";
+}
+
+SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) {
+  SolverSettings solver;
+  const auto method =
+      reader.has("method")
+          ? method_named(reader.required_choice("method", {"adaptive", "rk4", "gsl_rkf45", "gsl_rk8pd"}))
+          : std::optional<Method>(solver.method);
+  if (method == Method::rk4) {
+    const auto dt = reader.number("dt", positive);
+    if (dt) solver.dt = *dt;
+    if (dt && duration && *dt > *duration) {
+      reader.add_error("dt", "must be <= duration (" + format_number(*duration) + ") (got " + format_number(*dt) + ")");
+    }
+  } else if (method) {  // the step-size-controlled methods
+    solver.tolerance = reader.number_or("tolerance", solver.tolerance, Range::left_open(0.0, 0.1));
+  }
+  if (method) solver.method = *method;
+  solver.max_steps = reader.integer_or("max_steps", solver.max_steps, positive);
+  solver.max_events = reader.integer_or("max_events", solver.max_events, positive);
+  solver.max_wall_seconds = reader.number_or("max_wall_seconds", solver.max_wall_seconds, positive);
+  if (method) reader.finish("for method \"" + std::string(method_name(*method)) + "\"");
+  return solver;
+}
+
+// A polygon may lay a face next to its base on the ground before pi/2: the tilt must stop short.
+void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPointer& path, ConfigErrors& errors) {
+  if (polygon_defect(polygon.vertices)) return;  // reported at the polygon
+  const BlockGeometry geometry(polygon);
+  const double low = -geometry.overturn_angle(Corner::right), high = geometry.overturn_angle(Corner::left);
+  if (!(theta > low && theta < high)) {
+    errors.add(path, "must be in (" + format_number(low) + ", " + format_number(high) +
+                         ") for this polygon, the tilts that lay a face next to its base on the ground (got " +
+                         format_number(theta) + ")");
+  }
+}
+
+InitialState read_initial(ObjectReader reader) {
+  InitialState initial;
+  const double half_pi = std::numbers::pi / 2;
+  initial.theta = reader.number_or("theta", initial.theta, Range::open(-half_pi, half_pi).labelled("-pi/2", "pi/2"));
+  reader.finish();
+  return initial;
+}
+
+json ground_motion_to_json(const GroundMotion& motion) {
+  return std::visit(
+      [](const auto& pulse) -> json {
+        using Pulse = std::decay_t<decltype(pulse)>;
+        if constexpr (std::is_same_v<Pulse, NoMotion>) {
+          return {{"type", "none"}};
+        } else if constexpr (std::is_same_v<Pulse, CosinePulse> || std::is_same_v<Pulse, SinePulse>) {
+          return {{"type", std::is_same_v<Pulse, CosinePulse> ? "cosine_pulse" : "sine_pulse"},
+                  {"amplitude_g", pulse.amplitude_g},
+                  {"period", pulse.period},
+                  {"cycles", pulse.cycles}};
+        } else if constexpr (std::is_same_v<Pulse, RecordedMotion>) {
+          return {{"type", "record"}, {"file", pulse.file}, {"scale", pulse.scale}};
+        } else if constexpr (std::is_same_v<Pulse, MakrisPulseA> || std::is_same_v<Pulse, MakrisPulseB> ||
+                             std::is_same_v<Pulse, MakrisPulseC> || std::is_same_v<Pulse, RickerWavelet> ||
+                             std::is_same_v<Pulse, MavroeidisPapageorgiouPulse>) {
+          return pulse_to_json(pulse);
+        } else {
+          static_assert(std::is_same_v<Pulse, RectangularPulse>);
+          return {{"type", "rectangular_pulse"}, {"amplitude_g", pulse.amplitude_g}, {"duration", pulse.duration}};
+        }
+      },
+      motion);
+}
+
+json solver_to_json(const SolverSettings& solver) {
+  json out = {{"method", method_name(solver.method)},
+              {"max_steps", solver.max_steps},
+              {"max_events", solver.max_events},
+              {"max_wall_seconds", solver.max_wall_seconds}};
+  if (solver.method == Method::rk4) {
+    out["dt"] = solver.dt;
+  } else {
+    out["tolerance"] = solver.tolerance;
+  }
+  return out;
+}
+
+}  // namespace
+
+Scene scene_from_json(const json& document, const std::string& source) {
+  ConfigErrors errors(source);
+  Scene scene = scene_from_json(document, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
+  errors.throw_if_any();
+  return scene;
+}
+
+Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& errors,
+                      const std::filesystem::path& base_folder) {
+  ObjectReader root(value, path, errors);
+  Scene scene;
+  scene.effects = read_effects(root.raw("effects"), root.path_of("effects"), errors);
+  read_block(root.required_object("block"), scene);
+  scene.contact = read_contact(root.required_object("contact"));
+  scene.ground_motion = read_ground_motion(root.required_object("ground_motion"), base_folder);
+  if (root.has("vertical_motion")) {
+    scene.vertical_motion = read_ground_motion(root.object("vertical_motion"), base_folder);
+  }
+  if (!scene.effects.automatic &&
+      scene.effects.vertical == std::holds_alternative<NoMotion>(scene.vertical_motion)) {
+    errors.add(path / "effects", "lists \"vertical\" exactly when the scene has a vertical_motion");
+  }
+  scene.dam = read_dam(root.object("dam"));
+  const auto duration = root.required_number("duration", positive);
+  if (duration) scene.duration = *duration;
+  scene.g = root.number_or("g", scene.g, positive);
+  scene.solver = read_solver(root.object("solver"), duration);
+  scene.initial = read_initial(root.object("initial"));
+  if (scene.polygon) check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);
+  root.finish();
+  return scene;
+}
+
+Scene read_scene_file(const std::filesystem::path& path) {
+  return scene_from_json(read_json_file(path), path.string());
+}
+
+json scene_to_json(const Scene& scene) {
+  json out = {{"effects", effects_to_json(scene.effects)},
+          {"block",
+           scene.polygon ? polygon_to_json(*scene.polygon)
+                         : json{{"half_width", scene.block.half_width},
+                                {"half_height", scene.block.half_height},
+                                {"mass", scene.block.mass}}},
+          {"contact", {{"friction", scene.contact.friction}, {"restitution", scene.contact.restitution}}},
+          {"ground_motion", ground_motion_to_json(scene.ground_motion)},
+          {"duration", scene.duration},
+          {"g", scene.g},
+          {"solver", solver_to_json(scene.solver)},
+          {"initial", {{"theta", scene.initial.theta}}}};
+  if (scene.dam) out["dam"] = dam_to_json(*scene.dam);
+  if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) {
+    out["vertical_motion"] = ground_motion_to_json(scene.vertical_motion);
+  }
+  return out;
+}
+
+}  // namespace blockfrag

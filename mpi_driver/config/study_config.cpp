@@ -1,0 +1,399 @@
+#include "mpi_driver/config/study_config.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <type_traits>
+
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/scene_json.hpp"
+#include "mpi_driver/config/study_hash.hpp"
+#include "sampling/validation.hpp"
+
+namespace blockfrag {
+namespace {
+
+using nlohmann::json;
+
+const Range positive = Range::greater_than(0.0);
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+constexpr StudyInput all_inputs[] = {StudyInput::friction, StudyInput::restitution, StudyInput::half_width,
+                                     StudyInput::half_height, StudyInput::alpha, StudyInput::R,
+                                     StudyInput::period, StudyInput::direction};
+
+// The values every sample of an input must stay within, as a rule for messages.
+struct Support {
+  double low, high;
+  bool low_inclusive, high_inclusive;
+  const char* rule;
+};
+
+Support required_support(StudyInput input) {
+  switch (input) {
+    case StudyInput::friction: return {0.0, infinity, true, false, ">= 0"};
+    case StudyInput::restitution: return {0.0, 1.0, true, true, "in [0, 1]"};
+    case StudyInput::alpha: return {0.0, std::numbers::pi / 2, false, false, "in (0, pi/2)"};
+    case StudyInput::direction: return {-1.0, 1.0, true, true, "+1 or -1"};
+    default: return {0.0, infinity, false, false, "> 0"};
+  }
+}
+
+// The interval the distribution's values can take: [low, high].
+std::pair<double, double> support_of(const Distribution& distribution) {
+  return std::visit(
+      [](const auto& d) -> std::pair<double, double> {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, Fixed>) return {d.value, d.value};
+        if constexpr (std::is_same_v<T, Uniform>) return {d.min, d.max};
+        if constexpr (std::is_same_v<T, Normal>) return {d.lower.value_or(-infinity), d.upper.value_or(infinity)};
+        if constexpr (std::is_same_v<T, LogNormal>) return {d.lower.value_or(0.0), d.upper.value_or(infinity)};
+      },
+      distribution);
+}
+
+// An untruncated lognormal's support starts at 0 excluded: it meets "> 0".
+bool within(const Support& support, double low, double high, bool log_normal) {
+  const bool open_at_zero = log_normal && low == 0.0 && support.low == 0.0;
+  const bool low_ok = support.low_inclusive ? low >= support.low : (low > support.low || open_at_zero);
+  // An unbounded support above is met by any distribution: no sample is ever infinite.
+  const bool high_ok = support.high == infinity || (support.high_inclusive ? high <= support.high : high < support.high);
+  return low_ok && high_ok;
+}
+
+std::optional<Distribution> read_distribution(ObjectReader reader) {
+  const auto kind = reader.required_choice("distribution", {"fixed", "uniform", "normal", "lognormal"});
+  if (!kind) return std::nullopt;
+  Distribution distribution = Fixed{};
+  bool complete = true;
+  const auto need = [&](std::string_view key) {
+    const auto value = reader.required_number(key);
+    complete = complete && value.has_value();
+    return value.value_or(0.0);
+  };
+  if (*kind == "fixed") {
+    distribution = Fixed{need("value")};
+  } else if (*kind == "uniform") {
+    distribution = Uniform{need("min"), need("max")};
+  } else if (*kind == "normal") {
+    const double mean = need("mean"), std_dev = need("std_dev");
+    distribution = Normal{mean, std_dev, reader.number("lower"), reader.number("upper")};
+  } else {
+    const double median = need("median"), beta = need("beta");
+    distribution = LogNormal{median, beta, reader.number("lower"), reader.number("upper")};
+  }
+  reader.finish("for distribution \"" + *kind + "\"");
+  if (!complete) return std::nullopt;
+  bool valid = true;
+  for (const auto& violation : validate(distribution)) {
+    reader.errors().add(violation.field.empty() ? reader.path() : reader.path_of(violation.field), violation.message);
+    valid = false;
+  }
+  return valid ? std::optional<Distribution>(distribution) : std::nullopt;
+}
+
+// direction: {"distribution": "random_sign"} or {"distribution": "fixed", "value": 1 or -1}.
+std::optional<Distribution> read_direction(ObjectReader reader) {
+  const auto kind = reader.required_choice("distribution", {"random_sign", "fixed"});
+  if (!kind) return std::nullopt;
+  std::optional<Distribution> distribution;
+  if (*kind == "random_sign") {
+    distribution = Uniform{-1.0, 1.0};
+  } else if (const auto value = reader.required_number("value")) {
+    if (*value == 1.0 || *value == -1.0) {
+      distribution = Fixed{*value};
+    } else {
+      reader.add_error("value", "must be 1 or -1 (got " + format_number(*value) + ")");
+    }
+  }
+  reader.finish("for distribution \"" + *kind + "\"");
+  return distribution;
+}
+
+json distribution_to_json(StudyInput input, const Distribution& distribution) {
+  if (input == StudyInput::direction) {
+    if (const auto* fixed = std::get_if<Fixed>(&distribution)) return {{"distribution", "fixed"}, {"value", fixed->value}};
+    return {{"distribution", "random_sign"}};
+  }
+  return std::visit(
+      [](const auto& d) -> json {
+        using T = std::decay_t<decltype(d)>;
+        json out;
+        if constexpr (std::is_same_v<T, Fixed>) out = {{"distribution", "fixed"}, {"value", d.value}};
+        if constexpr (std::is_same_v<T, Uniform>) out = {{"distribution", "uniform"}, {"min", d.min}, {"max", d.max}};
+        if constexpr (std::is_same_v<T, Normal>) out = {{"distribution", "normal"}, {"mean", d.mean}, {"std_dev", d.std_dev}};
+        if constexpr (std::is_same_v<T, LogNormal>) out = {{"distribution", "lognormal"}, {"median", d.median}, {"beta", d.beta}};
+        if constexpr (std::is_same_v<T, Normal> || std::is_same_v<T, LogNormal>) {
+          if (d.lower) out["lower"] = *d.lower;
+          if (d.upper) out["upper"] = *d.upper;
+        }
+        return out;
+      },
+      distribution);
+}
+
+void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, StudyConfig& config) {
+  for (const StudyInput input : all_inputs) {
+    const std::string key = input_key(input);
+    if (!reader.has(key)) continue;
+    ObjectReader spec = reader.required_object(key);
+    if (!spec.valid()) continue;
+    const auto distribution = input == StudyInput::direction ? read_direction(spec) : read_distribution(spec);
+    if (!distribution) continue;
+    const auto [low, high] = support_of(*distribution);
+    const Support support = required_support(input);
+    if (input != StudyInput::direction &&
+        !within(support, low, high, std::holds_alternative<LogNormal>(*distribution))) {
+      reader.add_error(key, std::string("every value must be ") + support.rule + ", but this distribution reaches [" +
+                                format_number(low) + ", " + format_number(high) +
+                                "] (truncate it with \"lower\"/\"upper\" or narrow its range)");
+    }
+    config.inputs.push_back({input, *distribution});
+  }
+  reader.finish();
+
+  const auto has = [&](StudyInput input) {
+    for (const auto& spec : config.inputs) {
+      if (spec.input == input) return true;
+    }
+    return false;
+  };
+  if ((has(StudyInput::alpha) || has(StudyInput::R)) &&
+      (has(StudyInput::half_width) || has(StudyInput::half_height))) {
+    reader.add_error(has(StudyInput::alpha) ? "alpha" : "R",
+                     "give the geometry either as half_width/half_height or as alpha/R, not both");
+  }
+  if (!scene_valid) return;
+  // Sampling draws a rectangle's sizes; a polygon block keeps its shape (friction, restitution,
+  // period and direction still vary).
+  if (base.polygon) {
+    for (const StudyInput input : {StudyInput::half_width, StudyInput::half_height, StudyInput::alpha, StudyInput::R}) {
+      if (has(input)) {
+        reader.add_error(input_key(input), "varies a rectangle's size, but /scene/block is a polygon (studies keep "
+                                           "a polygon's shape)");
+      }
+    }
+  }
+  const bool has_pulse = !std::holds_alternative<NoMotion>(base.ground_motion);
+  const bool periodic = std::holds_alternative<CosinePulse>(base.ground_motion) ||
+                        std::holds_alternative<SinePulse>(base.ground_motion);
+  if (has(StudyInput::period) && !periodic) {
+    reader.add_error("period", "needs a cosine_pulse or sine_pulse in /scene/ground_motion");
+  }
+  if (has(StudyInput::direction) && !has_pulse) {
+    reader.add_error("direction", "needs a pulse in /scene/ground_motion (its type is \"none\")");
+  }
+}
+
+std::vector<double> read_levels(ObjectReader reader) {
+  std::vector<double> levels;
+  reader.choice("name", {im_name});
+  reader.choice("units", {im_units});
+  if (reader.has("levels")) {
+    if (reader.has("from") || reader.has("to") || reader.has("count")) {
+      reader.add_error("levels", "give either levels or from/to/count, not both");
+      for (const char* key : {"from", "to", "count"}) reader.raw(key);  // known: reported above
+    }
+    ArrayReader array = reader.required_array("levels");
+    if (array.valid() && array.size() == 0) reader.add_error("levels", "must not be empty");
+    for (std::size_t k = 0; k < array.size(); ++k) {
+      const auto value = array.number(k, positive);
+      if (!value) continue;
+      if (!levels.empty() && *value <= levels.back()) {
+        reader.errors().add(array.path_of(k), "must be greater than the level before it (levels increase)");
+      }
+      levels.push_back(*value);
+    }
+  } else {
+    const auto from = reader.required_number("from", positive);
+    const auto to = reader.required_number("to", positive);
+    const auto count = reader.required_integer("count", Range::at_least(2));
+    if (from && to && *to <= *from) reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
+    if (from && to && count && *to > *from) {
+      for (long k = 0; k < *count; ++k) {
+        levels.push_back(k == *count - 1 ? *to : *from + (*to - *from) * static_cast<double>(k) / static_cast<double>(*count - 1));
+      }
+    }
+  }
+  reader.finish();
+  return levels;
+}
+
+bool valid_group_name(const std::string& name) {
+  if (name.empty()) return false;
+  for (const char c : name) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
+  }
+  return true;
+}
+
+void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& config) {
+  if (array.valid() && array.size() == 0) root.add_error("limit_states", "must name at least one limit state");
+  for (std::size_t k = 0; k < array.size(); ++k) {
+    ObjectReader reader = array.object(k);
+    if (!reader.valid()) continue;
+    LimitState state;
+    const auto name = reader.required_string("name");
+    if (name && !valid_group_name(*name)) {
+      reader.add_error("name", "must be letters, digits, '_', '-' or '.' (got \"" + *name + "\")");
+    }
+    for (const auto& other : config.limit_states) {
+      if (name && other.name == *name) reader.add_error("name", "\"" + *name + "\" is used by another limit state");
+    }
+    const auto type = reader.required_choice("type", {"overturning", "max_rotation", "residual_slide"});
+    if (type == "max_rotation") {
+      state.kind = LimitStateKind::max_rotation;
+      state.threshold = reader.required_number("theta_over_alpha", positive).value_or(0.0);
+    } else if (type == "residual_slide") {
+      state.kind = LimitStateKind::residual_slide;
+      state.threshold = reader.required_number("threshold_m", positive).value_or(0.0);
+    }
+    reader.finish(type ? "for type \"" + *type + "\"" : std::string{});
+    if (name) {
+      state.name = *name;
+      config.limit_states.push_back(state);
+    }
+  }
+}
+
+json limit_state_to_json(const LimitState& state) {
+  json out = {{"name", state.name}, {"type", limit_state_kind_name(state.kind)}};
+  if (state.kind == LimitStateKind::max_rotation) out["theta_over_alpha"] = state.threshold;
+  if (state.kind == LimitStateKind::residual_slide) out["threshold_m"] = state.threshold;
+  return out;
+}
+
+// A scene's errors come back with paths inside the scene; put them under /scene.
+void read_scene(const json& value, const std::string& source, ConfigErrors& errors, StudyConfig& config,
+                bool& valid) {
+  try {
+    config.base_scene = scene_from_json(value, source);
+    valid = true;
+  } catch (const ConfigError& error) {
+    const std::string prefix = source + ": ";
+    for (const auto& message : error.messages()) {
+      if (message.rfind(prefix + "/", 0) == 0) {
+        errors.add_message(prefix + "/scene" + message.substr(prefix.size()));
+      } else if (message.rfind(prefix, 0) == 0) {
+        errors.add_message(prefix + "/scene: " + message.substr(prefix.size()));
+      } else {
+        errors.add_message(message);
+      }
+    }
+  }
+}
+
+json canonical_json(const StudyConfig& config) {
+  json inputs = json::object();
+  for (const auto& spec : config.inputs) inputs[input_key(spec.input)] = distribution_to_json(spec.input, spec.distribution);
+  json limit_states = json::array();
+  for (const auto& state : config.limit_states) limit_states.push_back(limit_state_to_json(state));
+  return {{"scene", scene_to_json(config.base_scene)},
+          {"inputs", inputs},
+          {"intensity_measure", {{"name", im_name}, {"units", im_units}, {"levels", config.intensity.levels}}},
+          {"samples_per_level", config.samples_per_level},
+          {"design", config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"},
+          {"limit_states", limit_states},
+          {"seed", config.seed},
+          {"output", config.output.string()},
+          {"checkpoint_interval_s", config.checkpoint_interval_s}};
+}
+
+}  // namespace
+
+const char* input_key(StudyInput input) {
+  switch (input) {
+    case StudyInput::friction: return "friction";
+    case StudyInput::restitution: return "restitution";
+    case StudyInput::half_width: return "half_width";
+    case StudyInput::half_height: return "half_height";
+    case StudyInput::alpha: return "alpha";
+    case StudyInput::R: return "R";
+    case StudyInput::period: return "period";
+    case StudyInput::direction: return "direction";
+  }
+  return "";
+}
+
+const char* limit_state_kind_name(LimitStateKind kind) {
+  switch (kind) {
+    case LimitStateKind::overturning: return "overturning";
+    case LimitStateKind::max_rotation: return "max_rotation";
+    case LimitStateKind::residual_slide: return "residual_slide";
+  }
+  return "";
+}
+
+std::string canonical_text(const json& canonical) { return canonical.dump(); }
+
+StudyConfig parse_study_config(const json& document, const std::string& source, const StudyOverrides& overrides) {
+  ConfigErrors errors(source);
+  ObjectReader root(document, JsonPointer{}, errors);
+  StudyConfig config;
+
+  bool scene_valid = false;
+  if (const json* scene = root.raw("scene")) {
+    read_scene(*scene, source, errors, config, scene_valid);
+  } else {
+    root.required_object("scene");
+  }
+  if (root.has("inputs")) read_inputs(root.required_object("inputs"), config.base_scene, scene_valid, config);
+
+  config.intensity.levels = read_levels(root.required_object("intensity_measure"));
+  if (scene_valid && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
+    root.add_error("intensity_measure", "scales the pulse amplitude, but /scene/ground_motion has type \"none\"");
+  }
+  if (const auto* record = std::get_if<RecordedMotion>(&config.base_scene.ground_motion);
+      scene_valid && record && !(peak_acceleration_g(*record->record) > 0)) {
+    root.add_error("intensity_measure", "scales the record's peak acceleration, but every sample of " +
+                                            record->file + " is 0");
+  }
+  if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
+      scene_valid && mp && mp->velocity_amplitude == 0.0) {
+    root.add_error("intensity_measure", "scales the pulse's peak acceleration, but /scene/ground_motion has "
+                                        "velocity_amplitude 0");
+  }
+  const Range samples_range = Range::closed(1, 2147483648.0);
+  const auto samples = root.required_integer("samples_per_level", samples_range);
+  if (overrides.samples_per_level) {
+    if (!samples_range.contains(static_cast<double>(*overrides.samples_per_level))) {
+      errors.add_message(source + ": --samples-per-level: " + samples_range.rule() + " (got " +
+                         std::to_string(*overrides.samples_per_level) + ")");
+    }
+    config.samples_per_level = static_cast<std::uint32_t>(*overrides.samples_per_level);
+  } else if (samples) {
+    config.samples_per_level = static_cast<std::uint32_t>(*samples);
+  }
+  const auto design = root.has("design") ? root.required_choice("design", {"monte_carlo", "latin_hypercube"})
+                                         : std::optional<std::string>("monte_carlo");
+  config.design = design == "latin_hypercube" ? Design::latin_hypercube : Design::monte_carlo;
+  read_limit_states(root.required_array("limit_states"), root, config);
+  config.seed = static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
+  const auto output = root.string("output");
+  if (output && output->empty()) root.add_error("output", "must not be empty");
+  if (overrides.output) {
+    config.output = *overrides.output;
+  } else if (output) {
+    config.output = *output;
+  } else {
+    // Without an output key the study writes STUDY.h5 in the working folder.
+    config.output = std::filesystem::path(source).stem().string() + ".h5";
+  }
+  config.checkpoint_interval_s = root.number_or("checkpoint_interval_s", config.checkpoint_interval_s, positive);
+  root.finish();
+  errors.throw_if_any();
+
+  config.canonical = canonical_json(config);
+  json hashed = config.canonical;
+  hashed.erase("output");
+  hashed.erase("checkpoint_interval_s");
+  config.hash = fnv1a64(canonical_text(hashed));
+  return config;
+}
+
+StudyConfig read_study_config(const std::filesystem::path& path, const StudyOverrides& overrides) {
+  return parse_study_config(read_json_file(path), path.string(), overrides);
+}
+
+}  // namespace blockfrag

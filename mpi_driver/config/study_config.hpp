@@ -1,0 +1,109 @@
+// A batch study: the base scene, its random inputs, the intensity levels, the limit states and how
+// the run is kept (seed, output, checkpoint interval). The form (configs/example_study.json):
+//   {"scene": {...a scene file's content...},
+//    "inputs": {"friction": {"distribution": "uniform", "min": 0.55, "max": 0.9}, ...,
+//               "direction": {"distribution": "random_sign"}},
+//    "intensity_measure": {"levels": [...]} or {"from": 0.2, "to": 2.0, "count": 10},
+//    "samples_per_level": 40, "design": "monte_carlo" | "latin_hypercube",
+//    "limit_states": [{"name": "overturn", "type": "overturning"},
+//                     {"name": "...", "type": "max_rotation", "theta_over_alpha": 0.5},
+//                     {"name": "...", "type": "residual_slide", "threshold_m": 0.05}],
+//    "seed": 1, "output": "study.h5", "checkpoint_interval_s": 60}
+// Distributions: fixed (value), uniform (min, max), normal (mean, std_dev), lognormal (median,
+// beta), the last two with optional "lower"/"upper" truncation; each input's whole range must be
+// physical (friction >= 0, restitution in [0, 1], sizes and period > 0, alpha in (0, pi/2)).
+// The intensity measure is the pulse amplitude in g: it replaces the base pulse's amplitude_g, and
+// the direction input (default +1) gives its sign.
+//
+// Every error points at its value (`study.json: /intensity_measure/levels/0: must be > 0 (got
+// -0.1)`), all are reported at once, and every cross-field rule is checked before any work starts.
+//
+// The canonical config is the document with defaults filled and keys sorted; its hash ties
+// checkpoints and outputs to the study. The hash leaves out the two keys that do not change any
+// result ("output", "checkpoint_interval_s"), so a study may be resumed with another interval.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/scene/scene.hpp"
+#include "sampling/designs.hpp"
+#include "sampling/distributions.hpp"
+
+namespace blockfrag {
+
+// The scene values a study can draw. Geometry is given either as half_width/half_height or as
+// alpha/R (alpha = atan(a / b) in rad, R = sqrt(a^2 + b^2) in m), never both.
+enum class StudyInput { friction, restitution, half_width, half_height, alpha, R, period, direction };
+
+// The config key (and the /samples column name) of an input: the enumerator's name ("friction",
+// "half_width", "alpha", "R", "period" (s, as in the scene), "direction").
+const char* input_key(StudyInput input);
+
+struct StudyInputSpec {
+  StudyInput input;
+  // For direction: Fixed{+1 or -1}, or Uniform{-1, 1} for a random sign (the sign of the value).
+  Distribution distribution;
+};
+
+enum class LimitStateKind {
+  overturning,     // the block overturned
+  max_rotation,    // max |theta| / alpha > threshold, or overturned
+  residual_slide,  // |final_slide| > threshold (m)
+};
+
+struct LimitState {
+  std::string name;
+  LimitStateKind kind = LimitStateKind::overturning;
+  double threshold = 0.0;  // unused for overturning
+};
+
+const char* limit_state_kind_name(LimitStateKind kind);
+
+// The intensity measure is the pulse amplitude (in g); the direction input gives its sign.
+struct IntensityMeasure {
+  std::vector<double> levels;  // > 0, increasing
+};
+inline constexpr const char* im_name = "pulse_amplitude";
+inline constexpr const char* im_units = "g";
+
+struct StudyConfig {
+  Scene base_scene;
+  std::vector<StudyInputSpec> inputs;  // in StudyInput order: the /samples columns
+  IntensityMeasure intensity;
+  std::uint32_t samples_per_level = 1;
+  Design design = Design::monte_carlo;
+  std::vector<LimitState> limit_states;
+  std::uint64_t seed = 0;
+  std::filesystem::path output;
+  double checkpoint_interval_s = 60.0;
+
+  nlohmann::json canonical;  // defaults filled, keys sorted
+  std::uint64_t hash = 0;    // of canonical without "output" and "checkpoint_interval_s"
+
+  std::int64_t total_samples() const {
+    return static_cast<std::int64_t>(intensity.levels.size()) * samples_per_level;
+  }
+};
+
+// The command line's options that replace config values (before canonicalisation and hashing).
+struct StudyOverrides {
+  std::optional<std::filesystem::path> output;
+  std::optional<long> samples_per_level;
+};
+
+// Throws ConfigError listing every problem, each as "source: /json/pointer: rule".
+StudyConfig parse_study_config(const nlohmann::json& document, const std::string& source,
+                               const StudyOverrides& overrides = {});
+StudyConfig read_study_config(const std::filesystem::path& path, const StudyOverrides& overrides = {});
+
+// The canonical text (nlohmann's dump of the canonical config: sorted keys, shortest round-trip
+// numbers) that is hashed and stored in outputs.
+std::string canonical_text(const nlohmann::json& canonical);
+
+}  // namespace blockfrag

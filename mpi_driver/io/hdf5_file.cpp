@@ -1,0 +1,139 @@
+#include "mpi_driver/io/hdf5_file.hpp"
+
+#include <hdf5.h>
+
+#include <type_traits>
+
+namespace blockfrag {
+namespace {
+
+static_assert(std::is_same_v<hid_t, std::int64_t>, "hid_t is stored as std::int64_t in the header");
+
+// Owns one HDF5 identifier and closes it with the matching H5*close.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
+    if (id_ < 0) throw Hdf5Error("HDF5: cannot " + what);
+  }
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const { return id_; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw Hdf5Error("HDF5: cannot " + what);
+}
+
+Handle creation_properties(hid_t property_class, const std::string& what) {
+  Handle properties(H5Pcreate(property_class), H5Pclose, "create properties for " + what);
+  check(H5Pset_obj_track_times(properties.get(), false), "disable time tracking for " + what);
+  return properties;
+}
+
+template <typename T>
+void write_typed_column(hid_t file, const std::string& path, const std::vector<T>& values,
+                        hid_t file_type, hid_t memory_type) {
+  const hsize_t size = values.size();
+  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose, "create a dataspace for " + path);
+  const auto properties = creation_properties(H5P_DATASET_CREATE, path);
+  Handle dataset(H5Dcreate2(file, path.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(),
+                            H5P_DEFAULT),
+                 H5Dclose, "create dataset " + path);
+  if (!values.empty()) {
+    check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+          "write dataset " + path);
+  }
+}
+
+template <typename T>
+void write_attribute(hid_t file, const std::string& object, const std::string& name, hid_t type,
+                     const T* value) {
+  const std::string what = "attribute " + name + " of " + object;
+  Handle target(H5Oopen(file, object.c_str(), H5P_DEFAULT), H5Oclose, "open " + object);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a dataspace for " + what);
+  Handle attribute(H5Acreate2(target.get(), name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Aclose, "create " + what);
+  check(H5Awrite(attribute.get(), type, value), "write " + what);
+}
+
+// Errors are reported by exceptions; HDF5's own printing of its error stack would only add noise.
+void silence_hdf5_error_printing() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+Handle utf8_string_type() {
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy the string type");
+  check(H5Tset_size(type.get(), H5T_VARIABLE), "make a variable-length string type");
+  check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "make a UTF-8 string type");
+  return type;
+}
+
+}  // namespace
+
+Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : name_(path.string()) {
+  silence_hdf5_error_printing();
+  const auto properties = creation_properties(H5P_FILE_CREATE, name_);
+  file_ = H5Fcreate(name_.c_str(), H5F_ACC_TRUNC, properties.get(), H5P_DEFAULT);
+  if (file_ < 0) throw Hdf5Error("HDF5: cannot create " + name_);
+}
+
+Hdf5Writer::~Hdf5Writer() {
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+void Hdf5Writer::close() {
+  if (file_ < 0) return;
+  const hid_t file = file_;
+  file_ = -1;
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush " + name_);
+  check(H5Fclose(file), "close " + name_);
+}
+
+void Hdf5Writer::create_group(const std::string& path) {
+  const auto properties = creation_properties(H5P_GROUP_CREATE, path);
+  Handle group(H5Gcreate2(file_, path.c_str(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), H5Gclose,
+               "create group " + path);
+}
+
+void Hdf5Writer::write_column(const std::string& path, const std::vector<double>& values) {
+  write_typed_column(file_, path, values, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE);
+}
+
+void Hdf5Writer::write_column(const std::string& path, const std::vector<std::int64_t>& values) {
+  write_typed_column(file_, path, values, H5T_STD_I64LE, H5T_NATIVE_INT64);
+}
+
+void Hdf5Writer::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
+  const auto type = utf8_string_type();
+  const char* text = value.c_str();
+  write_attribute(file_, object, name, type.get(), &text);
+}
+
+void Hdf5Writer::set_attribute(const std::string& object, const std::string& name, double value) {
+  write_attribute(file_, object, name, H5T_NATIVE_DOUBLE, &value);
+}
+
+void Hdf5Writer::set_attribute(const std::string& object, const std::string& name, std::int64_t value) {
+  write_attribute(file_, object, name, H5T_NATIVE_INT64, &value);
+}
+
+std::string read_root_string_attribute(const std::filesystem::path& path, const std::string& name) {
+  silence_hdf5_error_printing();
+  const std::string what = "attribute " + name + " of " + path.string();
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
+  Handle attribute(H5Aopen(file.get(), name.c_str(), H5P_DEFAULT), H5Aclose, "open " + what);
+  const auto type = utf8_string_type();
+  char* text = nullptr;
+  check(H5Aread(attribute.get(), type.get(), &text), "read " + what);
+  std::string value = text ? text : "";
+  H5free_memory(text);
+  return value;
+}
+
+}  // namespace blockfrag

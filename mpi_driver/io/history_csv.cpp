@@ -1,0 +1,44 @@
+#include "mpi_driver/io/history_csv.hpp"
+
+#include <charconv>
+#include <fstream>
+
+#include "mpi_driver/io/atomic_file.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+void write_number(std::ostream& out, double x) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out.write(buffer, result.ptr - buffer);
+}
+
+}  // namespace
+
+void write_history_csv(std::ostream& out, const std::vector<HistoryRow>& rows) {
+  out << "t,x,y,theta,vx,vy,omega,mode,friction_per_weight,normal_per_weight\n";
+  for (const auto& row : rows) {
+    for (const double x : {row.t, row.x, row.y, row.theta, row.vx, row.vy, row.omega}) {
+      write_number(out, x);
+      out << ',';
+    }
+    out << mode_name(row.mode) << ',';
+    write_number(out, row.friction_per_weight);
+    out << ',';
+    write_number(out, row.normal_per_weight);
+    out << '\n';
+  }
+}
+
+void write_history_csv_file(const std::filesystem::path& path, const std::vector<HistoryRow>& rows) {
+  replace_file_atomically(path, [&rows](const std::filesystem::path& temporary) {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    write_history_csv(out, rows);
+    out.close();
+    if (!out) throw FileError("cannot write " + temporary.string());
+  });
+}
+
+}  // namespace blockfrag

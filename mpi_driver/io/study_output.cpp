@@ -1,0 +1,119 @@
+#include "mpi_driver/io/study_output.hpp"
+
+#include <cmath>
+
+#include "engine/scene/block_geometry.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/io/hdf5_file.hpp"
+#include "mpi_driver/study/study_fragility.hpp"
+#include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/study/study_sample.hpp"
+
+namespace blockfrag {
+namespace {
+
+template <typename T, typename Field>
+std::vector<T> column(const std::vector<SampleRecord>& records, Field field) {
+  std::vector<T> values;
+  values.reserve(records.size());
+  for (const auto& record : records) values.push_back(record.*field);
+  return values;
+}
+
+void write_samples(Hdf5Writer& file, const StudyConfig& config, std::vector<double>& alphas) {
+  const auto total = static_cast<std::size_t>(config.total_samples());
+  std::vector<std::vector<double>> inputs(config.inputs.size(), std::vector<double>(total));
+  std::vector<std::int64_t> level(total);
+  std::vector<double> im(total);
+  alphas.resize(total);
+  StudySampler sampler(config);
+  for (std::size_t i = 0; i < total; ++i) {
+    const StudySample sample = sampler.draw(static_cast<std::int64_t>(i));
+    for (std::size_t k = 0; k < inputs.size(); ++k) inputs[k][i] = sample.values[k];
+    level[i] = sample.level;
+    im[i] = sample.im;
+    alphas[i] = block_alpha(sample.scene);
+  }
+  file.create_group("/samples");
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    file.write_column(std::string("/samples/") + input_key(config.inputs[k].input), inputs[k]);
+  }
+  file.write_column("/samples/level", level);
+  file.write_column("/samples/im", im);
+  file.set_attribute("/samples", "im_units", std::string(im_units));
+}
+
+void write_results(Hdf5Writer& file, const std::vector<SampleRecord>& records) {
+  file.create_group("/results");
+  file.write_column("/results/status", column<std::int64_t>(records, &SampleRecord::status));
+  file.set_attribute("/results/status", "meaning", std::string("0 ok, 1 failed (engine budget exceeded), 2 rejected (invalid scene)"));
+  file.write_column("/results/overturned", column<std::int64_t>(records, &SampleRecord::overturned));
+  file.write_column("/results/impacts", column<std::int64_t>(records, &SampleRecord::impacts));
+  file.write_column("/results/steps", column<std::int64_t>(records, &SampleRecord::steps));
+  file.write_column("/results/rhs_evaluations", column<std::int64_t>(records, &SampleRecord::rhs_evaluations));
+  file.write_column("/results/max_abs_theta", column<double>(records, &SampleRecord::max_abs_theta));
+  file.write_column("/results/final_theta", column<double>(records, &SampleRecord::final_theta));
+  file.write_column("/results/final_slide", column<double>(records, &SampleRecord::final_slide));
+  file.write_column("/results/max_abs_slide", column<double>(records, &SampleRecord::max_abs_slide));
+  file.write_column("/results/overturn_time", column<double>(records, &SampleRecord::overturn_time));
+}
+
+void write_fragility(Hdf5Writer& file, const StudyConfig& config, const std::vector<SampleRecord>& records,
+                     const std::vector<double>& alphas) {
+  file.create_group("/fragility");
+  file.set_attribute("/fragility", "im_name", std::string(im_name));
+  file.set_attribute("/fragility", "im_units", std::string(im_units));
+  file.set_attribute("/fragility", "trials_exclude",
+                     std::string("samples whose status is not 0 (failed or rejected) are not trials"));
+  for (const auto& state : config.limit_states) {
+    const FragilityCurve curve = fragility_curve(config, state, records, alphas);
+    const std::string group = "/fragility/" + state.name;
+    file.create_group(group);
+    file.write_column(group + "/im", curve.im);
+    file.write_column(group + "/trials", curve.trials);
+    file.write_column(group + "/exceedances", curve.exceedances);
+    file.write_column(group + "/probability", curve.probability);
+    file.write_column(group + "/ci_low", curve.ci_low);
+    file.write_column(group + "/ci_high", curve.ci_high);
+    file.set_attribute(group, "type", std::string(limit_state_kind_name(state.kind)));
+    file.set_attribute(group, "threshold", state.threshold);
+    file.set_attribute(group, "median", curve.median);
+    file.set_attribute(group, "beta", curve.beta);
+    file.set_attribute(group, "log_likelihood", curve.log_likelihood);
+    file.set_attribute(group, "fit_status", curve.fit_status);
+    file.set_attribute(group, "median_low", curve.median_low);
+    file.set_attribute(group, "median_high", curve.median_high);
+    file.set_attribute(group, "interval", std::string("Wilson score, 95 %"));
+  }
+}
+
+}  // namespace
+
+void write_study_output(const std::filesystem::path& path, const StudyConfig& config,
+                        const std::vector<SampleRecord>& records) {
+  replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
+    Hdf5Writer file(temporary);
+    file.set_attribute("/", "config", canonical_text(config.canonical));
+    file.set_attribute("/", "config_hash", hash_to_hex(config.hash));
+    file.set_attribute("/", "blockfrag_version", std::string(study_output_version));
+    file.set_attribute("/", "total_samples", config.total_samples());
+    file.set_attribute("/", "samples_per_level", static_cast<std::int64_t>(config.samples_per_level));
+    file.set_attribute("/", "design",
+                       std::string(config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"));
+    std::vector<double> alphas;
+    write_samples(file, config, alphas);
+    write_results(file, records);
+    write_fragility(file, config, records, alphas);
+    file.close();
+  });
+}
+
+std::string output_config_hash(const std::filesystem::path& path) {
+  try {
+    return read_root_string_attribute(path, "config_hash");
+  } catch (const Hdf5Error&) {
+    return {};
+  }
+}
+
+}  // namespace blockfrag

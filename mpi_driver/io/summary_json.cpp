@@ -1,0 +1,44 @@
+#include "mpi_driver/io/summary_json.hpp"
+
+#include <optional>
+
+namespace blockfrag {
+
+namespace {
+
+nlohmann::json optional_time(const std::optional<double>& time) {
+  return time ? nlohmann::json(*time) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::json summary_to_json(const Summary& summary) {
+  nlohmann::json modes = nlohmann::json::array();
+  for (const auto& change : summary.modes) modes.push_back({change.time, mode_name(change.mode)});
+  const bool ok = summary.status == Status::ok;
+  return {{"status", ok ? "ok" : "failed"},
+          {"status_reason", ok ? nlohmann::json(nullptr) : nlohmann::json(summary.status_reason)},
+          {"model", model_name(summary.model)},
+          {"effects", model_effects(summary.model)},
+          {"overturned", summary.overturned},
+          {"overturn_time", optional_time(summary.overturn_time)},
+          {"max_abs_theta", summary.max_abs_theta},
+          {"final_theta", summary.final_theta},
+          {"final_slide", summary.final_slide},
+          {"max_abs_slide", summary.max_abs_slide},
+          {"rock_start_time", optional_time(summary.rock_start_time)},
+          {"slide_start_time", optional_time(summary.slide_start_time)},
+          {"first_impact_time", optional_time(summary.first_impact_time)},
+          {"impacts", summary.impacts},
+          {"modes", std::move(modes)},
+          {"end_time", summary.end_time},
+          {"steps", summary.steps},
+          {"rhs_evaluations", summary.rhs_evaluations},
+          {"events", summary.events},
+          {"max_impact_energy_gain", summary.max_impact_energy_gain},
+          {"max_contact_violation", summary.max_contact_violation},
+          {"max_penetration", summary.max_penetration},
+          {"painleve_events", summary.painleve_events}};
+}
+
+}  // namespace blockfrag

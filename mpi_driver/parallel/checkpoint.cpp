@@ -1,0 +1,90 @@
+#include "mpi_driver/parallel/checkpoint.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "mpi_driver/config/study_hash.hpp"
+
+namespace blockfrag {
+namespace {
+
+constexpr std::string_view magic = "BFCKPT01";
+constexpr std::size_t header_size = magic.size() + 3 * 8;
+
+template <typename T>
+void append(std::string& out, const T& value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+template <typename T>
+T read_at(std::string_view bytes, std::size_t offset) {
+  T value;
+  std::memcpy(&value, bytes.data() + offset, sizeof(T));
+  return value;
+}
+
+}  // namespace
+
+std::string encode_checkpoint(const CheckpointState& state) {
+  std::string out;
+  out.reserve(header_size + state.done.size() * sizeof(SampleRecord) + 8);
+  out.append(magic);
+  append(out, state.config_hash);
+  append(out, state.total_samples);
+  append(out, static_cast<std::int64_t>(state.done.size()));
+  for (const auto& record : state.done) append(out, record);
+  append(out, fnv1a64(out));
+  return out;
+}
+
+CheckpointState decode_checkpoint(std::string_view bytes, const std::string& source) {
+  const auto fail = [&](const std::string& why) {
+    return CheckpointError(source + ": not a usable blockfrag checkpoint (" + why +
+                           "); remove it to start the study over");
+  };
+  if (bytes.size() < header_size + 8 || bytes.substr(0, magic.size()) != magic) {
+    throw fail("wrong header");
+  }
+  const auto stored_sum = read_at<std::uint64_t>(bytes, bytes.size() - 8);
+  if (fnv1a64(bytes.substr(0, bytes.size() - 8)) != stored_sum) throw fail("checksum mismatch");
+
+  CheckpointState state;
+  state.config_hash = read_at<std::uint64_t>(bytes, magic.size());
+  state.total_samples = read_at<std::int64_t>(bytes, magic.size() + 8);
+  const auto count = read_at<std::int64_t>(bytes, magic.size() + 16);
+  if (count < 0 || bytes.size() != header_size + static_cast<std::size_t>(count) * sizeof(SampleRecord) + 8) {
+    throw fail("wrong length");
+  }
+  state.done.resize(static_cast<std::size_t>(count));
+  if (count > 0) {
+    std::memcpy(state.done.data(), bytes.data() + header_size,
+                static_cast<std::size_t>(count) * sizeof(SampleRecord));
+  }
+  std::vector<bool> seen(static_cast<std::size_t>(std::max<std::int64_t>(state.total_samples, 0)));
+  for (const auto& record : state.done) {
+    if (record.index < 0 || record.index >= state.total_samples) throw fail("sample index out of range");
+    if (seen[static_cast<std::size_t>(record.index)]) throw fail("a sample recorded twice");
+    seen[static_cast<std::size_t>(record.index)] = true;
+  }
+  return state;
+}
+
+void write_checkpoint(const std::filesystem::path& path, const CheckpointState& state,
+                      const AtomicWriteHooks& hooks) {
+  write_file_atomically(path, encode_checkpoint(state), hooks);
+}
+
+std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return decode_checkpoint(read_whole_file(path), path.string());
+}
+
+std::filesystem::path checkpoint_path_for(const std::filesystem::path& output) {
+  auto path = output;
+  path += ".checkpoint";
+  return path;
+}
+
+}  // namespace blockfrag

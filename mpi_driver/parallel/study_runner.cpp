@@ -1,0 +1,289 @@
+#include "mpi_driver/parallel/study_runner.hpp"
+
+#include <chrono>
+#include <cstring>
+#include <deque>
+#include <optional>
+#include <thread>
+
+#include "mpi_driver/parallel/checkpoint.hpp"
+#include "mpi_driver/parallel/progress.hpp"
+#include "mpi_driver/parallel/signals.hpp"
+#include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/parallel/work_distribution.hpp"
+
+namespace blockfrag {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Worker -> rank 0: a header and the records computed for its chunk (a prefix of it).
+// Rank 0 -> worker: a chunk (count 0: no more work), a stop request, or the final goodbye.
+enum Tag : int { tag_report = 1, tag_chunk = 2, tag_stop = 3, tag_goodbye = 4 };
+
+constexpr std::int64_t wants_more = 1;   // also a request for the next chunk
+constexpr std::int64_t interrupted = 2;  // the worker got a signal or a stop: it computes nothing more
+constexpr std::int64_t finished = 4;     // the worker's last report: no request is outstanding
+
+struct ReportHeader {
+  std::int64_t chunk_first = 0;
+  std::int64_t chunk_count = 0;
+  std::int64_t computed = 0;
+  std::int64_t flags = 0;
+};
+
+// Two chunks in hand or on the way: the next one is already there when the current one ends.
+constexpr int prefetch_depth = 2;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void send_report(MPI_Comm comm, const ReportHeader& header, const std::vector<SampleRecord>& records) {
+  std::vector<char> buffer(sizeof header + records.size() * sizeof(SampleRecord));
+  std::memcpy(buffer.data(), &header, sizeof header);
+  if (!records.empty()) std::memcpy(buffer.data() + sizeof header, records.data(), records.size() * sizeof(SampleRecord));
+  MPI_Send(buffer.data(), static_cast<int>(buffer.size()), MPI_BYTE, 0, tag_report, comm);
+}
+
+void send_chunk(MPI_Comm comm, int worker, IndexRange chunk) {
+  const std::int64_t message[2] = {chunk.first, chunk.count};
+  MPI_Send(message, 2, MPI_INT64_T, worker, tag_chunk, comm);
+}
+
+void run_worker(MPI_Comm comm, StudySampler& sampler, const SceneEvaluator& evaluate) {
+  int outstanding = 0;
+  bool no_more_work = false;
+  bool stopped = false;
+  std::deque<IndexRange> chunks;
+  for (int k = 0; k < prefetch_depth; ++k) {
+    send_report(comm, {0, 0, 0, wants_more}, {});
+    ++outstanding;
+  }
+  const auto check_stop = [&] {
+    int arrived = 0;
+    MPI_Iprobe(0, tag_stop, comm, &arrived, MPI_STATUS_IGNORE);
+    if (arrived) {
+      MPI_Recv(nullptr, 0, MPI_BYTE, 0, tag_stop, comm, MPI_STATUS_IGNORE);
+      stopped = true;
+    }
+    if (interrupt_requested()) stopped = true;
+  };
+  while (!chunks.empty() || outstanding > 0) {
+    if (chunks.empty()) {
+      std::int64_t message[2];
+      MPI_Recv(message, 2, MPI_INT64_T, 0, tag_chunk, comm, MPI_STATUS_IGNORE);
+      --outstanding;
+      if (message[1] == 0) {
+        no_more_work = true;
+      } else {
+        chunks.push_back({message[0], message[1]});
+      }
+      continue;
+    }
+    const IndexRange chunk = chunks.front();
+    chunks.pop_front();
+    std::vector<SampleRecord> records;
+    for (std::int64_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
+      check_stop();
+      if (stopped) break;
+      records.push_back(evaluate_sample(sampler, i, evaluate));
+    }
+    const bool more = !no_more_work && !stopped;
+    const std::int64_t flags = (more ? wants_more : 0) | (stopped ? interrupted : 0);
+    send_report(comm, {chunk.first, chunk.count, static_cast<std::int64_t>(records.size()), flags}, records);
+    if (more) ++outstanding;
+  }
+  send_report(comm, {0, 0, 0, finished | (stopped ? interrupted : 0)}, {});
+  // A stop may still be on its way; the goodbye comes after it, so nothing is left unreceived.
+  for (;;) {
+    MPI_Status status;
+    MPI_Recv(nullptr, 0, MPI_BYTE, 0, MPI_ANY_TAG, comm, &status);
+    if (status.MPI_TAG == tag_goodbye) break;
+  }
+}
+
+// Rank 0's state: what is done, what is left, who is still working.
+class Coordinator {
+ public:
+  Coordinator(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings, CheckpointState restored)
+      : comm_(comm), config_(config), settings_(settings) {
+    MPI_Comm_size(comm_, &ranks_);
+    const auto total = config.total_samples();
+    result_.records.resize(static_cast<std::size_t>(total));
+    done_.assign(static_cast<std::size_t>(total), false);
+    for (const auto& record : restored.done) store(record);
+    result_.restored = done_count_;
+    queue_.emplace(done_);
+    active_workers_ = ranks_ - 1;
+    finished_.assign(static_cast<std::size_t>(ranks_), false);
+  }
+
+  RunResult run(StudySampler& sampler, const SceneEvaluator& evaluate) {
+    ProgressReporter progress(settings_.log ? *settings_.log : null_stream(), settings_.log_is_terminal,
+                              config_.total_samples(), done_count_, settings_.log_interval_s);
+    if (settings_.log && result_.restored > 0) {
+      *settings_.log << "resumed from " << settings_.checkpoint.string() << ": " << result_.restored << " of "
+                     << config_.total_samples() << " samples already done\n";
+    }
+    auto last_checkpoint = Clock::now();
+    for (;;) {
+      serve_reports();
+      if (interrupt_requested()) interrupt();
+      if (!interrupted_) {
+        const IndexRange own = queue_->next_chunk(ranks_, 1);
+        if (!own.empty()) {
+          store(evaluate_sample(sampler, own.first, evaluate));
+          ++result_.computed;
+        }
+      }
+      const bool all_done = done_count_ == config_.total_samples();
+      if ((all_done || interrupted_) && active_workers_ == 0) break;
+      if (interrupted_ || queue_->remaining() == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+      if (!all_done && seconds_since(last_checkpoint) >= settings_.checkpoint_interval_s) {
+        write_checkpoint_now();
+        last_checkpoint = Clock::now();
+      }
+      if (settings_.log) progress.update(done_count_);
+    }
+    if (settings_.log) progress.finish(done_count_);
+    if (interrupted_) {
+      write_checkpoint_now();
+      result_.outcome = RunOutcome::interrupted;
+    }
+    return std::move(result_);
+  }
+
+ private:
+  static std::ostream& null_stream() {
+    static std::ostream stream(nullptr);
+    return stream;
+  }
+
+  void store(const SampleRecord& record) {
+    const auto i = static_cast<std::size_t>(record.index);
+    if (done_.at(i)) return;  // never happens: each index is handed out once
+    done_[i] = true;
+    result_.records[i] = record;
+    ++done_count_;
+  }
+
+  void interrupt() {
+    if (interrupted_) return;
+    interrupted_ = true;
+    for (int worker = 1; worker < ranks_; ++worker) {
+      if (!finished_[static_cast<std::size_t>(worker)]) {
+        MPI_Send(nullptr, 0, MPI_BYTE, worker, tag_stop, comm_);
+      }
+    }
+  }
+
+  void serve_reports() {
+    for (;;) {
+      int arrived = 0;
+      MPI_Status status;
+      MPI_Iprobe(MPI_ANY_SOURCE, tag_report, comm_, &arrived, &status);
+      if (!arrived) return;
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_BYTE, &bytes);
+      std::vector<char> buffer(static_cast<std::size_t>(bytes));
+      MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, tag_report, comm_, MPI_STATUS_IGNORE);
+      handle_report(status.MPI_SOURCE, buffer);
+    }
+  }
+
+  void handle_report(int worker, const std::vector<char>& buffer) {
+    ReportHeader header;
+    std::memcpy(&header, buffer.data(), sizeof header);
+    for (std::int64_t k = 0; k < header.computed; ++k) {
+      SampleRecord record;
+      std::memcpy(&record, buffer.data() + sizeof header + static_cast<std::size_t>(k) * sizeof record, sizeof record);
+      store(record);
+    }
+    result_.computed += header.computed;
+    queue_->give_back({header.chunk_first + header.computed, header.chunk_count - header.computed});
+    if (header.flags & interrupted) interrupt();
+    if (header.flags & wants_more) {
+      send_chunk(comm_, worker, interrupted_ ? IndexRange{} : queue_->next_chunk(ranks_, settings_.max_chunk));
+    }
+    if (header.flags & finished) {
+      finished_[static_cast<std::size_t>(worker)] = true;
+      --active_workers_;
+      MPI_Send(nullptr, 0, MPI_BYTE, worker, tag_goodbye, comm_);
+    }
+  }
+
+  void write_checkpoint_now() {
+    const auto start = Clock::now();
+    CheckpointState state;
+    state.config_hash = config_.hash;
+    state.total_samples = config_.total_samples();
+    state.done.reserve(static_cast<std::size_t>(done_count_));
+    for (std::size_t i = 0; i < done_.size(); ++i) {
+      if (done_[i]) state.done.push_back(result_.records[i]);
+    }
+    write_checkpoint(settings_.checkpoint, state, settings_.checkpoint_hooks);
+    ++result_.checkpoints;
+    result_.checkpoint_seconds += seconds_since(start);
+  }
+
+  MPI_Comm comm_;
+  const StudyConfig& config_;
+  const RunSettings& settings_;
+  int ranks_ = 1;
+  RunResult result_;
+  std::vector<bool> done_;
+  std::int64_t done_count_ = 0;
+  std::optional<WorkQueue> queue_;
+  std::vector<bool> finished_;
+  int active_workers_ = 0;
+  bool interrupted_ = false;
+};
+
+// Rank 0 reads the checkpoint and checks it against the config; the verdict goes to every rank so
+// all of them stop together when it is refused.
+std::optional<CheckpointState> restore(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  std::optional<CheckpointState> restored;
+  std::string refusal;
+  if (rank == 0) {
+    try {
+      restored = read_checkpoint(settings.checkpoint);
+    } catch (const std::exception& error) {
+      refusal = error.what();
+    }
+    if (restored && restored->config_hash != config.hash) {
+      refusal = "refusing to resume: the checkpoint " + settings.checkpoint.string() +
+                " belongs to a different study config (checkpoint config hash " +
+                hash_to_hex(restored->config_hash) + ", this config " + hash_to_hex(config.hash) +
+                "); run the original config to finish it, or remove the checkpoint to start over";
+    } else if (restored && restored->total_samples != config.total_samples()) {
+      refusal = "refusing to resume: the checkpoint " + settings.checkpoint.string() + " has " +
+                std::to_string(restored->total_samples) + " samples, this study " +
+                std::to_string(config.total_samples());
+    }
+  }
+  int refused = refusal.empty() ? 0 : 1;
+  MPI_Bcast(&refused, 1, MPI_INT, 0, comm);
+  if (refused) throw StudyMismatchError(rank == 0 ? refusal : "refusing to resume (see rank 0)");
+  return restored;
+}
+
+}  // namespace
+
+RunResult run_study_samples(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
+                            const SceneEvaluator& evaluate) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  auto restored = restore(comm, config, settings);
+  StudySampler sampler(config);
+  if (rank != 0) {
+    run_worker(comm, sampler, evaluate);
+    return {};
+  }
+  Coordinator coordinator(comm, config, settings, restored ? std::move(*restored) : CheckpointState{});
+  return coordinator.run(sampler, evaluate);
+}
+
+}  // namespace blockfrag

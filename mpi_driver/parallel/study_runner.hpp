@@ -1,0 +1,63 @@
+// Runs a study's samples over the ranks of a communicator, checkpointing and resuming.
+//
+// Rank 0 keeps the queue of sample indices still to do and hands out contiguous chunks on demand
+// (workers ask for the next chunk before they need it, so they never wait on a busy rank 0); it
+// also computes samples itself, one at a time, and answers requests between two of them. Every
+// record is gathered on rank 0, which writes the checkpoint every checkpoint_interval_s and when
+// interrupted (SIGTERM, SIGINT on any rank). A sample's record depends only on (config, index):
+// the number of ranks, the chunks and the restarts change when it is computed, never its value.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+#include "engine/scene/scene.hpp"
+#include "engine/summary.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/config/study_config.hpp"
+#include "mpi_driver/study/study_record.hpp"
+#include "mpi_driver/study/sample_evaluation.hpp"
+#include "mpi_driver/study/study_sample.hpp"
+
+namespace blockfrag {
+
+// The checkpoint on disk belongs to another study (or another sample count).
+class StudyMismatchError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RunSettings {
+  std::filesystem::path checkpoint;
+  double checkpoint_interval_s = 60.0;
+  AtomicWriteHooks checkpoint_hooks;
+  std::ostream* log = nullptr;  // rank 0's progress lines; nullptr: silent
+  bool log_is_terminal = false;
+  double log_interval_s = 30.0;
+  std::int64_t max_chunk = 64;
+};
+
+enum class RunOutcome { completed, interrupted };
+
+struct RunResult {
+  RunOutcome outcome = RunOutcome::completed;
+  std::int64_t restored = 0;        // records read from the checkpoint
+  std::int64_t computed = 0;        // records computed in this run (all ranks; rank 0's count)
+  std::int64_t checkpoints = 0;     // checkpoints written in this run
+  double checkpoint_seconds = 0.0;  // time rank 0 spent writing them
+  // Rank 0 only: every record, indexed by sample (complete when outcome is completed).
+  std::vector<SampleRecord> records;
+};
+
+// Collective over comm. Throws StudyMismatchError (on every rank) when the checkpoint belongs to
+// another study or is damaged (the message on rank 0 says which).
+RunResult run_study_samples(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
+                            const SceneEvaluator& evaluate);
+
+}  // namespace blockfrag
