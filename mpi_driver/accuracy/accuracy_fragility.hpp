@@ -14,7 +14,7 @@
 
 #include "mpi_driver/accuracy/accuracy_settings.hpp"
 #include "mpi_driver/config/study_config.hpp"
-#include "mpi_driver/study/study_fragility.hpp"
+#include "mpi_driver/study/limit_states.hpp"
 
 namespace blockfrag {
 

@@ -5,7 +5,7 @@
 #include "engine/scene/block_geometry.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
-#include "mpi_driver/study/study_fragility.hpp"
+#include "mpi_driver/study/limit_states.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 

@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "mpi_driver/config/config_reader.hpp"
-#include "mpi_driver/study/study_fragility.hpp"
+#include "mpi_driver/study/limit_states.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
 namespace blockfrag {

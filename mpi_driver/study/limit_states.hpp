@@ -1,0 +1,22 @@
+// A limit state's fragility from a study's records: per intensity level the trials (samples whose
+// simulation succeeded: failed and rejected ones are excluded) and the exceedances, from which
+// postproc/fragility builds the curve and its fit.
+#pragma once
+
+#include <vector>
+
+#include "mpi_driver/config/study_config.hpp"
+#include "mpi_driver/study/study_record.hpp"
+#include "postproc/fragility/fragility_curve.hpp"
+
+namespace blockfrag {
+
+// Whether one successful sample exceeds the limit state; alpha = atan(a / b) of its block.
+// An overturned block exceeds every rotation limit (its rotation reached pi/2 and beyond).
+bool exceeds(const LimitState& state, const SampleRecord& record, double alpha);
+
+// records[i] and alphas[i] belong to sample i (all samples of the study).
+FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& state,
+                               const std::vector<SampleRecord>& records, const std::vector<double>& alphas);
+
+}  // namespace blockfrag

@@ -1,0 +1,30 @@
+// A fragility curve from binomial counts: per intensity level the empirical probability with its
+// Wilson 95 % interval, and the lognormal maximum-likelihood fit over the counts.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace blockfrag {
+
+struct FragilityCurve {
+  std::vector<double> im;
+  std::vector<std::int64_t> trials;
+  std::vector<std::int64_t> exceedances;
+  std::vector<double> probability;  // exceedances / trials; NaN without trials
+  std::vector<double> ci_low;
+  std::vector<double> ci_high;
+  double median;          // of the lognormal fit; NaN when the fit does not exist
+  double beta;
+  double log_likelihood;  // binomial log-likelihood at the fit, coefficients included; NaN likewise
+  std::string fit_status;  // FitStatus's name: "ok", "no_exceedances", "separated", ...
+  double median_low;       // where the data place the median when the fit does not exist
+  double median_high;
+};
+
+// im[k] is level k's intensity, trials[k] its samples, exceedances[k] those past the limit state.
+FragilityCurve fragility_from_counts(std::vector<double> im, std::vector<std::int64_t> trials,
+                                     std::vector<std::int64_t> exceedances);
+
+}  // namespace blockfrag
