@@ -1,5 +1,6 @@
 #include "mpi_driver/cli/accuracy_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <fstream>
 #include <iostream>

@@ -14,7 +14,10 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+// CLI11 is a large header-only library: only the .cpp files that use it include it.
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace blockfrag {
 

@@ -1,5 +1,6 @@
 #include "mpi_driver/cli/bench_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <iostream>

@@ -10,7 +10,10 @@
 #include <functional>
 #include <ostream>
 
-#include <CLI/CLI.hpp>
+// CLI11 is a large header-only library: only the .cpp files that use it include it.
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace blockfrag {
 

@@ -1,5 +1,6 @@
 #include "mpi_driver/cli/cli_validators.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <exception>
 

@@ -3,7 +3,10 @@
 
 #include <string>
 
-#include <CLI/CLI.hpp>
+// CLI11 is a large header-only library: only the .cpp files that use it include it.
+namespace CLI {
+class Validator;
+}  // namespace CLI
 
 namespace blockfrag {
 

@@ -1,5 +1,6 @@
 #include "mpi_driver/cli/run_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <unistd.h>
 
 #include <cstdlib>

@@ -18,9 +18,12 @@
 #include <functional>
 #include <optional>
 
-#include <CLI/CLI.hpp>
-
 #include "mpi_driver/parallel/study_runner.hpp"
+
+// CLI11 is a large header-only library: only the .cpp files that use it include it.
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace blockfrag {
 

@@ -1,5 +1,6 @@
 #include "mpi_driver/cli/simulate_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <iostream>

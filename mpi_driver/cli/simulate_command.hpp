@@ -8,10 +8,13 @@
 #include <optional>
 #include <ostream>
 
-#include <CLI/CLI.hpp>
-
 #include "engine/scene/scene.hpp"
 #include "engine/summary.hpp"
+
+// CLI11 is a large header-only library: only the .cpp files that use it include it.
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace blockfrag {
 

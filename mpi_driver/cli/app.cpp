@@ -1,0 +1,49 @@
+#include "mpi_driver/cli/app.hpp"
+
+#include <exception>
+#include <functional>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "mpi_driver/cli/accuracy_command.hpp"
+#include "mpi_driver/cli/bench_command.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/cli/run_command.hpp"
+#include "mpi_driver/cli/simulate_command.hpp"
+
+namespace blockfrag {
+namespace {
+
+constexpr int exit_code_other_error = 1;
+constexpr int exit_code_bad_input = 2;
+
+}  // namespace
+
+int run_command_line(int argc, char** argv) {
+  CLI::App app{"blockfrag: rigid-block rocking, sliding and overturning under ground pulses"};
+  app.set_version_flag("--version", std::string("blockfrag ") + BLOCKFRAG_VERSION);
+  app.require_subcommand(1);
+
+  std::function<int()> command;
+  add_simulate_command(app, command);
+  add_run_command(app, command);
+  add_accuracy_command(app, command);
+  add_bench_command(app, command);
+
+  try {
+    app.parse(argc, argv);
+    return command();
+  } catch (const CLI::ParseError& error) {
+    // --help and --version arrive here too, with exit code 0.
+    return app.exit(error) == 0 ? 0 : exit_code_bad_input;
+  } catch (const ConfigError& error) {
+    std::cerr << error.what() << '\n';
+    return exit_code_bad_input;
+  } catch (const std::exception& error) {
+    std::cerr << "blockfrag: " << error.what() << '\n';
+    return exit_code_other_error;
+  }
+}
+
+}  // namespace blockfrag

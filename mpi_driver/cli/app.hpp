@@ -1,0 +1,17 @@
+// The blockfrag command line: the subcommands, and the one place where exceptions become messages
+// and exit codes.
+//
+// Exit codes:
+//   0  success
+//   1  any other error (a file that cannot be read or written, ...)
+//   2  a bad scene or config (every message on stderr names the file, the JSON path and the rule)
+//      or a bad command line
+//   3  the simulation failed (its status is "failed"; the summary is still printed)
+//   4  a study was interrupted (SIGTERM, SIGINT) after writing its checkpoint: rerun the same command
+#pragma once
+
+namespace blockfrag {
+
+int run_command_line(int argc, char** argv);
+
+}  // namespace blockfrag
