@@ -13,9 +13,7 @@ COMPARE="$BLOCKFRAG_SOURCE_DIR/tests/mpi/compare_study_outputs.py"
 
 cd "$work" || exit 1
 
-# write_study FILE SEED: 4000 cheap samples, a checkpoint every 0.1 s. The jobs below also hold
-# every checkpoint write for a while (the test hook), so they last long enough to be interrupted
-# however fast the engine is.
+# write_study FILE SEED SAMPLES_PER_LEVEL: cheap samples, a checkpoint every 0.1 s.
 write_study() {
   cat >"$1" <<JSON
 {
@@ -32,7 +30,7 @@ write_study() {
     "direction": {"distribution": "random_sign"}
   },
   "intensity_measure": {"from": 0.3, "to": 1.8, "count": 10},
-  "samples_per_level": 400,
+  "samples_per_level": $3,
   "design": "latin_hypercube",
   "limit_states": [
     {"name": "overturn", "type": "overturning"},
@@ -44,8 +42,26 @@ write_study() {
 }
 JSON
 }
-write_study study.json 99
-write_study changed_seed.json 100
+
+# The study's size follows this machine's speed (and the build's: sanitizers are slow), so that an
+# uninterrupted run on 2 ranks lasts about 4 s and every kill below lands while it is running. The
+# rate is measured between two probe runs, so start-up time does not count.
+probe_seconds() {
+  write_study probe.json 99 "$1"
+  local start_ns
+  start_ns=$(date +%s%N)
+  "$BLOCKFRAG" run probe.json --output "probe$1.h5" 2>probe.err ||
+    { echo "FAIL: the probe run failed: $(cat probe.err)" >&2; exit 1; }
+  awk -v ns=$(($(date +%s%N) - start_ns)) 'BEGIN { print ns / 1e9 }'
+}
+small_s=$(probe_seconds 10)
+large_s=$(probe_seconds 500)
+per_level=$(awk -v t="$large_s" -v t0="$small_s" 'BEGIN {
+  rate = 4900 / (t - t0 > 0.01 ? t - t0 : 0.01); n = int(rate * 4.0 * 1.8 / 10);
+  if (n < 400) n = 400; if (n > 200000) n = 200000; print n }')
+total=$((per_level * 10))
+write_study study.json 99 "$per_level"
+write_study changed_seed.json 100 "$per_level"
 
 if ! "$BLOCKFRAG" run study.json --output reference.h5 2>reference.err; then
   echo "FAIL: the uninterrupted reference run failed: $(cat reference.err)" >&2
@@ -76,39 +92,39 @@ kill_job() {
 }
 
 # --- SIGKILL at random moments, the first one inside a checkpoint write ----------------------------
-pause=0.2
+# Each kill must land mid-run: the job still running when it is sent, no output written after it.
 kills=0
+mid_run=0
 inside_write=0
-for attempt in $(seq 1 40); do
+pause=0.2
+start_job
+# Wait until a checkpoint write is paused between its .tmp file and the rename, then kill.
+for _ in $(seq 1 250); do
+  [[ -e study.h5.checkpoint.tmp ]] && break
+  sleep 0.02
+done
+[[ -e study.h5.checkpoint.tmp ]] && inside_write=1
+kill -0 "$job" 2>/dev/null && alive=1 || alive=0
+kill_job KILL
+kills=$((kills + 1))
+[[ $alive -eq 1 && ! -e study.h5 ]] && mid_run=$((mid_run + 1))
+# Then five kills at random moments from start-up to about a sixth of an uninterrupted run.
+pause=0
+for _ in 1 2 3 4 5; do
   start_job
-  if [[ $attempt -eq 1 ]]; then
-    # Wait until a checkpoint write is paused between its .tmp file and the rename, then kill.
-    for _ in $(seq 1 200); do
-      [[ -e study.h5.checkpoint.tmp ]] && break
-      sleep 0.02
-    done
-    if [[ -e study.h5.checkpoint.tmp ]]; then inside_write=1; fi
-    kill_job KILL
-    kills=$((kills + 1))
-    continue
-  fi
-  # A random moment up to 0.4 s after the job's first checkpoint (or the one left by the job
-  # before: then also during start-up); the job may also finish before it.
-  wait_for_checkpoint
-  sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.4 * r / 32768 }')"
-  if kill -0 "$job" 2>/dev/null && [[ $kills -lt 5 ]]; then
-    kill_job KILL
-    kills=$((kills + 1))
-  else
-    wait "$job"
-    code=$?
-    [[ $code -eq 0 ]] && break
-  fi
+  sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.1 + 0.6 * r / 32768 }')"
+  kill -0 "$job" 2>/dev/null && alive=1 || alive=0
+  kill_job KILL
+  kills=$((kills + 1))
+  [[ $alive -eq 1 && ! -e study.h5 ]] && mid_run=$((mid_run + 1))
 done
 [[ $inside_write -eq 1 ]] && pass || fail "no kill landed inside a checkpoint write"
-[[ $kills -ge 4 ]] && pass || fail "only $kills kills before the study finished (too fast to test)"
+[[ $mid_run -eq $kills ]] && pass || fail "only $mid_run of $kills kills landed mid-run (study of $total samples)"
+start_job
+wait "$job"
+code=$?
 if [[ $code -eq 0 && -e study.h5 ]]; then pass; else fail "the resumed study did not finish (exit $code): $(tail -5 job.err)"; fi
-grep -q "resumed from study.h5.checkpoint: [0-9]* of 4000 samples already done" job.err && pass ||
+grep -q "resumed from study.h5.checkpoint: [0-9]* of $total samples already done" job.err && pass ||
   fail "no run resumed from a checkpoint"
 "$PYTHON" "$COMPARE" reference.h5 study.h5 && pass || fail "killed and resumed study differs from the reference"
 [[ ! -e study.h5.checkpoint ]] && pass || fail "the checkpoint is left after completion"
@@ -159,7 +175,7 @@ if [[ $code -eq 2 ]] && grep -q "refusing to resume: the checkpoint study.h5.che
 else
   fail "changed seed: exit $code, $(cat changed.err)"
 fi
-"$BLOCKFRAG" run study.json --samples-per-level 200 2>changed.err
+"$BLOCKFRAG" run study.json --samples-per-level $((per_level / 2)) 2>changed.err
 code=$?
 [[ $code -eq 2 ]] && grep -q "different study config" changed.err && pass || fail "changed sample count: exit $code, $(cat changed.err)"
 [[ "$(md5sum <study.h5.checkpoint)" == "$checkpoint_sum" ]] && pass || fail "a refused resume changed the checkpoint"
@@ -170,5 +186,5 @@ code=$?
 [[ $code -eq 0 ]] && pass || fail "final resume: exit $code, $(cat final.err)"
 "$PYTHON" "$COMPARE" reference.h5 study.h5 && pass || fail "SIGTERM-interrupted study differs from the reference"
 
-echo "$passed passed, $failed failed ($kills kills)"
+echo "$passed passed, $failed failed ($kills kills, $total samples)"
 [[ $failed -eq 0 ]]
