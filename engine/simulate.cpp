@@ -1,11 +1,9 @@
 #include "engine/simulate.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 
@@ -15,6 +13,7 @@
 #include "engine/integrate/gsl_stepper.hpp"
 #include "engine/integrate/guard_crossing.hpp"
 #include "engine/contact/model_choice.hpp"
+#include "engine/errors.hpp"
 #include "engine/modes/modes.hpp"
 #include "engine/contact/reduced_contact.hpp"
 #include "engine/integrate/rk4_stepper.hpp"
@@ -52,11 +51,6 @@ void with_stepper(const SolverSettings& solver, const OdeState<N>& scale, Fn&& f
     }
   }
 }
-
-// A budget was exceeded or no consistent contact outcome exists: the scene fails, loudly.
-struct SceneFailure : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 constexpr int kMaxStalledEvents = 100;
 constexpr double kOnsetMargin = 1e-12;
@@ -148,7 +142,6 @@ class Simulation {
   int stalled_events_ = 0;
   bool log_impacts_;
   std::vector<ImpactRecord> impact_log_;
-  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
 
 BlockState Simulation::initial_state() const {
@@ -186,7 +179,7 @@ ContactOutcome Simulation::resolve_contact() const {
 }
 
 void Simulation::enter(const ContactOutcome& outcome) {
-  if (!outcome.failure.empty()) throw SceneFailure(outcome.failure);
+  if (!outcome.failure.empty()) throw SimulationFailure(outcome.failure);
   ++summary_.events;
   if (outcome.painleve) ++summary_.painleve_events;
   if (outcome.impact) {
@@ -224,16 +217,11 @@ void Simulation::enter(const ContactOutcome& outcome) {
 void Simulation::check_budget() {
   const SolverSettings& solver = scene_.solver;
   if (summary_.steps > solver.max_steps) {
-    throw SceneFailure("step budget exceeded (" + std::to_string(solver.max_steps) + " steps)");
+    throw SimulationFailure("step budget exceeded (" + std::to_string(solver.max_steps) + " steps)");
   }
   if (summary_.events > solver.max_events) {
-    throw SceneFailure("event budget exceeded (" + std::to_string(solver.max_events) +
+    throw SimulationFailure("event budget exceeded (" + std::to_string(solver.max_events) +
                        " events): the contact state keeps changing");
-  }
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - started_;
-  if (elapsed.count() > solver.max_wall_seconds) {
-    throw SceneFailure("wall-time budget exceeded (" + std::to_string(solver.max_wall_seconds) +
-                       " s)");
   }
 }
 
@@ -465,7 +453,7 @@ void Simulation::run() {
     if (stopped_ || t_ >= t_end) break;
     stalled_events_ = t_ == t_before ? stalled_events_ + 1 : 0;
     if (stalled_events_ > kMaxStalledEvents) {
-      throw SceneFailure("no progress: " + std::to_string(kMaxStalledEvents) +
+      throw SimulationFailure("no progress: " + std::to_string(kMaxStalledEvents) +
                          " contact changes at t = " + std::to_string(t_) + " s");
     }
     // A piece boundary is not an event: a mode whose contact forces still hold under the next
@@ -533,7 +521,7 @@ SimulationWithHistory run_scene(const Scene& scene, double output_interval) {
   Simulation simulation(scene, output_interval);
   try {
     simulation.run();
-  } catch (const std::runtime_error& failure) {  // SceneFailure or StepSizeUnderflow
+  } catch (const SimulationFailure& failure) {
     simulation.summary().status = Status::failed;
     simulation.summary().status_reason = failure.what();
     simulation.finish();
@@ -547,7 +535,7 @@ SimulationWithHistory run_scene(const Scene& scene, double output_interval) {
 Summary simulate(const Scene& scene) { return run_scene(scene, 0.0).summary; }
 
 SimulationWithHistory simulate_with_history(const Scene& scene, double output_interval) {
-  if (!(output_interval > 0)) throw std::invalid_argument("output interval must be > 0");
+  if (!(output_interval > 0)) throw ContractViolation("output interval must be > 0");
   return run_scene(scene, output_interval);
 }
 

@@ -9,7 +9,7 @@
 namespace blockfrag {
 
 // Never throws for a physically odd scene: failures (a budget exceeded) come back as
-// Summary::status. Throws std::invalid_argument for inputs that violate the scene's rules.
+// Summary::status. Throws InvalidInput for a scene that breaks the scene's rules (engine/errors.hpp).
 Summary simulate(const Scene& scene);
 
 struct SimulationWithHistory {

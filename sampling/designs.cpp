@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <numeric>
-#include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "engine/errors.hpp"
 #include "sampling/philox_stream.hpp"
 
 namespace blockfrag {
@@ -14,7 +14,7 @@ namespace {
 void require_samples(std::uint32_t n) {
   // Positions k < n are counted in the draw word below its reserved bit.
   if (n == 0 || n > reserved_draw_flag) {
-    throw std::out_of_range("samples per level must be in [1, 2^31] (got " + std::to_string(n) +
+    throw ContractViolation("samples per level must be in [1, 2^31] (got " + std::to_string(n) +
                             ")");
   }
 }
@@ -49,7 +49,7 @@ double latin_hypercube_uniform_in_stratum(std::uint64_t seed, std::uint32_t stre
 double latin_hypercube_uniform(std::uint64_t seed, std::uint32_t stream, std::uint64_t level,
                                std::uint32_t n, std::uint32_t j) {
   if (j >= n)
-    throw std::out_of_range("sample " + std::to_string(j) + " of a level of " + std::to_string(n));
+    throw ContractViolation("sample " + std::to_string(j) + " of a level of " + std::to_string(n));
   const auto permutation = latin_hypercube_permutation(seed, stream, level, n);
   return latin_hypercube_uniform_in_stratum(seed, stream, level * n + j, permutation[j], n);
 }
@@ -64,7 +64,7 @@ double design_uniform(Design design, std::uint64_t seed, std::uint32_t stream,
       return latin_hypercube_uniform(seed, stream, index / samples_per_level, samples_per_level,
                                      static_cast<std::uint32_t>(index % samples_per_level));
   }
-  throw std::invalid_argument("unknown sampling design");
+  throw ContractViolation("unknown sampling design");
 }
 
 LatinHypercubeLevel::LatinHypercubeLevel(std::uint64_t seed, std::vector<std::uint32_t> streams,
@@ -83,7 +83,7 @@ LatinHypercubeLevel::LatinHypercubeLevel(std::uint64_t seed, std::vector<std::ui
 
 std::uint32_t LatinHypercubeLevel::stratum(std::size_t dimension, std::uint32_t j) const {
   if (dimension >= streams_.size() || j >= samples_per_level_) {
-    throw std::out_of_range("Latin hypercube dimension " + std::to_string(dimension) + ", sample " +
+    throw ContractViolation("Latin hypercube dimension " + std::to_string(dimension) + ", sample " +
                             std::to_string(j) + " out of range");
   }
   return strata_[dimension * samples_per_level_ + j];

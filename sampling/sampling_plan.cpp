@@ -1,10 +1,10 @@
 #include "sampling/sampling_plan.hpp"
 
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
 
+#include "engine/errors.hpp"
 #include "sampling/philox_stream.hpp"
 
 namespace blockfrag {
@@ -58,7 +58,7 @@ std::uint64_t sample_count(const SamplingPlan& plan) {
 
 SamplePosition position(const SamplingPlan& plan, std::uint64_t index) {
   if (index >= sample_count(plan)) {
-    throw std::out_of_range("sample index " + std::to_string(index) + " outside a study of " +
+    throw ContractViolation("sample index " + std::to_string(index) + " outside a study of " +
                             std::to_string(sample_count(plan)) + " samples");
   }
   return {static_cast<std::uint32_t>(index / plan.samples_per_level),

@@ -37,7 +37,7 @@ struct SamplePosition {
 
 std::uint64_t sample_count(const SamplingPlan& plan);
 
-// Throws std::out_of_range unless index < sample_count(plan).
+// Throws ContractViolation unless index < sample_count(plan).
 SamplePosition position(const SamplingPlan& plan, std::uint64_t index);
 
 // Every rule the plan breaks, with fields as paths inside the plan ("samples_per_level",

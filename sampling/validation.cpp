@@ -21,7 +21,7 @@ std::string join(const std::vector<Violation>& violations) {
 }  // namespace
 
 SamplingError::SamplingError(std::vector<Violation> violations)
-    : std::invalid_argument(join(violations)), violations_(std::move(violations)) {}
+    : InvalidInput(join(violations)), violations_(std::move(violations)) {}
 
 std::string format_number(double value) {
   // to_chars spells these "nan", "-nan", "inf"; a sign on a NaN means nothing to a reader.

@@ -2,9 +2,10 @@
 // so a config reader can prefix its own JSON path ("/inputs/mu/std_dev: must be > 0 (got -1)").
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
@@ -15,7 +16,7 @@ struct Violation {
 };
 
 // Thrown by sampling code handed invalid input; what() lists every violation as "field: message".
-class SamplingError : public std::invalid_argument {
+class SamplingError : public InvalidInput {
  public:
   explicit SamplingError(std::vector<Violation> violations);
   const std::vector<Violation>& violations() const { return violations_; }

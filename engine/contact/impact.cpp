@@ -4,8 +4,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 #include <string>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 namespace {
@@ -120,7 +121,7 @@ ImpactRegime regime_of(const Path& path, int used) {
 
 void require(bool ok, const char* what, double value) {
   if (!ok) {
-    throw std::invalid_argument(std::string("corner impact: ") + what + " (got " +
+    throw ContractViolation(std::string("corner impact: ") + what + " (got " +
                                 std::to_string(value) + ")");
   }
 }

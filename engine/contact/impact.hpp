@@ -33,7 +33,7 @@ struct CornerImpulse {
   bool energy_capped = false;   // Newton's law would have created energy: u_y+ < -e u_y-
 };
 
-// Throws std::invalid_argument for M <= 0, I <= 0, mu < 0, e outside [0, 1] or a non-finite
+// Throws ContractViolation for M <= 0, I <= 0, mu < 0, e outside [0, 1] or a non-finite
 // value. A corner that does not approach (u_y >= 0) gets no impulse.
 CornerImpulse corner_impact(const CornerImpactInput& in);
 

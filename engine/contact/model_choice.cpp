@@ -1,7 +1,8 @@
 #include "engine/contact/model_choice.hpp"
 
 #include <algorithm>
-#include <stdexcept>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
@@ -32,13 +33,13 @@ Model model_named_by(const Effects& effects) {
   const Effects& e = effects;
   if (e.rocking && e.sliding && e.impact && e.flight) return Model::full;
   if (e.vertical) {
-    throw std::invalid_argument(
+    throw InvalidInput(
         "invalid scene: effects: vertical ground motion needs the full model (rocking, sliding, "
         "impact, flight)");
   }
   if (e.rocking && !e.sliding && !e.flight) return Model::housner_rocking;
   if (e.sliding && !e.rocking && !e.impact && !e.flight) return Model::newmark_sliding;
-  throw std::invalid_argument(
+  throw InvalidInput(
       "invalid scene: effects name no model: use [\"rocking\"] or [\"rocking\", \"impact\"] "
       "(Housner), [\"sliding\"] (Newmark), all of rocking, sliding, impact, flight (full), or "
       "\"auto\"");

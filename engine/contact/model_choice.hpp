@@ -9,7 +9,7 @@
 
 namespace blockfrag {
 
-// Throws std::invalid_argument for a set of effects that names no model.
+// Throws InvalidInput for a set of effects that names no model.
 Model model_named_by(const Effects& effects);
 
 // "auto" prunes only what is impossible:

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include "engine/integrate/ode_state.hpp"
 
@@ -26,11 +25,11 @@ class DormandPrinceStepper {
   // component i is controlled absolutely.
   DormandPrinceStepper(double tolerance, OdeState<N> scale) : tolerance_(tolerance), scale_(scale) {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
-      throw std::invalid_argument("DormandPrinceStepper: tolerance must be positive and finite");
+      throw ContractViolation("DormandPrinceStepper: tolerance must be positive and finite");
     }
     for (double s : scale) {
       if (!(s > 0.0) || !std::isfinite(s)) {
-        throw std::invalid_argument(
+        throw ContractViolation(
             "DormandPrinceStepper: every scale must be positive and finite");
       }
     }
@@ -46,10 +45,10 @@ class DormandPrinceStepper {
   requires OdeRhs<Rhs, N>
   void step(const Rhs& rhs, double& t, OdeState<N>& q, double h_max) {
     if (!(h_max > 0.0))
-      throw std::invalid_argument("DormandPrinceStepper::step: h_max must be > 0");
+      throw ContractViolation("DormandPrinceStepper::step: h_max must be > 0");
     if constexpr (N == 0) {
       if (!std::isfinite(h_max)) {
-        throw std::invalid_argument("DormandPrinceStepper::step: h_max must be finite when N = 0");
+        throw ContractViolation("DormandPrinceStepper::step: h_max must be finite when N = 0");
       }
       advance_time(t, h_max);
     } else {

@@ -4,8 +4,9 @@
 #include <array>
 #include <concepts>
 #include <cstdio>
-#include <stdexcept>
 #include <string>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
@@ -23,10 +24,10 @@ concept OdeRhs = requires(const Rhs& rhs, double t, const OdeState<N>& q, OdeSta
 
 // The adaptive integrator could not meet its tolerance with a step the time axis can still resolve
 // (or kept rejecting): a singularity, a non-finite right-hand side, or a tolerance below round-off.
-class StepSizeUnderflow : public std::runtime_error {
+class StepSizeUnderflow : public SimulationFailure {
  public:
   StepSizeUnderflow(double t, double h, const std::string& why)
-      : std::runtime_error(message(t, h, why)), t_(t), h_(h) {}
+      : SimulationFailure(message(t, h, why)), t_(t), h_(h) {}
   double time() const { return t_; }
   double step_size() const { return h_; }
 

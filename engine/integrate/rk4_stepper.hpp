@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "engine/integrate/ode_state.hpp"
 
@@ -21,7 +20,7 @@ class Rk4Stepper {
 
   explicit Rk4Stepper(double dt) : dt_(dt) {
     if (!(dt > 0.0) || !std::isfinite(dt)) {
-      throw std::invalid_argument("Rk4Stepper: dt must be positive and finite");
+      throw ContractViolation("Rk4Stepper: dt must be positive and finite");
     }
   }
 
@@ -30,7 +29,7 @@ class Rk4Stepper {
   template <class Rhs>
   requires OdeRhs<Rhs, N>
   void step(const Rhs& rhs, double& t, OdeState<N>& q, double h_max) {
-    if (!(h_max > 0.0)) throw std::invalid_argument("Rk4Stepper::step: h_max must be > 0");
+    if (!(h_max > 0.0)) throw ContractViolation("Rk4Stepper::step: h_max must be > 0");
     const double h = std::min(dt_, h_max);
     const double t_end = t + h;
     if (t_end == t) throw StepSizeUnderflow(t, h, "the step does not advance t");

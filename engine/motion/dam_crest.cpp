@@ -4,9 +4,10 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
@@ -113,7 +114,7 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
       why << "invalid scene: the dam's period (" << period << " s) is too short for the duration ("
           << duration << " s): the crest motion would need more than " << kMaxCrestNodes
           << " nodes (one per period / 100)";
-      throw std::invalid_argument(why.str());
+      throw InvalidInput(why.str());
     }
   }
 

@@ -54,7 +54,7 @@ struct CrestHistory {
 };
 
 // Too many nodes would exhaust memory before the block moves: a dam period far shorter than the
-// scene's duration (period / 100 per node) is refused with std::invalid_argument.
+// scene's duration (period / 100 per node) is refused with InvalidInput.
 constexpr std::size_t kMaxCrestNodes = 2'000'000;
 
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,

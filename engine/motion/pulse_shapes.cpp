@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag::pulse {
 
@@ -15,7 +16,7 @@ namespace blockfrag::pulse {
 // The bracket is 2 at phi = 0, -2 n pi at pi/2, and its derivative -((2n + 1) pi - 2 phi) cos(phi)
 // is negative in between: one root.
 double makris_c_phase(int n) {
-  if (n < 1) throw std::invalid_argument("Makris type C_n needs n >= 1");
+  if (n < 1) throw ContractViolation("Makris type C_n needs n >= 1");
   const double odd_pi = (2.0 * n + 1.0) * std::numbers::pi;
   const auto residual = [&](double phi) { return 2.0 * std::cos(phi) - (odd_pi - 2.0 * phi) * std::sin(phi); };
   double low = 0.0, high = std::numbers::pi / 2;  // residual(low) > 0 > residual(high)

@@ -1,7 +1,6 @@
 // One simulation's inputs: block, contact, excitation, solver. Plain values, SI units.
 #pragma once
 
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,8 +54,7 @@ struct RectangularPulse {   // lambda = A for 0 <= t < duration
 // between samples, zero before the first and after the last. The samples are shared, not copied,
 // when scenes are copied.
 struct RecordedMotion {
-  std::string file;            // as the scene gave it (for output)
-  std::filesystem::path path;  // resolved, absolute
+  std::string file;  // as the scene gave it (for output)
   double scale = 1.0;
   std::shared_ptr<const Accelerogram> record;
 };
@@ -93,7 +91,6 @@ struct SolverSettings {
   // Safety net: a scene that exceeds any of these stops with status "failed".
   long max_steps = 50'000'000;
   long max_events = 1'000'000;
-  double max_wall_seconds = 600.0;
 };
 
 // A block released from rest, tilted by theta (rad, counter-clockwise positive) onto the corner

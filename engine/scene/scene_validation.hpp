@@ -6,7 +6,7 @@
 
 namespace blockfrag {
 
-// Throws std::invalid_argument naming the first rule broken.
+// Throws InvalidInput naming the first rule broken.
 void validate_scene(const Scene& scene);
 
 }  // namespace blockfrag

@@ -37,15 +37,15 @@ StudyResults run_in_process(const StudyConfig& config, const SceneEvaluator& eva
   return results;
 }
 
-// A sample that takes longer than this fails (and is excluded from the trials) instead of holding
-// up the comparison: a rough study must not wait on one pathological sample.
-constexpr double sample_wall_seconds = 5.0;
+// A sample that needs more steps than this fails (and is excluded from the trials) instead of
+// holding up the comparison: a rough study must not wait on one pathological sample.
+constexpr long kSampleStepBudget = 5'000'000;
 
 SceneEvaluator evaluator_for(const SolverSetting& setting) {
   return [setting](const Scene& scene) {
     Scene with = scene;
     with.solver = with_setting(with.solver, setting);
-    with.solver.max_wall_seconds = std::min(with.solver.max_wall_seconds, sample_wall_seconds);
+    with.solver.max_steps = std::min(with.solver.max_steps, kSampleStepBudget);
     return simulate(with);
   };
 }

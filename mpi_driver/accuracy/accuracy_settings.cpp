@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 namespace blockfrag {
 
@@ -51,7 +50,7 @@ std::vector<SolverSetting> full_accuracy_settings() {
 SolverSetting parse_solver_setting(std::string_view text) {
   const auto colon = text.find(':');
   if (colon == std::string_view::npos) {
-    throw std::invalid_argument("setting \"" + std::string(text) + "\": expected METHOD:VALUE, e.g. rk4:0.00025");
+    throw InvalidInput("setting \"" + std::string(text) + "\": expected METHOD:VALUE, e.g. rk4:0.00025");
   }
   const std::string name(text.substr(0, colon));
   const std::string value_text(text.substr(colon + 1));
@@ -64,7 +63,7 @@ SolverSetting parse_solver_setting(std::string_view text) {
     }
   }
   if (!known) {
-    throw std::invalid_argument("setting \"" + std::string(text) +
+    throw InvalidInput("setting \"" + std::string(text) +
                                 "\": the method must be rk4, adaptive, gsl_rkf45 or gsl_rk8pd");
   }
   std::size_t used = 0;
@@ -75,10 +74,10 @@ SolverSetting parse_solver_setting(std::string_view text) {
     used = 0;
   }
   if (used == 0 || used != value_text.size() || !std::isfinite(value) || value <= 0) {
-    throw std::invalid_argument("setting \"" + std::string(text) + "\": the value must be a positive number");
+    throw InvalidInput("setting \"" + std::string(text) + "\": the value must be a positive number");
   }
   if (setting.method != Method::rk4 && value > 0.1) {
-    throw std::invalid_argument("setting \"" + std::string(text) + "\": a tolerance must be <= 0.1");
+    throw InvalidInput("setting \"" + std::string(text) + "\": a tolerance must be <= 0.1");
   }
   setting.parameter = value;
   return setting;

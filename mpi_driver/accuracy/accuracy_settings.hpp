@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/errors.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace blockfrag {
@@ -33,7 +34,7 @@ SolverSetting default_setting();
 // and gsl_rk8pd at tolerances 1e-3 ... 1e-12, one per decade.
 std::vector<SolverSetting> full_accuracy_settings();
 
-// Parses "METHOD:VALUE", e.g. "rk4:0.00025" or "adaptive:1e-8"; throws std::invalid_argument with a
+// Parses "METHOD:VALUE", e.g. "rk4:0.00025" or "adaptive:1e-8"; throws InvalidInput with a
 // message naming what is wrong (unknown method, a value that is not a positive finite number, a
 // tolerance above 0.1).
 SolverSetting parse_solver_setting(std::string_view text);

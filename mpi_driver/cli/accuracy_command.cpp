@@ -6,7 +6,6 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
-#include <stdexcept>
 
 #include "mpi_driver/accuracy/accuracy_fragility.hpp"
 #include "mpi_driver/accuracy/accuracy_output.hpp"
@@ -26,7 +25,7 @@ std::string valid_setting(const std::string& text) {
   try {
     parse_solver_setting(text);
     return {};
-  } catch (const std::invalid_argument& error) {
+  } catch (const InvalidInput& error) {
     return error.what();
   }
 }

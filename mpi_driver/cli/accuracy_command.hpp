@@ -35,7 +35,7 @@ struct AccuracyOptions {
 };
 
 // Runs the study; the table goes to `out`, progress lines to `log`. Returns 0. Throws ConfigError
-// for a bad suite, std::invalid_argument for a bad setting, Hdf5Error or FileError on output.
+// for a bad suite, InvalidInput for a bad setting, Hdf5Error or FileError on output.
 int run_accuracy(const AccuracyOptions& options, std::ostream& out, std::ostream& log);
 
 void add_accuracy_command(CLI::App& app, std::function<int()>& command);

@@ -8,17 +8,12 @@
 
 #include "mpi_driver/cli/accuracy_command.hpp"
 #include "mpi_driver/cli/bench_command.hpp"
-#include "mpi_driver/config/config_reader.hpp"
+#include "engine/errors.hpp"
+#include "mpi_driver/cli/exit_codes.hpp"
 #include "mpi_driver/cli/run_command.hpp"
 #include "mpi_driver/cli/simulate_command.hpp"
 
 namespace blockfrag {
-namespace {
-
-constexpr int exit_code_other_error = 1;
-constexpr int exit_code_bad_input = 2;
-
-}  // namespace
 
 int run_command_line(int argc, char** argv) {
   CLI::App app{"blockfrag: rigid-block rocking, sliding and overturning under ground pulses"};
@@ -37,12 +32,16 @@ int run_command_line(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     // --help and --version arrive here too, with exit code 0.
     return app.exit(error) == 0 ? 0 : exit_code_bad_input;
-  } catch (const ConfigError& error) {
+  } catch (const InvalidInput& error) {
     std::cerr << error.what() << '\n';
     return exit_code_bad_input;
+  } catch (const ContractViolation& error) {
+    std::cerr << "blockfrag: internal error (a bug, please report it with the input): " << error.what()
+              << '\n';
+    return exit_code_internal_error;
   } catch (const std::exception& error) {
     std::cerr << "blockfrag: " << error.what() << '\n';
-    return exit_code_other_error;
+    return exit_code_file_failure;
   }
 }
 

@@ -22,7 +22,7 @@ struct BenchOptions {
   long repeat = 20;
 };
 
-// Returns 0, or exit_code_simulation_failed (simulate_command.hpp) when the scene's status is
+// Returns 0, or exit_code_simulation_failed (exit_codes.hpp) when the scene's status is
 // "failed" (the JSON is still printed). Throws ConfigError for a bad scene.
 int run_bench(const BenchOptions& options, std::ostream& out);
 

@@ -20,8 +20,6 @@
 namespace blockfrag {
 namespace {
 
-constexpr int exit_code_bad_input = 2;
-
 // MPI_Init in the constructor, MPI_Finalize in the destructor, so every return and every exception
 // leaves MPI finalised.
 class MpiSession {

@@ -19,6 +19,7 @@
 #include <optional>
 
 #include "mpi_driver/parallel/study_runner.hpp"
+#include "mpi_driver/cli/exit_codes.hpp"
 
 // CLI11 is a large header-only library: only the .cpp files that use it include it.
 namespace CLI {
@@ -26,8 +27,6 @@ class App;
 }  // namespace CLI
 
 namespace blockfrag {
-
-inline constexpr int exit_code_interrupted = 4;
 
 struct RunOptions {
   std::filesystem::path study_path;

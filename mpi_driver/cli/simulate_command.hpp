@@ -10,6 +10,7 @@
 
 #include "engine/scene/scene.hpp"
 #include "engine/summary.hpp"
+#include "mpi_driver/cli/exit_codes.hpp"
 
 // CLI11 is a large header-only library: only the .cpp files that use it include it.
 namespace CLI {
@@ -17,9 +18,6 @@ class App;
 }  // namespace CLI
 
 namespace blockfrag {
-
-// main's exit code for a simulation whose status is "failed" (its summary is still printed).
-inline constexpr int exit_code_simulation_failed = 3;
 
 struct SimulateOptions {
   std::filesystem::path scene_path;

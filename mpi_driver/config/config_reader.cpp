@@ -85,7 +85,7 @@ std::string quoted_list(std::initializer_list<std::string_view> words) {
 }  // namespace
 
 ConfigError::ConfigError(std::vector<std::string> messages)
-    : std::runtime_error(join_lines(messages)), messages_(std::move(messages)) {}
+    : InvalidInput(join_lines(messages)), messages_(std::move(messages)) {}
 
 void ConfigErrors::add(const JsonPointer& path, std::string_view rule) {
   const std::string where = path.empty() ? std::string{} : path.to_string() + ": ";

@@ -17,12 +17,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/errors.hpp"
+
 namespace blockfrag {
 
 using JsonPointer = nlohmann::json::json_pointer;
 
 // A config that cannot be used; what() is every message, one per line.
-class ConfigError : public std::runtime_error {
+class ConfigError : public InvalidInput {
  public:
   explicit ConfigError(std::vector<std::string> messages);
   const std::vector<std::string>& messages() const noexcept { return messages_; }

@@ -1,8 +1,8 @@
 #include "mpi_driver/config/effects_json.hpp"
 
-#include <stdexcept>
 
 #include "engine/contact/model_choice.hpp"
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
@@ -37,7 +37,7 @@ Effects read_effects(const nlohmann::json* value, const JsonPointer& path, Confi
   if (!readable) return effects;
   try {
     model_named_by(effects);
-  } catch (const std::invalid_argument& refused) {
+  } catch (const InvalidInput& refused) {
     errors.add(path, std::string(refused.what()).substr(std::string("invalid scene: ").size()));
   }
   return effects;

@@ -6,13 +6,13 @@
 #include <optional>
 #include <type_traits>
 
-#include "engine/motion/accelerogram.hpp"
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/polygon_properties.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/dam_json.hpp"
 #include "mpi_driver/config/effects_json.hpp"
 #include "mpi_driver/config/polygon_json.hpp"
+#include "mpi_driver/config/record_file.hpp"
 #include "mpi_driver/config/pulse_json.hpp"
 #include "sampling/validation.hpp"  // format_number
 
@@ -81,7 +81,6 @@ RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& ba
   if (!file || file->empty()) return motion;
   motion.file = *file;
   const std::filesystem::path path = base_folder / *file;  // an absolute file replaces the folder
-  motion.path = std::filesystem::absolute(path).lexically_normal();
   try {
     motion.record = std::make_shared<const Accelerogram>(read_accelerogram(path));
   } catch (const RecordError& error) {
@@ -152,7 +151,6 @@ SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) 
   if (method) solver.method = *method;
   solver.max_steps = reader.integer_or("max_steps", solver.max_steps, positive);
   solver.max_events = reader.integer_or("max_events", solver.max_events, positive);
-  solver.max_wall_seconds = reader.number_or("max_wall_seconds", solver.max_wall_seconds, positive);
   if (method) reader.finish("for method \"" + std::string(method_name(*method)) + "\"");
   return solver;
 }
@@ -205,8 +203,7 @@ json ground_motion_to_json(const GroundMotion& motion) {
 json solver_to_json(const SolverSettings& solver) {
   json out = {{"method", method_name(solver.method)},
               {"max_steps", solver.max_steps},
-              {"max_events", solver.max_events},
-              {"max_wall_seconds", solver.max_wall_seconds}};
+              {"max_events", solver.max_events}};
   if (solver.method == Method::rk4) {
     out["dt"] = solver.dt;
   } else {

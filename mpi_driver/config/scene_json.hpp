@@ -3,13 +3,12 @@
 //    "contact": {"friction": 0.6, "restitution": 0.6},
 //    "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 2.0, "cycles": 1},
 //    "duration": 4.0,
-//    "solver": {"method": "adaptive", "tolerance": 1e-8, "max_steps": ..., "max_events": ...,
-//               "max_wall_seconds": ...},
+//    "solver": {"method": "adaptive", "tolerance": 1e-8, "max_steps": ..., "max_events": ...},
 //    "g": 9.81, "initial": {"theta": 0.0}}
 // block, contact, ground_motion and duration are required; everything else has the defaults of
 // engine/scene/scene.hpp. Ground motion types: "none"; "cosine_pulse" and "sine_pulse" (amplitude_g,
 // period, optional cycles); "rectangular_pulse" (amplitude_g, duration); "record" (file, optional
-// scale or target_pga_g; see engine/motion/accelerogram.hpp for the formats). Solver methods: "adaptive",
+// scale or target_pga_g; see mpi_driver/config/record_file.hpp for the formats). Solver methods: "adaptive",
 // "gsl_rkf45" and "gsl_rk8pd" (optional tolerance), and "rk4" (optional dt). A key of another type
 // or method is an unknown key.
 #pragma once

@@ -5,14 +5,15 @@
 
 #include <filesystem>
 #include <functional>
-#include <stdexcept>
 #include <string_view>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
-class FileError : public std::runtime_error {
+class FileError : public FileFailure {
  public:
-  using std::runtime_error::runtime_error;
+  using FileFailure::FileFailure;
 };
 
 // PATH.tmp: the one temporary name per target, so a leftover from a killed writer is simply

@@ -6,15 +6,16 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "engine/errors.hpp"
+
 namespace blockfrag {
 
-class Hdf5Error : public std::runtime_error {
+class Hdf5Error : public FileFailure {
  public:
-  using std::runtime_error::runtime_error;
+  using FileFailure::FileFailure;
 };
 
 class Hdf5Writer {

@@ -10,19 +10,19 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "engine/errors.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/study/study_record.hpp"
 
 namespace blockfrag {
 
-class CheckpointError : public std::runtime_error {
+class CheckpointError : public InvalidInput {
  public:
-  using std::runtime_error::runtime_error;
+  using InvalidInput::InvalidInput;
 };
 
 struct CheckpointState {

@@ -14,9 +14,9 @@
 #include <filesystem>
 #include <functional>
 #include <ostream>
-#include <stdexcept>
 #include <vector>
 
+#include "engine/errors.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/summary.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
@@ -28,9 +28,9 @@
 namespace blockfrag {
 
 // The checkpoint on disk belongs to another study (or another sample count).
-class StudyMismatchError : public std::runtime_error {
+class StudyMismatchError : public InvalidInput {
  public:
-  using std::runtime_error::runtime_error;
+  using InvalidInput::InvalidInput;
 };
 
 struct RunSettings {

@@ -1,6 +1,6 @@
 #include "mpi_driver/study/sample_evaluation.hpp"
 
-#include <stdexcept>
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
@@ -8,7 +8,7 @@ SampleRecord evaluate_sample(StudySampler& sampler, std::int64_t index, const Sc
   const StudySample sample = sampler.draw(index);
   try {
     return make_record(index, evaluate(sample.scene));
-  } catch (const std::invalid_argument&) {
+  } catch (const InvalidInput&) {
     return make_rejected_record(index);
   }
 }

@@ -15,7 +15,7 @@ namespace blockfrag {
 enum class SampleStatus : std::int64_t {
   ok = 0,
   failed = 1,    // the engine gave up (Summary::status failed: a budget exceeded)
-  rejected = 2,  // the engine refused the sampled scene as invalid (std::invalid_argument)
+  rejected = 2,  // the engine refused the sampled scene as invalid (InvalidInput)
 };
 
 struct SampleRecord {

@@ -1,9 +1,9 @@
 #include "mpi_driver/study/study_sample.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <type_traits>
 
+#include "engine/errors.hpp"
 #include "engine/motion/ground_motion.hpp"
 
 namespace blockfrag {
@@ -17,15 +17,15 @@ void set_pulse(GroundMotion& motion, double amplitude_g, const double* period, d
       [&](auto& pulse) {
         using T = std::decay_t<decltype(pulse)>;
         if constexpr (std::is_same_v<T, NoMotion>) {
-          throw std::invalid_argument("a study's base scene needs a pulse to scale");
+          throw ContractViolation("a study's base scene needs a pulse to scale");
         } else if constexpr (std::is_same_v<T, RecordedMotion>) {
           // A record's intensity is its peak ground acceleration (study_config refuses a zero peak).
-          if (period) throw std::invalid_argument("a period input needs a cosine or sine pulse");
+          if (period) throw ContractViolation("a period input needs a cosine or sine pulse");
           pulse.scale = amplitude_g / peak_acceleration_g(*pulse.record);
         } else if constexpr (std::is_same_v<T, MavroeidisPapageorgiouPulse>) {
           // Given by its velocity: scaled so its peak |lambda| (its PGA in g) is the intensity
           // (study_config refuses a zero velocity amplitude).
-          if (period) throw std::invalid_argument("a period input needs a cosine or sine pulse");
+          if (period) throw ContractViolation("a period input needs a cosine or sine pulse");
           pulse.velocity_amplitude =
               amplitude_g * std::abs(pulse.velocity_amplitude) / GroundMotionPieces(pulse, g).peak_abs_lambda();
         } else {
@@ -33,7 +33,7 @@ void set_pulse(GroundMotion& motion, double amplitude_g, const double* period, d
           if constexpr (std::is_same_v<T, CosinePulse> || std::is_same_v<T, SinePulse>) {
             if (period) pulse.period = *period;
           } else if (period) {
-            throw std::invalid_argument("a period input needs a cosine or sine pulse");
+            throw ContractViolation("a period input needs a cosine or sine pulse");
           }
         }
       },

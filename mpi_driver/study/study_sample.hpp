@@ -24,7 +24,7 @@ struct StudySample {
 SamplingPlan sampling_plan(const StudyConfig& config);
 
 // The base scene with the inputs' values and a pulse of amplitude direction * im. Throws
-// std::invalid_argument if the base scene has no pulse to scale.
+// ContractViolation if the base scene has no pulse to scale (the study config refuses such a scene).
 Scene apply_sample(const StudyConfig& config, const std::vector<double>& values, double im);
 
 // Draws samples of one study; keeps the current level's Latin hypercube permutations, so draw

@@ -3,14 +3,15 @@
 #pragma once
 
 #include <cstdint>
-#include <stdexcept>
 #include <string>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
-class IntervalError : public std::invalid_argument {
+class IntervalError : public ContractViolation {
  public:
-  explicit IntervalError(const std::string& what) : std::invalid_argument(what) {}
+  explicit IntervalError(const std::string& what) : ContractViolation(what) {}
 };
 
 struct ProportionInterval {

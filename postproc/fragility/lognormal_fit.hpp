@@ -9,14 +9,15 @@
 #include <cstdint>
 #include <limits>
 #include <span>
-#include <stdexcept>
 #include <string>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 
-class FitError : public std::invalid_argument {
+class FitError : public ContractViolation {
  public:
-  explicit FitError(const std::string& what) : std::invalid_argument(what) {}
+  explicit FitError(const std::string& what) : ContractViolation(what) {}
 };
 
 enum class FitStatus {

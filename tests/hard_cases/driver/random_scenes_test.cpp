@@ -60,7 +60,6 @@ Scene random_scene(std::mt19937_64& rng) {
   }
   if (u(rng) < 0.2) s.dam = DamCrest{DamPeriod{log_uniform(rng, 0.05, 0.5)}, 0.05, 1.0};
   s.solver.tolerance = log_uniform(rng, 1e-10, 1e-6);
-  s.solver.max_wall_seconds = 20;
   return s;
 }
 

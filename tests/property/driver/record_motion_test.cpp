@@ -35,7 +35,7 @@ std::shared_ptr<const Accelerogram> sampled_cosine(double A, double T, double cy
 }
 
 Scene with_record(Scene scene, std::shared_ptr<const Accelerogram> record, double scale = 1.0) {
-  scene.ground_motion = RecordedMotion{"cosine (in memory)", {}, scale, std::move(record)};
+  scene.ground_motion = RecordedMotion{"cosine (in memory)", scale, std::move(record)};
   return scene;
 }
 

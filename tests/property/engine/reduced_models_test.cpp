@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "engine/errors.hpp"
 #include "tests/support/scene_builders.hpp"
 #include "engine/contact/reduced_contact.hpp"
 #include "engine/simulate.hpp"
@@ -160,9 +161,9 @@ TEST(AutoModel, FrictionAboveThePeakGroundAccelerationDoesNotPreventSliding) {
 TEST(Effects, SetsThatNameNoModelAreRefused) {
   Scene scene = block_scene(0.2, 1.0, 0.5, 0.5, NoMotion{}, 1.0);
   scene.effects = {.automatic = false, .rocking = true, .sliding = true, .impact = false, .flight = true};
-  EXPECT_THROW(simulate(scene), std::invalid_argument);
+  EXPECT_THROW(simulate(scene), InvalidInput);
   scene.effects = {.automatic = false, .rocking = false, .sliding = true, .impact = true, .flight = false};
-  EXPECT_THROW(simulate(scene), std::invalid_argument);
+  EXPECT_THROW(simulate(scene), InvalidInput);
 }
 
 }  // namespace

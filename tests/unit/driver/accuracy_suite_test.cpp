@@ -127,7 +127,7 @@ TEST(AccuracySettings, ParsesMethodAndValueAndRefusesNonsense) {
   EXPECT_EQ(parse_solver_setting("gsl_rk8pd:1e-10"), (SolverSetting{Method::gsl_rk8pd, 1e-10}));
   for (const char* bad : {"rk4", "euler:1e-3", "adaptive:", "adaptive:-1e-8", "adaptive:nan", "adaptive:0.5",
                           "rk4:1e-3x"}) {
-    EXPECT_THROW(parse_solver_setting(bad), std::invalid_argument) << bad;
+    EXPECT_THROW(parse_solver_setting(bad), InvalidInput) << bad;
   }
   const auto full = full_accuracy_settings();
   EXPECT_EQ(full.size(), 37u);

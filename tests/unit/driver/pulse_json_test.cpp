@@ -5,6 +5,7 @@
 #include <string>
 #include <variant>
 
+#include "engine/errors.hpp"
 #include "tests/support/scene_json_errors.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "mpi_driver/config/config_reader.hpp"
@@ -96,15 +97,15 @@ TEST(PulseJson, RulesAreRefusedAtTheirPath) {
 TEST(PulseJson, TheEngineRefusesWhatTheReaderRefuses) {
   Scene scene;
   scene.ground_motion = MavroeidisPapageorgiouPulse{0.5, 1.0, 0.9, 0.0, {}};
-  EXPECT_THROW(validate_scene(scene), std::invalid_argument);
+  EXPECT_THROW(validate_scene(scene), InvalidInput);
   scene.ground_motion = MavroeidisPapageorgiouPulse{0.5, 1.0, 2.0, 0.0, 0.99};
-  EXPECT_THROW(validate_scene(scene), std::invalid_argument);
+  EXPECT_THROW(validate_scene(scene), InvalidInput);
   scene.ground_motion = MavroeidisPapageorgiouPulse{0.5, 1.0, 2.0, 0.0, 1.0};
   EXPECT_NO_THROW(validate_scene(scene));
   scene.ground_motion = MakrisPulseC{0.5, 1.0, 0};
-  EXPECT_THROW(validate_scene(scene), std::invalid_argument);
+  EXPECT_THROW(validate_scene(scene), InvalidInput);
   scene.ground_motion = RickerWavelet{0.5, 1.0, -1.0};
-  EXPECT_THROW(validate_scene(scene), std::invalid_argument);
+  EXPECT_THROW(validate_scene(scene), InvalidInput);
 }
 
 }  // namespace

@@ -84,14 +84,12 @@ TEST(SceneJson, OmittedKeysTakeTheDocumentedDefaults) {
   const SolverSettings contract;  // the budgets' defaults live in engine/scene/scene.hpp
   EXPECT_EQ(scene.solver.max_steps, contract.max_steps);
   EXPECT_EQ(scene.solver.max_events, contract.max_events);
-  EXPECT_EQ(scene.solver.max_wall_seconds, contract.max_wall_seconds);
 }
 
 TEST(SceneJson, ReadsEveryGroundMotionTypeAndRk4) {
   json rectangular = with(paper_scene(), "/ground_motion",
                           json{{"type", "rectangular_pulse"}, {"amplitude_g", 0.7}, {"duration", 0.3}});
-  rectangular["solver"] = {{"method", "rk4"}, {"dt", 0.001}, {"max_steps", 1e6}, {"max_events", 10},
-                           {"max_wall_seconds", 2.5}};
+  rectangular["solver"] = {{"method", "rk4"}, {"dt", 0.001}, {"max_steps", 1e6}, {"max_events", 10}};
   const Scene scene = scene_from_json(rectangular, "scene.json");
   EXPECT_EQ(std::get<RectangularPulse>(scene.ground_motion).amplitude_g, 0.7);
   EXPECT_EQ(std::get<RectangularPulse>(scene.ground_motion).duration, 0.3);
@@ -99,7 +97,6 @@ TEST(SceneJson, ReadsEveryGroundMotionTypeAndRk4) {
   EXPECT_EQ(scene.solver.dt, 0.001);
   EXPECT_EQ(scene.solver.max_steps, 1000000);
   EXPECT_EQ(scene.solver.max_events, 10);
-  EXPECT_EQ(scene.solver.max_wall_seconds, 2.5);
 
   const Scene still = scene_from_json(with(paper_scene(), "/ground_motion", json{{"type", "none"}}), "scene.json");
   EXPECT_TRUE(std::holds_alternative<NoMotion>(still.ground_motion));
@@ -153,7 +150,6 @@ INSTANTIATE_TEST_SUITE_P(
         RuleCase{"/solver/max_steps", 0, "/solver/max_steps: must be > 0 (got 0)"},
         RuleCase{"/solver/max_steps", 2.5, "/solver/max_steps: must be an integer (got 2.5)"},
         RuleCase{"/solver/max_events", -1, "/solver/max_events: must be > 0 (got -1)"},
-        RuleCase{"/solver/max_wall_seconds", 0, "/solver/max_wall_seconds: must be > 0 (got 0)"},
         RuleCase{"/initial/theta", 1.6, "/initial/theta: must be in (-pi/2, pi/2) (got 1.6)"},
         RuleCase{"/initial/theta", -1.6, "/initial/theta: must be in (-pi/2, pi/2) (got -1.6)"},
         RuleCase{"/block", 1, "/block: must be an object (got 1)"},
@@ -207,7 +203,7 @@ TEST(SceneJson, VerticalMotionTakesAnyGroundMotionTypeAndTheFullModel) {
 TEST(SceneJson, KeysOfAnotherMethodOrTypeAreUnknown) {
   EXPECT_EQ(errors_of(with(paper_scene(), "/solver/dt", 0.001)),
             "scene.json: /solver/dt: unknown key for method \"adaptive\" (known keys: max_events max_steps "
-            "max_wall_seconds method tolerance)");
+            "method tolerance)");
   EXPECT_THAT(errors_of(with(paper_scene(), "/ground_motion", json{{"type", "none"}, {"amplitude_g", 1}})),
               HasSubstr("/ground_motion/amplitude_g: unknown key for type \"none\""));
 }
@@ -276,8 +272,7 @@ TEST(SceneJson, CanonicalFormHasEveryKeyWithDefaults) {
     "contact": {"friction": 0.6, "restitution": 0.6},
     "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 2.0, "cycles": 1.0},
     "duration": 4.0, "g": 9.81, "initial": {"theta": 0.0},
-    "solver": {"method": "adaptive", "tolerance": 1e-8, "max_steps": 50000000, "max_events": 1000000,
-               "max_wall_seconds": 600.0}})");
+    "solver": {"method": "adaptive", "tolerance": 1e-8, "max_steps": 50000000, "max_events": 1000000}})");
   EXPECT_EQ(canonical, expected);
 }
 

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/errors.hpp"
+
 namespace blockfrag {
 namespace {
 
@@ -144,7 +146,7 @@ TEST(DamCrestMotion, KeepsRingingAfterTheFoundationStops) {
 
 TEST(DamCrestMotion, RefusesAGridTooFineForTheDuration) {
   const GroundMotionPieces foundation(SinePulse{0.2, 1.0, 1.0});
-  EXPECT_THROW(dam_crest_history(foundation, dam_with(1e-6, 0.05), 100.0, g), std::invalid_argument);
+  EXPECT_THROW(dam_crest_history(foundation, dam_with(1e-6, 0.05), 100.0, g), InvalidInput);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/errors.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -432,8 +434,8 @@ TEST(CornerImpact, RefusesInvalidInputs) {
         with([](auto& in) { in.friction = -0.1; }), with([](auto& in) { in.restitution = 1.1; }),
         with([](auto& in) { in.restitution = -0.1; }), with([](auto& in) { in.u_x = NAN; }),
         with([](auto& in) { in.r_y = INFINITY; }), with([](auto& in) { in.mass = NAN; })}) {
-    EXPECT_THROW(corner_impact(bad), std::invalid_argument);
-    EXPECT_THROW(painleve_stick_impulse(bad), std::invalid_argument);
+    EXPECT_THROW(corner_impact(bad), ContractViolation);
+    EXPECT_THROW(painleve_stick_impulse(bad), ContractViolation);
   }
 }
 

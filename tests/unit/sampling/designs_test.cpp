@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/errors.hpp"
 #include "sampling/philox_stream.hpp"
 #include "sampling/sampling_plan.hpp"
 
@@ -124,11 +125,11 @@ TEST(Designs, SingleSampleFunctionEqualsThePrecomputedLevel) {
 }
 
 TEST(Designs, RefusesAnEmptyLevelAndOutOfRangeSamples) {
-  EXPECT_THROW(latin_hypercube_permutation(seed, 1, 0, 0), std::out_of_range);
-  EXPECT_THROW(latin_hypercube_uniform(seed, 1, 0, 4, 4), std::out_of_range);
+  EXPECT_THROW(latin_hypercube_permutation(seed, 1, 0, 0), ContractViolation);
+  EXPECT_THROW(latin_hypercube_uniform(seed, 1, 0, 4, 4), ContractViolation);
   const LatinHypercubeLevel hypercube(seed, {1u}, 0, 4);
-  EXPECT_THROW(hypercube.uniform(1, 0), std::out_of_range);
-  EXPECT_THROW(hypercube.uniform(0, 4), std::out_of_range);
+  EXPECT_THROW(hypercube.uniform(1, 0), ContractViolation);
+  EXPECT_THROW(hypercube.uniform(0, 4), ContractViolation);
 }
 
 SamplingPlan example_plan(Design design) {
@@ -217,10 +218,10 @@ TEST(SamplingPlan, PositionSplitsTheIndexIntoLevelAndMember) {
   EXPECT_EQ(position(plan, 57).level, 2u);
   EXPECT_EQ(position(plan, 57).member, 17u);
   EXPECT_EQ(position(plan, 99).level, 4u);
-  EXPECT_THROW(position(plan, 100), std::out_of_range);
-  EXPECT_THROW(draw_sample(plan, 100), std::out_of_range);
+  EXPECT_THROW(position(plan, 100), ContractViolation);
+  EXPECT_THROW(draw_sample(plan, 100), ContractViolation);
   Sampler sampler(plan);
-  EXPECT_THROW(sampler.draw(100), std::out_of_range);
+  EXPECT_THROW(sampler.draw(100), ContractViolation);
 }
 
 TEST(SamplingPlan, ValidationReportsEveryProblemWithItsPath) {
