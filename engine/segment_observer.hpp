@@ -11,6 +11,7 @@
 #include "engine/modes/modes.hpp"
 #include "engine/integrate/root_finding.hpp"
 #include "engine/summary.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -45,7 +46,7 @@ class SegmentObserver {
     if (a.omega * b.omega < 0) observe_extremum(t0, t1, a.omega, state_at, &BlockState::omega);
     if (a.vx * b.vx < 0) observe_extremum(t0, t1, a.vx, state_at, &BlockState::vx);
     if (interval_ <= 0) return;
-    while (next_output_ <= t1 * (1 + 1e-15)) {
+    while (next_output_ <= t1 * (1 + kOutputTimeRounding)) {
       const double t = std::max(next_output_, t0);
       record(t, state_at(t), forces_at(t), mode);
       next_output_ = interval_ * static_cast<double>(++outputs_);

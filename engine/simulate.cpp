@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <numbers>
 #include <string>
 #include <type_traits>
@@ -21,6 +22,7 @@
 #include "engine/motion/scene_motion.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "engine/segment_observer.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -52,11 +54,9 @@ void with_stepper(const SolverSettings& solver, const OdeState<N>& scale, Fn&& f
   }
 }
 
-constexpr int kMaxStalledEvents = 100;
-constexpr double kOnsetMargin = 1e-12;
-
-// Within a few ulps of the end: a step that short cannot advance t.
-bool reached(double t, double end) { return end - t <= 1e-14 * std::max(1.0, std::abs(end)); }
+bool reached(double t, double end) {
+  return end - t <= kReachedEnd * std::max(1.0, std::abs(end));
+}
 
 class Simulation {
  public:
@@ -84,6 +84,32 @@ class Simulation {
   SystemContext context(const MotionPiece& piece) const {
     return {&geometry_, &piece, &vertical_.piece_at(t_), scene_.g, scene_.contact.friction};
   }
+  // The one place that says which ODE system integrates the current mode under `piece`: fn gets
+  // that system, or the mode itself for rest and for flight without vertical motion (both closed
+  // form). Housner's model rocks without the contact-force guards.
+  template <class Fn>
+  decltype(auto) with_system(const MotionPiece& piece, Fn&& fn) const {
+    return std::visit(
+        [&](const auto& mode) -> decltype(auto) {
+          using M = std::decay_t<decltype(mode)>;
+          if constexpr (std::is_same_v<M, SlideMode>) {
+            return fn(SlideSystem{context(piece), mode.slip_sign});
+          } else if constexpr (std::is_same_v<M, RockMode>) {
+            const RockSystem rock{context(piece), mode.pivot, mode.pivot_x};
+            return model_ == Model::housner_rocking ? fn(HousnerRockSystem{rock}) : fn(rock);
+          } else if constexpr (std::is_same_v<M, SlideRockMode>) {
+            return fn(SlideRockSystem{context(piece), mode.pivot, mode.slip_sign});
+          } else if constexpr (std::is_same_v<M, FlightMode>) {
+            return vertical_.piece_at(t_).is_zero()
+                       ? fn(mode)
+                       : fn(FlightSystem{context(piece), t_, state_.theta, state_.omega});
+          } else {
+            static_assert(std::is_same_v<M, RestMode>);
+            return fn(mode);
+          }
+        },
+        mode_);
+  }
   BlockState initial_state() const;
   ContactOutcome resolve_contact() const;
   bool mode_holds_under(const MotionPiece& piece) const;
@@ -97,29 +123,10 @@ class Simulation {
   ContactForces forces_now() const;
 
   void advance(const RestMode&, const MotionPiece& piece, double t_stop);
+  // Flight without vertical motion: theta and y in closed form, only x integrated.
   void advance(const FlightMode&, const MotionPiece& piece, double t_stop);
-  void advance(const SlideMode& m, const MotionPiece& piece, double t_stop) {
-    integrate(SlideSystem{context(piece), m.slip_sign}, piece, t_stop,
-              {geometry_.size(), std::sqrt(scene_.g * geometry_.size())});
-  }
-  void advance(const RockMode& m, const MotionPiece& piece, double t_stop) {
-    const RockSystem rock{context(piece), m.pivot, m.pivot_x};
-    const OdeState<2> scale{1.0, std::sqrt(scene_.g / geometry_.size())};
-    if (model_ == Model::housner_rocking) {
-      integrate(HousnerRockSystem{rock}, piece, t_stop, scale);
-    } else {
-      integrate(rock, piece, t_stop, scale);
-    }
-  }
-  void advance(const SlideRockMode& m, const MotionPiece& piece, double t_stop) {
-    const double R = geometry_.size(), g = scene_.g;
-    integrate(SlideRockSystem{context(piece), m.pivot, m.slip_sign}, piece, t_stop,
-              {1.0, std::sqrt(g / R), R, std::sqrt(g * R)});
-  }
-
   template <class System>
-  void integrate(const System& system, const MotionPiece& piece, double t_stop,
-                 const OdeState<System::N>& scale);
+  void advance(const System& system, const MotionPiece& piece, double t_stop);
   template <class System, class Stepper>
   void integrate_with(const System& system, Stepper& stepper, const MotionPiece& piece,
                       double t_stop);
@@ -138,7 +145,7 @@ class Simulation {
   BlockState state_;
   Mode mode_ = RestMode{};
   bool stopped_ = false;
-  int last_event_guard_ = -1;  // the guard that ended the last integrated stretch; -1: none did
+  std::optional<GuardEvent> last_event_;  // what ended the last integrated stretch, if a guard did
   int stalled_events_ = 0;
   bool log_impacts_;
   std::vector<ImpactRecord> impact_log_;
@@ -164,7 +171,9 @@ ContactOutcome Simulation::resolve_contact() const {
     case Model::newmark_sliding: return newmark_.resolve(state_, lambda);
     case Model::housner_rocking:
       if (const auto* rock = std::get_if<RockMode>(&mode_)) {
-        if (last_event_guard_ == 0) return housner_.impact(state_, rock->pivot, lambda);
+        if (last_event_ == GuardEvent::corner_lands) {
+          return housner_.impact(state_, rock->pivot, lambda);
+        }
         ContactOutcome carry_on;
         carry_on.mode = *rock;
         carry_on.state = state_;
@@ -179,7 +188,6 @@ ContactOutcome Simulation::resolve_contact() const {
 }
 
 void Simulation::enter(const ContactOutcome& outcome) {
-  if (!outcome.failure.empty()) throw SimulationFailure(outcome.failure);
   ++summary_.events;
   if (outcome.painleve) ++summary_.painleve_events;
   if (outcome.impact) {
@@ -227,8 +235,8 @@ void Simulation::check_budget() {
 
 double Simulation::step_cap(const MotionPiece& piece) const {
   const double block_time = std::sqrt(geometry_.size() / scene_.g);
-  return std::min({0.5 * block_time, piece.time_scale() / 16.0,
-                   vertical_.piece_at(t_).time_scale() / 16.0});
+  return std::min({kMaxStepOverBlockTime * block_time, piece.time_scale() / kStepsPerPieceTimeScale,
+                   vertical_.piece_at(t_).time_scale() / kStepsPerPieceTimeScale});
 }
 
 void Simulation::overturn_at(double t, const BlockState& s) {
@@ -273,7 +281,8 @@ void Simulation::advance(const RestMode&, const MotionPiece& piece, double t_sto
   if (!vertical.is_zero()) {
     const std::vector<double> more = vertical.extrema_between(t_, t_stop);
     checks.insert(checks.end(), more.begin(), more.end());
-    const double spacing = std::min(piece.time_scale(), vertical.time_scale()) / 64.0;
+    const double spacing =
+        std::min(piece.time_scale(), vertical.time_scale()) / kRestChecksPerTimeScale;
     if (std::isfinite(spacing)) {
       for (double t = t_ + spacing; t < t_stop; t += spacing) checks.push_back(t);
     }
@@ -290,7 +299,7 @@ void Simulation::advance(const RestMode&, const MotionPiece& piece, double t_sto
               ? previous
               : locate_crossing(margin, previous, t,
                                 std::max(previous_margin, std::numeric_limits<double>::min()), m,
-                                1e-15 * (1.0 + t))
+                                kEventTimeTolerance * (1.0 + t))
                     .after;
       observer_.observe_step(t_, t_event, state_at, forces_at, ModeKind::rest);
       t_ = t_event;
@@ -305,15 +314,9 @@ void Simulation::advance(const RestMode&, const MotionPiece& piece, double t_sto
 
 void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_stop) {
   const double g = scene_.g;
-  if (!vertical_.piece_at(t_).is_zero()) {
-    const double R = geometry_.size();
-    integrate(FlightSystem{context(piece), t_, state_.theta, state_.omega}, piece, t_stop,
-              {R, std::sqrt(g * R), R, std::sqrt(g * R)});
-    return;
-  }
   const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
   const double t0 = t_;
-  const double min_step = 1e-4 * std::sqrt(geometry_.size() / g);
+  const double min_step = kFlightMinStep * std::sqrt(geometry_.size() / g);
   double t_end = t_stop;
   bool overturns = false;
   if (start.omega != 0.0) {
@@ -351,7 +354,7 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
     summary_.steps += stepper.steps();
     summary_.rhs_evaluations += stepper.rhs_evaluations();
   };
-  with_stepper<2>(scene_.solver, {geometry_.size(), std::sqrt(g * geometry_.size())}, run);
+  with_stepper<2>(scene_.solver, drift.scale(), run);
   const BlockState end = pose(t_end, q);
   if (overturns) {
     overturn_at(t_end, end);
@@ -362,9 +365,8 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
 }
 
 template <class System>
-void Simulation::integrate(const System& system, const MotionPiece& piece, double t_stop,
-                           const OdeState<System::N>& scale) {
-  with_stepper<System::N>(scene_.solver, scale, [&](auto& stepper) {
+void Simulation::advance(const System& system, const MotionPiece& piece, double t_stop) {
+  with_stepper<System::N>(scene_.solver, system.scale(), [&](auto& stepper) {
     integrate_with(system, stepper, piece, t_stop);
   });
 }
@@ -399,7 +401,7 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     summary_.rhs_evaluations += stepper.rhs_evaluations() - rhs_counted;
     steps_counted = stepper.steps();
     rhs_counted = stepper.rhs_evaluations();
-    if ((summary_.steps & 1023) == 0) check_budget();
+    if ((summary_.steps & kBudgetCheckMask) == 0) check_budget();
 
     const auto next = system.guards(t, q);
     const auto guards_at = [&](double x) { return system.guards(x, stepper.dense(x)); };
@@ -407,7 +409,7 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     const int which = crossing.which;
     const double t_event = crossing.after;
     if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {
-      retake_until = t_event + 0.01 * (t - t_event);
+      retake_until = t_event + kRetakeOvershoot * (t - t_event);
       t = t0;
       q = q0;
       continue;
@@ -424,15 +426,14 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     observer_.observe_step(t0, kept, state_at, forces_at, mode_kind(mode_));
     if (which < 0) continue;
     const BlockState at_event = state_at(t_event);
-    if constexpr (requires { System::kOverturnGuard; }) {
-      if (which == System::kOverturnGuard) {
-        overturn_at(t_event, at_event);
-        return;
-      }
+    const GuardEvent event = System::kEvents[static_cast<std::size_t>(which)];
+    if (event == GuardEvent::overturns) {
+      overturn_at(t_event, at_event);
+      return;
     }
     t_ = t_event;
     state_ = at_event;
-    last_event_guard_ = which;
+    last_event_ = event;
     return;
   }
   t_ = t_stop;
@@ -448,8 +449,8 @@ void Simulation::run() {
     const MotionPiece& piece = motion_.piece_at(t_);
     const double t_stop = std::min({t_end, piece.end(), vertical_.piece_at(t_).end()});
     const double t_before = t_;
-    last_event_guard_ = -1;
-    std::visit([&](const auto& mode) { advance(mode, piece, t_stop); }, mode_);
+    last_event_.reset();
+    with_system(piece, [&](const auto& system) { advance(system, piece, t_stop); });
     if (stopped_ || t_ >= t_end) break;
     stalled_events_ = t_ == t_before ? stalled_events_ + 1 : 0;
     if (stalled_events_ > kMaxStalledEvents) {
@@ -460,7 +461,7 @@ void Simulation::run() {
     // piece goes on. Re-resolving there would lay a block that has only just lifted flat again
     // (its corners are still slower than the settling speed), so a finely tabulated motion
     // could never start it rocking.
-    const bool at_piece_end = t_ == t_stop && last_event_guard_ < 0;
+    const bool at_piece_end = t_ == t_stop && !last_event_;
     if (at_piece_end && mode_holds_under(motion_.piece_at(t_))) continue;
     enter(resolve_contact());
   }
@@ -468,22 +469,20 @@ void Simulation::run() {
 }
 
 bool Simulation::mode_holds_under(const MotionPiece& piece) const {
-  if (std::holds_alternative<FlightMode>(mode_)) return true;
-  if (const auto* slide = std::get_if<SlideMode>(&mode_)) {
-    const SlideSystem system{context(piece), slide->slip_sign};
-    return system.guards(t_, system.coordinates(state_))[1] > 0;  // still pressed on the ground
-  }
-  if (const auto* rock = std::get_if<RockMode>(&mode_)) {
-    if (model_ == Model::housner_rocking) return true;
-    const RockSystem system{context(piece), rock->pivot, rock->pivot_x};
-    const auto guard = system.guards(t_, system.coordinates(state_));
-    return guard[0] > 0 && guard[1] > 0;
-  }
-  if (const auto* slide_rock = std::get_if<SlideRockMode>(&mode_)) {
-    const SlideRockSystem system{context(piece), slide_rock->pivot, slide_rock->slip_sign};
-    return system.guards(t_, system.coordinates(state_))[0] > 0;
-  }
-  return false;  // rest is re-resolved: the next piece may start it moving
+  return with_system(piece, [&](const auto& system) {
+    using S = std::decay_t<decltype(system)>;
+    if constexpr (std::is_same_v<S, RestMode>) {
+      return false;  // rest is re-resolved: the next piece may start it moving
+    } else if constexpr (std::is_same_v<S, FlightMode>) {
+      return true;
+    } else {
+      const auto guards = system.guards(t_, system.coordinates(state_));
+      for (std::size_t i = 0; i < guards.size(); ++i) {
+        if (depends_on_ground_motion(S::kEvents[i]) && !(guards[i] > 0)) return false;
+      }
+      return true;
+    }
+  });
 }
 
 // Also called when the scene fails: the summary then tells where it stopped.
@@ -495,25 +494,18 @@ void Simulation::finish() {
 }
 
 ContactForces Simulation::forces_now() const {
+  if (stopped_) return {0.0, 0.0};
   const MotionPiece& piece = motion_.piece_at(t_);
-  const auto overloaded = [&](const auto& mode) -> ContactForces {
-    using M = std::decay_t<decltype(mode)>;
-    if constexpr (std::is_same_v<M, RestMode>) {
+  return with_system(piece, [&](const auto& system) -> ContactForces {
+    using S = std::decay_t<decltype(system)>;
+    if constexpr (std::is_same_v<S, RestMode>) {
       return resting_forces(piece, t_);
-    } else if constexpr (std::is_same_v<M, SlideMode>) {
-      const SlideSystem system{context(piece), mode.slip_sign};
-      return system.forces(t_, system.coordinates(state_));
-    } else if constexpr (std::is_same_v<M, RockMode>) {
-      const RockSystem system{context(piece), mode.pivot, mode.pivot_x};
-      return system.forces(t_, system.coordinates(state_));
-    } else if constexpr (std::is_same_v<M, SlideRockMode>) {
-      const SlideRockSystem system{context(piece), mode.pivot, mode.slip_sign};
-      return system.forces(t_, system.coordinates(state_));
-    } else {
+    } else if constexpr (std::is_same_v<S, FlightMode>) {
       return {0.0, 0.0};
+    } else {
+      return system.forces(t_, system.coordinates(state_));
     }
-  };
-  return stopped_ ? ContactForces{0.0, 0.0} : std::visit(overloaded, mode_);
+  });
 }
 
 SimulationWithHistory run_scene(const Scene& scene, double output_interval) {

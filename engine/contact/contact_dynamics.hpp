@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "engine/scene/block_geometry.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -28,10 +29,6 @@ inline CornerContact sticking_corner(Vec2 r, double w, double lambda, double g, 
 inline double slide_rock_denominator(Vec2 r, int slip_sign, double mu, double k2) {
   return k2 + r.x * r.x + slip_sign * mu * r.x * r.y;
 }
-
-// Slide-rock ends this close to the Painleve boundary (denominator over I/M): as it closes in,
-// theta'' and V grow without bound and the contact jams into stick by a tangential impulse.
-constexpr double kPainleveMargin = 1e-6;
 
 inline bool slide_rock_well_posed(Vec2 r, int slip_sign, double mu, double k2) {
   return slide_rock_denominator(r, slip_sign, mu, k2) > kPainleveMargin * k2;

@@ -3,15 +3,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 #include "engine/contact/contact_dynamics.hpp"
 #include "engine/contact/impact.hpp"
+#include "engine/errors.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
 namespace {
 
-constexpr int kMaxImpactRounds = 64;
+// A pivot this small: the 3 x 3 system has no unique solution.
+constexpr double kSingularPivot = 1e-300;
 
 int sign_of(double v) { return v > 0 ? 1 : -1; }
 
@@ -30,7 +34,7 @@ bool solve3(std::array<std::array<double, 4>, 3> m, std::array<double, 3>& z) {
     for (int row = col + 1; row < 3; ++row) {
       if (std::abs(m[row][col]) > std::abs(m[pivot][col])) pivot = row;
     }
-    if (std::abs(m[pivot][col]) < 1e-300) return false;
+    if (std::abs(m[pivot][col]) < kSingularPivot) return false;
     std::swap(m[col], m[pivot]);
     for (int row = col + 1; row < 3; ++row) {
       const double f = m[row][col] / m[col][col];
@@ -47,19 +51,19 @@ bool solve3(std::array<std::array<double, 4>, 3> m, std::array<double, 3>& z) {
 
 }  // namespace
 
-ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g,
-                                 ContactTolerances tolerances)
+ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g)
     : geometry_(geometry),
       mu_(contact.friction),
       e_(contact.restitution),
       g_(g),
-      height_tol_(tolerances.contact_height * geometry.size()),
-      velocity_tol_(tolerances.resting_velocity * std::sqrt(g * geometry.size())),
-      settle_velocity_(tolerances.settle_velocity * std::sqrt(g * geometry.size())) {}
+      height_tol_(kContactHeight * geometry.size()),
+      velocity_tol_(kRestingVelocity * std::sqrt(g * geometry.size())),
+      settle_velocity_(kSettleVelocity * std::sqrt(g * geometry.size())) {}
 
 // Keeps the base's slip velocity (a sticking base stays stuck), drops the rotation and bounce.
 void ContactResolver::lay_flat(BlockState& s) const {
-  s.vx = 0.5 * (corner_kinematics(geometry_, s, 0).u_x + corner_kinematics(geometry_, s, 1).u_x);
+  s.vx = 0.5 * (corner_kinematics(geometry_, s, Corner::left).u_x +
+                corner_kinematics(geometry_, s, Corner::right).u_x);
   s.theta = 0.0;
   s.y = geometry_.rest_height();
   s.vy = 0.0;
@@ -72,13 +76,13 @@ void ContactResolver::lay_flat(BlockState& s) const {
 // and takes the first consistent one.
 bool ContactResolver::flat_impact(BlockState& s, double e) const {
   const double M = geometry_.mass(), I = geometry_.inertia();
-  const CornerKinematics kl = corner_kinematics(geometry_, s, 0);
-  const CornerKinematics kr = corner_kinematics(geometry_, s, 1);
+  const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
+  const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
   const double ry = 0.5 * (kl.r.y + kr.r.y);
   const std::array<double, 2> rx = {kl.r.x, kr.r.x};
   const std::array<double, 2> target = {kl.u_y < 0 ? -e * kl.u_y : 0.0,
                                         kr.u_y < 0 ? -e * kr.u_y : 0.0};
-  const double eps = 1e-12 * (std::abs(kl.u_y) + std::abs(kr.u_y) + std::abs(kl.u_x));
+  const double eps = kImpactRounding * (std::abs(kl.u_y) + std::abs(kr.u_y) + std::abs(kl.u_x));
 
   // Post-impact velocities are affine in z = (Py_left, Py_right, Px).
   const auto velocities = [&](const std::array<double, 3>& z) {
@@ -119,12 +123,14 @@ bool ContactResolver::flat_impact(BlockState& s, double e) const {
       if (!solve3(m, z)) continue;
       if (z[0] < -eps * M || z[1] < -eps * M) continue;
       const BlockState after = velocities(z);
-      const CornerKinematics al = corner_kinematics(geometry_, after, 0);
-      const CornerKinematics ar = corner_kinematics(geometry_, after, 1);
+      const CornerKinematics al = corner_kinematics(geometry_, after, Corner::left);
+      const CornerKinematics ar = corner_kinematics(geometry_, after, Corner::right);
       if (!active[0] && al.u_y < target[0] - eps) continue;
       if (!active[1] && ar.u_y < target[1] - eps) continue;
       const double total_normal = z[0] + z[1];
-      if (friction == 0 && std::abs(z[2]) > mu_ * total_normal * (1 + 1e-12) + eps * M) continue;
+      if (friction == 0 && std::abs(z[2]) > mu_ * total_normal * (1 + kImpactRounding) + eps * M) {
+        continue;
+      }
       if (friction != 0 && friction * 0.5 * (al.u_x + ar.u_x) < -eps) continue;
       s = after;
       return true;
@@ -136,8 +142,8 @@ bool ContactResolver::flat_impact(BlockState& s, double e) const {
 bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const {
   const double M = geometry_.mass(), I = geometry_.inertia();
   for (int round = 0; round < kMaxImpactRounds; ++round) {
-    const CornerKinematics kl = corner_kinematics(geometry_, s, 0);
-    const CornerKinematics kr = corner_kinematics(geometry_, s, 1);
+    const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
+    const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
     const bool left_hits = touches(kl) && kl.u_y < -velocity_tol_;
     const bool right_hits = touches(kr) && kr.u_y < -velocity_tol_;
     if (!left_hits && !right_hits) return true;
@@ -158,12 +164,13 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
     const CornerKinematics& k = left_first ? kl : kr;
     const CornerImpulse p = corner_impact({M, I, k.r.x, k.r.y, k.u_x, k.u_y, mu_, e});
     set_velocity(s, apply_impulse(velocity_of(s), M, I, k.r.x, k.r.y, p));
-    if (flat && corner_kinematics(geometry_, s, left_first ? 1 : 0).u_y < -velocity_tol_) {
+    const Corner other_corner = left_first ? Corner::right : Corner::left;
+    if (flat && corner_kinematics(geometry_, s, other_corner).u_y < -velocity_tol_) {
       BlockState together = start;
       if (flat_impact(together, e)) {
         // Newton's law at two corners with friction can gain energy: then no bounce.
         const double gained = kinetic_energy(velocity_of(together), M, I) - before;
-        if (gained > 1e-12 * before) {
+        if (gained > kImpactRounding * before) {
           together = start;
           if (!flat_impact(together, 0.0)) lay_flat(together);
         }
@@ -249,7 +256,7 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
     // Within the margin of the boundary the jam's impulse may lie outside the cone by that
     // relative margin: take the friction that puts it on the boundary.
     const double jam_friction =
-        std::max(mu_, (k2 + r.x * r.x) / std::max(-slip * r.x * r.y, 1e-300));
+        std::max(mu_, (k2 + r.x * r.x) / std::max(-slip * r.x * r.y, kSingularPivot));
     const auto jump = painleve_stick_impulse(
         {geometry_.mass(), geometry_.inertia(), r.x, r.y, u_x, 0.0, jam_friction, 0.0});
     if (jump) set_velocity(s, apply_impulse(velocity_of(s), geometry_.mass(), geometry_.inertia(),
@@ -273,7 +280,7 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
   // then stick or the other slip is consistent). Rounding can break a tie at the cone's edge,
   // where stick needs exactly mu V and the slip that way starts with zero acceleration. Slip
   // then: if the corner does not go on slipping, the slip guard ends it at once and stick holds.
-  const double cone_edge = 1e-12 * (std::abs(stick.friction) + mu_ * stick.normal);
+  const double cone_edge = kImpactRounding * (std::abs(stick.friction) + mu_ * stick.normal);
   if (stick.normal >= 0 && std::abs(stick.friction) - mu_ * stick.normal <= cone_edge &&
       slide_rock_well_posed(r, slip, mu_, k2) &&
       slipping_corner(r, s.omega, slip, lambda, gravity, mu_, k2).normal >= 0) {
@@ -296,16 +303,16 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
   out.state = state;
   BlockState& s = out.state;
   if (!resolve_impacts(s, out)) {
-    const bool flat = touches(corner_kinematics(geometry_, s, 0)) &&
-                      touches(corner_kinematics(geometry_, s, 1));
+    const bool flat = touches(corner_kinematics(geometry_, s, Corner::left)) &&
+                      touches(corner_kinematics(geometry_, s, Corner::right));
     if (!flat) {
-      out.failure = "impacts did not end after " + std::to_string(kMaxImpactRounds) + " rounds";
-      return out;
+      throw SimulationFailure("impacts did not end after " + std::to_string(kMaxImpactRounds) +
+                              " rounds");
     }
     lay_flat(s);
   }
-  const CornerKinematics kl = corner_kinematics(geometry_, s, 0);
-  const CornerKinematics kr = corner_kinematics(geometry_, s, 1);
+  const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
+  const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
   // A flat block whose corners barely move off the ground would rock in ever smaller, ever faster
   // swings (Zeno): lay it flat, as the impacts below the settle velocity do.
   const bool settles = touches(kl) && touches(kr) &&

@@ -3,39 +3,27 @@
 // stick/slip, lift-off, return to rest come out of the same consistency checks).
 #pragma once
 
-#include <string>
-
 #include "engine/scene/block_state.hpp"
 #include "engine/modes/modes.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace blockfrag {
 
-// Thresholds in units of the block's size R and of sqrt(g R), so they scale with the block.
-struct ContactTolerances {
-  double contact_height = 1e-9;     // a corner this close to the ground touches it
-  double resting_velocity = 1e-9;   // slower than this, a touching corner rests (or slips) on it
-  // An impact slower than this loses its bounce (e = 0), and one that would leave a flat block
-  // rocking or bouncing lays it flat: ends Zeno sequences in finite time; the energy left out is of
-  // the order of this velocity squared.
-  double settle_velocity = 1e-6;
-};
-
 struct ContactOutcome {
   Mode mode = FlightMode{};
   BlockState state;  // after impacts, projected onto the mode's constraints
   bool impact = false;
-  bool painleve = false;              // a Painleve jump to stick was applied
-  double impact_energy_gain = 0.0;    // largest relative kinetic-energy change over the impacts
-  std::string failure;                // non-empty: no consistent outcome (reported, never hidden)
+  bool painleve = false;            // a Painleve jump to stick was applied
+  double impact_energy_gain = 0.0;  // largest relative kinetic-energy change over the impacts
 };
 
 class ContactResolver {
  public:
-  ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g,
-                  ContactTolerances tolerances = {});
+  // The contact tolerances (engine/tolerances.hpp) are scaled by the block's size R and sqrt(g R).
+  ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g);
 
-  // gravity_factor: 1 + lambda_v, gravity in the ground's frame over g.
+  // gravity_factor: 1 + lambda_v, gravity in the ground's frame over g. Throws SimulationFailure
+  // when the impacts do not end (no consistent outcome: reported, never hidden).
   ContactOutcome resolve(const BlockState& state, double lambda, double gravity_factor = 1.0) const;
 
  private:

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "engine/tolerances.hpp"
+
 namespace blockfrag {
 
 double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot) {
@@ -11,11 +13,10 @@ double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot) {
   return (k2 + r_new.x * r_old.x + r_new.y * r_old.y) / (k2 + r_new.x * r_new.x + r_new.y * r_new.y);
 }
 
-HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
-                           ContactTolerances tolerances)
+HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g)
     : geometry_(geometry),
       impacts_lose_energy_(impacts_lose_energy),
-      settle_velocity_(tolerances.settle_velocity * std::sqrt(g * geometry.size())) {}
+      settle_velocity_(kSettleVelocity * std::sqrt(g * geometry.size())) {}
 
 ContactOutcome HousnerRules::rock_on(BlockState s, Corner pivot) const {
   const Vec2 r = rotate(geometry_.base_corner(pivot), std::cos(s.theta), std::sin(s.theta));
@@ -61,9 +62,8 @@ ContactOutcome HousnerRules::impact(const BlockState& state, Corner pivot, doubl
   return out;
 }
 
-NewmarkRules::NewmarkRules(const BlockGeometry& geometry, double mu, double g,
-                           ContactTolerances tolerances)
-    : mu_(mu), velocity_tol_(tolerances.resting_velocity * std::sqrt(g * geometry.size())) {}
+NewmarkRules::NewmarkRules(const BlockGeometry& geometry, double mu, double g)
+    : mu_(mu), velocity_tol_(kRestingVelocity * std::sqrt(g * geometry.size())) {}
 
 ContactOutcome NewmarkRules::resolve(const BlockState& state, double lambda) const {
   ContactOutcome out;

@@ -13,8 +13,7 @@ double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot);
 
 class HousnerRules {
  public:
-  HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
-               ContactTolerances tolerances = {});
+  HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g);
 
   // From rest (or a release from a tilt): rocks once lambda exceeds a tipping threshold.
   ContactOutcome start(const BlockState& state, double lambda) const;
@@ -31,7 +30,7 @@ class HousnerRules {
 
 class NewmarkRules {
  public:
-  NewmarkRules(const BlockGeometry& geometry, double mu, double g, ContactTolerances tolerances = {});
+  NewmarkRules(const BlockGeometry& geometry, double mu, double g);
 
   // Slides while the base moves relative to the ground, or from a stop once |lambda| exceeds mu.
   ContactOutcome resolve(const BlockState& state, double lambda) const;

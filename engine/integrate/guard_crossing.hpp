@@ -7,14 +7,9 @@
 #include <limits>
 
 #include "engine/integrate/root_finding.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
-
-// Guards this close to zero when a mode starts are armed only once they have moved away: the
-// event that started the mode left them there.
-constexpr double kArmingMargin = 1e-12;
-constexpr int kInteriorSamples = 16;
-constexpr double kNearZero = 0.05;
 
 // How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: not clearly positive,
 // fires once clearly below both zero and its start, whether or not it rose clearly above zero first
@@ -32,7 +27,7 @@ class GuardWatch {
       // still to fire: fired at once (its value at the start already past the margin), a corner
       // rising at 3e-7 m/s that gravity brings back within 6e-8 s started flight after flight
       // 1e-15 s apart.
-      unarmed_offset_[i] = std::max(kArmingMargin, -at_start[i] * (1 + 1e-9));
+      unarmed_offset_[i] = std::max(kArmingMargin, -at_start[i] * (1 + kUnarmedFurtherDrop));
     }
   }
 
@@ -47,7 +42,7 @@ class GuardWatch {
   template <class GuardsAt>
   Crossing first_crossing(const GuardsAt& guards_at, double t0, double t1,
                           const std::array<double, G>& next) const {
-    const double time_tolerance = 1e-15 * (1.0 + t1);
+    const double time_tolerance = kEventTimeTolerance * (1.0 + t1);
     Crossing found;
     found.before = t1;
     std::array<double, G> offset{}, a{}, fa{}, b{}, fb{};

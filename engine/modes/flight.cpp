@@ -4,13 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/tolerances.hpp"
+
 namespace blockfrag {
 
 namespace {
-
-// How far below its start a corner that begins a flight at the ground may go before it is seen
-// landing (over R; the guards' arming margin).
-constexpr double kLandingSinkAllowance = 1e-12;
 
 // A corner's height above the ground and its rate, from one sine and cosine.
 struct CornerHeight {

@@ -1,7 +1,8 @@
 // The closed set of contact modes. Each mode that integrates an ODE is a small system: its
 // coordinates (chosen so its constraints hold exactly), right-hand side, guard functions (positive
-// while the mode holds; the mode ends where one reaches zero) and the map back to the full state.
-// Guards are dimensionless (lengths over R, forces over M g, velocities over sqrt(g R)).
+// while the mode holds; the mode ends where one reaches zero), the event each guard's crossing is,
+// the scale of each coordinate for error control, and the map back to the full state. Guards are
+// dimensionless (lengths over R, forces over M g, velocities over sqrt(g R)).
 #pragma once
 
 #include <array>
@@ -14,25 +15,53 @@
 #include "engine/motion/ground_motion.hpp"
 #include "engine/integrate/ode_state.hpp"
 #include "engine/summary.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
-struct RestMode {};
+struct RestMode {
+  static constexpr ModeKind kind = ModeKind::rest;
+};
 struct SlideMode {
+  static constexpr ModeKind kind = ModeKind::slide;
   int slip_sign;
 };
 struct RockMode {
+  static constexpr ModeKind kind = ModeKind::rock;
   Corner pivot;
   double pivot_x;
 };
 struct SlideRockMode {
+  static constexpr ModeKind kind = ModeKind::slide_rock;
   Corner pivot;
   int slip_sign;
 };
-struct FlightMode {};
+struct FlightMode {
+  static constexpr ModeKind kind = ModeKind::flight;
+};
 using Mode = std::variant<RestMode, SlideMode, RockMode, SlideRockMode, FlightMode>;
 
-ModeKind mode_kind(const Mode& mode);
+inline ModeKind mode_kind(const Mode& mode) {
+  return std::visit([](const auto& m) { return m.kind; }, mode);
+}
+
+// What a guard reaching zero means: the event that ends the mode.
+enum class GuardEvent {
+  lift_off,           // the contact's normal force V reaches zero
+  friction_limit,     // a sticking corner's friction reaches mu V
+  slip_stops,         // the slip velocity reaches zero
+  corner_lands,       // another corner reaches the ground
+  overturns,          // the block lies on another face
+  painleve_boundary,  // slide-rock reaches the Painleve boundary
+  load_lost,          // the ground falls faster than g: nothing presses the block on it
+};
+
+// Events that depend on the ground's current acceleration: at a motion piece's boundary a mode
+// goes on only if these guards still hold under the next piece.
+constexpr bool depends_on_ground_motion(GuardEvent event) {
+  return event == GuardEvent::lift_off || event == GuardEvent::friction_limit ||
+         event == GuardEvent::load_lost;
+}
 
 // What every system shares: the block, the contact, the ground motion pieces being integrated.
 struct SystemContext {
@@ -75,9 +104,14 @@ struct ContactForces {
 // Flat on the base, slipping with sign s: x'' = (lambda - s mu (1 + lambda_v)) g.  q = (x, vx).
 // Ends when the slip stops or the ground falls away faster than g (the load vanishes).
 struct SlideSystem {
-  static constexpr int N = 2, kGuards = 2;
+  static constexpr int N = 2;
+  enum Guard { slip_velocity, gravity, kGuards };
+  static constexpr std::array<GuardEvent, kGuards> kEvents = {GuardEvent::slip_stops,
+                                                              GuardEvent::load_lost};
   SystemContext c;
   int s;
+
+  OdeState<N> scale() const { return {c.length_scale(), c.velocity_scale()}; }
 
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
     dq[0] = q[1];
@@ -98,11 +132,16 @@ struct SlideSystem {
 
 // Rocking about a sticking corner.  q = (theta, omega); the pivot stays at (pivot_x, 0).
 struct RockSystem {
-  static constexpr int N = 2, kGuards = 4;
-  static constexpr int kOverturnGuard = 3;
+  static constexpr int N = 2;
+  enum Guard { normal_force, friction_cone, other_corner_height, overturn_margin, kGuards };
+  static constexpr std::array<GuardEvent, kGuards> kEvents = {
+      GuardEvent::lift_off, GuardEvent::friction_limit, GuardEvent::corner_lands,
+      GuardEvent::overturns};
   SystemContext c;
   Corner pivot;
   double pivot_x;
+
+  OdeState<N> scale() const { return {1.0, std::sqrt(c.g / c.length_scale())}; }
 
   Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
   CornerContact contact(double t, const OdeState<N>& q) const {
@@ -137,9 +176,13 @@ struct RockSystem {
 // Housner's rocking block: rocks on a corner that never slips or lifts (so no contact-force guards);
 // the other corner's landing and overturning end the mode.  q = (theta, omega).
 struct HousnerRockSystem {
-  static constexpr int N = 2, kGuards = 2;
-  static constexpr int kOverturnGuard = 1;
+  static constexpr int N = 2;
+  enum Guard { other_corner_height, overturn_margin, kGuards };
+  static constexpr std::array<GuardEvent, kGuards> kEvents = {GuardEvent::corner_lands,
+                                                              GuardEvent::overturns};
   RockSystem rock;
+
+  OdeState<N> scale() const { return rock.scale(); }
 
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const { rock(t, q, dq); }
   std::array<double, kGuards> guards(double, const OdeState<N>& q) const {
@@ -153,11 +196,26 @@ struct HousnerRockSystem {
 
 // Rocking about a slipping corner.  q = (theta, omega, pivot x, pivot x velocity).
 struct SlideRockSystem {
-  static constexpr int N = 4, kGuards = 5;
-  static constexpr int kOverturnGuard = 3;
+  static constexpr int N = 4;
+  enum Guard {
+    normal_force,
+    slip_velocity,
+    other_corner_height,
+    overturn_margin,
+    painleve_distance,
+    kGuards
+  };
+  static constexpr std::array<GuardEvent, kGuards> kEvents = {
+      GuardEvent::lift_off, GuardEvent::slip_stops, GuardEvent::corner_lands,
+      GuardEvent::overturns, GuardEvent::painleve_boundary};
   SystemContext c;
   Corner pivot;
   int s;
+
+  OdeState<N> scale() const {
+    const double R = c.length_scale();
+    return {1.0, std::sqrt(c.g / R), R, c.velocity_scale()};
+  }
 
   Vec2 arm(double theta, Corner corner) const { return c.arm(theta, corner); }
   CornerContact contact(double t, const OdeState<N>& q) const {
@@ -196,10 +254,17 @@ struct SlideRockSystem {
 // Free flight under vertical ground motion: the height above the ground feels g (1 + lambda_v), so
 // it is integrated with x; theta turns at its constant rate.  q = (x, vx, y, vy).
 struct FlightSystem {
-  static constexpr int N = 4, kGuards = 2;
-  static constexpr int kOverturnGuard = 1;
+  static constexpr int N = 4;
+  enum Guard { lowest_corner_height, overturn_margin, kGuards };
+  static constexpr std::array<GuardEvent, kGuards> kEvents = {GuardEvent::corner_lands,
+                                                              GuardEvent::overturns};
   SystemContext c;
   double t0, theta0, omega;
+
+  OdeState<N> scale() const {
+    const double R = c.length_scale();
+    return {R, c.velocity_scale(), R, c.velocity_scale()};
+  }
 
   double theta(double t) const { return theta0 + omega * (t - t0); }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
@@ -222,6 +287,8 @@ struct FlightSystem {
 struct FlightDriftSystem {
   static constexpr int N = 2;
   SystemContext c;
+
+  OdeState<N> scale() const { return {c.length_scale(), c.velocity_scale()}; }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
     dq[0] = q[1];
     dq[1] = c.piece->lambda(t) * c.g;

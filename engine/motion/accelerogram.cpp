@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/errors.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -36,7 +37,7 @@ Accelerogram resample(const Accelerogram& record, double step) {
   const auto& t = record.times;
   const auto& a = record.acceleration_g;
   const double last = t.back();
-  const auto count = static_cast<std::size_t>(std::floor(last / step * (1 + 1e-12))) + 1;
+  const auto count = static_cast<std::size_t>(std::floor(last / step * (1 + kGridRounding))) + 1;
   Accelerogram out;
   out.times.reserve(count);
   out.acceleration_g.reserve(count);

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <type_traits>
 
+#include "engine/tolerances.hpp"
+
 namespace blockfrag {
 
 namespace {
@@ -21,8 +23,8 @@ std::vector<double> ricker_extrema(const MotionPiece::Formula& f, double t0, dou
 
 // Mavroeidis-Papageorgiou: no closed form for the zeros of a sum of three cosines, so search for
 // them with the bound on the slope's own derivative, which proves the cells it skips empty. A
-// maximum and minimum closer than min_width differ by < 1e-15 of the pulse's scale (far below the
-// rest mode's 1e-12 onset margin): such a pair can be skipped.
+// maximum and minimum closer than min_width differ by less than kNegligibleExtremumPair of the
+// pulse's scale (far below the rest mode's onset margin): such a pair can be skipped.
 std::vector<double> mavroeidis_papageorgiou_extrema(const MotionPiece::Formula& f, double t0, double t1) {
   const double omega = f.angular_frequency, k = f.modulation;
   // In units of A: slope omega s(x) with x = omega (t - origin), |d/dt| of that <= omega^2 bound.
@@ -31,8 +33,9 @@ std::vector<double> mavroeidis_papageorgiou_extrema(const MotionPiece::Formula& 
     return omega * pulse::mavroeidis_papageorgiou_slope(omega * (t - f.origin), k, f.phase);
   };
   const double fastest_period = 2.0 * std::numbers::pi / (omega * (1.0 + k));
-  const double min_width = 2.0 * std::sqrt(1e-15 / bound);
-  return pulse::zeros_between(slope, bound, t0, t1, fastest_period / 64.0, min_width);
+  const double min_width = 2.0 * std::sqrt(kNegligibleExtremumPair / bound);
+  return pulse::zeros_between(slope, bound, t0, t1, fastest_period / kExtremumCellsPerPeriod,
+                              min_width);
 }
 
 }  // namespace

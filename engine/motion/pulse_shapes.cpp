@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "engine/errors.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag::pulse {
 
@@ -73,7 +74,8 @@ std::vector<double> zeros_between(const std::function<double(double)>& f, double
   std::vector<double> zeros;
   if (!(t1 > t0)) return zeros;
   const double cells = std::max(1.0, std::ceil((t1 - t0) / cell));
-  const ZeroSearch search{f, slope_bound, 1e-12 * slope_bound * cell, min_width, zeros};
+  const ZeroSearch search{f, slope_bound, kSlopeZeroTolerance * slope_bound * cell, min_width,
+                          zeros};
   double a = t0, fa = f(t0);
   for (double k = 1.0; k <= cells; k += 1.0) {
     const double b = k == cells ? t1 : t0 + (t1 - t0) * (k / cells);

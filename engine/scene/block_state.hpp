@@ -19,10 +19,16 @@ struct CornerKinematics {
   double u_x, u_y;
 };
 
+// Corner i of the block's hull (BlockGeometry::corner).
 inline CornerKinematics corner_kinematics(const BlockGeometry& geometry, const BlockState& s,
                                           int corner) {
   const Vec2 r = rotate(geometry.corner(corner), std::cos(s.theta), std::sin(s.theta));
   return {r, s.y + r.y, s.vx - s.omega * r.y, s.vy + s.omega * r.x};
+}
+
+inline CornerKinematics corner_kinematics(const BlockGeometry& geometry, const BlockState& s,
+                                          Corner corner) {
+  return corner_kinematics(geometry, s, static_cast<int>(corner));
 }
 
 // Kinetic energy per unit mass.

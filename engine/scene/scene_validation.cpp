@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "engine/errors.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -65,7 +66,7 @@ void require_valid(const MavroeidisPapageorgiouPulse& m) {
   require(std::isfinite(m.gamma) && m.gamma > 1, "Mavroeidis-Papageorgiou gamma must be > 1");
   require(std::isfinite(m.phase), "Mavroeidis-Papageorgiou phase must be finite");
   // The pulse must start at t >= 0: a block at rest on a ground already moving is another problem.
-  require(!m.t0 || (std::isfinite(*m.t0) && *m.t0 >= (1.0 - 1e-12) * m.half_width()),
+  require(!m.t0 || (std::isfinite(*m.t0) && *m.t0 >= (1.0 - kGridRounding) * m.half_width()),
           "Mavroeidis-Papageorgiou t0 must be >= gamma period / 2 (the pulse starts at t >= 0)");
 }
 

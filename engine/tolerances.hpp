@@ -1,0 +1,95 @@
+// Every tolerance, margin and budget of the engine, with its unit and why it has its value.
+// Lengths are over the block's size R (its largest corner distance from the centre of mass),
+// velocities over sqrt(g R), times in s unless a line says otherwise; guards are dimensionless.
+#pragma once
+
+namespace blockfrag {
+
+// --- Contact: when a corner touches, rests, settles ---------------------------------------------
+// A corner this close to the ground (over R) touches it. Above the integrators' round-off in a
+// corner's height, below any lift that matters.
+inline constexpr double kContactHeight = 1e-9;
+// A touching corner slower than this (over sqrt(g R)) rests or slips on the ground: no impact.
+inline constexpr double kRestingVelocity = 1e-9;
+// An impact slower than this (over sqrt(g R)) loses its bounce (e = 0), and one that would leave a
+// flat block rocking or bouncing lays it flat: ends Zeno sequences in finite time; the energy left
+// out is of the order of this velocity squared.
+inline constexpr double kSettleVelocity = 1e-6;
+// Impacts at one instant, one corner at a time, before the resolution gives up (a flat block's
+// two corners settle in a few rounds; more means the impact law does not converge).
+inline constexpr int kMaxImpactRounds = 64;
+// Slide-rock ends this close to the Painleve boundary (its theta'' denominator over I/M): as it
+// closes in, theta'' and V grow without bound and the contact jams into stick by a tangential
+// impulse.
+inline constexpr double kPainleveMargin = 1e-6;
+// Relative rounding allowed in the impact laws' comparisons (energy before and after, an impulse
+// on the friction cone's edge, stick needing exactly mu V): a few hundred ulps of the values
+// compared, far below any physical difference.
+inline constexpr double kImpactRounding = 1e-12;
+
+// --- Events: where a mode ends -------------------------------------------------------------------
+// A guard this close to zero when a mode starts is armed only once it has moved away: the event
+// that started the mode left it there.
+inline constexpr double kArmingMargin = 1e-12;
+// A guard that starts below -kArmingMargin must fall this much further (relative to its start)
+// before it fires: the event that ended the last mode left it there.
+inline constexpr double kUnarmedFurtherDrop = 1e-9;
+// Guards within this of zero at either end of a step are looked at inside it, at this many
+// equally spaced samples: a corner can dip below the ground and come back within one step.
+inline constexpr double kNearZero = 0.05;
+inline constexpr int kInteriorSamples = 16;
+// Event times are located to this relative accuracy (of 1 + t): a few ulps of t.
+inline constexpr double kEventTimeTolerance = 1e-15;
+// A time within this relative distance (of max(1, |end|)) of the end of a stretch has reached it:
+// a step that short cannot advance t.
+inline constexpr double kReachedEnd = 1e-14;
+// Rest ends where lambda is past a threshold by this much (in units of lambda), so the modes it
+// leads to see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
+inline constexpr double kOnsetMargin = 1e-12;
+// A fixed-step method that crosses an event retakes the step, ending this fraction of the
+// remainder past the located event.
+inline constexpr double kRetakeOvershoot = 0.01;
+
+// --- Steps ---------------------------------------------------------------------------------------
+// No step is longer than 1/16 of a motion piece's time scale (a pulse's quarter period, a record's
+// sample interval): the dense output then resolves the motion's shape between events.
+inline constexpr double kStepsPerPieceTimeScale = 16.0;
+// Rest under vertical motion looks at the thresholds every 1/64 of the faster piece's time scale.
+inline constexpr double kRestChecksPerTimeScale = 64.0;
+// No step is longer than half the block's time scale sqrt(R/g).
+inline constexpr double kMaxStepOverBlockTime = 0.5;
+// The closed-form landing search in flight steps at least this (over sqrt(R/g)).
+inline constexpr double kFlightMinStep = 1e-4;
+// A corner that starts a flight at the ground may sink this far (over R) before it is seen landing
+// (the guards' arming margin).
+inline constexpr double kLandingSinkAllowance = 1e-12;
+
+// --- Ground motion: where a pulse's lambda has its extremes ---------------------------------------
+// Extremes without a closed form (the Mavroeidis-Papageorgiou pulse) are searched in cells of
+// 1/64 of the fastest period, each proved empty or searched by the bound on the slope's
+// derivative; a maximum and minimum this close in lambda (over the pulse's scale) are one flat
+// point, far below the onset margin above; a zero of the slope is located to this fraction of the
+// slope's largest change over a cell.
+inline constexpr double kExtremumCellsPerPeriod = 64.0;
+inline constexpr double kNegligibleExtremumPair = 1e-15;
+inline constexpr double kSlopeZeroTolerance = 1e-12;
+
+// --- Rounding: comparisons of values computed two ways --------------------------------------------
+// A history row due at time t belongs to the step that ends within this relative distance of t.
+inline constexpr double kOutputTimeRounding = 1e-15;
+// A record resampled onto a step grid keeps a last sample within this relative distance of a grid
+// point; a given pulse start t0 within this of its lower bound is at the bound.
+inline constexpr double kGridRounding = 1e-12;
+
+// --- Budgets: what stops a scene that does not end --------------------------------------------------
+// The defaults of a scene's max_steps and max_events: far above any real scene (a 600 s record
+// with 20,000 impacts takes under 2 million steps), so only a pathology reaches them.
+inline constexpr long kDefaultMaxSteps = 50'000'000;
+inline constexpr long kDefaultMaxEvents = 1'000'000;
+// The step budget is checked every this many steps (and at every event): a power of two minus
+// one, masked.
+inline constexpr long kBudgetCheckMask = 1023;
+// Contact changes at one instant before the scene fails with "no progress".
+inline constexpr int kMaxStalledEvents = 100;
+
+}  // namespace blockfrag
