@@ -1,8 +1,5 @@
 #include "sampling/validation.hpp"
 
-#include <array>
-#include <charconv>
-#include <cmath>
 #include <utility>
 
 namespace blockfrag {
@@ -22,13 +19,5 @@ std::string join(const std::vector<Violation>& violations) {
 
 SamplingError::SamplingError(std::vector<Violation> violations)
     : InvalidInput(join(violations)), violations_(std::move(violations)) {}
-
-std::string format_number(double value) {
-  // to_chars spells these "nan", "-nan", "inf"; a sign on a NaN means nothing to a reader.
-  if (std::isnan(value)) return "nan";
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
-}
 
 }  // namespace blockfrag

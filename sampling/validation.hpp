@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/errors.hpp"
+#include "engine/number_text.hpp"  // format_number, for the messages
 
 namespace blockfrag {
 
@@ -25,8 +26,5 @@ class SamplingError : public InvalidInput {
   std::vector<Violation> violations_;
 };
 
-// The shortest decimal that reads back as the same double ("-1", "0.3", "1e-07", "nan", "inf"),
-// independent of the locale, for messages that quote the offending value.
-std::string format_number(double value);
 
 }  // namespace blockfrag

@@ -75,7 +75,7 @@ void ContactResolver::lay_flat(BlockState& s) const {
 // complementarity at each corner, Coulomb on the total. Tries each active set and friction state
 // and takes the first consistent one.
 bool ContactResolver::flat_impact(BlockState& s, double e) const {
-  const double M = geometry_.mass(), I = geometry_.inertia();
+  const double M = 1.0, I = geometry_.inertia_per_mass();  // per unit mass
   const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
   const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
   const double ry = 0.5 * (kl.r.y + kr.r.y);
@@ -140,7 +140,7 @@ bool ContactResolver::flat_impact(BlockState& s, double e) const {
 }
 
 bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const {
-  const double M = geometry_.mass(), I = geometry_.inertia();
+  const double M = 1.0, I = geometry_.inertia_per_mass();  // per unit mass
   for (int round = 0; round < kMaxImpactRounds; ++round) {
     const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
     const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
@@ -258,8 +258,8 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
     const double jam_friction =
         std::max(mu_, (k2 + r.x * r.x) / std::max(-slip * r.x * r.y, kSingularPivot));
     const auto jump = painleve_stick_impulse(
-        {geometry_.mass(), geometry_.inertia(), r.x, r.y, u_x, 0.0, jam_friction, 0.0});
-    if (jump) set_velocity(s, apply_impulse(velocity_of(s), geometry_.mass(), geometry_.inertia(),
+        {1.0, geometry_.inertia_per_mass(), r.x, r.y, u_x, 0.0, jam_friction, 0.0});
+    if (jump) set_velocity(s, apply_impulse(velocity_of(s), 1.0, geometry_.inertia_per_mass(),
                                             r.x, r.y, *jump));
     out.painleve = true;
     u_x = 0.0;

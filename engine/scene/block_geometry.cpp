@@ -6,7 +6,7 @@
 
 namespace blockfrag {
 
-BlockGeometry::BlockGeometry(const PolygonBlock& block) : mass_(block.mass), size_(0.0) {
+BlockGeometry::BlockGeometry(const PolygonBlock& block) : size_(0.0) {
   const PolygonProperties p = polygon_properties(block.vertices);
   // Only the convex hull can touch a flat ground.
   corners_.reserve(p.hull.size());

@@ -44,8 +44,9 @@ class BlockGeometry {
   Vec2 corner(int i) const { return corners_[static_cast<std::size_t>(i)]; }
   Vec2 base_corner(Corner c) const { return corner(static_cast<int>(c)); }
 
-  double mass() const { return mass_; }
-  double inertia() const { return mass_ * inertia_per_mass_; }
+  // The dynamics are per unit mass: forces, impulses and energies scale with M, and every output
+  // is per unit mass or per weight, so working at M = 1 makes results independent of the mass to
+  // the bit, for any positive finite mass.
   double inertia_per_mass() const { return inertia_per_mass_; }  // I/M
   // R, the length scale: the largest distance of a corner from the centre of mass (the rectangle's
   // half-diagonal), so omega^2 R bounds every corner's centripetal acceleration.
@@ -83,7 +84,6 @@ class BlockGeometry {
   }
 
  private:
-  double mass_;
   std::vector<Vec2> corners_;
   double size_, inertia_per_mass_, rest_height_;
   std::array<double, 2> overturn_angle_;  // by Corner

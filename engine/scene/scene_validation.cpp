@@ -1,131 +1,147 @@
 #include "engine/scene/scene_validation.hpp"
 
-#include "engine/scene/block_geometry.hpp"
-#include "engine/contact/model_choice.hpp"
-#include "engine/scene/polygon_properties.hpp"
-
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <type_traits>
 
+#include "engine/contact/model_choice.hpp"
 #include "engine/errors.hpp"
+#include "engine/number_text.hpp"
+#include "engine/scene/block_geometry.hpp"
+#include "engine/scene/parameter_domains.hpp"
+#include "engine/scene/polygon_properties.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
 namespace {
 
-void require(bool ok, const char* rule) {
-  if (!ok) throw InvalidInput(std::string("invalid scene: ") + rule);
+void require(bool ok, const std::string& rule) {
+  if (!ok) throw InvalidInput("invalid scene: " + rule);
 }
 
-bool positive(double v) { return std::isfinite(v) && v > 0; }
+// "invalid scene: friction must be in [0, 10000] (got -1)"
+void require_in(const Domain& domain, double value, const char* name) {
+  require(domain.contains(value),
+          std::string(name) + " " + domain.rule() + " (got " + format_number(value) + ")");
+}
 
-// The block's shape and mass, and an initial tilt that leaves it on one of its base corners.
+// The block's shape, and an initial tilt that leaves it on one of its base corners.
 void validate_block(const Scene& scene) {
   const double theta = scene.initial.theta;
+  require_in(domain::initial_theta, theta, "initial theta");
   if (!scene.polygon) {
-    require(positive(scene.block.half_width), "block half_width must be > 0");
-    require(positive(scene.block.half_height), "block half_height must be > 0");
-    require(positive(scene.block.mass), "block mass must be > 0");
-    require(std::isfinite(theta) && std::abs(theta) < std::numbers::pi / 2,
-            "initial theta must be within (-pi/2, pi/2)");
+    require_in(domain::block_length, scene.block.half_width, "block half_width");
+    require_in(domain::block_length, scene.block.half_height, "block half_height");
+    require_in(domain::mass, scene.block.mass, "block mass");
     return;
   }
-  if (const auto defect = polygon_defect(scene.polygon->vertices)) {
+  const auto& vertices = scene.polygon->vertices;
+  require(static_cast<double>(vertices.size()) <= domain::kMaxPolygonVertices,
+          "block polygon has " + std::to_string(vertices.size()) + " vertices, more than " +
+              format_number(domain::kMaxPolygonVertices));
+  for (const Vertex& v : vertices) {
+    for (const double coordinate : v) {
+      require_in(domain::polygon_coordinate, coordinate, "block polygon coordinate");
+    }
+  }
+  if (const auto defect = polygon_defect(vertices)) {
     const std::string where =
         defect->vertex < 0 ? "" : " vertex " + std::to_string(defect->vertex) + ":";
     throw InvalidInput("invalid scene: block polygon:" + where + " " + defect->rule);
   }
-  require(positive(scene.polygon->mass), "block mass must be > 0");
+  require_in(domain::mass, scene.polygon->mass, "block mass");
   const BlockGeometry geometry(*scene.polygon);
-  require(std::isfinite(theta) && theta > -geometry.overturn_angle(Corner::right) &&
+  require_in(domain::block_length, geometry.size(),
+             "block polygon size (its farthest corner from the centre of mass)");
+  require(theta > -geometry.overturn_angle(Corner::right) &&
               theta < geometry.overturn_angle(Corner::left),
           "initial theta must be within the tilts that lay the polygon on the faces next to its "
           "base");
 }
 
-// The near-fault pulses (engine/motion/near_fault_pulses.hpp).
-void require_valid(const MakrisPulseA& m) {
-  require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
-  require(positive(m.period), "pulse period must be > 0");
+void validate_pulse(double amplitude_g, double period) {
+  require_in(domain::amplitude_g, amplitude_g, "pulse amplitude_g");
+  require_in(domain::pulse_period, period, "pulse period");
 }
-void require_valid(const MakrisPulseB& m) { require_valid(MakrisPulseA{m.amplitude_g, m.period}); }
+
+// The near-fault pulses (engine/motion/near_fault_pulses.hpp).
+void require_valid(const MakrisPulseA& m) { validate_pulse(m.amplitude_g, m.period); }
+void require_valid(const MakrisPulseB& m) { validate_pulse(m.amplitude_g, m.period); }
 void require_valid(const MakrisPulseC& m) {
-  require_valid(MakrisPulseA{m.amplitude_g, m.period});
-  require(m.n >= 1, "Makris type C pulse n must be >= 1");
+  validate_pulse(m.amplitude_g, m.period);
+  require(m.n >= 1 && m.n <= 1000, "Makris type C pulse n must be in [1, 1000]");
 }
 void require_valid(const RickerWavelet& m) {
-  require_valid(MakrisPulseA{m.amplitude_g, m.period});
-  require(!m.t0 || positive(*m.t0), "Ricker wavelet t0 must be > 0");
+  validate_pulse(m.amplitude_g, m.period);
+  if (m.t0) require_in(domain::motion_time, *m.t0, "Ricker wavelet t0");
 }
 void require_valid(const MavroeidisPapageorgiouPulse& m) {
-  require(std::isfinite(m.velocity_amplitude), "pulse velocity amplitude must be finite");
-  require(positive(m.period), "pulse period must be > 0");
-  require(std::isfinite(m.gamma) && m.gamma > 1, "Mavroeidis-Papageorgiou gamma must be > 1");
-  require(std::isfinite(m.phase), "Mavroeidis-Papageorgiou phase must be finite");
+  require_in(domain::velocity_amplitude, m.velocity_amplitude, "pulse velocity_amplitude");
+  require_in(domain::pulse_period, m.period, "pulse period");
+  require_in(domain::mp_gamma, m.gamma, "Mavroeidis-Papageorgiou gamma");
+  require_in(domain::mp_phase, m.phase, "Mavroeidis-Papageorgiou phase");
+  if (m.t0) require_in(domain::motion_time, *m.t0, "Mavroeidis-Papageorgiou t0");
   // The pulse must start at t >= 0: a block at rest on a ground already moving is another problem.
-  require(!m.t0 || (std::isfinite(*m.t0) && *m.t0 >= (1.0 - kGridRounding) * m.half_width()),
+  require(!m.t0 || *m.t0 >= (1.0 - kGridRounding) * m.half_width(),
           "Mavroeidis-Papageorgiou t0 must be >= gamma period / 2 (the pulse starts at t >= 0)");
+}
+
+void validate_motion(const GroundMotion& motion) {
+  std::visit(
+      [](const auto& m) {
+        using M = std::decay_t<decltype(m)>;
+        if constexpr (std::is_same_v<M, RectangularPulse>) {
+          require_in(domain::amplitude_g, m.amplitude_g, "pulse amplitude_g");
+          require_in(domain::pulse_duration, m.duration, "rectangular pulse duration");
+        } else if constexpr (std::is_same_v<M, RecordedMotion>) {
+          require(m.record != nullptr, "a recorded motion needs its samples");
+          require_in(domain::record_scale, m.scale, "record scale");
+          check_accelerogram(*m.record);
+          require_in(domain::record_time, m.record->times.back(), "record's last sample time");
+        } else if constexpr (std::is_same_v<M, CosinePulse> || std::is_same_v<M, SinePulse>) {
+          validate_pulse(m.amplitude_g, m.period);
+          require_in(domain::pulse_cycles, m.cycles, "pulse cycles");
+        } else if constexpr (!std::is_same_v<M, NoMotion>) {
+          require_valid(m);
+        }
+      },
+      motion);
 }
 
 void validate_dam(const DamCrest& dam) {
   if (const auto* given = std::get_if<DamPeriod>(&dam.stiffness)) {
-    require(positive(given->period), "dam period must be > 0");
+    require_in(domain::dam_period, given->period, "dam period");
   } else {
     const auto& size = std::get<DamSize>(dam.stiffness);
-    require(positive(size.height), "dam height must be > 0");
-    require(positive(size.elastic_modulus), "dam elastic_modulus must be > 0");
+    require_in(domain::dam_height, size.height, "dam height");
+    require_in(domain::elastic_modulus, size.elastic_modulus, "dam elastic_modulus");
   }
   // The filter is the underdamped oscillator's closed form.
-  require(dam.damping >= 0 && dam.damping < 1, "dam damping must be in [0, 1)");
-  require(positive(dam.participation), "dam participation must be > 0");
+  require_in(domain::dam_damping, dam.damping, "dam damping");
+  require_in(domain::participation, dam.participation, "dam participation");
+}
+
+void validate_solver(const SolverSettings& solver) {
+  require_in(domain::rk4_step, solver.dt, "solver dt");
+  require_in(domain::tolerance, solver.tolerance, "solver tolerance");
+  require_in(domain::max_steps, static_cast<double>(solver.max_steps), "solver max_steps");
+  require_in(domain::max_events, static_cast<double>(solver.max_events), "solver max_events");
 }
 
 }  // namespace
 
 void validate_scene(const Scene& scene) {
   validate_block(scene);
-  require(std::isfinite(scene.contact.friction) && scene.contact.friction >= 0,
-          "friction must be >= 0");
-  require(scene.contact.restitution >= 0 && scene.contact.restitution <= 1,
-          "restitution must be in [0, 1]");
-  require(positive(scene.duration), "duration must be > 0");
-  require(positive(scene.g), "g must be > 0");
+  require_in(domain::friction, scene.contact.friction, "friction");
+  require_in(domain::restitution, scene.contact.restitution, "restitution");
+  require_in(domain::duration, scene.duration, "duration");
+  require_in(domain::g, scene.g, "g");
   model_named_by(scene.effects);
   const bool has_vertical = !std::holds_alternative<NoMotion>(scene.vertical_motion);
   require(scene.effects.automatic || has_vertical == scene.effects.vertical,
           "effects list \"vertical\" exactly when the scene has a vertical_motion");
-  const SolverSettings& solver = scene.solver;
-  require(positive(solver.dt), "solver dt must be > 0");
-  require(positive(solver.tolerance) && solver.tolerance <= 0.1,
-          "solver tolerance must be in (0, 0.1]");
-  require(solver.max_steps > 0 && solver.max_events > 0,
-          "solver budgets must be > 0");
-  const auto validate_motion = [](const GroundMotion& motion) {
-    std::visit(
-      [](const auto& m) {
-        using M = std::decay_t<decltype(m)>;
-        if constexpr (std::is_same_v<M, RectangularPulse>) {
-          require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
-          require(positive(m.duration), "pulse duration must be > 0");
-        } else if constexpr (std::is_same_v<M, RecordedMotion>) {
-          require(m.record != nullptr, "a recorded motion needs its samples");
-          require(std::isfinite(m.scale), "record scale must be finite");
-          check_accelerogram(*m.record);
-        } else if constexpr (std::is_same_v<M, MakrisPulseA> || std::is_same_v<M, MakrisPulseB> ||
-                             std::is_same_v<M, MakrisPulseC> || std::is_same_v<M, RickerWavelet> ||
-                             std::is_same_v<M, MavroeidisPapageorgiouPulse>) {
-          require_valid(m);
-        } else if constexpr (!std::is_same_v<M, NoMotion>) {
-          require(std::isfinite(m.amplitude_g), "pulse amplitude must be finite");
-          require(positive(m.period), "pulse period must be > 0");
-          require(positive(m.cycles), "pulse cycles must be > 0");
-        }
-      },
-      motion);
-  };
+  validate_solver(scene.solver);
   validate_motion(scene.ground_motion);
   validate_motion(scene.vertical_motion);
   if (scene.dam) validate_dam(*scene.dam);

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/errors.hpp"
+#include "engine/scene/parameter_domains.hpp"
 
 namespace blockfrag {
 
@@ -61,6 +63,14 @@ class Range {
   static Range closed(double low, double high) { return {Bound{low, true, {}}, Bound{high, true, {}}}; }
   static Range open(double low, double high) { return {Bound{low, false, {}}, Bound{high, false, {}}}; }
   static Range left_open(double low, double high) { return {Bound{low, false, {}}, Bound{high, true, {}}}; }
+  // A scene parameter's domain (engine/scene/parameter_domains.hpp), with its labels.
+  static Range of(const Domain& domain) {
+    std::optional<Bound> high;
+    if (domain.high != std::numeric_limits<double>::infinity()) {
+      high = Bound{domain.high, domain.high_inclusive, domain.high_label ? domain.high_label : ""};
+    }
+    return {Bound{domain.low, domain.low_inclusive, domain.low_label ? domain.low_label : ""}, high};
+  }
 
   // Names the bounds in messages where the digits would not speak, e.g. "pi/2".
   Range labelled(std::string low_label, std::string high_label) const;

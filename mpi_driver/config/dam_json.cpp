@@ -2,15 +2,8 @@
 
 #include <string>
 
-#include "sampling/validation.hpp"  // format_number
 
 namespace blockfrag {
-
-namespace {
-
-const Range positive = Range::greater_than(0.0);
-
-}  // namespace
 
 std::optional<DamCrest> read_dam(ObjectReader reader) {
   if (!reader.valid()) return std::nullopt;
@@ -21,23 +14,18 @@ std::optional<DamCrest> read_dam(ObjectReader reader) {
   if (by_period && by_size) {
     reader.add_error("period", "give either period or height and elastic_modulus, not both");
   } else if (by_period) {
-    dam.stiffness = DamPeriod{reader.required_number("period", positive).value_or(DamPeriod{}.period)};
+    dam.stiffness = DamPeriod{reader.required_number("period", Range::of(domain::dam_period)).value_or(DamPeriod{}.period)};
   } else if (by_size) {
     DamSize size;
-    size.height = reader.required_number("height", positive).value_or(size.height);
-    size.elastic_modulus = reader.required_number("elastic_modulus", positive).value_or(size.elastic_modulus);
+    size.height = reader.required_number("height", Range::of(domain::dam_height)).value_or(size.height);
+    size.elastic_modulus = reader.required_number("elastic_modulus", Range::of(domain::elastic_modulus)).value_or(size.elastic_modulus);
     dam.stiffness = size;
   } else {
     reader.errors().add(reader.path(), "needs period, or height and elastic_modulus");
   }
   // Underdamped: the crest filter is the damped oscillator's closed form for zeta < 1.
-  const auto damping = reader.number("damping");
-  if (damping && (*damping < 0 || *damping >= 1)) {
-    reader.add_error("damping", "must be in [0, 1) (got " + format_number(*damping) + ")");
-  } else if (damping) {
-    dam.damping = *damping;
-  }
-  dam.participation = reader.number_or("participation", dam.participation, positive);
+  dam.damping = reader.number_or("damping", dam.damping, Range::of(domain::dam_damping));
+  dam.participation = reader.number_or("participation", dam.participation, Range::of(domain::participation));
   reader.finish();
   return dam;
 }

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "engine/number_text.hpp"
+#include "engine/scene/block_geometry.hpp"
 #include "engine/scene/polygon_properties.hpp"
 
 namespace blockfrag {
@@ -10,6 +12,12 @@ std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value, con
                                                 ConfigErrors& errors) {
   ArrayReader vertices(value, path, errors);
   if (!vertices.valid()) return {};
+  if (static_cast<double>(vertices.size()) > domain::kMaxPolygonVertices) {
+    errors.add(path, "has " + std::to_string(vertices.size()) + " vertices, more than " +
+                         format_number(domain::kMaxPolygonVertices));
+    return {};
+  }
+  const Range coordinate = Range::of(domain::polygon_coordinate);
   std::vector<std::array<double, 2>> out;
   bool complete = true;
   for (std::size_t i = 0; i < vertices.size(); ++i) {
@@ -24,7 +32,7 @@ std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value, con
       complete = false;
       continue;
     }
-    const auto x = point.number(0), y = point.number(1);
+    const auto x = point.number(0, coordinate), y = point.number(1, coordinate);
     if (!x || !y) {
       complete = false;
       continue;
@@ -36,6 +44,10 @@ std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value, con
     if (const auto defect = polygon_defect(out)) {
       errors.add(defect->vertex < 0 ? path : path / static_cast<std::size_t>(defect->vertex),
                  defect->rule);
+    } else if (const double size = BlockGeometry(PolygonBlock{out, 1.0}).size();
+               !domain::block_length.contains(size)) {
+      errors.add(path, "its size (the farthest corner from the centre of mass, " + format_number(size) +
+                           " m) " + domain::block_length.rule());
     }
   }
   return out;

@@ -2,7 +2,8 @@
 
 #include <string>
 
-#include "sampling/validation.hpp"  // format_number
+#include "engine/number_text.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -10,14 +11,12 @@ namespace {
 
 using nlohmann::json;
 
-const Range positive = Range::greater_than(0.0);
-
 // amplitude_g and period: what every acceleration pulse has.
 template <class Pulse>
 Pulse read_amplitude_and_period(ObjectReader& reader) {
   Pulse pulse;
-  pulse.amplitude_g = reader.required_number("amplitude_g").value_or(pulse.amplitude_g);
-  pulse.period = reader.required_number("period", positive).value_or(pulse.period);
+  pulse.amplitude_g = reader.required_number("amplitude_g", Range::of(domain::amplitude_g)).value_or(pulse.amplitude_g);
+  pulse.period = reader.required_number("period", Range::of(domain::pulse_period)).value_or(pulse.period);
   return pulse;
 }
 
@@ -29,20 +28,21 @@ MakrisPulseC read_makris_c(ObjectReader& reader) {
 
 RickerWavelet read_ricker(ObjectReader& reader) {
   auto pulse = read_amplitude_and_period<RickerWavelet>(reader);
-  pulse.t0 = reader.number("t0", positive);
+  pulse.t0 = reader.number("t0", Range::of(domain::motion_time));
   return pulse;
 }
 
 MavroeidisPapageorgiouPulse read_mavroeidis_papageorgiou(ObjectReader& reader) {
   MavroeidisPapageorgiouPulse pulse;
-  pulse.velocity_amplitude = reader.required_number("velocity_amplitude").value_or(pulse.velocity_amplitude);
-  const auto period = reader.required_number("period", positive);
-  const auto gamma = reader.required_number("gamma", Range::greater_than(1.0));
+  pulse.velocity_amplitude = reader.required_number("velocity_amplitude", Range::of(domain::velocity_amplitude))
+                                 .value_or(pulse.velocity_amplitude);
+  const auto period = reader.required_number("period", Range::of(domain::pulse_period));
+  const auto gamma = reader.required_number("gamma", Range::of(domain::mp_gamma));
   pulse.period = period.value_or(pulse.period);
   pulse.gamma = gamma.value_or(pulse.gamma);
-  pulse.phase = reader.number_or("phase", pulse.phase);
-  pulse.t0 = reader.number("t0");
-  if (pulse.t0 && period && gamma && *pulse.t0 < (1.0 - 1e-12) * pulse.half_width()) {
+  pulse.phase = reader.number_or("phase", pulse.phase, Range::of(domain::mp_phase));
+  pulse.t0 = reader.number("t0", Range::of(domain::motion_time));
+  if (pulse.t0 && period && gamma && *pulse.t0 < (1.0 - kGridRounding) * pulse.half_width()) {
     reader.add_error("t0", "must be >= gamma period / 2 = " + format_number(pulse.half_width()) +
                                " (the pulse starts at t >= 0) (got " + format_number(*pulse.t0) + ")");
   }

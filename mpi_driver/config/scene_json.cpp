@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <type_traits>
 
@@ -22,8 +21,6 @@ namespace {
 
 using nlohmann::json;
 
-const Range positive = Range::greater_than(0.0);
-
 // A rectangle (half_width, half_height) or a polygon (mpi_driver/config/polygon_json.hpp).
 void read_block(ObjectReader reader, Scene& scene) {
   RectangularBlock& block = scene.block;
@@ -33,21 +30,22 @@ void read_block(ObjectReader reader, Scene& scene) {
     for (const char* key : {"half_width", "half_height"}) {
       if (reader.has(key)) reader.add_error(key, "give either polygon or half_width and half_height, not both");
     }
-    polygon.mass = reader.number_or("mass", polygon.mass, positive);
+    polygon.mass = reader.number_or("mass", polygon.mass, Range::of(domain::mass));
     scene.polygon = std::move(polygon);
   } else {
-    block.half_width = reader.required_number("half_width", positive).value_or(block.half_width);
-    block.half_height = reader.required_number("half_height", positive).value_or(block.half_height);
-    block.mass = reader.number_or("mass", block.mass, positive);
+    block.half_width = reader.required_number("half_width", Range::of(domain::block_length)).value_or(block.half_width);
+    block.half_height =
+        reader.required_number("half_height", Range::of(domain::block_length)).value_or(block.half_height);
+    block.mass = reader.number_or("mass", block.mass, Range::of(domain::mass));
   }
   reader.finish();
 }
 
 Contact read_contact(ObjectReader reader) {
   Contact contact;
-  contact.friction = reader.required_number("friction", Range::at_least(0.0)).value_or(contact.friction);
+  contact.friction = reader.required_number("friction", Range::of(domain::friction)).value_or(contact.friction);
   contact.restitution =
-      reader.required_number("restitution", Range::closed(0.0, 1.0)).value_or(contact.restitution);
+      reader.required_number("restitution", Range::of(domain::restitution)).value_or(contact.restitution);
   reader.finish();
   return contact;
 }
@@ -56,16 +54,16 @@ Contact read_contact(ObjectReader reader) {
 template <class Pulse>
 Pulse read_periodic_pulse(ObjectReader& reader) {
   Pulse pulse;
-  pulse.amplitude_g = reader.required_number("amplitude_g").value_or(pulse.amplitude_g);
-  pulse.period = reader.required_number("period", positive).value_or(pulse.period);
-  pulse.cycles = reader.number_or("cycles", 1.0, positive);
+  pulse.amplitude_g = reader.required_number("amplitude_g", Range::of(domain::amplitude_g)).value_or(pulse.amplitude_g);
+  pulse.period = reader.required_number("period", Range::of(domain::pulse_period)).value_or(pulse.period);
+  pulse.cycles = reader.number_or("cycles", 1.0, Range::of(domain::pulse_cycles));
   return pulse;
 }
 
 RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
   RectangularPulse pulse;
-  pulse.amplitude_g = reader.required_number("amplitude_g").value_or(pulse.amplitude_g);
-  pulse.duration = reader.required_number("duration", positive).value_or(pulse.duration);
+  pulse.amplitude_g = reader.required_number("amplitude_g", Range::of(domain::amplitude_g)).value_or(pulse.amplitude_g);
+  pulse.duration = reader.required_number("duration", Range::of(domain::pulse_duration)).value_or(pulse.duration);
   return pulse;
 }
 
@@ -74,8 +72,8 @@ RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
 RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& base_folder) {
   RecordedMotion motion;
   const auto file = reader.required_string("file");
-  const auto scale = reader.number("scale");
-  const auto target_pga = reader.number("target_pga_g", positive);
+  const auto scale = reader.number("scale", Range::of(domain::record_scale));
+  const auto target_pga = reader.number("target_pga_g", Range::of(domain::target_pga_g));
   if (scale && target_pga) reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
   if (file && file->empty()) reader.add_error("file", "must not be empty");
   if (!file || file->empty()) return motion;
@@ -140,17 +138,17 @@ SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) 
           ? method_named(reader.required_choice("method", {"adaptive", "rk4", "gsl_rkf45", "gsl_rk8pd"}))
           : std::optional<Method>(solver.method);
   if (method == Method::rk4) {
-    const auto dt = reader.number("dt", positive);
+    const auto dt = reader.number("dt", Range::of(domain::rk4_step));
     if (dt) solver.dt = *dt;
     if (dt && duration && *dt > *duration) {
       reader.add_error("dt", "must be <= duration (" + format_number(*duration) + ") (got " + format_number(*dt) + ")");
     }
   } else if (method) {  // the step-size-controlled methods
-    solver.tolerance = reader.number_or("tolerance", solver.tolerance, Range::left_open(0.0, 0.1));
+    solver.tolerance = reader.number_or("tolerance", solver.tolerance, Range::of(domain::tolerance));
   }
   if (method) solver.method = *method;
-  solver.max_steps = reader.integer_or("max_steps", solver.max_steps, positive);
-  solver.max_events = reader.integer_or("max_events", solver.max_events, positive);
+  solver.max_steps = reader.integer_or("max_steps", solver.max_steps, Range::of(domain::max_steps));
+  solver.max_events = reader.integer_or("max_events", solver.max_events, Range::of(domain::max_events));
   if (method) reader.finish("for method \"" + std::string(method_name(*method)) + "\"");
   return solver;
 }
@@ -169,8 +167,7 @@ void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPoi
 
 InitialState read_initial(ObjectReader reader) {
   InitialState initial;
-  const double half_pi = std::numbers::pi / 2;
-  initial.theta = reader.number_or("theta", initial.theta, Range::open(-half_pi, half_pi).labelled("-pi/2", "pi/2"));
+  initial.theta = reader.number_or("theta", initial.theta, Range::of(domain::initial_theta));
   reader.finish();
   return initial;
 }
@@ -237,9 +234,9 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
     errors.add(path / "effects", "lists \"vertical\" exactly when the scene has a vertical_motion");
   }
   scene.dam = read_dam(root.object("dam"));
-  const auto duration = root.required_number("duration", positive);
+  const auto duration = root.required_number("duration", Range::of(domain::duration));
   if (duration) scene.duration = *duration;
-  scene.g = root.number_or("g", scene.g, positive);
+  scene.g = root.number_or("g", scene.g, Range::of(domain::g));
   scene.solver = read_solver(root.object("solver"), duration);
   scene.initial = read_initial(root.object("initial"));
   if (scene.polygon) check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);

@@ -3,7 +3,6 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <type_traits>
 
 #include "mpi_driver/config/config_reader.hpp"
@@ -18,26 +17,26 @@ using nlohmann::json;
 
 const Range positive = Range::greater_than(0.0);
 constexpr double infinity = std::numeric_limits<double>::infinity();
+// Intensity levels a study may have: a fine grid for a smooth curve is a few hundred.
+constexpr double kMaxLevels = 10'000;
 
 constexpr StudyInput all_inputs[] = {StudyInput::friction, StudyInput::restitution, StudyInput::half_width,
                                      StudyInput::half_height, StudyInput::alpha, StudyInput::R,
                                      StudyInput::period, StudyInput::direction};
 
-// The values every sample of an input must stay within, as a rule for messages.
-struct Support {
-  double low, high;
-  bool low_inclusive, high_inclusive;
-  const char* rule;
-};
-
-Support required_support(StudyInput input) {
+// The domain every sample of an input must stay within: the scene parameter's it sets.
+const Domain& input_domain(StudyInput input) {
   switch (input) {
-    case StudyInput::friction: return {0.0, infinity, true, false, ">= 0"};
-    case StudyInput::restitution: return {0.0, 1.0, true, true, "in [0, 1]"};
-    case StudyInput::alpha: return {0.0, std::numbers::pi / 2, false, false, "in (0, pi/2)"};
-    case StudyInput::direction: return {-1.0, 1.0, true, true, "+1 or -1"};
-    default: return {0.0, infinity, false, false, "> 0"};
+    case StudyInput::friction: return domain::friction;
+    case StudyInput::restitution: return domain::restitution;
+    case StudyInput::half_width:
+    case StudyInput::half_height:
+    case StudyInput::R: return domain::block_length;
+    case StudyInput::alpha: return domain::alpha;
+    case StudyInput::period: return domain::pulse_period;
+    case StudyInput::direction: break;
   }
+  throw ContractViolation("a random sign has no domain");
 }
 
 // The interval the distribution's values can take: [low, high].
@@ -53,13 +52,11 @@ std::pair<double, double> support_of(const Distribution& distribution) {
       distribution);
 }
 
-// An untruncated lognormal's support starts at 0 excluded: it meets "> 0".
-bool within(const Support& support, double low, double high, bool log_normal) {
-  const bool open_at_zero = log_normal && low == 0.0 && support.low == 0.0;
-  const bool low_ok = support.low_inclusive ? low >= support.low : (low > support.low || open_at_zero);
-  // An unbounded support above is met by any distribution: no sample is ever infinite.
-  const bool high_ok = support.high == infinity || (support.high_inclusive ? high <= support.high : high < support.high);
-  return low_ok && high_ok;
+// The distribution's support [low, high] inside the domain; an untruncated lognormal's support
+// starts at 0 excluded: it meets a domain open at 0.
+bool within(const Domain& domain, double low, double high, bool log_normal) {
+  const bool open_at_zero = log_normal && low == 0.0 && domain.low == 0.0 && !domain.low_inclusive;
+  return (domain.contains(low) || open_at_zero) && domain.contains(high);
 }
 
 std::optional<Distribution> read_distribution(ObjectReader reader) {
@@ -142,10 +139,9 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
     const auto distribution = input == StudyInput::direction ? read_direction(spec) : read_distribution(spec);
     if (!distribution) continue;
     const auto [low, high] = support_of(*distribution);
-    const Support support = required_support(input);
     if (input != StudyInput::direction &&
-        !within(support, low, high, std::holds_alternative<LogNormal>(*distribution))) {
-      reader.add_error(key, std::string("every value must be ") + support.rule + ", but this distribution reaches [" +
+        !within(input_domain(input), low, high, std::holds_alternative<LogNormal>(*distribution))) {
+      reader.add_error(key, "every value " + input_domain(input).rule() + ", but this distribution reaches [" +
                                 format_number(low) + ", " + format_number(high) +
                                 "] (truncate it with \"lower\"/\"upper\" or narrow its range)");
     }
@@ -197,8 +193,13 @@ std::vector<double> read_levels(ObjectReader reader) {
     }
     ArrayReader array = reader.required_array("levels");
     if (array.valid() && array.size() == 0) reader.add_error("levels", "must not be empty");
+    if (static_cast<double>(array.size()) > kMaxLevels) {
+      reader.add_error("levels", "has " + std::to_string(array.size()) + " levels, more than " +
+                                     format_number(kMaxLevels));
+      return levels;
+    }
     for (std::size_t k = 0; k < array.size(); ++k) {
-      const auto value = array.number(k, positive);
+      const auto value = array.number(k, Range::of(domain::intensity_g));
       if (!value) continue;
       if (!levels.empty() && *value <= levels.back()) {
         reader.errors().add(array.path_of(k), "must be greater than the level before it (levels increase)");
@@ -206,9 +207,9 @@ std::vector<double> read_levels(ObjectReader reader) {
       levels.push_back(*value);
     }
   } else {
-    const auto from = reader.required_number("from", positive);
-    const auto to = reader.required_number("to", positive);
-    const auto count = reader.required_integer("count", Range::at_least(2));
+    const auto from = reader.required_number("from", Range::of(domain::intensity_g));
+    const auto to = reader.required_number("to", Range::of(domain::intensity_g));
+    const auto count = reader.required_integer("count", Range::closed(2, kMaxLevels));
     if (from && to && *to <= *from) reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
     if (from && to && count && *to > *from) {
       for (long k = 0; k < *count; ++k) {

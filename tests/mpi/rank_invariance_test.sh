@@ -22,7 +22,7 @@ write_study() {
   "inputs": {
     "friction": {"distribution": "uniform", "min": 0.55, "max": 0.9},
     "restitution": {"distribution": "normal", "mean": 0.75, "std_dev": 0.1, "lower": 0.0, "upper": 1.0},
-    "half_width": {"distribution": "lognormal", "median": 0.5, "beta": 0.1},
+    "half_width": {"distribution": "lognormal", "median": 0.5, "beta": 0.1, "lower": 0.2, "upper": 1.2},
     "period": {"distribution": "lognormal", "median": 0.8, "beta": 0.3, "lower": 0.3, "upper": 2.0},
     "direction": {"distribution": "random_sign"}
   },

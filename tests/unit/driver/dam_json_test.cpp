@@ -63,13 +63,13 @@ TEST(DamJson, RefusesEachRuleAtItsPath) {
   EXPECT_EQ(errors_of(scene_with_dam({{"damping", 0.05}})),
             "scene.json: /dam: needs period, or height and elastic_modulus");
   EXPECT_EQ(errors_of(scene_with_dam({{"height", 100.0}})), "scene.json: /dam/elastic_modulus: is required");
-  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.0}})), "scene.json: /dam/period: must be > 0 (got 0)");
+  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.0}})), "scene.json: /dam/period: must be in [0.001, 10] (got 0)");
   EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"damping", 1.0}})),
             "scene.json: /dam/damping: must be in [0, 1) (got 1)");
   EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"damping", -0.1}})),
             "scene.json: /dam/damping: must be in [0, 1) (got -0.1)");
   EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"participation", -1.0}})),
-            "scene.json: /dam/participation: must be > 0 (got -1)");
+            "scene.json: /dam/participation: must be in (0, 100] (got -1)");
   EXPECT_THAT(errors_of(scene_with_dam({{"period", 0.3}, {"dampng", 0.1}})),
               HasSubstr("/dam/dampng: unknown key; did you mean \"damping\"?"));
   EXPECT_THAT(errors_of(scene_with_dam(0.3)), HasSubstr("/dam: must be an object"));

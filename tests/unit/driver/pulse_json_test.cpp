@@ -77,7 +77,7 @@ TEST(PulseJson, RulesAreRefusedAtTheirPath) {
   const json mp = {{"type", "mavroeidis_papageorgiou"}, {"velocity_amplitude", 0.7}, {"period", 0.5}, {"gamma", 2.0}};
   bad = mp;
   bad["gamma"] = 1.0;
-  EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/gamma: must be > 1 (got 1)");
+  EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/gamma: must be in (1, 100] (got 1)");
   bad = mp;
   bad["t0"] = 0.4;
   EXPECT_EQ(errors_of(bad),
@@ -89,9 +89,9 @@ TEST(PulseJson, RulesAreRefusedAtTheirPath) {
             "period phase t0 type velocity_amplitude)");
 
   EXPECT_EQ(errors_of({{"type", "ricker"}, {"amplitude_g", 0.5}, {"period", 0.4}, {"t0", 0.0}}),
-            "scene.json: /ground_motion/t0: must be > 0 (got 0)");
+            "scene.json: /ground_motion/t0: must be in (0, 1e+05] (got 0)");
   EXPECT_EQ(errors_of({{"type", "makris_a"}, {"amplitude_g", 0.5}, {"period", -1}}),
-            "scene.json: /ground_motion/period: must be > 0 (got -1)");
+            "scene.json: /ground_motion/period: must be in [0.001, 1000] (got -1)");
 }
 
 TEST(PulseJson, TheEngineRefusesWhatTheReaderRefuses) {

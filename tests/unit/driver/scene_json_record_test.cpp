@@ -93,7 +93,7 @@ TEST(SceneJsonRecord, ScaleAndTargetPgaAreExclusiveAndTheFileIsRequired) {
   EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", ""}})),
             scene_file + ": /ground_motion/file: must not be empty");
   EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0}})),
-            scene_file + ": /ground_motion/target_pga_g: must be > 0 (got 0)");
+            scene_file + ": /ground_motion/target_pga_g: must be in (0, 1000] (got 0)");
   EXPECT_THAT(errors_of(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"amplitude_g", 1}})),
               HasSubstr("/ground_motion/amplitude_g: unknown key for type \"record\""));
 }

@@ -120,14 +120,19 @@ TEST_P(SceneRule, IsRefusedWithPathAndRule) {
 INSTANTIATE_TEST_SUITE_P(
     EveryRule, SceneRule,
     ::testing::Values(
-        RuleCase{"/block/half_width", 0, "/block/half_width: must be > 0 (got 0)"},
-        RuleCase{"/block/half_height", -1.5, "/block/half_height: must be > 0 (got -1.5)"},
+        RuleCase{"/block/half_width", 0, "/block/half_width: must be in [1e-04, 10000] (got 0)"},
+        RuleCase{"/block/half_height", -1.5, "/block/half_height: must be in [1e-04, 10000] (got -1.5)"},
+        RuleCase{"/block/half_height", 1e5, "/block/half_height: must be in [1e-04, 10000] (got 1e+05)"},
         RuleCase{"/block/mass", 0.0, "/block/mass: must be > 0 (got 0)"},
-        RuleCase{"/contact/friction", -0.3, "/contact/friction: must be >= 0 (got -0.3)"},
+        RuleCase{"/contact/friction", -0.3, "/contact/friction: must be in [0, 10000] (got -0.3)"},
+        RuleCase{"/contact/friction", 1e308, "/contact/friction: must be in [0, 10000] (got 1e+308)"},
         RuleCase{"/contact/restitution", 1.2, "/contact/restitution: must be in [0, 1] (got 1.2)"},
         RuleCase{"/contact/restitution", -0.1, "/contact/restitution: must be in [0, 1] (got -0.1)"},
-        RuleCase{"/ground_motion/period", 0, "/ground_motion/period: must be > 0 (got 0)"},
-        RuleCase{"/ground_motion/cycles", -1, "/ground_motion/cycles: must be > 0 (got -1)"},
+        RuleCase{"/ground_motion/period", 0, "/ground_motion/period: must be in [0.001, 1000] (got 0)"},
+        RuleCase{"/ground_motion/period", 5e-324, "/ground_motion/period: must be in [0.001, 1000] (got 5e-324)"},
+        RuleCase{"/ground_motion/cycles", -1, "/ground_motion/cycles: must be in (0, 10000] (got -1)"},
+        RuleCase{"/ground_motion/cycles", 1e9, "/ground_motion/cycles: must be in (0, 10000] (got 1e+09)"},
+        RuleCase{"/ground_motion/amplitude_g", 1e308, "/ground_motion/amplitude_g: must be in [-1000, 1000] (got 1e+308)"},
         RuleCase{"/ground_motion/amplitude_g", "NaN",
                  "/ground_motion/amplitude_g: must be a finite number (got \"NaN\"; JSON has no NaN or Infinity)"},
         RuleCase{"/ground_motion/type", "cosine",
@@ -138,18 +143,20 @@ INSTANTIATE_TEST_SUITE_P(
                  "/ground_motion/type: must be one of \"none\", \"cosine_pulse\", \"sine_pulse\", "
                  "\"rectangular_pulse\", \"record\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
                  "\"mavroeidis_papageorgiou\" (got \"sine_puls\"; did you mean \"sine_pulse\"?)"},
-        RuleCase{"/duration", 0, "/duration: must be > 0 (got 0)"},
+        RuleCase{"/duration", 0, "/duration: must be in (0, 1e+05] (got 0)"},
         RuleCase{"/duration", "4", "/duration: must be a number, not a string (got \"4\")"},
-        RuleCase{"/g", -9.81, "/g: must be > 0 (got -9.81)"},
-        RuleCase{"/solver/tolerance", 0, "/solver/tolerance: must be in (0, 0.1] (got 0)"},
-        RuleCase{"/solver/tolerance", 0.2, "/solver/tolerance: must be in (0, 0.1] (got 0.2)"},
+        RuleCase{"/g", -9.81, "/g: must be in [0.01, 1000] (got -9.81)"},
+        RuleCase{"/solver/tolerance", 0, "/solver/tolerance: must be in [1e-14, 0.1] (got 0)"},
+        RuleCase{"/solver/tolerance", 1e-300, "/solver/tolerance: must be in [1e-14, 0.1] (got 1e-300)"},
+        RuleCase{"/solver/tolerance", 0.2, "/solver/tolerance: must be in [1e-14, 0.1] (got 0.2)"},
         RuleCase{"/solver/method", "euler",
                  "/solver/method: must be one of \"adaptive\", \"rk4\", \"gsl_rkf45\", \"gsl_rk8pd\" (got \"euler\")"},
-        RuleCase{"/solver/dt", 0, "/solver/dt: must be > 0 (got 0)"},
+        RuleCase{"/solver/dt", 0, "/solver/dt: must be in [1e-07, 10] (got 0)"},
+        RuleCase{"/solver/dt", 1e-300, "/solver/dt: must be in [1e-07, 10] (got 1e-300)"},
         RuleCase{"/solver/dt", 4.5, "/solver/dt: must be <= duration (4) (got 4.5)"},
-        RuleCase{"/solver/max_steps", 0, "/solver/max_steps: must be > 0 (got 0)"},
+        RuleCase{"/solver/max_steps", 0, "/solver/max_steps: must be in [1, 1e+10] (got 0)"},
         RuleCase{"/solver/max_steps", 2.5, "/solver/max_steps: must be an integer (got 2.5)"},
-        RuleCase{"/solver/max_events", -1, "/solver/max_events: must be > 0 (got -1)"},
+        RuleCase{"/solver/max_events", -1, "/solver/max_events: must be in [1, 1e+09] (got -1)"},
         RuleCase{"/initial/theta", 1.6, "/initial/theta: must be in (-pi/2, pi/2) (got 1.6)"},
         RuleCase{"/initial/theta", -1.6, "/initial/theta: must be in (-pi/2, pi/2) (got -1.6)"},
         RuleCase{"/block", 1, "/block: must be an object (got 1)"},
@@ -196,7 +203,7 @@ TEST(SceneJson, VerticalMotionTakesAnyGroundMotionTypeAndTheFullModel) {
   EXPECT_EQ(errors_of(with(document, "/effects", json{"rocking", "sliding", "impact", "flight"})),
             "scene.json: /effects: lists \"vertical\" exactly when the scene has a vertical_motion");
   EXPECT_EQ(errors_of(with(document, "/vertical_motion/duration", 0)),
-            "scene.json: /vertical_motion/duration: must be > 0 (got 0)");
+            "scene.json: /vertical_motion/duration: must be in [1e-04, 10000] (got 0)");
   EXPECT_FALSE(scene_to_json(scene_from_json(paper_scene(), "scene.json")).contains("vertical_motion"));
 }
 
@@ -238,7 +245,7 @@ TEST(SceneJson, EveryErrorIsReportedTogether) {
   document["g"] = "9.81";
   document.erase("duration");
   EXPECT_EQ(errors_of(document),
-            "scene.json: /block/half_width: must be > 0 (got -1)\n"
+            "scene.json: /block/half_width: must be in [1e-04, 10000] (got -1)\n"
             "scene.json: /contact/restitution: must be in [0, 1] (got 2)\n"
             "scene.json: /contact/frictoin: unknown key; did you mean \"friction\"?\n"
             "scene.json: /duration: is required\n"
@@ -256,7 +263,7 @@ TEST(SceneJson, EmbeddedSceneReportsFullPathsIntoTheCallersErrors) {
   } catch (const ConfigError& error) {
     EXPECT_EQ(std::string(error.what()),
               "study.json: /seed: an earlier error\n"
-              "study.json: /scene/contact/friction: must be >= 0 (got -1)");
+              "study.json: /scene/contact/friction: must be in [0, 10000] (got -1)");
   }
 }
 
@@ -281,10 +288,11 @@ TEST(SceneJson, CanonicalRoundTripIsExact) {
   json document = paper_scene();
   document["block"] = {{"half_width", 1.0 / 3.0}, {"half_height", 0.1 + 0.2}, {"mass", 5e-324}};
   document["contact"] = {{"friction", std::numbers::pi / 7}, {"restitution", 1.0 - 1e-16}};
-  document["ground_motion"] = {{"type", "sine_pulse"}, {"amplitude_g", -0.0}, {"period", 1e300}, {"cycles", 2.5}};
+  document["ground_motion"] = {
+      {"type", "sine_pulse"}, {"amplitude_g", -0.0}, {"period", std::nextafter(1000.0, 0.0)}, {"cycles", 2.5}};
   document["g"] = std::nextafter(9.81, 10.0);
   document["initial"] = {{"theta", std::nextafter(-std::numbers::pi / 2, 0.0)}};
-  document["solver"] = {{"method", "rk4"}, {"dt", 1e-7 / 3}, {"max_steps", 123456789012}};
+  document["solver"] = {{"method", "rk4"}, {"dt", std::nextafter(1e-7, 1.0)}, {"max_steps", 9876543210}};
   const Scene first = scene_from_json(document, "scene.json");
   const json canonical = scene_to_json(first);
   const Scene second = scene_from_json(json::parse(canonical.dump()), "canonical.json");
@@ -295,13 +303,13 @@ TEST(SceneJson, CanonicalRoundTripIsExact) {
   EXPECT_EQ(bits(second.contact.restitution), bits(1.0 - 1e-16));
   const auto& pulse = std::get<SinePulse>(second.ground_motion);
   EXPECT_EQ(bits(pulse.amplitude_g), bits(-0.0));
-  EXPECT_EQ(bits(pulse.period), bits(1e300));
+  EXPECT_EQ(bits(pulse.period), bits(std::nextafter(1000.0, 0.0)));
   EXPECT_EQ(pulse.cycles, 2.5);
   EXPECT_EQ(bits(second.g), bits(std::nextafter(9.81, 10.0)));
   EXPECT_EQ(bits(second.initial.theta), bits(std::nextafter(-std::numbers::pi / 2, 0.0)));
   EXPECT_EQ(second.solver.method, Method::rk4);
-  EXPECT_EQ(bits(second.solver.dt), bits(1e-7 / 3));
-  EXPECT_EQ(second.solver.max_steps, 123456789012);
+  EXPECT_EQ(bits(second.solver.dt), bits(std::nextafter(1e-7, 1.0)));
+  EXPECT_EQ(second.solver.max_steps, 9876543210);
   EXPECT_EQ(scene_to_json(second).dump(), canonical.dump());
 }
 

@@ -149,7 +149,7 @@ TEST(StudyConfig, ReportsEveryErrorAtOnceWithItsPath) {
   const auto messages = messages_of(document);
   ASSERT_EQ(messages.size(), 4u) << ::testing::PrintToString(messages);
   const std::string all = ::testing::PrintToString(messages);
-  EXPECT_THAT(all, HasSubstr("study.json: /inputs/friction: every value must be >= 0"));
+  EXPECT_THAT(all, HasSubstr("study.json: /inputs/friction: every value must be in [0, 10000]"));
   EXPECT_THAT(all, HasSubstr("study.json: /inputs/restitution: every value must be in [0, 1]"));
   EXPECT_THAT(all, HasSubstr("study.json: /seed: must be >= 0"));
   EXPECT_THAT(all, HasSubstr("study.json: /limit_states/0/nmae: unknown key"));
@@ -160,6 +160,10 @@ TEST(StudyConfig, TruncationMakesAnUnboundedLawAcceptable) {
   document["inputs"]["restitution"] = {{"distribution", "normal"}, {"mean", 0.7}, {"std_dev", 0.2},
                                        {"lower", 0.0}, {"upper", 1.0}};
   document["inputs"]["friction"] = {{"distribution", "normal"}, {"mean", 0.7}, {"std_dev", 0.2}, {"lower", 0.0}};
+  // Friction's domain is bounded above too: truncated below only, the law still leaves it.
+  EXPECT_THAT(::testing::PrintToString(messages_of(document)),
+              HasSubstr("/inputs/friction: every value must be in [0, 10000], but this distribution reaches [0, inf]"));
+  document["inputs"]["friction"]["upper"] = 2.0;
   EXPECT_TRUE(messages_of(document).empty()) << ::testing::PrintToString(messages_of(document));
 }
 

@@ -1,0 +1,107 @@
+// The values each scene parameter may take: one table, used by the engine's scene validation, the
+// scene and study readers (their messages and every sampled input's support). Each domain is wide
+// enough for any real block and ground motion, and narrow enough that no value in it can overflow
+// the arithmetic, stall an integrator or ask for more work than a scene's budgets allow.
+#pragma once
+
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "engine/number_text.hpp"
+
+namespace blockfrag {
+
+struct Domain {
+  double low, high;
+  bool low_inclusive, high_inclusive;
+  const char* unit;  // "m", "s", "g", ... or "" for a pure number
+  // Names a bound in messages where the digits would not speak ("pi/2"); nullptr: the digits.
+  const char* low_label = nullptr;
+  const char* high_label = nullptr;
+
+  constexpr bool contains(double x) const {
+    return (low_inclusive ? x >= low : x > low) && (high_inclusive ? x <= high : x < high);
+  }
+  // "must be in (0, 10000]", or "must be > 0" without an upper bound.
+  std::string rule() const {
+    const auto text = [](double value, const char* label) {
+      return label ? std::string(label) : format_number(value);
+    };
+    if (high == std::numeric_limits<double>::infinity()) {
+      return std::string("must be ") + (low_inclusive ? ">= " : "> ") + text(low, low_label);
+    }
+    return "must be in " + std::string(low_inclusive ? "[" : "(") + text(low, low_label) + ", " +
+           text(high, high_label) + (high_inclusive ? "]" : ")");
+  }
+};
+
+namespace domain {
+
+// --- The block ---------------------------------------------------------------------------------
+// A rectangle's half-width and half-height, a sampled R, and a polygon's size (its largest corner
+// distance from the centre of mass): from a 0.1 mm pebble to a 10 km slab.
+inline constexpr Domain block_length{1e-4, 1e4, true, true, "m"};
+// A polygon's vertex coordinates, in any frame: the block may sit far from the origin.
+inline constexpr Domain polygon_coordinate{-1e5, 1e5, true, true, "m"};
+// No result depends on the mass (the engine works per unit mass): any positive finite value.
+inline constexpr Domain mass{0.0, std::numeric_limits<double>::infinity(), false, false, "kg"};
+// Up to 10,000 vertices (a digitised outline).
+inline constexpr double kMaxPolygonVertices = 10'000;
+// A rectangle's slenderness as a study samples it.
+inline constexpr Domain alpha{0.0, std::numbers::pi / 2, false, false, "rad", nullptr, "pi/2"};
+
+// --- The contact ---------------------------------------------------------------------------------
+// Coulomb's mu: 0 (frictionless) to 10,000 (no slip in practice: Housner's block).
+inline constexpr Domain friction{0.0, 1e4, true, true, ""};
+inline constexpr Domain restitution{0.0, 1.0, true, true, ""};
+
+// --- Ground motion -------------------------------------------------------------------------------
+// A pulse's peak acceleration in g, either sign: 1000 g is far past any earthquake.
+inline constexpr Domain amplitude_g{-1e3, 1e3, true, true, "g"};
+// A record's peak acceleration to scale to, and a study's intensity levels in g.
+inline constexpr Domain target_pga_g{0.0, 1e3, false, true, "g"};
+inline constexpr Domain intensity_g = target_pga_g;
+// A factor on a record, either sign.
+inline constexpr Domain record_scale{-1e3, 1e3, true, true, ""};
+// A pulse's period (and a Ricker wavelet's 1 / peak frequency): from 1 ms (1 kHz) to 1000 s.
+inline constexpr Domain pulse_period{1e-3, 1e3, true, true, "s"};
+// Whole or fractional periods of a cosine or sine pulse.
+inline constexpr Domain pulse_cycles{0.0, 1e4, false, true, ""};
+// A rectangular pulse's length.
+inline constexpr Domain pulse_duration{1e-4, 1e4, true, true, "s"};
+// A time inside a motion (a Ricker wavelet's centre, a Mavroeidis-Papageorgiou pulse's t0).
+inline constexpr Domain motion_time{0.0, 1e5, false, true, "s"};
+// A Mavroeidis-Papageorgiou pulse: its velocity amplitude, gamma (oscillations under the
+// envelope) and phase.
+inline constexpr Domain velocity_amplitude{-100.0, 100.0, true, true, "m/s"};
+inline constexpr Domain mp_gamma{1.0, 100.0, false, true, ""};
+inline constexpr Domain mp_phase{-1e3, 1e3, true, true, "rad"};
+// A recorded motion's sample times.
+inline constexpr Domain record_time{0.0, 1e5, true, true, "s"};
+
+// --- The dam crest ------------------------------------------------------------------------------
+inline constexpr Domain dam_period{1e-3, 10.0, true, true, "s"};
+inline constexpr Domain dam_height{1.0, 1e3, true, true, "m"};
+inline constexpr Domain elastic_modulus{1e6, 1e13, true, true, "Pa"};
+inline constexpr Domain dam_damping{0.0, 1.0, true, false, ""};
+inline constexpr Domain participation{0.0, 100.0, false, true, ""};
+
+// --- The run --------------------------------------------------------------------------------------
+// A scene's duration: up to about 28 hours of motion.
+inline constexpr Domain duration{0.0, 1e5, false, true, "s"};
+// Gravity: the Moon's 1.6 to a centrifuge's 100 g.
+inline constexpr Domain g{1e-2, 1e3, true, true, "m/s^2"};
+// A release tilt (a polygon's own overturning angles narrow it further).
+inline constexpr Domain initial_theta{-std::numbers::pi / 2, std::numbers::pi / 2, false, false,
+                                      "rad", "-pi/2", "pi/2"};
+// RK4's fixed step (and at most the scene's duration).
+inline constexpr Domain rk4_step{1e-7, 10.0, true, true, "s"};
+// The adaptive methods' relative tolerance: round-off below 1e-14, no accuracy above 0.1.
+inline constexpr Domain tolerance{1e-14, 0.1, true, true, ""};
+// The step and event budgets.
+inline constexpr Domain max_steps{1.0, 1e10, true, true, ""};
+inline constexpr Domain max_events{1.0, 1e9, true, true, ""};
+
+}  // namespace domain
+}  // namespace blockfrag
