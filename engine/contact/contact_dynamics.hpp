@@ -1,4 +1,4 @@
-// Accelerations and contact forces of a block touching the ground at one corner (DESIGN.md,
+// Accelerations and contact forces of a block touching the ground at one corner (docs/physics.md,
 // "Equations in one general form"). r is the corner relative to the centre of mass in the world
 // frame, w the angular velocity, k2 = I/M; forces are per unit mass (divide by g for per weight).
 #pragma once

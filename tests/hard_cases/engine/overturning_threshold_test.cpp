@@ -1,5 +1,5 @@
 // Amplitudes just below and above the overturning threshold of a rectangular pulse: the verdict
-// flips once, at the nonlinear threshold of REFERENCES.md, for both integrators.
+// flips once, at the nonlinear threshold of docs/references.md, for both integrators.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// A block that cannot rock (mu < a/b) slides exactly as Newmark's rigid block (REFERENCES.md).
+// A block that cannot rock (mu < a/b) slides exactly as Newmark's rigid block (docs/references.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,7 +41,7 @@ TEST(Newmark, RectangularPulseSlipMatchesClosedForm) {
 }
 
 TEST(Newmark, HalfSinePulseSlipMatchesReference) {
-  // A sin(omega t) for half a period (sine_pulse, cycles = 0.5): REFERENCES.md values.
+  // A sin(omega t) for half a period (sine_pulse, cycles = 0.5): docs/references.md values.
   struct Case { double A, N, omega, slip; };
   for (const Case c : {Case{0.5, 0.2, std::numbers::pi, 1.123778},
                        Case{1.0, 0.3, 2 * std::numbers::pi, 0.950781},
@@ -57,8 +57,8 @@ TEST(Newmark, HalfSinePulseSlipMatchesReference) {
 }
 
 TEST(Newmark, OneCycleSineSlidesBothWays) {
-  // Two-way sliding: net -0.081692 m (episodes -0.933305 then +0.851613 in REFERENCES' sign; our
-  // positive lambda pushes the block to +x, so the first episode is +0.933305).
+  // Two-way sliding (docs/references.md): a positive lambda pushes the block to +x, so the episodes
+  // are +0.933305 then -0.851613 m, net +0.081692 m.
   const Summary s = simulate(stocky(0.2, SinePulse{0.5, 2.0, 1.0}, 6.0));
   EXPECT_NEAR(std::abs(s.final_slide), 0.081692, 1e-6);
   EXPECT_NEAR(s.max_abs_slide, 0.933305, 1e-6);

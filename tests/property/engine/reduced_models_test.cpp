@@ -1,6 +1,6 @@
 // The one-degree-of-freedom models against the full model where they must agree, against their own
-// closed forms, and "auto" against the full model over random scenes (DESIGN.md: pruning must never
-// change a result).
+// closed forms, and "auto" against the full model over random scenes (docs/physics.md: pruning must
+// never change a result).
 #include <gtest/gtest.h>
 
 #include <cmath>

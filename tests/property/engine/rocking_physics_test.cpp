@@ -37,8 +37,8 @@ TEST_P(HousnerRatio, AngularVelocityRatioAcrossImpactIsOneMinusThreeHalvesSinSqu
 INSTANTIATE_TEST_SUITE_P(AspectRatios, HousnerRatio, ::testing::Values(0.5, 0.25, 0.1));
 
 TEST(HousnerRocking, QuarterPeriodFromRestMatchesTheExactIntegral) {
-  // REFERENCES.md: p T for alpha = 26.565 deg at theta0/alpha = 0.1, 0.5, 0.9; the first impact
-  // comes a quarter period after release.
+  // docs/references.md: p T for alpha = 26.565 deg at theta0/alpha = 0.1, 0.5, 0.9; the first
+  // impact comes a quarter period after release.
   const double a = 0.5, b = 1.0, alpha = std::atan(a / b), p = housner_p(a, b);
   const double expected[][2] = {{0.1, 1.897113}, {0.5, 5.301239}, {0.9, 11.992385}};
   for (const auto& [fraction, pT] : expected) {
@@ -96,7 +96,8 @@ TEST(Impacts, KineticEnergyNeverIncreasesAcrossAnImpact) {
 }
 
 TEST(Flight, IsAParabolaWithConstantAngularVelocity) {
-  // e > 0 at a rocking impact throws the block into the air (REFERENCES.md: both corners leave).
+  // e > 0 at a rocking impact throws the block into the air (docs/references.md: both corners
+  // leave).
   const auto run = simulate_with_history(free_rocking(0.5, 1.0, -0.3, 5.0, 0.6, 1.5), 0.0005);
   const double g = 9.81;
   int rows = 0;
@@ -116,9 +117,9 @@ TEST(Flight, IsAParabolaWithConstantAngularVelocity) {
 }
 
 TEST(Flight, SameCornerLandsAgainAfterTheReferenceTime) {
-  // REFERENCES.md: a/b = 0.5, b = 1, e = 0.6, a rocking block reaching theta = 0 at 1 rad/s makes a
-  // sticking impact, flies, and the same corner lands again 0.125829 s later. Release it from the
-  // tilt whose potential energy gives exactly 1 rad/s at theta = 0.
+  // docs/references.md: a/b = 0.5, b = 1, e = 0.6, a rocking block reaching theta = 0 at 1 rad/s
+  // makes a sticking impact, flies, and the same corner lands again 0.125829 s later. Release it
+  // from the tilt whose potential energy gives exactly 1 rad/s at theta = 0.
   const double a = 0.5, b = 1.0, alpha = std::atan(a / b), p = housner_p(a, b);
   const double theta0 = alpha - std::acos(std::cos(alpha) + 1.0 / (2 * p * p));
   const auto run = simulate_with_history(free_rocking(a, b, -theta0, 5.0, 0.6, 1.0), 0.001);

@@ -67,7 +67,8 @@ TEST(Invariance, ResultsDoNotDependOnTheMass) {
 
 TEST(Similarity, ScaledBlocksGiveTheSameRotationInScaledTime) {
   // Lengths times k and the excitation's time axis times sqrt(k) at the same accelerations:
-  // theta_k(sqrt(k) t) = theta_1(t), slips scale by k (DESIGN.md, Dimitrakopoulos & DeJong 2012).
+  // theta_k(sqrt(k) t) = theta_1(t), slips scale by k (docs/references.md, Dimitrakopoulos &
+  // DeJong 2012).
   for (const Scene& base : varied_scenes()) {
     for (const double k : {0.01, 9.0}) {
       Scene scaled = base;

@@ -1,7 +1,7 @@
 // Vertical ground motion: gravity in the ground's frame becomes g (1 + lambda_v). Checked against
 // the similarity it implies (a constant lambda_v is the same scene with g' = g (1 + c) and
 // lambda' = lambda / (1 + c)), the closed-form lift-off flight, and the onset thresholds of
-// REFERENCES.md with g replaced by g (1 + lambda_v).
+// docs/references.md with g replaced by g (1 + lambda_v).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // The paper's type A dam block (configs/dam_block_type_a.json) under its section 4 pulse,
 // lambda = A cos(pi t) for 0 <= t < 2 s with mu = 1.05, against what the paper reports where a
 // rigid block on rigid ground can be compared with its finite-element dam (which also shakes the
-// crest more than the ground: its numbers are not ours to match, see README.md).
+// crest more than the ground: its numbers are not ours to match, see docs/validation.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>

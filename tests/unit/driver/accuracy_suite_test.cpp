@@ -201,7 +201,8 @@ TEST(AccuracyMetrics, StatisticsOverScenes) {
 }
 
 // Housner's free rocking from rest at theta0 reaches theta = 0 after a quarter of the exact period
-// of REFERENCES.md: t = Int_0^theta0 dtheta / (p sqrt(2 [cos(alpha - theta0) - cos(alpha - theta)])).
+// of docs/references.md:
+//   t = Int_0^theta0 dtheta / (p sqrt(2 [cos(alpha - theta0) - cos(alpha - theta)])).
 // With theta = theta0 (1 - s^2) the integrand is smooth on [0, 1], and Simpson's rule converges fast.
 double free_rocking_quarter_period(const Scene& scene) {
   const double a = scene.block.half_width, b = scene.block.half_height;
@@ -219,7 +220,7 @@ double free_rocking_quarter_period(const Scene& scene) {
   return sum * h / 3;
 }
 
-// The reference of Newmark's scenes matches the closed forms of REFERENCES.md to their six digits,
+// The reference of Newmark's scenes matches the closed forms of docs/references.md to six digits,
 // the free-rocking one the exact quarter period, and the check method (gsl_rk8pd) agrees with it.
 TEST(AccuracyStudy, ReferenceMatchesClosedFormsAndItsCheck) {
   const AccuracySuite full = read_accuracy_suite(suite_path);

@@ -297,7 +297,7 @@ TEST(StudyFragility, CountsPerLevelExcludeFailedSamples) {
 }
 
 TEST(StudyFragility, WilsonIntervalAndFitMatchTheReferenceData) {
-  // REFERENCES.md (Baker 2015): levels 0.2 .. 1.0, n = 40, z = 0 0 0 4 6 13 12 16 ->
+  // docs/references.md (Baker 2015): levels 0.2 .. 1.0, n = 40, z = 0 0 0 4 6 13 12 16 ->
   // theta = 1.076116, beta = 0.429237, -ln L = 10.797705; Wilson 16/40 -> (0.2635, 0.5540).
   const std::vector<double> levels = {0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0};
   const std::vector<int> z = {0, 0, 0, 4, 6, 13, 12, 16};

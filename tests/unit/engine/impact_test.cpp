@@ -1,4 +1,4 @@
-// The corner impact law against closed forms (Housner, REFERENCES.md), the paper's Table 2.1
+// The corner impact law against closed forms (Housner, docs/references.md), the paper's Table 2.1
 // re-derived independently, the energy identity of a corner impulse, and symmetries.
 #include "engine/contact/impact.hpp"
 
@@ -60,7 +60,7 @@ TEST(CornerImpact, HousnerRatioWithoutBounceOrSlip) {
     const double alpha = std::atan(a / b);
     const double eta = 1.0 - 1.5 * std::pow(std::sin(alpha), 2);
     EXPECT_NEAR(v.omega / omega, eta, 1e-12) << "a/b = " << c.a_over_b;
-    EXPECT_NEAR(v.omega / omega, c.eta_printed, 5e-7);  // REFERENCES.md prints 6 digits
+    EXPECT_NEAR(v.omega / omega, c.eta_printed, 5e-7);  // docs/references.md prints 6 digits
     const CornerVelocity landed = corner_velocity(v, -a, -b);
     EXPECT_NEAR(landed.u_x, 0.0, 1e-12);
     EXPECT_NEAR(landed.u_y, 0.0, 1e-12);
@@ -74,7 +74,8 @@ TEST(CornerImpact, HousnerRatioWithoutBounceOrSlip) {
   }
 }
 
-// REFERENCES.md: a/b = 0.5, b = 1, e = 0.6, sticking corner at a flat impact, theta'- = 1 rad/s.
+// docs/references.md: a/b = 0.5, b = 1, e = 0.6, sticking corner at a flat impact,
+// theta'- = 1 rad/s.
 TEST(CornerImpact, FlatImpactWithRestitutionMatchesReferences) {
   const double a = 0.5, b = 1.0;
   const Body body = rectangle_left_corner(a, b, 3.0);

@@ -1,5 +1,6 @@
-// Binomial confidence intervals against REFERENCES.md's check values, closed forms at the ends, the
-// equations that define each interval (solved here independently of the code) and exact coverage.
+// Binomial confidence intervals against the check values of docs/references.md, closed forms at
+// the ends, the equations that define each interval (solved here independently of the code) and
+// exact coverage.
 #include "postproc/fragility/binomial_interval.hpp"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,7 @@ constexpr double z_90 = 1.6448536269514722;
 constexpr double z_95 = 1.9599639845400542;
 constexpr double z_99 = 2.5758293035489004;
 
-// REFERENCES.md prints four digits: half a unit in the last one.
+// docs/references.md prints four digits: half a unit in the last one.
 constexpr double printed = 0.5e-4;
 
 // P(X = k) for X ~ Binomial(n, p), from log-gamma in long double.

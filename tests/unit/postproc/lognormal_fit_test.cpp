@@ -1,4 +1,4 @@
-// The lognormal fragility fit against Baker's (2015) check data (REFERENCES.md), against a
+// The lognormal fragility fit against Baker's (2015) check data (docs/references.md), against a
 // likelihood written here from the definition (std::erfc, not the library's tail-safe forms), and
 // through each degenerate case, where the likelihood itself is probed to show the maximum is missing.
 #include "postproc/fragility/lognormal_fit.hpp"
@@ -21,7 +21,7 @@ struct Data {
 const Data baker{
     {0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0}, std::vector<std::int64_t>(8, 40), {0, 0, 0, 4, 6, 13, 12, 16}};
 
-// REFERENCES.md prints six decimals: half a unit in the last one.
+// docs/references.md prints six decimals: half a unit in the last one.
 constexpr double printed = 0.5e-6;
 
 double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
