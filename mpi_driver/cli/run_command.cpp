@@ -93,12 +93,9 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   StudyConfig config;
   try {
     config = read_study_config(options.study_path, {options.output, options.samples_per_level});
-  } catch (const ConfigError&) {
+  } catch (const InvalidInput&) {
     if (rank == 0) throw;
     return exit_code_bad_input;
-  } catch (const std::system_error&) {
-    if (rank == 0) throw;
-    return 1;
   }
 
   RunSettings settings;

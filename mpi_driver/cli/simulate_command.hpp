@@ -27,7 +27,7 @@ struct SimulateOptions {
 };
 
 // Runs the command and returns its exit code: 0, or exit_code_simulation_failed. Throws
-// ConfigError for a bad scene, std::system_error when the scene cannot be read and FileError
+// ConfigError for a bad scene, InputFileError when the scene cannot be read and FileError
 // when the history cannot be written.
 int run_simulate(const SimulateOptions& options, std::ostream& out);
 

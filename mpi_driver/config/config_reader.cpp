@@ -2,13 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
-#include <system_error>
 
+#include "mpi_driver/config/input_file.hpp"
 #include "sampling/validation.hpp"  // format_number
 
 namespace blockfrag {
@@ -469,6 +466,32 @@ class DocumentBuilder final : public nlohmann::json_sax<json> {
   std::vector<JsonPointer> duplicates_;
 };
 
+// The offset of the bracket that opens level max_depth + 1, outside strings; none if the text
+// stays within max_depth levels. One pass, no recursion: a hostile file cannot make it slow.
+std::optional<std::size_t> nesting_beyond(std::string_view text, std::size_t max_depth) {
+  std::size_t depth = 0;
+  bool in_string = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) return i;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::nullopt;
+}
+
 // nlohmann counts the characters read up to and including the one that broke the parse; when that
 // one closes a string (a key after a missing comma, say), the string's opening quote is the place.
 std::size_t error_offset(std::string_view text, std::size_t characters_read) {
@@ -509,6 +532,12 @@ std::string parse_error_reason(const std::string& what) {
 }  // namespace
 
 json parse_json_text(std::string_view text, const std::string& source) {
+  if (const auto too_deep = nesting_beyond(text, kMaxJsonDepth)) {
+    const auto [line, column] = line_and_column(text, *too_deep + 1);
+    throw ConfigError({source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                       ": malformed JSON: nested deeper than " + std::to_string(kMaxJsonDepth) +
+                       " levels"});
+  }
   json document;
   DocumentBuilder builder(document);
   if (!json::sax_parse(text, &builder)) {
@@ -523,12 +552,7 @@ json parse_json_text(std::string_view text, const std::string& source) {
 }
 
 json read_json_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::system_error(errno, std::generic_category(), "cannot open " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw std::system_error(errno, std::generic_category(), "cannot read " + path.string());
-  return parse_json_text(text.str(), path.string());
+  return parse_json_text(read_input_file(path, {kMaxConfigBytes}), path.string());
 }
 
 }  // namespace blockfrag

@@ -192,10 +192,18 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 // The candidate a typo most likely meant, if any is close enough to suggest.
 std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates);
 
-// Parses JSON text. Malformed text throws ConfigError "source:line:column: malformed JSON: why";
-// duplicate keys (which nlohmann would resolve silently to the last) throw ConfigError too.
+// A config nests at most this deep (a scene's deepest value is 4 levels down): a deeper document
+// is refused before it is parsed, since each level costs the parser time and memory.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+// A config file is at most this large (a 10,000-vertex polygon takes under 1 MB).
+inline constexpr std::size_t kMaxConfigBytes = 64u << 20;
+
+// Parses JSON text. Malformed text, or text nested deeper than kMaxJsonDepth, throws ConfigError
+// "source:line:column: malformed JSON: why"; duplicate keys (which nlohmann would resolve silently
+// to the last) throw ConfigError too.
 nlohmann::json parse_json_text(std::string_view text, const std::string& source);
-// Reads and parses a file, named in messages as given. Throws std::system_error if it cannot be read.
+// Reads (mpi_driver/config/input_file.hpp) and parses a file, named in messages as given. Throws
+// InputFileError if it is not a readable regular file of at most kMaxConfigBytes.
 nlohmann::json read_json_file(const std::filesystem::path& path);
 
 }  // namespace blockfrag

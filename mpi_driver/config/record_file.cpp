@@ -2,29 +2,42 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <optional>
+
+#include "engine/scene/parameter_domains.hpp"
+#include "mpi_driver/config/input_file.hpp"
 
 namespace blockfrag {
 
 namespace {
 
-// A file's lines, numbered from 1, without their line ends (LF or CRLF).
+// A file's lines, numbered from 1, without their line ends (LF or CRLF). A record is text: a NUL
+// byte means a binary file or a damaged one.
 std::vector<std::string> read_lines(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw RecordError(name, 0, "no such file");
-  if (std::filesystem::is_directory(file, ec)) throw RecordError(name, 0, "is a folder, not a record file");
-  std::ifstream in(file);
-  if (!in) throw RecordError(name, 0, "cannot be opened for reading");
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
+  std::string content;
+  try {
+    content = read_input_file(file, {kMaxRecordBytes});
+  } catch (const InputFileError& error) {
+    // The reader's message starts with the file's name: keep only its reason.
+    const std::string what = error.what();
+    throw RecordError(name, 0, what.substr(std::min(what.size(), name.size() + 2)));
   }
-  if (in.bad()) throw RecordError(name, lines.size() + 1, "read error");
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < content.size()) {
+    std::size_t end = content.find('\n', start);
+    if (end == std::string::npos) end = content.size();
+    std::string line = content.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos) {
+      throw RecordError(name, lines.size() + 1, "contains a NUL byte (a record is a text file)");
+    }
+    lines.push_back(std::move(line));
+    start = end + 1;
+  }
   return lines;
 }
 
@@ -44,14 +57,24 @@ std::string upper(std::string text) {
   return text;
 }
 
-std::string in_quotes(const std::string& text) { return "\"" + text + "\""; }
+// A file's text in a message: at most a short printable excerpt (input_file.hpp).
+std::string in_quotes(const std::string& text) { return "\"" + printable_excerpt(text) + "\""; }
 
-// A number that is the whole token: refuses words, "1.5x", and (strtod accepts them) nan and inf.
+// A decimal number that is the whole token, with an optional sign: refuses words, "1.5x", hex
+// floats ("0x1p3"), nan and inf.
 double parse_number(const std::string& token, const std::string& file, std::size_t line) {
-  char* end = nullptr;
-  const double value = std::strtod(token.c_str(), &end);
-  if (end == token.c_str() || *end != '\0') throw RecordError(file, line, "not a number: " + in_quotes(token));
-  if (!std::isfinite(value)) throw RecordError(file, line, "not a finite number: " + in_quotes(token));
+  const char* first = token.data();
+  const char* last = token.data() + token.size();
+  // from_chars takes a '-' but no '+'; records may write one.
+  if (last - first > 1 && first[0] == '+' && first[1] != '-') ++first;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(first, last, value, std::chars_format::general);
+  if (error == std::errc::result_out_of_range || (error == std::errc{} && !std::isfinite(value))) {
+    throw RecordError(file, line, "not a finite number: " + in_quotes(token));
+  }
+  if (error != std::errc{} || end != last) {
+    throw RecordError(file, line, "not a number: " + in_quotes(token));
+  }
   return value;
 }
 
@@ -89,11 +112,16 @@ Header read_header_counts(const std::string& text, const std::string& file) {
                           in_quotes(text));
   }
   const double count = parse_number(*npts, file, line);
-  if (!(count > 0) || count != std::floor(count) || count > 1e9) {
+  // Each value takes at least two bytes ("0 "): no file under the size cap holds more.
+  if (!(count > 0) || count != std::floor(count) || count > kMaxRecordBytes / 2.0) {
     throw RecordError(file, line, "NPTS must be a positive whole number (got " + in_quotes(*npts) + ")");
   }
   const double step = parse_number(*dt, file, line);
   if (!(step > 0)) throw RecordError(file, line, "DT must be > 0 (got " + in_quotes(*dt) + ")");
+  if ((count - 1) * step > domain::record_time.high) {
+    throw RecordError(file, line, "the record lasts (NPTS - 1) DT = " + format_number((count - 1) * step) +
+                                      " s, more than " + format_number(domain::record_time.high) + " s");
+  }
   return {static_cast<std::size_t>(count), step};
 }
 
@@ -118,7 +146,8 @@ Accelerogram read_at2(const std::vector<std::string>& lines, const std::string& 
   if (header.points < 2) throw RecordError(file, 4, "a record needs at least 2 samples (NPTS = 1)");
 
   Accelerogram record;
-  record.acceleration_g.reserve(header.points);
+  // NPTS is the file's word: reserve no more than a plausible record before the values are read.
+  record.acceleration_g.reserve(std::min<std::size_t>(header.points, std::size_t{1} << 20));
   for (std::size_t i = header_lines; i < lines.size(); ++i) {
     for (const std::string& token : split(lines[i], " \t")) {
       if (record.acceleration_g.size() == header.points) {
@@ -152,10 +181,15 @@ Accelerogram read_two_columns(const std::vector<std::string>& lines, const std::
       throw RecordError(file, line,
                         "expected 2 numbers (time acceleration_g), found " + std::to_string(values.size()));
     }
-    if (values[0] < 0) throw RecordError(file, line, "time must be >= 0 (got " + tokens[0] + ")");
+    if (values[0] < 0) throw RecordError(file, line, "time must be >= 0 (got " + printable_excerpt(tokens[0]) + ")");
+    if (values[0] > domain::record_time.high) {
+      throw RecordError(file, line, "time must be <= " + format_number(domain::record_time.high) + " s (got " +
+                                        printable_excerpt(tokens[0]) + ")");
+    }
     if (!record.times.empty() && !(values[0] > record.times.back())) {
       throw RecordError(file, line,
-                        "times must increase strictly (" + tokens[0] + " follows " + previous_time + ")");
+                        "times must increase strictly (" + printable_excerpt(tokens[0]) + " follows " +
+                            printable_excerpt(previous_time) + ")");
     }
     previous_time = tokens[0];
     record.times.push_back(values[0]);

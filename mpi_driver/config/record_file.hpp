@@ -24,6 +24,9 @@ class RecordError : public InvalidInput {
   std::size_t line_;
 };
 
+// A record file is at most this large: 256 MB, 17 hours of a 3-component 200 Hz record in text.
+inline constexpr std::size_t kMaxRecordBytes = 256u << 20;
+
 // Reads a record, choosing the format by the extension: ".AT2" (any case) is PEER NGA (4 header
 // lines, the 4th giving NPTS and DT, then NPTS values in g, any number per line, sample k at k DT);
 // anything else is two columns "time acceleration_g" per line, separated by whitespace or commas,

@@ -33,7 +33,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source)
 Scene scene_from_json(const nlohmann::json& value, const JsonPointer& path, ConfigErrors& errors,
                       const std::filesystem::path& base_folder);
 
-// Reads and checks a scene file (ConfigError for a malformed or invalid one, std::system_error if
+// Reads and checks a scene file (ConfigError for a malformed or invalid one, InputFileError if
 // it cannot be read).
 Scene read_scene_file(const std::filesystem::path& path);
 

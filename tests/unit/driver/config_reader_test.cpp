@@ -2,11 +2,11 @@
 // get a hint, malformed text gets line:column. Expected messages are written out by hand from the
 // documented format, and positions are counted by hand in the test texts.
 #include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/input_file.hpp"
 
 #include <cmath>
 #include <limits>
 #include <string>
-#include <system_error>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -284,7 +284,7 @@ TEST(ParseJsonText, BuildsTheSameDocumentAsNlohmann) {
 }
 
 TEST(ReadJsonFile, MissingFileIsASystemError) {
-  EXPECT_THROW(read_json_file("/nonexistent/scene.json"), std::system_error);
+  EXPECT_THROW(read_json_file("/nonexistent/scene.json"), InputFileError);
 }
 
 TEST(ReadJsonFile, NamesTheFileAsGiven) {

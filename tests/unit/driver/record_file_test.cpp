@@ -7,7 +7,11 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <fstream>
 #include <string>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +86,11 @@ const std::map<std::string, Broken> broken = {
     {"negative_time.txt", {1, "time must be >= 0 (got -0.01)"}},
     {"one_sample.txt", {3, "a record needs at least 2 samples (found 1)"}},
     {"empty.txt", {1, "a record needs at least 2 samples (found 0)"}},
+    {"hex_float.AT2", {5, "not a number: \"0x1p3\""}},
+    {"nul_byte.AT2", {5, "contains a NUL byte (a record is a text file)"}},
+    {"huge_dt.AT2", {4, "the record lasts (NPTS - 1) DT = inf s, more than 1e+05 s"}},
+    {"huge_npts.AT2", {4, "NPTS must be a positive whole number (got \"1000000000\")"}},
+    {"time_too_late.csv", {2, "time must be <= 1e+05 s (got 2e5)"}},
 };
 
 void expect_refused(const std::filesystem::path& file, const Broken& expected) {
@@ -117,6 +126,38 @@ TEST(RecordFile, RefusesEveryBrokenFileNamingItsLineAndTheReason) {
 TEST(RecordFile, RefusesAMissingFileAndAFolderWithoutALine) {
   expect_refused(bad_records / "no_such_record.AT2", {0, "no such file"});
   expect_refused(records, {0, "is a folder"});
+}
+
+// A FIFO would block the read forever and a device never ends: both are refused before any read.
+TEST(RecordFile, RefusesAFifoAndADeviceWithoutReadingThem) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("blockfrag_fifo_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const std::filesystem::path fifo = folder / "record.txt";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expect_refused(fifo, {0, "is a FIFO, not a regular file"});
+  std::filesystem::remove_all(folder);
+  expect_refused("/dev/zero", {0, "is a character device, not a regular file"});
+}
+
+// A message quotes at most a short printable excerpt of the file: a record that is really a
+// secret, or a binary, or a 10 MB line, is not echoed.
+TEST(RecordFile, QuotesAtMostSixtyPrintableCharactersOfTheFile) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("blockfrag_long_line_" + std::to_string(::getpid()) + ".txt");
+  {
+    std::ofstream out(file);
+    out << "0.0 0.1\n0.01 secret\x01" << std::string(10'000'000, 'x') << "\n";
+  }
+  try {
+    read_accelerogram(file);
+    ADD_FAILURE() << "accepted";
+  } catch (const RecordError& error) {
+    const std::string message = error.what();
+    EXPECT_LT(message.size(), file.string().size() + 120) << message.substr(0, 200);
+    EXPECT_NE(message.find("not a number: \"secret?xxxx"), std::string::npos) << message.substr(0, 200);
+    EXPECT_NE(message.find("...\""), std::string::npos);
+  }
+  std::filesystem::remove(file);
 }
 
 }  // namespace
