@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "engine/simulate.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/parallel/progress.hpp"
@@ -16,6 +17,7 @@
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/parallel/study_lock.hpp"
 #include "mpi_driver/io/study_output.hpp"
+#include "mpi_driver/study/failure_report.hpp"
 
 namespace blockfrag {
 namespace {
@@ -49,23 +51,37 @@ double checkpoint_pause_from_environment() {
 
 enum class Verdict : int { run = 0, already_complete = 1, refused = 2 };
 
-// Rank 0 looks at an existing output: the same study already finished, or another study's file
-// that this run would replace. A checkpoint means the run did not finish: run (and rewrite).
-Verdict judge_existing_output(const StudyConfig& config, const std::filesystem::path& checkpoint,
-                              std::string& message) {
-  const auto folder = config.output.parent_path();
-  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-    // Found now rather than when the first checkpoint or the output is due.
-    message = config.output.string() + ": the folder " + folder.string() + " does not exist";
+// Rank 0 looks at the output before any work: a folder it can write in, no link at its name
+// (unless the link leads to this study's finished output), and no file there that belongs to
+// anything but this study. A finished output of this study means there is nothing to do. Whatever
+// checkpoint lies beside it, another study's output is never replaced.
+Verdict judge_existing_output(const StudyConfig& config, std::string& message) {
+  const std::string output = config.output.string();
+  if (const auto problem = folder_write_problem(config.output)) {
+    message = output + ": " + *problem;
     return Verdict::refused;
   }
-  if (!std::filesystem::exists(config.output) || std::filesystem::exists(checkpoint)) return Verdict::run;
+  std::error_code error;
+  const auto status = std::filesystem::symlink_status(config.output, error);
+  if (!std::filesystem::exists(status)) return Verdict::run;
+  const bool link = std::filesystem::is_symlink(status);
+  if (!link && !std::filesystem::is_regular_file(status)) {
+    message = output + ": refusing to replace something that is not a regular file; choose another --output";
+    return Verdict::refused;
+  }
   const std::string hash = output_config_hash(config.output);
   if (hash == hash_to_hex(config.hash)) {
-    message = "study already complete: " + config.output.string() + " (config hash " + hash + ")";
+    message = "study already complete: " + output + " (config hash " + hash + ")";
     return Verdict::already_complete;
   }
-  message = config.output.string() + ": refusing to replace an existing file that is not this study's output" +
+  if (link) {
+    message = output + ": is a symbolic link" +
+              (hash.empty() ? std::string(" that does not lead to a blockfrag study output")
+                            : " to another study's output (config hash " + hash + ")") +
+              "; blockfrag replaces only its own files: remove the link or choose another --output";
+    return Verdict::refused;
+  }
+  message = output + ": refusing to replace an existing file that is not this study's output" +
             (hash.empty() ? std::string(" (not a blockfrag study output)")
                           : " (config hash " + hash + ", this config " + hash_to_hex(config.hash) + ")") +
             "; remove it or choose another --output";
@@ -109,15 +125,21 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   int verdict = static_cast<int>(Verdict::run);
   std::optional<StudyLock> lock;
   if (rank == 0) {
-    lock.emplace(config.output);
-    // Without the folder the lock cannot be taken either; judge_existing_output says so.
-    const bool other_run = !lock->held() && std::filesystem::exists(lock->path());
-    if (other_run) {
-      message = config.output.string() + ": another run of this study is in progress (it holds " +
-                lock->path().string() + "); wait for it to end, or stop it first";
-      verdict = static_cast<int>(Verdict::refused);
-    } else {
-      verdict = static_cast<int>(judge_existing_output(config, settings.checkpoint, message));
+    verdict = static_cast<int>(judge_existing_output(config, message));
+    if (verdict == static_cast<int>(Verdict::run)) {
+      lock.emplace(config.output);
+      if (lock->busy()) {
+        message = config.output.string() + ": another run of this study is in progress (it holds " +
+                  lock->path().string() + "); wait for it to end, or stop it first";
+        verdict = static_cast<int>(Verdict::refused);
+      } else if (!lock->held()) {
+        message = config.output.string() + ": the lock file " + lock->path().string() + " " + lock->problem();
+        verdict = static_cast<int>(Verdict::refused);
+      } else {
+        // Holding the lock, no other writer of these files runs: a killed one's leftovers can go.
+        remove_stale_temporaries(config.output);
+        remove_stale_temporaries(settings.checkpoint);
+      }
     }
   }
   MPI_Bcast(&verdict, 1, MPI_INT, 0, comm);
@@ -155,13 +177,26 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
     }
     return exit_code_interrupted;
   }
+  int exit_code = exit_code_success;
   if (rank == 0) {
     write_study_output(config.output, config, result.records);
     std::filesystem::remove(settings.checkpoint);
     std::cerr << "wrote " << config.output.string() << " (" << result.computed << " samples computed in this run, "
               << result.checkpoints << " checkpoints taking " << result.checkpoint_seconds << " s)\n";
+    const FailureReport failures = report_failures(config, result.records, engine);
+    if (failures.total() > 0) {
+      std::cerr << failures.failed << " failed and " << failures.rejected << " rejected of "
+                << config.total_samples() << " samples (excluded from the fragility trials); the first:\n";
+      for (const auto& reason : failures.first_reasons) std::cerr << "  " << reason << '\n';
+    }
+    if (too_many_failures(config, failures)) {
+      std::cerr << "more than allowed_failed_fraction = " << config.allowed_failed_fraction
+                << " of the samples gave no verdict: exit code " << exit_code_simulation_failed << '\n';
+      exit_code = exit_code_simulation_failed;
+    }
   }
-  return 0;
+  MPI_Bcast(&exit_code, 1, MPI_INT, 0, comm);
+  return exit_code;
 }
 
 void add_run_command(CLI::App& app, std::function<int()>& command) {

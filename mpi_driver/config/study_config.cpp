@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "sampling/validation.hpp"
@@ -221,8 +222,21 @@ std::vector<double> read_levels(ObjectReader reader) {
   return levels;
 }
 
+// An HDF5 group name of its own: starts with a letter, digit or '_' ("." and ".." name the group
+// itself and its parent), then letters, digits, '_', '-' and '.'.
+// A file name blockfrag can write: not empty, no NUL byte (it would cut the name short), not a
+// folder.
+std::optional<std::string> output_name_problem(const std::string& name) {
+  if (name.empty()) return "must not be empty";
+  if (name.find('\0') != std::string::npos) return "must not contain a NUL byte";
+  const std::filesystem::path path(name);
+  const std::string file = path.filename().string();
+  if (file.empty() || file == "." || file == "..") return "must name a file, not a folder (got \"" + printable_excerpt(name) + "\")";
+  return std::nullopt;
+}
+
 bool valid_group_name(const std::string& name) {
-  if (name.empty()) return false;
+  if (name.empty() || !(std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
   for (const char c : name) {
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
   }
@@ -237,7 +251,8 @@ void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& confi
     LimitState state;
     const auto name = reader.required_string("name");
     if (name && !valid_group_name(*name)) {
-      reader.add_error("name", "must be letters, digits, '_', '-' or '.' (got \"" + *name + "\")");
+      reader.add_error("name", "must start with a letter, digit or '_', then letters, digits, '_', '-' or '.' (got \"" +
+                                   printable_excerpt(*name) + "\")");
     }
     for (const auto& other : config.limit_states) {
       if (name && other.name == *name) reader.add_error("name", "\"" + *name + "\" is used by another limit state");
@@ -298,7 +313,8 @@ json canonical_json(const StudyConfig& config) {
           {"limit_states", limit_states},
           {"seed", config.seed},
           {"output", config.output.string()},
-          {"checkpoint_interval_s", config.checkpoint_interval_s}};
+          {"checkpoint_interval_s", config.checkpoint_interval_s},
+          {"allowed_failed_fraction", config.allowed_failed_fraction}};
 }
 
 }  // namespace
@@ -372,8 +388,13 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
   read_limit_states(root.required_array("limit_states"), root, config);
   config.seed = static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
   const auto output = root.string("output");
-  if (output && output->empty()) root.add_error("output", "must not be empty");
+  if (output) {
+    if (const auto problem = output_name_problem(*output)) root.add_error("output", *problem);
+  }
   if (overrides.output) {
+    if (const auto problem = output_name_problem(overrides.output->string())) {
+      errors.add_message(source + ": --output: " + *problem);
+    }
     config.output = *overrides.output;
   } else if (output) {
     config.output = *output;
@@ -381,14 +402,25 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
     // Without an output key the study writes STUDY.h5 in the working folder.
     config.output = std::filesystem::path(source).stem().string() + ".h5";
   }
-  config.checkpoint_interval_s = root.number_or("checkpoint_interval_s", config.checkpoint_interval_s, positive);
+  config.checkpoint_interval_s =
+      root.number_or("checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
+  config.allowed_failed_fraction =
+      root.number_or("allowed_failed_fraction", config.allowed_failed_fraction, Range::closed(0.0, 1.0));
   root.finish();
+  if (errors.empty() && config.total_samples() > kMaxTotalSamples) {
+    errors.add(JsonPointer("/samples_per_level"),
+               "the study has " + std::to_string(config.intensity.levels.size()) + " levels x " +
+                   std::to_string(config.samples_per_level) + " samples = " +
+                   std::to_string(config.total_samples()) + ", more than the " +
+                   std::to_string(kMaxTotalSamples) + " rank 0 can hold; split it into several studies");
+  }
   errors.throw_if_any();
 
   config.canonical = canonical_json(config);
   json hashed = config.canonical;
   hashed.erase("output");
   hashed.erase("checkpoint_interval_s");
+  hashed.erase("allowed_failed_fraction");
   config.hash = fnv1a64(canonical_text(hashed));
   return config;
 }

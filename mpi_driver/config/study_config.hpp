@@ -82,14 +82,22 @@ struct StudyConfig {
   std::uint64_t seed = 0;
   std::filesystem::path output;
   double checkpoint_interval_s = 60.0;
+  // The fraction of samples that may fail or be rejected before the run's exit code says so (3).
+  double allowed_failed_fraction = 0.0;
 
   nlohmann::json canonical;  // defaults filled, keys sorted
-  std::uint64_t hash = 0;    // of canonical without "output" and "checkpoint_interval_s"
+  // Of canonical without "output", "checkpoint_interval_s" and "allowed_failed_fraction": what
+  // does not change a sample's result does not change the study's identity.
+  std::uint64_t hash = 0;
 
   std::int64_t total_samples() const {
     return static_cast<std::int64_t>(intensity.levels.size()) * samples_per_level;
   }
 };
+
+// A study rank 0 can hold in memory: it keeps every sample's record (88 bytes) until the output is
+// written.
+inline constexpr std::int64_t kMaxTotalSamples = 20'000'000;
 
 // The command line's options that replace config values (before canonicalisation and hashing).
 struct StudyOverrides {

@@ -1,14 +1,15 @@
 #include "mpi_driver/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+#include <string>
 #include <thread>
 
 namespace blockfrag {
@@ -19,7 +20,7 @@ std::string system_error_text(const std::string& what, const std::filesystem::pa
 }
 
 void fsync_path(const std::filesystem::path& path, int flags) {
-  const int fd = ::open(path.c_str(), flags);
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
   if (fd < 0) throw FileError(system_error_text("cannot open", path));
   const int status = ::fsync(fd);
   ::close(fd);
@@ -31,25 +32,45 @@ std::filesystem::path folder_of(const std::filesystem::path& path) {
   return parent.empty() ? std::filesystem::path(".") : parent;
 }
 
+std::string temporary_prefix(const std::filesystem::path& target) {
+  return target.filename().string() + ".tmp.";
+}
+
+// A name nobody else has or can guess: mkstemp makes the file (exclusively) and it is removed at
+// once, so that the writer can create it exclusively in turn (HDF5 cannot take a descriptor).
+std::filesystem::path fresh_temporary_name(const std::filesystem::path& target) {
+  std::string name = (folder_of(target) / (temporary_prefix(target) + "XXXXXX")).string();
+  const int fd = ::mkstemp(name.data());
+  if (fd < 0) throw FileError(system_error_text("cannot create a temporary file next to", target));
+  ::close(fd);
+  ::unlink(name.c_str());
+  return name;
+}
+
 }  // namespace
 
-std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
-  auto temporary = path;
-  temporary += ".tmp";
-  return temporary;
+int create_exclusively(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0) throw FileError(system_error_text("cannot create", path));
+  return fd;
 }
 
 void replace_file_atomically(const std::filesystem::path& path,
                              const std::function<void(const std::filesystem::path&)>& write_temporary,
                              const AtomicWriteHooks& hooks) {
-  const auto temporary = temporary_path_for(path);
-  write_temporary(temporary);
-  fsync_path(temporary, O_RDONLY);
-  if (hooks.pause_before_rename_s > 0.0) {
-    std::this_thread::sleep_for(std::chrono::duration<double>(hooks.pause_before_rename_s));
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    throw FileError(system_error_text("cannot rename " + temporary.string() + " to", path));
+  const auto temporary = fresh_temporary_name(path);
+  try {
+    write_temporary(temporary);
+    fsync_path(temporary, O_RDONLY | O_NOFOLLOW);
+    if (hooks.pause_before_rename_s > 0.0) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(hooks.pause_before_rename_s));
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+      throw FileError(system_error_text("cannot rename " + temporary.string() + " to", path));
+    }
+  } catch (...) {
+    ::unlink(temporary.c_str());
+    throw;
   }
   fsync_path(folder_of(path), O_RDONLY | O_DIRECTORY);
 }
@@ -59,21 +80,51 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   replace_file_atomically(
       path,
       [&](const std::filesystem::path& temporary) {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) throw FileError("cannot write " + temporary.string());
+        const int fd = create_exclusively(temporary);
+        std::size_t done = 0;
+        while (done < bytes.size()) {
+          const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
+          if (wrote < 0 && errno == EINTR) continue;
+          if (wrote < 0) {
+            const std::string why = system_error_text("cannot write", temporary);
+            ::close(fd);
+            throw FileError(why);
+          }
+          done += static_cast<std::size_t>(wrote);
+        }
+        if (::close(fd) != 0) throw FileError(system_error_text("cannot write", temporary));
       },
       hooks);
 }
 
-std::string read_whole_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError("cannot open " + path.string());
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (!in && !in.eof()) throw FileError("cannot read " + path.string());
-  return content.str();
+std::optional<std::string> folder_write_problem(const std::filesystem::path& target) {
+  const auto folder = folder_of(target);
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) {
+    return "the folder " + folder.string() + " does not exist";
+  }
+  std::string probe = (folder / (temporary_prefix(target) + "XXXXXX")).string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0) return "cannot create a file in the folder " + folder.string() + " (" + std::strerror(errno) + ")";
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return std::nullopt;
+}
+
+int remove_stale_temporaries(const std::filesystem::path& target) {
+  const std::string prefix = temporary_prefix(target);
+  int removed = 0;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder_of(target), error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0 || name.size() != prefix.size() + 6) continue;
+    struct stat status {};
+    if (::lstat(entry.path().c_str(), &status) == 0 && S_ISREG(status.st_mode) &&
+        ::unlink(entry.path().c_str()) == 0) {
+      ++removed;
+    }
+  }
+  return removed;
 }
 
 }  // namespace blockfrag

@@ -79,7 +79,9 @@ Handle utf8_string_type() {
 Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : name_(path.string()) {
   silence_hdf5_error_printing();
   const auto properties = creation_properties(H5P_FILE_CREATE, name_);
-  file_ = H5Fcreate(name_.c_str(), H5F_ACC_TRUNC, properties.get(), H5P_DEFAULT);
+  // Exclusive: the file must not exist (atomic_file.hpp gives a fresh name), so nothing planted
+  // there, a link included, is ever opened.
+  file_ = H5Fcreate(name_.c_str(), H5F_ACC_EXCL, properties.get(), H5P_DEFAULT);
   if (file_ < 0) throw Hdf5Error("HDF5: cannot create " + name_);
 }
 

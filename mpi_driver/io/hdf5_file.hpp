@@ -20,7 +20,7 @@ class Hdf5Error : public FileFailure {
 
 class Hdf5Writer {
  public:
-  // Creates the file, replacing any file at path.
+  // Creates the file, which must not exist yet (exclusive: a link or file there is an error).
   explicit Hdf5Writer(const std::filesystem::path& path);
   ~Hdf5Writer();
   Hdf5Writer(const Hdf5Writer&) = delete;

@@ -1,7 +1,7 @@
 #include "mpi_driver/io/history_csv.hpp"
 
 #include <charconv>
-#include <fstream>
+#include <sstream>
 
 #include "mpi_driver/io/atomic_file.hpp"
 
@@ -33,12 +33,9 @@ void write_history_csv(std::ostream& out, const std::vector<HistoryRow>& rows) {
 }
 
 void write_history_csv_file(const std::filesystem::path& path, const std::vector<HistoryRow>& rows) {
-  replace_file_atomically(path, [&rows](const std::filesystem::path& temporary) {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    write_history_csv(out, rows);
-    out.close();
-    if (!out) throw FileError("cannot write " + temporary.string());
-  });
+  std::ostringstream text;
+  write_history_csv(text, rows);
+  write_file_atomically(path, text.str());
 }
 
 }  // namespace blockfrag

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 
 namespace blockfrag {
@@ -76,9 +77,16 @@ void write_checkpoint(const std::filesystem::path& path, const CheckpointState& 
   write_file_atomically(path, encode_checkpoint(state), hooks);
 }
 
-std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) return std::nullopt;
-  return decode_checkpoint(read_whole_file(path), path.string());
+std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path, std::int64_t total_samples) {
+  std::error_code error;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return std::nullopt;
+  const std::size_t largest =
+      header_size + static_cast<std::size_t>(std::max<std::int64_t>(total_samples, 0)) * sizeof(SampleRecord) + 8;
+  try {
+    return decode_checkpoint(read_input_file(path, {largest, false}), path.string());
+  } catch (const InputFileError& refused) {
+    throw CheckpointError(std::string(refused.what()) + "; remove it to start the study over");
+  }
 }
 
 std::filesystem::path checkpoint_path_for(const std::filesystem::path& output) {

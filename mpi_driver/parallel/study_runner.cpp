@@ -249,7 +249,7 @@ std::optional<CheckpointState> restore(MPI_Comm comm, const StudyConfig& config,
   std::string refusal;
   if (rank == 0) {
     try {
-      restored = read_checkpoint(settings.checkpoint);
+      restored = read_checkpoint(settings.checkpoint, config.total_samples());
     } catch (const std::exception& error) {
       refusal = error.what();
     }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A study killed with SIGKILL at random moments, once certainly inside a checkpoint write (the
-# documented hook BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S holds each write between its complete .tmp file
+# documented hook BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S holds each write between its complete temporary file
 # and the rename), and resumed each time with the same command, ends bitwise identical to an
 # uninterrupted run, with every sample exactly once. SIGTERM writes a checkpoint and exits with code
 # 4 ("interrupted"), and the resume completes; a second run while one is going is refused. A
@@ -108,12 +108,13 @@ mid_run=0
 inside_write=0
 pause=0.2
 start_job
-# Wait until a checkpoint write is paused between its .tmp file and the rename, then kill.
+# Wait until a checkpoint write is paused between its temporary file (study.h5.checkpoint.tmp.XXXXXX)
+# and the rename, then kill.
 for _ in $(seq 1 250); do
-  [[ -e study.h5.checkpoint.tmp ]] && break
+  compgen -G 'study.h5.checkpoint.tmp.*' >/dev/null && break
   sleep 0.02
 done
-[[ -e study.h5.checkpoint.tmp ]] && inside_write=1
+compgen -G 'study.h5.checkpoint.tmp.*' >/dev/null && inside_write=1
 kill -0 "$job" 2>/dev/null && alive=1 || alive=0
 kill_job KILL
 kills=$((kills + 1))
@@ -138,6 +139,8 @@ grep -q "resumed from study.h5.checkpoint: [0-9]* of $total samples already done
   fail "no run resumed from a checkpoint"
 "$PYTHON" "$COMPARE" reference.h5 study.h5 && pass || fail "killed and resumed study differs from the reference"
 [[ ! -e study.h5.checkpoint ]] && pass || fail "the checkpoint is left after completion"
+# The temporary files of the writes the kills interrupted are cleared by the next run's start.
+compgen -G 'study.h5*.tmp.*' >/dev/null && fail "temporary files left: $(ls study.h5*.tmp.*)" || pass
 
 # --- SIGTERM: checkpoint, exit code 4, resume ------------------------------------------------------
 rm -f study.h5 study.h5.checkpoint* job.err

@@ -145,7 +145,7 @@ TEST(StudyRunner, WritesCheckpointsAtTheInterval) {
   const RunResult result = run_study_samples(MPI_COMM_WORLD, tiny_study(), settings, fake_simulate);
   EXPECT_GE(result.checkpoints, 39);
   // The last periodic checkpoint holds every sample but the last one (none is written once all are done).
-  const auto state = read_checkpoint(settings.checkpoint);
+  const auto state = read_checkpoint(settings.checkpoint, tiny_study().total_samples());
   ASSERT_TRUE(state.has_value());
   EXPECT_EQ(state->done.size(), 39u);
 }

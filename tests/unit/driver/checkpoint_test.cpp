@@ -15,6 +15,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "mpi_driver/config/input_file.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
+
 #include "mpi_driver/parallel/study_lock.hpp"
 #include "mpi_driver/parallel/work_distribution.hpp"
 
@@ -96,19 +102,86 @@ TEST(Checkpoint, DuplicateOrOutOfRangeIndicesAreRefused) {
   EXPECT_THROW(decode_checkpoint(encode_checkpoint(outside), "test"), CheckpointError);
 }
 
+std::size_t files_in(const std::filesystem::path& folder) {
+  std::size_t count = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder)) ++count;
+  return count;
+}
+
 TEST(Checkpoint, FileWriteIsAtomicAndLeavesNoTemporary) {
   TemporaryFolder folder;
   const auto path = folder.path() / "study.h5.checkpoint";
-  EXPECT_FALSE(read_checkpoint(path).has_value());
-  // A leftover temporary from a writer killed before its rename is neither read nor in the way.
-  std::ofstream(temporary_path_for(path)) << "half a checkpoint";
-  EXPECT_FALSE(read_checkpoint(path).has_value());
+  EXPECT_FALSE(read_checkpoint(path, 40).has_value());
+  // A leftover temporary from a writer killed before its rename is neither read nor in the way,
+  // and the study's start (holding the lock) clears it.
+  std::ofstream(folder.path() / "study.h5.checkpoint.tmp.a1B2c3") << "half a checkpoint";
+  EXPECT_FALSE(read_checkpoint(path, 40).has_value());
   write_checkpoint(path, some_state());
-  EXPECT_FALSE(std::filesystem::exists(temporary_path_for(path)));
-  const auto back = read_checkpoint(path);
+  EXPECT_EQ(files_in(folder.path()), 2u);  // the checkpoint and the leftover
+  EXPECT_EQ(remove_stale_temporaries(path), 1);
+  EXPECT_EQ(files_in(folder.path()), 1u);
+  const auto back = read_checkpoint(path, 40);
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(back->done.size(), 5u);
   EXPECT_EQ(checkpoint_path_for("out/study.h5"), "out/study.h5.checkpoint");
+}
+
+// The checkpoint is the program's own file: a link, a FIFO, or a file larger than any checkpoint of
+// the study could be is refused, never read.
+TEST(Checkpoint, ReadsOnlyARegularFileOfAPlausibleSize) {
+  TemporaryFolder folder;
+  const auto path = folder.path() / "study.h5.checkpoint";
+  write_checkpoint(folder.path() / "other", some_state());
+  std::filesystem::create_symlink(folder.path() / "other", path);
+  EXPECT_THROW(read_checkpoint(path, 40), CheckpointError);
+  std::filesystem::remove(path);
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  EXPECT_THROW(read_checkpoint(path, 40), CheckpointError);
+  std::filesystem::remove(path);
+  write_checkpoint(path, some_state());  // 5 records: too many for a study of 2 samples
+  EXPECT_THROW(read_checkpoint(path, 2), CheckpointError);
+  EXPECT_NO_THROW(read_checkpoint(path, 40));
+}
+
+// Nothing planted in the output's folder can redirect a write: the temporary file has a fresh
+// name and is created exclusively, and the rename replaces a link at the target, not its target.
+TEST(AtomicFile, APlantedLinkIsNeverFollowed) {
+  TemporaryFolder folder;
+  const auto victim = folder.path() / "victim.txt";
+  std::ofstream(victim) << "precious";
+  const auto target = folder.path() / "out.h5";
+  // The names a writer of the old scheme would have used, and the target itself, all links.
+  for (const char* name : {"out.h5.tmp", "out.h5.checkpoint.tmp"}) {
+    std::filesystem::create_symlink(victim, folder.path() / name);
+  }
+  std::filesystem::create_symlink(victim, target);
+  write_file_atomically(target, "new content");
+  EXPECT_EQ(read_input_file(victim, {100}), "precious");
+  EXPECT_FALSE(std::filesystem::is_symlink(target));
+  EXPECT_EQ(read_input_file(target, {100}), "new content");
+  // A link to a file is never a leftover temporary: it is left alone.
+  EXPECT_EQ(remove_stale_temporaries(folder.path() / "out.h5.tmp"), 0);
+}
+
+TEST(AtomicFile, AFailedWriteLeavesNothingBehind) {
+  TemporaryFolder folder;
+  const auto target = folder.path() / "out.h5";
+  EXPECT_THROW(replace_file_atomically(target,
+                                       [](const std::filesystem::path& temporary) {
+                                         ::close(create_exclusively(temporary));
+                                         throw FileError("disk full");
+                                       }),
+               FileError);
+  EXPECT_EQ(files_in(folder.path()), 0u);
+}
+
+TEST(AtomicFile, FolderProblemsAreFoundBeforeAnyWork) {
+  TemporaryFolder folder;
+  EXPECT_FALSE(folder_write_problem(folder.path() / "out.h5").has_value());
+  EXPECT_EQ(files_in(folder.path()), 0u);  // the probe is gone
+  EXPECT_NE(folder_write_problem(folder.path() / "missing" / "out.h5").value_or("").find("does not exist"),
+            std::string::npos);
+  EXPECT_NE(folder_write_problem("/proc/out.h5").value_or("").find("cannot create a file"), std::string::npos);
 }
 
 TEST(StudyLock, OneHolderAtATimeAndFreeAgainAfterwards) {
@@ -119,9 +192,32 @@ TEST(StudyLock, OneHolderAtATimeAndFreeAgainAfterwards) {
     ASSERT_TRUE(first.held());
     StudyLock second(output);
     EXPECT_FALSE(second.held());
+    EXPECT_TRUE(second.busy());
   }
   StudyLock again(output);
   EXPECT_TRUE(again.held());
+}
+
+// Two spellings of one output (through a linked folder, or with "..") take one lock.
+TEST(StudyLock, IsTakenOnTheCanonicalFolder) {
+  TemporaryFolder folder;
+  std::filesystem::create_directory(folder.path() / "real");
+  std::filesystem::create_directory_symlink(folder.path() / "real", folder.path() / "alias");
+  StudyLock first(folder.path() / "real" / "study.h5");
+  ASSERT_TRUE(first.held());
+  EXPECT_TRUE(StudyLock(folder.path() / "alias" / "study.h5").busy());
+  EXPECT_TRUE(StudyLock(folder.path() / "alias" / ".." / "real" / "study.h5").busy());
+}
+
+TEST(StudyLock, ALinkAtTheLocksNameIsRefusedAndNotFollowed) {
+  TemporaryFolder folder;
+  const auto victim = folder.path() / "victim";
+  std::filesystem::create_symlink(victim, folder.path() / "study.h5.lock");
+  StudyLock lock(folder.path() / "study.h5");
+  EXPECT_FALSE(lock.held());
+  EXPECT_FALSE(lock.busy());
+  EXPECT_NE(lock.problem().find("symbolic link"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(victim));
 }
 
 // --- The work queue ---------------------------------------------------------------------------------
