@@ -1,5 +1,7 @@
 #include "engine/scene/polygon_properties.hpp"
 
+#include "engine/scene/polygon_simplicity.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -28,21 +30,6 @@ double twice_area(const std::vector<Vertex>& v) {
     sum += cross(a[0], a[1], b[0], b[1]);
   }
   return sum;
-}
-
-// Closed segments pq and rs share a point (proper crossing, touching or overlapping).
-bool segments_meet(const Vertex& p, const Vertex& q, const Vertex& r, const Vertex& s) {
-  const double d1 = orientation(r, s, p), d2 = orientation(r, s, q);
-  const double d3 = orientation(p, q, r), d4 = orientation(p, q, s);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
-    return true;
-  }
-  const auto within = [](const Vertex& a, const Vertex& b, const Vertex& c) {  // c on segment ab
-    return std::min(a[0], b[0]) <= c[0] && c[0] <= std::max(a[0], b[0]) &&
-           std::min(a[1], b[1]) <= c[1] && c[1] <= std::max(a[1], b[1]);
-  };
-  return (d1 == 0 && within(r, s, p)) || (d2 == 0 && within(r, s, q)) ||
-         (d3 == 0 && within(p, q, r)) || (d4 == 0 && within(p, q, s));
 }
 
 // The base's left end: of the vertices at the lowest y, the one the counter-clockwise order
@@ -98,14 +85,10 @@ std::optional<PolygonDefect> polygon_defect(const std::vector<Vertex>& v) {
                            "makes a straight corner or repeats a vertex: leave it out"};
     }
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // neighbours share vertex 0
-      if (segments_meet(v[i], v[next(i, n)], v[j], v[next(j, n)])) {
-        return PolygonDefect{-1, "crosses itself (the edges from vertices " + std::to_string(i) +
-                                     " and " + std::to_string(j) + " meet)"};
-      }
-    }
+  if (const auto meeting = first_meeting_edges(v)) {
+    return PolygonDefect{-1, "crosses itself (the edges from vertices " +
+                                 std::to_string(meeting->first) + " and " +
+                                 std::to_string(meeting->second) + " meet)"};
   }
   if (twice_area(v) < 0) {
     return PolygonDefect{-1, "is clockwise: list the vertices counter-clockwise"};
