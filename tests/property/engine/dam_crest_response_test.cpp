@@ -133,6 +133,10 @@ TEST(DamCrestResponse, AStiffDamIsNoDam) {
     const Summary a = simulate(bare), b = simulate(on_dam);
     ASSERT_TRUE(a.overturned);
     ASSERT_TRUE(b.overturned);
+    ASSERT_TRUE(a.overturn_time.has_value());
+    ASSERT_TRUE(b.overturn_time.has_value());
+    ASSERT_TRUE(a.rock_start_time.has_value());
+    ASSERT_TRUE(b.rock_start_time.has_value());
     EXPECT_NEAR(*b.overturn_time, *a.overturn_time, 0.01 * *a.overturn_time);
     EXPECT_NEAR(*b.rock_start_time, *a.rock_start_time, 1e-4);
   }

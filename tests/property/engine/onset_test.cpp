@@ -51,6 +51,7 @@ TEST(Onset, RockOrSlideRockFollowsShentonsCriticalFriction) {
       const Summary s = simulate(block_scene(0.5, 1.0, mu, 0.5, RectangularPulse{A, 0.05}, 0.05));
       const ModeKind expected = factor > 1 ? ModeKind::rock : ModeKind::slide_rock;
       EXPECT_EQ(s.modes.at(0).mode, expected) << "A = " << A << " mu = " << mu;
+      ASSERT_TRUE(s.rock_start_time.has_value()) << "A = " << A << " mu = " << mu;
       EXPECT_EQ(*s.rock_start_time, 0.0);
     }
   }

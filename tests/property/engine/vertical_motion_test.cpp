@@ -93,6 +93,7 @@ TEST(VerticalMotion, ARecordsAccelerationIsTheGroundsUpwardAcceleration) {
   recorded.vertical_motion = record_of({0.0, 10.0}, {0.3, 0.3});
   const Summary a = simulate(pulse), b = simulate(recorded);
   ASSERT_TRUE(a.rock_start_time.has_value());
+  ASSERT_TRUE(b.rock_start_time.has_value());
   EXPECT_NEAR(*b.rock_start_time, *a.rock_start_time, 1e-12);
   EXPECT_NEAR(b.max_abs_theta, a.max_abs_theta, 1e-12);
 }

@@ -56,7 +56,9 @@ TEST(DamBlockTypeA, AtOnePointFiveGRocksDownstreamFirstThenUpstreamAndStands) {
   // The heel tips at a lower lambda (0.630) than the toe (0.906): the upstream swing is the large
   // one, and it stays short of the heel's balance tilt, atan(0.630) = 32.2 deg.
   EXPECT_GT(upstream, 5 * downstream);
-  EXPECT_LT(upstream, std::atan(BlockGeometry(*dam_scene(1.5).polygon).tip_threshold(Corner::left)));
+  const Scene scene = dam_scene(1.5);
+  ASSERT_TRUE(scene.polygon.has_value());
+  EXPECT_LT(upstream, std::atan(BlockGeometry(*scene.polygon).tip_threshold(Corner::left)));
   EXPECT_LT(omega_at_2s, 0.0);  // on its way back when the pulse ends, as in the paper
 }
 

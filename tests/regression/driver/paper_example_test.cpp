@@ -21,6 +21,8 @@ TEST(PaperExample, FrictionCannotHoldPureRockingWhenThePulseStarts) {
   ASSERT_GT(mu_cr, paper_scene().contact.friction);
   const Summary s = simulate(paper_scene());
   EXPECT_EQ(s.modes.at(0).mode, ModeKind::slide_rock);
+  ASSERT_TRUE(s.rock_start_time.has_value());
+  ASSERT_TRUE(s.slide_start_time.has_value());
   EXPECT_EQ(*s.rock_start_time, 0.0);
   EXPECT_EQ(*s.slide_start_time, 0.0);
 }

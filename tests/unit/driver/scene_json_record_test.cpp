@@ -63,6 +63,7 @@ TEST(SceneJsonRecord, AnAbsoluteFileIgnoresTheFolder) {
                                       "/no/such/folder/scene.json");
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   EXPECT_EQ(motion.scale, -2.0);
+  ASSERT_NE(motion.record, nullptr);
   EXPECT_EQ(motion.record->times.size(), 51u);
 }
 
@@ -121,7 +122,9 @@ TEST(SceneJsonRecord, AnEmbeddedSceneTakesRecordsFromTheGivenFolder) {
   const json suite_scene = scene_with({{"type", "record"}, {"file", "records/cosine_pulse.txt"}});
   const Scene scene = scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors, records.parent_path());
   EXPECT_TRUE(errors.empty());
-  EXPECT_EQ(std::get<RecordedMotion>(scene.ground_motion).record->times.size(), 51u);
+  const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
+  ASSERT_NE(motion.record, nullptr);
+  EXPECT_EQ(motion.record->times.size(), 51u);
 
   scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors, records);
   ASSERT_EQ(errors.size(), 1u);
