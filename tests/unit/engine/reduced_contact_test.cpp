@@ -1,0 +1,157 @@
+// The contact rules of the one-degree-of-freedom models against their definitions
+// (docs/physics.md, "Effects: which model runs"; docs/references.md, "Rocking without sliding"
+// and "Sliding without rocking"): Housner's block starts to rock past a/b about the corner lambda
+// pushes towards and at each landing hands over to the other corner with omega times
+// 1 - 1.5 sin^2(alpha) (unchanged without impact losses), lying flat below the settle velocity;
+// Newmark's block slides from rest past |lambda| = mu and goes on while its base moves.
+#include "engine/contact/reduced_contact.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/tolerances.hpp"
+#include "tests/support/contact_states.hpp"
+
+namespace blockfrag {
+namespace {
+
+using testing::flat_state;
+using testing::turning_about;
+
+constexpr double g = 9.81, a = 0.5, b = 1.0;
+// The paper's block: R = sqrt(1.25), sqrt(g R) = 3.311784 m/s, base width 2a = 1 m.
+const BlockGeometry paper_block(RectangularBlock{a, b, 1.0});
+const double sqrt_gR = std::sqrt(g * std::hypot(a, b));
+
+TEST(HousnerRules, StartsToRockOnlyPastTheTipThresholdAboutThePushedCorner) {
+  const HousnerRules rules(paper_block, true, g);
+  for (const double lambda : {0.0, 0.49, -0.49, 0.5, -0.5}) {  // |lambda| <= a/b = 0.5
+    const ContactOutcome out = rules.start(flat_state(b, 2.0), lambda);
+    EXPECT_EQ(mode_kind(out.mode), ModeKind::rest) << "lambda = " << lambda;
+  }
+  // Past a/b: about the right corner (x + a = 2.5) for lambda > 0, the left (1.5) for lambda < 0;
+  // however large lambda is, since Housner's block never slides.
+  const struct {
+    double lambda;
+    Corner pivot;
+    double pivot_x;
+  } cases[] = {{0.51, Corner::right, 2.5}, {3.0, Corner::right, 2.5}, {-0.51, Corner::left, 1.5}};
+  for (const auto& c : cases) {
+    const ContactOutcome out = rules.start(flat_state(b, 2.0), c.lambda);
+    const auto* rock = std::get_if<RockMode>(&out.mode);
+    ASSERT_NE(rock, nullptr) << "lambda = " << c.lambda;
+    EXPECT_EQ(rock->pivot, c.pivot);
+    EXPECT_DOUBLE_EQ(rock->pivot_x, c.pivot_x);
+    EXPECT_EQ(out.state.omega, 0.0);
+  }
+}
+
+TEST(HousnerRules, ABlockReleasedTiltedRocksOnItsLowerCorner) {
+  // Tilted clockwise (theta < 0) the right corner is the lower one, whatever lambda says.
+  for (const double lambda : {0.0, -2.0}) {
+    const ContactOutcome out = HousnerRules(paper_block, true, g)
+                                   .start(turning_about(a, b, -0.1, 0.0, 4.0), lambda);
+    const auto* rock = std::get_if<RockMode>(&out.mode);
+    ASSERT_NE(rock, nullptr) << "lambda = " << lambda;
+    EXPECT_EQ(rock->pivot, Corner::right);
+    EXPECT_NEAR(rock->pivot_x, 4.0, 1e-15);
+  }
+}
+
+TEST(HousnerRules, ALandingHandsOverToTheOtherCornerWithHousnersRatio) {
+  // a/b = 0.5: sin^2(alpha) = 0.2, omega+ = 0.7 omega-. Coming back about the right corner
+  // (omega > 0) to theta = 0, it goes on about the left one at x - a = -0.5, the centre moving
+  // at omega+ x (centre - corner) = (-omega+ b, omega+ a) = (-0.7, 0.35).
+  EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::right), 0.7, 1e-15);
+  EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::left), 0.7, 1e-15);
+  const ContactOutcome out =
+      HousnerRules(paper_block, true, g).impact(turning_about(a, b, 0.0, 1.0, a), Corner::right, 0.0);
+  EXPECT_TRUE(out.impact);
+  const auto* rock = std::get_if<RockMode>(&out.mode);
+  ASSERT_NE(rock, nullptr);
+  EXPECT_EQ(rock->pivot, Corner::left);
+  EXPECT_NEAR(rock->pivot_x, -a, 1e-15);
+  EXPECT_NEAR(out.state.omega, 0.7, 1e-15);
+  EXPECT_NEAR(out.state.vx, -0.7, 1e-15);
+  EXPECT_NEAR(out.state.vy, 0.35, 1e-15);
+  EXPECT_EQ(out.state.theta, 0.0);
+}
+
+TEST(HousnerRules, WithoutImpactLossesTheHandOverKeepsOmega) {
+  // effects ["rocking"]: the pivot changes, omega and the energy do not; no impact is counted.
+  const ContactOutcome out = HousnerRules(paper_block, false, g)
+                                 .impact(turning_about(-a, b, 0.0, -2.0, -a), Corner::left, 0.0);
+  EXPECT_FALSE(out.impact);
+  const auto* rock = std::get_if<RockMode>(&out.mode);
+  ASSERT_NE(rock, nullptr);
+  EXPECT_EQ(rock->pivot, Corner::right);
+  EXPECT_NEAR(rock->pivot_x, a, 1e-15);
+  EXPECT_EQ(out.state.omega, -2.0);
+}
+
+TEST(HousnerRules, ALandingSlowerThanTheSettleVelocityLaysTheBlockFlat) {
+  // The other corner lands at |omega| 2a; once slower than kSettleVelocity sqrt(g R) =
+  // 3.311784e-6 m/s (after the impact's 0.7) the block lies flat: omega = 4e-6 rad/s leaves
+  // 2.8e-6 m/s (flat, at rest under lambda = 0), 5e-6 leaves 3.5e-6 (rocks on). Without losses
+  // 4e-6 stays 4e-6: it rocks on. Flat under lambda = 0.6 > a/b it starts to rock again at once.
+  ASSERT_NEAR(kSettleVelocity * sqrt_gR, 3.311784e-6, 5e-13);
+  const HousnerRules lossy(paper_block, true, g), lossless(paper_block, false, g);
+  const auto after = [&](const HousnerRules& rules, double omega, double lambda) {
+    return rules.impact(turning_about(a, b, 0.0, omega, a), Corner::right, lambda);
+  };
+  const ContactOutcome settled = after(lossy, 4e-6, 0.0);
+  EXPECT_EQ(mode_kind(settled.mode), ModeKind::rest);
+  EXPECT_EQ(settled.state.omega, 0.0);
+  EXPECT_EQ(settled.state.y, b);
+  EXPECT_EQ(mode_kind(after(lossy, 5e-6, 0.0).mode), ModeKind::rock);
+  EXPECT_EQ(mode_kind(after(lossless, 4e-6, 0.0).mode), ModeKind::rock);
+  const ContactOutcome pushed = after(lossy, 4e-6, 0.6);
+  const auto* rock = std::get_if<RockMode>(&pushed.mode);
+  ASSERT_NE(rock, nullptr);
+  EXPECT_EQ(rock->pivot, Corner::right);
+  EXPECT_EQ(pushed.state.omega, 0.0);
+}
+
+TEST(NewmarkRules, SlidesFromRestOnlyPastFriction) {
+  const NewmarkRules rules(paper_block, 0.3, g);
+  for (const double lambda : {0.0, 0.29, -0.3}) {
+    EXPECT_EQ(mode_kind(rules.resolve(flat_state(b), lambda).mode), ModeKind::rest)
+        << "lambda = " << lambda;
+  }
+  // Past mu the way lambda pushes; never rocks, even past a/b = 0.5.
+  for (const double lambda : {0.31, -0.31, 0.9, -5.0}) {
+    const ContactOutcome out = rules.resolve(flat_state(b), lambda);
+    const auto* slide = std::get_if<SlideMode>(&out.mode);
+    ASSERT_NE(slide, nullptr) << "lambda = " << lambda;
+    EXPECT_EQ(slide->slip_sign, lambda > 0 ? 1 : -1) << "lambda = " << lambda;
+  }
+}
+
+TEST(NewmarkRules, KeepsSlidingWhileTheBaseMovesAndRestsOnceItStops) {
+  // The resting velocity is kRestingVelocity sqrt(g R) = 3.311784e-9 m/s.
+  const NewmarkRules rules(paper_block, 0.3, g);
+  const auto moving = [&](double vx) {
+    BlockState s = flat_state(b);
+    s.vx = vx;
+    return s;
+  };
+  // Moving, it slides the way it moves, whatever lambda (even against it, even below mu).
+  for (const double vx : {0.2, -0.2, 1e-8, -1e-8}) {
+    const ContactOutcome out = rules.resolve(moving(vx), vx > 0 ? -0.1 : 0.1);
+    const auto* slide = std::get_if<SlideMode>(&out.mode);
+    ASSERT_NE(slide, nullptr) << "vx = " << vx;
+    EXPECT_EQ(slide->slip_sign, vx > 0 ? 1 : -1) << "vx = " << vx;
+  }
+  // Slower than the resting velocity it has stopped: rest, vx = 0, unless lambda passes mu.
+  const ContactOutcome stopped = rules.resolve(moving(2e-9), 0.1);
+  EXPECT_EQ(mode_kind(stopped.mode), ModeKind::rest);
+  EXPECT_EQ(stopped.state.vx, 0.0);
+  const ContactOutcome pushed = rules.resolve(moving(2e-9), -0.5);
+  const auto* restart = std::get_if<SlideMode>(&pushed.mode);
+  ASSERT_NE(restart, nullptr);
+  EXPECT_EQ(restart->slip_sign, -1);
+}
+
+}  // namespace
+}  // namespace blockfrag
