@@ -1,11 +1,11 @@
 // Block states for the contact-resolution and mode tests, written from the kinematics by hand (not
 // from the engine's own maps, which the tests check): a rectangle flat on its base, and one turning
-// about a base corner that neither slips nor lifts. Plus readable names for modes in failures.
+// about a base corner that neither slips nor lifts. Plus readable names for modes, models and
+// corners in failures.
 #pragma once
 
 #include <cmath>
 #include <ostream>
-#include <string>
 
 #include "engine/modes/modes.hpp"
 
@@ -13,6 +13,7 @@ namespace blockfrag {
 
 // gtest prints these through ADL: names instead of enum values in a failure.
 inline void PrintTo(ModeKind mode, std::ostream* os) { *os << mode_name(mode); }
+inline void PrintTo(Model model, std::ostream* os) { *os << model_name(model); }
 inline void PrintTo(Corner corner, std::ostream* os) {
   *os << (corner == Corner::left ? "left" : "right");
 }
