@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include "tests/support/scene_builders.hpp"
 #include "engine/simulate.hpp"
@@ -12,12 +13,24 @@ namespace {
 
 using testing::block_scene;
 
-// Scenes that visit every mode: slide-rock, rock, impact, flight, overturning or not.
+// Scenes that visit every mode (rest, slide, rock, slide-rock, flight; checked below), with
+// impacts, overturning or not.
 std::vector<Scene> varied_scenes() {
   return {block_scene(0.5, 1.0, 0.6, 0.6, CosinePulse{1.0, 2.0, 1.0}, 4.0, 1e-9),
           block_scene(0.3, 1.0, 0.8, 0.3, SinePulse{0.7, 1.0, 2.0}, 4.0, 1e-9),
           block_scene(0.5, 1.0, 0.35, 0.5, RectangularPulse{0.8, 0.4}, 2.0, 1e-9),
           block_scene(0.2, 1.5, 1.0, 0.0, CosinePulse{0.45, 0.8, 3.0}, 5.0, 1e-9)};
+}
+
+TEST(Symmetry, TheVariedScenesVisitEveryMode) {
+  std::set<ModeKind> visited;
+  for (const Scene& scene : varied_scenes()) {
+    for (const ModeChange& change : simulate(scene).modes) visited.insert(change.mode);
+  }
+  for (const ModeKind mode : {ModeKind::rest, ModeKind::slide, ModeKind::rock,
+                              ModeKind::slide_rock, ModeKind::flight}) {
+    EXPECT_TRUE(visited.contains(mode)) << mode_name(mode) << " is never visited";
+  }
 }
 
 TEST(Symmetry, ReversingThePulseMirrorsThetaAndX) {
