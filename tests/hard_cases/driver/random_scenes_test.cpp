@@ -3,16 +3,24 @@
 // the contact force stays in Coulomb's cone with V >= 0, and the work is bounded. A failing scene
 // is printed as a scene JSON to replay with `blockfrag simulate`.
 // BLOCKFRAG_RANDOM_SCENES sets the count (default 100000; CI's sanitizer pass uses fewer).
+// Scene i draws every input from its own Philox stream (sampling/philox_stream.hpp), counted by i:
+// the uniforms are the same bits on every platform and standard library, and each input maps them
+// to its range by plain arithmetic (log-uniform ranges through std::pow) or, for a choice among n,
+// by index_below; no std::*_distribution, no rejection.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
-#include <random>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/config/scene_json.hpp"
+#include "sampling/philox_stream.hpp"
 
 namespace blockfrag {
 namespace {
@@ -22,44 +30,67 @@ long scene_count(long fallback) {
   return text ? std::atol(text) : fallback;
 }
 
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo * std::pow(hi / lo, std::uniform_real_distribution<double>(0, 1)(rng));
-}
+// The random inputs of scene `index`, each from the stream of its name.
+class SceneDraws {
+ public:
+  SceneDraws(std::uint64_t seed, std::uint64_t index) : seed_(seed), index_(index) {}
 
-Scene random_scene(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(0, 1);
+  // Uniform in (0, 1).
+  double uniform(std::string_view input) const {
+    return uniform_open01(seed_, stream_id(input), index_);
+  }
+  double uniform(std::string_view input, double lo, double hi) const {
+    return lo + (hi - lo) * uniform(input);
+  }
+  // Log-uniform in (lo, hi).
+  double log_uniform(std::string_view input, double lo, double hi) const {
+    return lo * std::pow(hi / lo, uniform(input));
+  }
+  // One of 0, 1, ..., n - 1.
+  std::uint32_t choice(std::string_view input, std::uint32_t n) const {
+    return index_below(random_bits(seed_, stream_id(input), index_, 0), n);
+  }
+  bool chance(std::string_view input, double p) const { return uniform(input) < p; }
+  double sign(std::string_view input) const { return choice(input, 2) == 0 ? -1.0 : 1.0; }
+
+ private:
+  std::uint64_t seed_, index_;
+};
+
+Scene random_scene(const SceneDraws& d) {
   Scene s;
-  const double b = log_uniform(rng, 0.01, 50.0);
-  s.block = {b * log_uniform(rng, 0.05, 2.0), b, log_uniform(rng, 1e-3, 1e7)};
-  s.contact = {2.0 * u(rng), u(rng)};
-  const double pick = u(rng);
+  const double b = d.log_uniform("half_height", 0.01, 50.0);
+  s.block = {b * d.log_uniform("aspect_ratio", 0.05, 2.0), b, d.log_uniform("mass", 1e-3, 1e7)};
+  s.contact = {d.uniform("friction", 0.0, 2.0), d.uniform("restitution")};
+  const double pick = d.uniform("restitution_extreme");
   if (pick < 0.05) s.contact.restitution = 0.0;
   if (pick > 0.95) s.contact.restitution = 1.0;
-  const double A = log_uniform(rng, 0.05, 20.0) * (u(rng) < 0.5 ? -1 : 1);
-  const double T = log_uniform(rng, 0.05, 5.0);
-  const int kind = static_cast<int>(3 * u(rng));
-  if (kind == 0) s.ground_motion = CosinePulse{A, T, std::floor(1 + 3 * u(rng))};
-  if (kind == 1) s.ground_motion = SinePulse{A, T, 0.5 * std::floor(1 + 6 * u(rng))};
+  const double A = d.log_uniform("amplitude", 0.05, 20.0) * d.sign("amplitude_sign");
+  const double T = d.log_uniform("period", 0.05, 5.0);
+  const std::uint32_t kind = d.choice("pulse_kind", 3);
+  if (kind == 0) s.ground_motion = CosinePulse{A, T, 1.0 + d.choice("cosine_cycles", 3)};
+  if (kind == 1) s.ground_motion = SinePulse{A, T, 0.5 * (1 + d.choice("sine_cycles", 6))};
   if (kind == 2) s.ground_motion = RectangularPulse{A, T};
   s.duration = std::min(10.0, 2 * T + 2);
   // The inputs of later issues: vertical motion (lift-off beyond 1 g), polygon blocks (a
   // trapezoid, or a pentagon with a gable), a dam crest between the ground and the block.
-  if (u(rng) < 0.3) {
-    const double Av = log_uniform(rng, 0.05, 2.0) * (u(rng) < 0.5 ? -1 : 1);
-    const double Tv = log_uniform(rng, 0.05, 5.0);
-    s.vertical_motion = SinePulse{Av, Tv, 0.5 * std::floor(1 + 6 * u(rng))};
+  if (d.chance("vertical", 0.3)) {
+    const double Av = d.log_uniform("vertical_amplitude", 0.05, 2.0) * d.sign("vertical_sign");
+    const double Tv = d.log_uniform("vertical_period", 0.05, 5.0);
+    s.vertical_motion = SinePulse{Av, Tv, 0.5 * (1 + d.choice("vertical_cycles", 6))};
   }
-  if (u(rng) < 0.3) {
+  if (d.chance("polygon", 0.3)) {
     const double w = s.block.half_width, h = 2 * s.block.half_height;
-    const double top_left = -w + 0.9 * w * u(rng), top_right = w - 0.9 * w * u(rng);
+    const double top_left = -w + 0.9 * w * d.uniform("top_left");
+    const double top_right = w - 0.9 * w * d.uniform("top_right");
     std::vector<std::array<double, 2>> v = {{-w, 0}, {w, 0}, {top_right, h}, {top_left, h}};
-    if (u(rng) < 0.5) {
-      v.insert(v.begin() + 3, {0.5 * (top_left + top_right), h * (1 + 0.3 * u(rng))});
+    if (d.chance("gable", 0.5)) {
+      v.insert(v.begin() + 3, {0.5 * (top_left + top_right), h * (1 + 0.3 * d.uniform("gable_height"))});
     }
     s.polygon = PolygonBlock{v, 1.0};
   }
-  if (u(rng) < 0.2) s.dam = DamCrest{DamPeriod{log_uniform(rng, 0.05, 0.5)}, 0.05, 1.0};
-  s.solver.tolerance = log_uniform(rng, 1e-10, 1e-6);
+  if (d.chance("dam", 0.2)) s.dam = DamCrest{DamPeriod{d.log_uniform("dam_period", 0.05, 0.5)}, 0.05, 1.0};
+  s.solver.tolerance = d.log_uniform("tolerance", 1e-10, 1e-6);
   return s;
 }
 
@@ -76,11 +107,10 @@ std::string why_bad(const Summary& s) {
   return {};
 }
 
-void run_random_scenes(unsigned seed, long count, bool paper_method) {
-  std::mt19937_64 rng(seed);
+void run_random_scenes(std::uint64_t seed, long count, bool paper_method) {
   long failures = 0;
   for (long i = 0; i < count; ++i) {
-    Scene scene = random_scene(rng);
+    Scene scene = random_scene(SceneDraws(seed, static_cast<std::uint64_t>(i)));
     if (paper_method) {
       scene.solver.method = Method::rk4;
       scene.solver.dt = 2.5e-4;
