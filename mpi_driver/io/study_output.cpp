@@ -95,7 +95,7 @@ void write_study_output(const std::filesystem::path& path, const StudyConfig& co
     Hdf5Writer file(temporary);
     file.set_attribute("/", "config", canonical_text(config.canonical));
     file.set_attribute("/", "config_hash", hash_to_hex(config.hash));
-    file.set_attribute("/", "blockfrag_version", std::string(study_output_version));
+    file.set_attribute("/", "blockfrag_version", std::string(BLOCKFRAG_VERSION));
     file.set_attribute("/", "total_samples", config.total_samples());
     file.set_attribute("/", "samples_per_level", static_cast<std::int64_t>(config.samples_per_level));
     file.set_attribute("/", "design",

@@ -27,9 +27,6 @@
 
 namespace blockfrag {
 
-// The version written into outputs; keep in step with project(VERSION).
-inline constexpr const char* study_output_version = "0.1.0";
-
 // records[i] is sample i's record, for every sample.
 void write_study_output(const std::filesystem::path& path, const StudyConfig& config,
                         const std::vector<SampleRecord>& records);
