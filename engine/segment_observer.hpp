@@ -7,9 +7,9 @@
 #include <limits>
 #include <vector>
 
-#include "engine/scene/block_state.hpp"
-#include "engine/modes/modes.hpp"
 #include "engine/integrate/root_finding.hpp"
+#include "engine/modes/modes.hpp"
+#include "engine/scene/block_state.hpp"
 #include "engine/summary.hpp"
 #include "engine/tolerances.hpp"
 
@@ -75,8 +75,8 @@ class SegmentObserver {
   }
 
   void record(double t, const BlockState& s, const ContactForces& f, ModeKind mode) {
-    history_.push_back({t, s.x - x0_, s.y, s.theta, s.vx, s.vy, s.omega, mode, f.friction / g_,
-                        f.normal / g_});
+    history_.push_back(
+        {t, s.x - x0_, s.y, s.theta, s.vx, s.vy, s.omega, mode, f.friction / g_, f.normal / g_});
   }
 
   Summary& summary_;

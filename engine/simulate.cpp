@@ -3,22 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <type_traits>
 
 #include "engine/contact/contact_resolution.hpp"
+#include "engine/contact/model_choice.hpp"
+#include "engine/contact/reduced_contact.hpp"
+#include "engine/errors.hpp"
 #include "engine/integrate/dormand_prince_stepper.hpp"
-#include "engine/modes/flight.hpp"
 #include "engine/integrate/gsl_stepper.hpp"
 #include "engine/integrate/guard_crossing.hpp"
-#include "engine/contact/model_choice.hpp"
-#include "engine/errors.hpp"
-#include "engine/modes/modes.hpp"
-#include "engine/contact/reduced_contact.hpp"
 #include "engine/integrate/rk4_stepper.hpp"
 #include "engine/integrate/root_finding.hpp"
+#include "engine/modes/flight.hpp"
+#include "engine/modes/modes.hpp"
 #include "engine/motion/scene_motion.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "engine/segment_observer.hpp"
@@ -45,18 +45,16 @@ void with_stepper(const SolverSettings& solver, const OdeState<N>& scale, Fn&& f
     }
     case Method::gsl_rkf45:
     case Method::gsl_rk8pd: {
-      GslStepper<N> stepper(solver.method == Method::gsl_rkf45 ? GslStepperKind::rkf45
-                                                               : GslStepperKind::rk8pd,
-                            solver.tolerance, scale);
+      GslStepper<N> stepper(
+          solver.method == Method::gsl_rkf45 ? GslStepperKind::rkf45 : GslStepperKind::rk8pd,
+          solver.tolerance, scale);
       fn(stepper);
       return;
     }
   }
 }
 
-bool reached(double t, double end) {
-  return end - t <= kReachedEnd * std::max(1.0, std::abs(end));
-}
+bool reached(double t, double end) { return end - t <= kReachedEnd * std::max(1.0, std::abs(end)); }
 
 class Simulation {
  public:
@@ -192,10 +190,9 @@ void Simulation::enter(const ContactOutcome& outcome) {
   if (outcome.painleve) ++summary_.painleve_events;
   if (outcome.impact) {
     if (log_impacts_) {
-      impact_log_.push_back({t_, state_.omega, outcome.state.omega,
-                             kinetic_energy_per_mass(geometry_, state_),
-                             kinetic_energy_per_mass(geometry_, outcome.state),
-                             mode_kind(outcome.mode)});
+      impact_log_.push_back(
+          {t_, state_.omega, outcome.state.omega, kinetic_energy_per_mass(geometry_, state_),
+           kinetic_energy_per_mass(geometry_, outcome.state), mode_kind(outcome.mode)});
     }
     ++summary_.impacts;
     if (!summary_.first_impact_time) summary_.first_impact_time = t_;
@@ -225,11 +222,12 @@ void Simulation::enter(const ContactOutcome& outcome) {
 void Simulation::check_budget() {
   const SolverSettings& solver = scene_.solver;
   if (summary_.steps > solver.max_steps) {
-    throw SimulationFailure("step budget exceeded (" + std::to_string(solver.max_steps) + " steps)");
+    throw SimulationFailure("step budget exceeded (" + std::to_string(solver.max_steps) +
+                            " steps)");
   }
   if (summary_.events > solver.max_events) {
     throw SimulationFailure("event budget exceeded (" + std::to_string(solver.max_events) +
-                       " events): the contact state keeps changing");
+                            " events): the contact state keeps changing");
   }
 }
 
@@ -348,8 +346,9 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
       const double from = t;
       stepper.step(drift, t, q, std::min(t_end - t, step_cap(piece)));
       if (reached(t, t_end)) t = t_end;
-      observer_.observe_step(from, t, [&](double x) { return pose(x, stepper.dense(x)); },
-                             forces_at, ModeKind::flight);
+      observer_.observe_step(
+          from, t, [&](double x) { return pose(x, stepper.dense(x)); }, forces_at,
+          ModeKind::flight);
     }
     summary_.steps += stepper.steps();
     summary_.rhs_evaluations += stepper.rhs_evaluations();
@@ -366,9 +365,8 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
 
 template <class System>
 void Simulation::advance(const System& system, const MotionPiece& piece, double t_stop) {
-  with_stepper<System::N>(scene_.solver, system.scale(), [&](auto& stepper) {
-    integrate_with(system, stepper, piece, t_stop);
-  });
+  with_stepper<System::N>(scene_.solver, system.scale(),
+                          [&](auto& stepper) { integrate_with(system, stepper, piece, t_stop); });
 }
 
 // Steps until a guard crosses zero or t_stop; a crossing is located on the dense output and the
@@ -419,10 +417,9 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
     // The contact laws at the end of what is kept of the step, inside the mode.
     const double kept = which < 0 ? t : t_event;
     const ContactForces contact = forces_at(crossing.before);
-    summary_.max_contact_violation =
-        std::max({summary_.max_contact_violation, -contact.normal / scene_.g,
-                  (std::abs(contact.friction) - scene_.contact.friction * contact.normal) /
-                      scene_.g});
+    summary_.max_contact_violation = std::max(
+        {summary_.max_contact_violation, -contact.normal / scene_.g,
+         (std::abs(contact.friction) - scene_.contact.friction * contact.normal) / scene_.g});
     observer_.observe_step(t0, kept, state_at, forces_at, mode_kind(mode_));
     if (which < 0) continue;
     const BlockState at_event = state_at(t_event);
@@ -455,7 +452,7 @@ void Simulation::run() {
     stalled_events_ = t_ == t_before ? stalled_events_ + 1 : 0;
     if (stalled_events_ > kMaxStalledEvents) {
       throw SimulationFailure("no progress: " + std::to_string(kMaxStalledEvents) +
-                         " contact changes at t = " + std::to_string(t_) + " s");
+                              " contact changes at t = " + std::to_string(t_) + " s");
     }
     // A piece boundary is not an event: a mode whose contact forces still hold under the next
     // piece goes on. Re-resolving there would lay a block that has only just lifted flat again

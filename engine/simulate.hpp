@@ -9,7 +9,8 @@
 namespace blockfrag {
 
 // Never throws for a physically odd scene: failures (a budget exceeded) come back as
-// Summary::status. Throws InvalidInput for a scene that breaks the scene's rules (engine/errors.hpp).
+// Summary::status. Throws InvalidInput for a scene that breaks the scene's rules
+// (engine/errors.hpp).
 Summary simulate(const Scene& scene);
 
 struct SimulationWithHistory {

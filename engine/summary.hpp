@@ -48,7 +48,8 @@ struct Summary {
   long steps = 0;
   long rhs_evaluations = 0;
   long events = 0;
-  // The largest kinetic-energy gain over any impact, relative to the energy before it (<= 0 is right).
+  // The largest kinetic-energy gain over any impact, relative to the energy before it (<= 0 is
+  // right).
   double max_impact_energy_gain = 0.0;
   // The largest breach of the contact laws at any step, per weight: max(-V, |F| - mu V) / (M g);
   // 0 when the contact force stayed in Coulomb's cone with V >= 0 throughout.
@@ -63,7 +64,7 @@ struct Summary {
 // One impact event (all the corner impulses of one instant), for the history's impact log.
 struct ImpactRecord {
   double time;
-  double omega_before, omega_after;  // rad/s
+  double omega_before, omega_after;                    // rad/s
   double kinetic_energy_before, kinetic_energy_after;  // per unit mass, J/kg
   ModeKind mode_after;
 };

@@ -57,8 +57,7 @@ double latin_hypercube_uniform(std::uint64_t seed, std::uint32_t stream, std::ui
 double design_uniform(Design design, std::uint64_t seed, std::uint32_t stream,
                       std::uint32_t samples_per_level, std::uint64_t index) {
   switch (design) {
-    case Design::monte_carlo:
-      return monte_carlo_uniform(seed, stream, index);
+    case Design::monte_carlo: return monte_carlo_uniform(seed, stream, index);
     case Design::latin_hypercube:
       require_samples(samples_per_level);
       return latin_hypercube_uniform(seed, stream, index / samples_per_level, samples_per_level,

@@ -1,12 +1,12 @@
 #include "sampling/distributions.hpp"
 
-#include <gsl/gsl_cdf.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
+
+#include <gsl/gsl_cdf.h>
 
 namespace blockfrag {
 namespace {

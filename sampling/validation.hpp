@@ -26,5 +26,4 @@ class SamplingError : public InvalidInput {
   std::vector<Violation> violations_;
 };
 
-
 }  // namespace blockfrag

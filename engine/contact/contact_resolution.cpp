@@ -101,8 +101,8 @@ bool ContactResolver::flat_impact(BlockState& s, double e) const {
   const std::array<double, 2> u_y = {kl.u_y, kr.u_y};
   const double u_x = 0.5 * (kl.u_x + kr.u_x);
 
-  for (const std::array<bool, 2> active : {std::array{true, false}, std::array{false, true},
-                                           std::array{true, true}}) {
+  for (const std::array<bool, 2> active :
+       {std::array{true, false}, std::array{false, true}, std::array{true, true}}) {
     for (const int friction : {0, 1, -1}) {  // 0: stick, else slip direction
       std::array<std::array<double, 4>, 3> m{};
       for (int j = 0; j < 2; ++j) {
@@ -178,7 +178,8 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
       }
     }
     const double after = kinetic_energy(velocity_of(s), M, I);
-    if (before > 0) out.impact_energy_gain = std::max(out.impact_energy_gain, (after - before) / before);
+    if (before > 0)
+      out.impact_energy_gain = std::max(out.impact_energy_gain, (after - before) / before);
   }
   return false;
 }
@@ -187,7 +188,8 @@ bool ContactResolver::can_rock(const BlockState& s, Corner pivot, double lambda,
                                bool from_flat) const {
   const double c = std::cos(s.theta), sn = std::sin(s.theta);
   const Vec2 r = rotate(geometry_.base_corner(pivot), c, sn);
-  const CornerContact k = sticking_corner(r, s.omega, lambda, gravity, geometry_.inertia_per_mass());
+  const CornerContact k =
+      sticking_corner(r, s.omega, lambda, gravity, geometry_.inertia_per_mass());
   if (k.normal < 0 || std::abs(k.friction) > mu_ * k.normal) return false;
   if (!from_flat) return true;
   const Vec2 r_other = rotate(geometry_.base_corner(other(pivot)), c, sn);
@@ -250,7 +252,8 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
   if (std::abs(u_x) > velocity_tol_) {
     const int slip = sign_of(u_x);
     if (slide_rock_well_posed(r, slip, mu_, k2)) {
-      if (slipping_corner(r, s.omega, slip, lambda, gravity, mu_, k2).normal < 0) return FlightMode{};
+      if (slipping_corner(r, s.omega, slip, lambda, gravity, mu_, k2).normal < 0)
+        return FlightMode{};
       return SlideRockMode{pivot, slip};
     }
     // Within the margin of the boundary the jam's impulse may lie outside the cone by that
@@ -259,8 +262,9 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
         std::max(mu_, (k2 + r.x * r.x) / std::max(-slip * r.x * r.y, kSingularPivot));
     const auto jump = painleve_stick_impulse(
         {1.0, geometry_.inertia_per_mass(), r.x, r.y, u_x, 0.0, jam_friction, 0.0});
-    if (jump) set_velocity(s, apply_impulse(velocity_of(s), 1.0, geometry_.inertia_per_mass(),
-                                            r.x, r.y, *jump));
+    if (jump)
+      set_velocity(
+          s, apply_impulse(velocity_of(s), 1.0, geometry_.inertia_per_mass(), r.x, r.y, *jump));
     out.painleve = true;
     u_x = 0.0;
   }
@@ -271,7 +275,8 @@ Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double la
   const CornerContact stick = sticking_corner(r, s.omega, lambda, gravity, k2);
   const int slip = stick.friction > 0 ? -1 : 1;
   for (const int direction : {slip, -slip}) {
-    if (can_slide_rock(s, pivot, direction, lambda, gravity, false)) return SlideRockMode{pivot, direction};
+    if (can_slide_rock(s, pivot, direction, lambda, gravity, false))
+      return SlideRockMode{pivot, direction};
   }
   // Free, the corner would accelerate upward: it leaves the ground.
   const double free_lift = -gravity - s.omega * s.omega * r.y;
@@ -315,8 +320,8 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
   const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
   // A flat block whose corners barely move off the ground would rock in ever smaller, ever faster
   // swings (Zeno): lay it flat, as the impacts below the settle velocity do.
-  const bool settles = touches(kl) && touches(kr) &&
-                       std::max(std::abs(kl.u_y), std::abs(kr.u_y)) < settle_velocity_;
+  const bool settles =
+      touches(kl) && touches(kr) && std::max(std::abs(kl.u_y), std::abs(kr.u_y)) < settle_velocity_;
   const bool left = settles || (touches(kl) && kl.u_y <= velocity_tol_);
   const bool right = settles || (touches(kr) && kr.u_y <= velocity_tol_);
   // The ground falling faster than g carries no load: nothing holds the block to it.
@@ -328,8 +333,8 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
   if (left && right) {
     out.mode = classify_flat(s, effective_lambda, gravity);
   } else if (left || right) {
-    out.mode = classify_one_corner(s, left ? Corner::left : Corner::right, effective_lambda,
-                                   gravity, out);
+    out.mode =
+        classify_one_corner(s, left ? Corner::left : Corner::right, effective_lambda, gravity, out);
   } else {
     out.mode = FlightMode{};
   }

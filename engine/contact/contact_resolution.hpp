@@ -3,8 +3,8 @@
 // stick/slip, lift-off, return to rest come out of the same consistency checks).
 #pragma once
 
-#include "engine/scene/block_state.hpp"
 #include "engine/modes/modes.hpp"
+#include "engine/scene/block_state.hpp"
 #include "engine/scene/scene.hpp"
 
 namespace blockfrag {

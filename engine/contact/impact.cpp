@@ -122,7 +122,7 @@ ImpactRegime regime_of(const Path& path, int used) {
 void require(bool ok, const char* what, double value) {
   if (!ok) {
     throw ContractViolation(std::string("corner impact: ") + what + " (got " +
-                                std::to_string(value) + ")");
+                            std::to_string(value) + ")");
   }
 }
 

@@ -50,8 +50,8 @@ Model choose_model(const Scene& scene, const GroundMotionPieces& motion,
   if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) return Model::full_vertical;
   if (!scene.effects.automatic) return model_named_by(scene.effects);
   const double mu = scene.contact.friction;
-  const double tip = std::min(geometry.tip_threshold(Corner::left),
-                              geometry.tip_threshold(Corner::right));
+  const double tip =
+      std::min(geometry.tip_threshold(Corner::left), geometry.tip_threshold(Corner::right));
   // A block released tilted is already rocking.
   if (scene.initial.theta != 0.0) return Model::full;
   if (motion.peak_abs_lambda() < std::min(mu, tip)) return Model::at_rest;

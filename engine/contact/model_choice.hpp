@@ -2,8 +2,8 @@
 // full model's answer for these inputs.
 #pragma once
 
-#include "engine/scene/block_geometry.hpp"
 #include "engine/motion/ground_motion.hpp"
+#include "engine/scene/block_geometry.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/summary.hpp"
 

@@ -10,7 +10,8 @@ double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot) {
   const Vec2 r_old = geometry.base_corner(old_pivot);
   const Vec2 r_new = geometry.base_corner(other(old_pivot));
   const double k2 = geometry.inertia_per_mass();
-  return (k2 + r_new.x * r_old.x + r_new.y * r_old.y) / (k2 + r_new.x * r_new.x + r_new.y * r_new.y);
+  return (k2 + r_new.x * r_old.x + r_new.y * r_old.y) /
+         (k2 + r_new.x * r_new.x + r_new.y * r_new.y);
 }
 
 HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g)

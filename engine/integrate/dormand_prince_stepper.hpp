@@ -29,8 +29,7 @@ class DormandPrinceStepper {
     }
     for (double s : scale) {
       if (!(s > 0.0) || !std::isfinite(s)) {
-        throw ContractViolation(
-            "DormandPrinceStepper: every scale must be positive and finite");
+        throw ContractViolation("DormandPrinceStepper: every scale must be positive and finite");
       }
     }
   }
@@ -44,8 +43,7 @@ class DormandPrinceStepper {
   template <class Rhs>
   requires OdeRhs<Rhs, N>
   void step(const Rhs& rhs, double& t, OdeState<N>& q, double h_max) {
-    if (!(h_max > 0.0))
-      throw ContractViolation("DormandPrinceStepper::step: h_max must be > 0");
+    if (!(h_max > 0.0)) throw ContractViolation("DormandPrinceStepper::step: h_max must be > 0");
     if constexpr (N == 0) {
       if (!std::isfinite(h_max)) {
         throw ContractViolation("DormandPrinceStepper::step: h_max must be finite when N = 0");

@@ -4,10 +4,10 @@
 // location is the cubic Hermite through the step's ends (GSL's explicit steppers have none).
 #pragma once
 
+#include <memory>
+
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
-
-#include <memory>
 
 #include "engine/integrate/ode_state.hpp"
 

@@ -57,8 +57,8 @@ double earliest_fall(double depth, double rate, double bound) {
 }
 
 std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
-                                     double min_step, double time_tolerance,
-                                     double height_noise, double sink_allowance) {
+                                     double min_step, double time_tolerance, double height_noise,
+                                     double sink_allowance) {
   double tau = 0.0;
   CornerHeight::Sample now = h.at(0.0);
   if (now.height <= 0.0) {

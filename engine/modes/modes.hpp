@@ -10,10 +10,10 @@
 #include <numbers>
 #include <variant>
 
-#include "engine/scene/block_state.hpp"
 #include "engine/contact/contact_dynamics.hpp"
-#include "engine/motion/ground_motion.hpp"
 #include "engine/integrate/ode_state.hpp"
+#include "engine/motion/ground_motion.hpp"
+#include "engine/scene/block_state.hpp"
 #include "engine/summary.hpp"
 #include "engine/tolerances.hpp"
 
@@ -100,7 +100,6 @@ struct ContactForces {
   double friction, normal;  // per unit mass
 };
 
-
 // Flat on the base, slipping with sign s: x'' = (lambda - s mu (1 + lambda_v)) g.  q = (x, vx).
 // Ends when the slip stops or the ground falls away faster than g (the load vanishes).
 struct SlideSystem {
@@ -173,8 +172,8 @@ struct RockSystem {
   OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }
 };
 
-// Housner's rocking block: rocks on a corner that never slips or lifts (so no contact-force guards);
-// the other corner's landing and overturning end the mode.  q = (theta, omega).
+// Housner's rocking block: rocks on a corner that never slips or lifts (so no contact-force
+// guards); the other corner's landing and overturning end the mode.  q = (theta, omega).
 struct HousnerRockSystem {
   static constexpr int N = 2;
   enum Guard { other_corner_height, overturn_margin, kGuards };
@@ -206,8 +205,8 @@ struct SlideRockSystem {
     kGuards
   };
   static constexpr std::array<GuardEvent, kGuards> kEvents = {
-      GuardEvent::lift_off, GuardEvent::slip_stops, GuardEvent::corner_lands,
-      GuardEvent::overturns, GuardEvent::painleve_boundary};
+      GuardEvent::lift_off, GuardEvent::slip_stops, GuardEvent::corner_lands, GuardEvent::overturns,
+      GuardEvent::painleve_boundary};
   SystemContext c;
   Corner pivot;
   int s;

@@ -10,12 +10,16 @@
 namespace blockfrag {
 
 void check_accelerogram(const Accelerogram& record) {
-  const auto fail = [](const char* rule) { throw InvalidInput(std::string("invalid record: ") + rule); };
-  if (record.times.size() != record.acceleration_g.size()) fail("times and accelerations differ in length");
+  const auto fail = [](const char* rule) {
+    throw InvalidInput(std::string("invalid record: ") + rule);
+  };
+  if (record.times.size() != record.acceleration_g.size())
+    fail("times and accelerations differ in length");
   if (record.times.size() < 2) fail("needs at least 2 samples");
   if (!(record.times.front() >= 0)) fail("times must be >= 0");
   for (std::size_t k = 0; k < record.times.size(); ++k) {
-    if (!std::isfinite(record.times[k]) || !std::isfinite(record.acceleration_g[k])) fail("values must be finite");
+    if (!std::isfinite(record.times[k]) || !std::isfinite(record.acceleration_g[k]))
+      fail("values must be finite");
     if (k > 0 && !(record.times[k] > record.times[k - 1])) fail("times must increase strictly");
   }
 }

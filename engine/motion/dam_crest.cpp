@@ -84,7 +84,8 @@ NigamJenningsStep::NigamJenningsStep(double omega, double zeta, double h)
   b22_ = -E * (k1 * decaying_v - k2 * rate) - 1 / (w * w * h);
 }
 
-OscillatorState NigamJenningsStep::operator()(const OscillatorState& s, double a0, double a1) const {
+OscillatorState NigamJenningsStep::operator()(const OscillatorState& s, double a0,
+                                              double a1) const {
   if (taylor_) {
     // q''' = -2 zeta omega q'' - omega^2 q' - a'; truncation O((omega h)^3) relative.
     const double w = omega_, h = h_;

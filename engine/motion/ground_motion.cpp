@@ -25,7 +25,8 @@ std::vector<double> ricker_extrema(const MotionPiece::Formula& f, double t0, dou
 // them with the bound on the slope's own derivative, which proves the cells it skips empty. A
 // maximum and minimum closer than min_width differ by less than kNegligibleExtremumPair of the
 // pulse's scale (far below the rest mode's onset margin): such a pair can be skipped.
-std::vector<double> mavroeidis_papageorgiou_extrema(const MotionPiece::Formula& f, double t0, double t1) {
+std::vector<double> mavroeidis_papageorgiou_extrema(const MotionPiece::Formula& f, double t0,
+                                                    double t1) {
   const double omega = f.angular_frequency, k = f.modulation;
   // In units of A: slope omega s(x) with x = omega (t - origin), |d/dt| of that <= omega^2 bound.
   const double bound = omega * omega * pulse::mavroeidis_papageorgiou_curvature_bound(k);
@@ -51,7 +52,8 @@ double MotionPiece::max_abs_lambda() const {
 std::vector<double> MotionPiece::extrema_between(double t0, double t1) const {
   if (is_zero()) return {};
   if (f_.shape == Shape::ricker) return ricker_extrema(f_, t0, t1);
-  if (f_.shape == Shape::mavroeidis_papageorgiou) return mavroeidis_papageorgiou_extrema(f_, t0, t1);
+  if (f_.shape == Shape::mavroeidis_papageorgiou)
+    return mavroeidis_papageorgiou_extrema(f_, t0, t1);
   std::vector<double> times;
   if (f_.shape != Shape::cosine && f_.shape != Shape::sine) return times;
   // cos(omega t + phase) has extrema at omega t + phase = k pi, sin at (k + 1/2) pi.
@@ -123,7 +125,8 @@ GroundMotionPieces::GroundMotionPieces(const std::vector<double>& times,
   close();
 }
 
-void GroundMotionPieces::add_tabulated(const std::vector<double>& times, const std::vector<double>& lambdas) {
+void GroundMotionPieces::add_tabulated(const std::vector<double>& times,
+                                       const std::vector<double>& lambdas) {
   if (!times.empty() && times.front() > 0) add({}, times.front());
   for (std::size_t i = 0; i + 1 < times.size(); ++i) {
     if (times[i + 1] == times[i]) continue;  // a repeated time: lambda jumps there
@@ -156,8 +159,9 @@ double GroundMotionPieces::peak_abs_lambda() const {
 }
 
 const MotionPiece& GroundMotionPieces::piece_at(double t) const {
-  const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t,
-                                   [](double x, const MotionPiece& piece) { return x < piece.end(); });
+  const auto it =
+      std::upper_bound(pieces_.begin(), pieces_.end(), t,
+                       [](double x, const MotionPiece& piece) { return x < piece.end(); });
   return it == pieces_.end() ? pieces_.back() : *it;
 }
 

@@ -23,7 +23,7 @@ class MotionPiece {
     double amplitude = 0.0;          // the value (constant, linear at origin) or the peak
     double angular_frequency = 0.0;  // cosine, sine: A cos(omega t + phase)
     double phase = 0.0;
-    double origin = 0.0;             // linear: lambda = A + slope (t - origin)
+    double origin = 0.0;  // linear: lambda = A + slope (t - origin)
     double slope = 0.0;
     // ricker: A pulse::ricker(omega (t - origin)), omega = pi / Tp.
     // mavroeidis_papageorgiou: A pulse::mavroeidis_papageorgiou(omega (t - origin), modulation,
@@ -49,10 +49,11 @@ class MotionPiece {
       case Shape::linear: return f_.amplitude + f_.slope * (t - f_.origin);
       case Shape::cosine: return f_.amplitude * std::cos(f_.angular_frequency * t + f_.phase);
       case Shape::sine: return f_.amplitude * std::sin(f_.angular_frequency * t + f_.phase);
-      case Shape::ricker: return f_.amplitude * pulse::ricker(f_.angular_frequency * (t - f_.origin));
+      case Shape::ricker:
+        return f_.amplitude * pulse::ricker(f_.angular_frequency * (t - f_.origin));
       case Shape::mavroeidis_papageorgiou:
-        return f_.amplitude *
-               pulse::mavroeidis_papageorgiou(f_.angular_frequency * (t - f_.origin), f_.modulation, f_.phase);
+        return f_.amplitude * pulse::mavroeidis_papageorgiou(f_.angular_frequency * (t - f_.origin),
+                                                             f_.modulation, f_.phase);
     }
     return 0.0;
   }
@@ -66,7 +67,8 @@ class MotionPiece {
     const double omega = f_.angular_frequency;
     if (!(omega > 0)) return std::numeric_limits<double>::infinity();
     if (f_.shape == Shape::ricker) return std::numbers::pi / omega;
-    if (f_.shape == Shape::mavroeidis_papageorgiou) return 2.0 * std::numbers::pi / (omega * (1.0 + f_.modulation));
+    if (f_.shape == Shape::mavroeidis_papageorgiou)
+      return 2.0 * std::numbers::pi / (omega * (1.0 + f_.modulation));
     return 2.0 * std::numbers::pi / omega;
   }
 
@@ -84,8 +86,9 @@ class GroundMotionPieces {
   // g converts the pulses given by a ground velocity in m/s (Mavroeidis-Papageorgiou) into lambda;
   // every other motion is given in g already.
   explicit GroundMotionPieces(const GroundMotion& motion, double g = 9.81);
-  // lambda given at increasing times, linear in between, zero outside [times.front(), times.back()].
-  // A time given twice in a row is a jump: the first value ends one piece, the second starts the next.
+  // lambda given at increasing times, linear in between, zero outside [times.front(),
+  // times.back()]. A time given twice in a row is a jump: the first value ends one piece, the
+  // second starts the next.
   GroundMotionPieces(const std::vector<double>& times, const std::vector<double>& lambdas);
 
   const MotionPiece& piece_at(double t) const;  // the first piece with t < end

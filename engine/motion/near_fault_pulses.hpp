@@ -1,8 +1,8 @@
 // Analytic near-fault pulses: the ground motions a scene names by "type" besides the plain
-// sine/cosine/rectangular pulses. Plain values; engine/motion/pulse_shapes.hpp has their formulas and
-// engine/motion/ground_motion.cpp turns each into pieces. As everywhere, the ground's acceleration is
-// -lambda(t) g, so a positive amplitude_g pushes the block to +x first; each is zero outside its
-// window, which starts at t = 0.
+// sine/cosine/rectangular pulses. Plain values; engine/motion/pulse_shapes.hpp has their formulas
+// and engine/motion/ground_motion.cpp turns each into pieces. As everywhere, the ground's
+// acceleration is -lambda(t) g, so a positive amplitude_g pushes the block to +x first; each is
+// zero outside its window, which starts at t = 0.
 #pragma once
 
 #include <optional>
@@ -42,8 +42,8 @@ struct MakrisPulseC {
 // Its extrema are at t0 (A) and t0 +- sqrt(3/2) Tp / pi (-2 exp(-3/2) A = -0.446 A).
 struct RickerWavelet {
   double amplitude_g = 1.0;
-  double period = 1.0;        // Tp = 1 / f_p, s
-  std::optional<double> t0;   // the centre, s; default 1.5 Tp
+  double period = 1.0;       // Tp = 1 / f_p, s
+  std::optional<double> t0;  // the centre, s; default 1.5 Tp
   // At the default centre, u = 1.5 pi at t = 0 and the cut tails are below 1e-8 A.
   double center() const { return t0.value_or(1.5 * period); }
 };
@@ -52,7 +52,8 @@ struct RickerWavelet {
 //   v(t) = (Vp / 2) [1 + cos(2 pi fp (t - t0) / gamma)] cos(2 pi fp (t - t0) + nu)
 // for |t - t0| <= gamma / (2 fp), zero outside; fp = 1/Tp. lambda = -a / g with a = dv/dt; with
 // Omega = 2 pi fp and tau = t - t0, the product of cosines expands into three sines:
-//   lambda = (Vp Omega / (2 g)) [sin(Omega tau + nu) + (1 + 1/gamma)/2 sin((1 + 1/gamma) Omega tau + nu)
+//   lambda = (Vp Omega / (2 g)) [sin(Omega tau + nu) + (1 + 1/gamma)/2 sin((1 + 1/gamma) Omega tau
+//   + nu)
 //                                + (1 - 1/gamma)/2 sin((1 - 1/gamma) Omega tau + nu)].
 // With nu = 0 the ground velocity peaks at Vp at t0.
 struct MavroeidisPapageorgiouPulse {

@@ -10,8 +10,8 @@
 namespace blockfrag::pulse {
 
 // With w = omega_p and T the pulse's end, w T + phi = (2n + 1) pi - phi, so
-//   velocity     integral_0^T cos(w s + phi) ds = [sin(w T + phi) - sin(phi)] / w = 0 for every phi,
-//   displacement integral_0^T [sin(w s + phi) - sin(phi)] / w ds
+//   velocity     integral_0^T cos(w s + phi) ds = [sin(w T + phi) - sin(phi)] / w = 0 for every
+//   phi, displacement integral_0^T [sin(w s + phi) - sin(phi)] / w ds
 //              = [cos(phi) - cos(w T + phi)] / w^2 - T sin(phi) / w
 //              = [2 cos(phi) - ((2n + 1) pi - 2 phi) sin(phi)] / w^2.
 // The bracket is 2 at phi = 0, -2 n pi at pi/2, and its derivative -((2n + 1) pi - 2 phi) cos(phi)
@@ -19,7 +19,9 @@ namespace blockfrag::pulse {
 double makris_c_phase(int n) {
   if (n < 1) throw ContractViolation("Makris type C_n needs n >= 1");
   const double odd_pi = (2.0 * n + 1.0) * std::numbers::pi;
-  const auto residual = [&](double phi) { return 2.0 * std::cos(phi) - (odd_pi - 2.0 * phi) * std::sin(phi); };
+  const auto residual = [&](double phi) {
+    return 2.0 * std::cos(phi) - (odd_pi - 2.0 * phi) * std::sin(phi);
+  };
   double low = 0.0, high = std::numbers::pi / 2;  // residual(low) > 0 > residual(high)
   while (true) {
     const double mid = 0.5 * (low + high);
@@ -34,7 +36,8 @@ namespace {
 struct ZeroSearch {
   const std::function<double(double)>& f;
   double slope_bound;
-  double slack;  // the round-off in |f(a)| + |f(b)|: a bound that is attained must not prove too much
+  double
+      slack;  // the round-off in |f(a)| + |f(b)|: a bound that is attained must not prove too much
   double min_width;
   std::vector<double>& zeros;
 
@@ -69,8 +72,8 @@ struct ZeroSearch {
 
 }  // namespace
 
-std::vector<double> zeros_between(const std::function<double(double)>& f, double slope_bound, double t0,
-                                  double t1, double cell, double min_width) {
+std::vector<double> zeros_between(const std::function<double(double)>& f, double slope_bound,
+                                  double t0, double t1, double cell, double min_width) {
   std::vector<double> zeros;
   if (!(t1 > t0)) return zeros;
   const double cells = std::max(1.0, std::ceil((t1 - t0) / cell));
@@ -84,7 +87,8 @@ std::vector<double> zeros_between(const std::function<double(double)>& f, double
     a = b;
     fa = fb;
   }
-  // The ends are not interior: a zero within min_width of one is the caller's end (which it checks).
+  // The ends are not interior: a zero within min_width of one is the caller's end (which it
+  // checks).
   std::erase_if(zeros, [&](double t) { return t <= t0 + min_width || t >= t1 - min_width; });
   return zeros;
 }

@@ -1,6 +1,7 @@
-// The formulas of the pulse shapes that are not one sine or cosine (engine/motion/near_fault_pulses.hpp
-// says where each comes from), their derivatives for finding extrema, and the phase of Makris's
-// type C_n pulse. The lambda formulas are inline: MotionPiece::lambda calls them at every stage.
+// The formulas of the pulse shapes that are not one sine or cosine
+// (engine/motion/near_fault_pulses.hpp says where each comes from), their derivatives for finding
+// extrema, and the phase of Makris's type C_n pulse. The lambda formulas are inline:
+// MotionPiece::lambda calls them at every stage.
 #pragma once
 
 #include <cmath>
@@ -46,7 +47,7 @@ double makris_c_phase(int n);
 // unless another lies within min_width of it: for f = lambda', such a pair is a maximum and a
 // minimum whose values differ by at most slope_bound min_width^2 / 4. Zeros within min_width of
 // t0 or t1 are left to the caller, who checks the ends. Sorted.
-std::vector<double> zeros_between(const std::function<double(double)>& f, double slope_bound, double t0,
-                                  double t1, double cell, double min_width);
+std::vector<double> zeros_between(const std::function<double(double)>& f, double slope_bound,
+                                  double t0, double t1, double cell, double min_width);
 
 }  // namespace blockfrag::pulse

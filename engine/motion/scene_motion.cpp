@@ -12,15 +12,16 @@ namespace {
 // adaptive methods take the record as it is.
 GroundMotion fitted_to_solver(const GroundMotion& motion, const SolverSettings& solver) {
   const auto* recorded = std::get_if<RecordedMotion>(&motion);
-  if (!recorded || solver.method != Method::rk4 || on_step_grid(*recorded->record, solver.dt)) return motion;
+  if (!recorded || solver.method != Method::rk4 || on_step_grid(*recorded->record, solver.dt))
+    return motion;
   RecordedMotion resampled = *recorded;
   resampled.record = std::make_shared<const Accelerogram>(resample(*recorded->record, solver.dt));
   return resampled;
 }
 
 // Read as lambda_v, the ground's upward acceleration over g. Pulses given by their lambda are that
-// as they are; a record's a(t) and a velocity pulse's dv/dt are the ground's acceleration, which the
-// horizontal reading turns into lambda = -a/g and the vertical one must keep as +a/g.
+// as they are; a record's a(t) and a velocity pulse's dv/dt are the ground's acceleration, which
+// the horizontal reading turns into lambda = -a/g and the vertical one must keep as +a/g.
 GroundMotion upward(GroundMotion motion) {
   if (auto* recorded = std::get_if<RecordedMotion>(&motion)) recorded->scale = -recorded->scale;
   if (auto* pulse = std::get_if<MavroeidisPapageorgiouPulse>(&motion)) {

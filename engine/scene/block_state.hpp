@@ -1,5 +1,5 @@
-// The block's full state in the ground frame: centre of mass (x relative to the ground, y above it),
-// rotation theta (counter-clockwise), and their rates.
+// The block's full state in the ground frame: centre of mass (x relative to the ground, y above
+// it), rotation theta (counter-clockwise), and their rates.
 #pragma once
 
 #include <cmath>

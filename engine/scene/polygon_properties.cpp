@@ -1,12 +1,12 @@
 #include "engine/scene/polygon_properties.hpp"
 
-#include "engine/scene/polygon_simplicity.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <numeric>
+
+#include "engine/scene/polygon_simplicity.hpp"
 
 namespace blockfrag {
 
@@ -95,9 +95,8 @@ std::optional<PolygonDefect> polygon_defect(const std::vector<Vertex>& v) {
   }
   const std::size_t left = base_left(v);
   const std::size_t right = next(left, n);
-  const auto at_lowest = std::count_if(v.begin(), v.end(), [&](const Vertex& p) {
-    return p[1] == v[left][1];
-  });
+  const auto at_lowest =
+      std::count_if(v.begin(), v.end(), [&](const Vertex& p) { return p[1] == v[left][1]; });
   if (v[right][1] != v[left][1] || at_lowest != 2) {
     return PolygonDefect{static_cast<int>(left),
                          "is at the lowest y with " + std::to_string(at_lowest - 1) +
@@ -154,7 +153,8 @@ PolygonProperties polygon_properties(const std::vector<Vertex>& vertices) {
     const Vertex& b = centred[next(i, n)];
     const double c = cross(a[0], a[1], b[0], b[1]);
     centred_area2 += c;
-    j_sum += c * (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] + b[1] * b[1]);
+    j_sum +=
+        c * (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] + b[1] * b[1]);
   }
   out.inertia_per_mass = j_sum / (6.0 * centred_area2);
   // The hull starts at its lowest-then-leftmost point: the base's left end.

@@ -27,8 +27,8 @@ struct PolygonDefect {
 std::optional<PolygonDefect> polygon_defect(const std::vector<Vertex>& vertices);
 
 struct PolygonProperties {
-  double area;           // m^2
-  Vertex centroid;       // in the vertices' frame
+  double area;      // m^2
+  Vertex centroid;  // in the vertices' frame
   // Polar second moment of area about the centroid over the area: I/M for a uniform block.
   double inertia_per_mass;
   // The convex hull's vertices relative to the centroid, counter-clockwise from the base's left

@@ -18,6 +18,7 @@ bool segments_meet(const Vertex& p, const Vertex& q, const Vertex& r, const Vert
 // A pair of edges that meet (edge i runs from vertex i to vertex i + 1), lower index first; none
 // for a simple polygon. Assumes neighbouring edges share only their common vertex (no straight
 // or folded corner, no repeated vertex).
-std::optional<std::pair<std::size_t, std::size_t>> first_meeting_edges(const std::vector<Vertex>& vertices);
+std::optional<std::pair<std::size_t, std::size_t>> first_meeting_edges(
+    const std::vector<Vertex>& vertices);
 
 }  // namespace blockfrag

@@ -1,10 +1,10 @@
 // One simulation's inputs: block, contact, excitation, solver. Plain values, SI units.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
-#include <array>
 #include <variant>
 #include <vector>
 
@@ -30,23 +30,24 @@ struct PolygonBlock {
 };
 
 struct Contact {
-  double friction = 0.6;     // mu, Coulomb, static = kinetic
-  double restitution = 0.6;  // e, Newton's coefficient on the normal velocity of the impacting corner
+  double friction = 0.6;  // mu, Coulomb, static = kinetic
+  double restitution =
+      0.6;  // e, Newton's coefficient on the normal velocity of the impacting corner
 };
 
 // The ground's horizontal acceleration is -lambda(t) g; each pulse is zero outside its window.
 struct NoMotion {};
-struct CosinePulse {        // lambda = A cos(2 pi t / T) for 0 <= t < cycles T
+struct CosinePulse {  // lambda = A cos(2 pi t / T) for 0 <= t < cycles T
   double amplitude_g = 1.0;
   double period = 2.0;
   double cycles = 1.0;
 };
-struct SinePulse {          // lambda = A sin(2 pi t / T) for 0 <= t < cycles T
+struct SinePulse {  // lambda = A sin(2 pi t / T) for 0 <= t < cycles T
   double amplitude_g = 1.0;
   double period = 2.0;
   double cycles = 1.0;
 };
-struct RectangularPulse {   // lambda = A for 0 <= t < duration
+struct RectangularPulse {  // lambda = A for 0 <= t < duration
   double amplitude_g = 1.0;
   double duration = 1.0;
 };
@@ -60,23 +61,25 @@ struct RecordedMotion {
 };
 // The near-fault pulses (Makris A, B, C_n, Ricker, Mavroeidis-Papageorgiou) are in
 // engine/motion/near_fault_pulses.hpp with their formulas.
-using GroundMotion = std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse, RecordedMotion, MakrisPulseA,
-                                  MakrisPulseB, MakrisPulseC, RickerWavelet, MavroeidisPapageorgiouPulse>;
+using GroundMotion =
+    std::variant<NoMotion, CosinePulse, SinePulse, RectangularPulse, RecordedMotion, MakrisPulseA,
+                 MakrisPulseB, MakrisPulseC, RickerWavelet, MavroeidisPapageorgiouPulse>;
 
 // The block sits on the crest of a gravity dam: the foundation motion reaches it through the dam's
-// fundamental mode, a damped oscillator (engine/motion/dam_crest.hpp). The period is given, or estimated
-// from the dam's height and concrete modulus (Fenves & Chopra 1987).
+// fundamental mode, a damped oscillator (engine/motion/dam_crest.hpp). The period is given, or
+// estimated from the dam's height and concrete modulus (Fenves & Chopra 1987).
 struct DamPeriod {
   double period = 0.25;  // T1, s
 };
 struct DamSize {
-  double height = 100.0;           // H, m
-  double elastic_modulus = 25e9;   // E, Pa
+  double height = 100.0;          // H, m
+  double elastic_modulus = 25e9;  // E, Pa
 };
 struct DamCrest {
   std::variant<DamPeriod, DamSize> stiffness = DamPeriod{};
-  double damping = 0.05;       // zeta, of critical
-  double participation = 1.0;  // Gamma_1 phi_1(crest): the mode's participation times its crest ordinate
+  double damping = 0.05;  // zeta, of critical
+  double participation =
+      1.0;  // Gamma_1 phi_1(crest): the mode's participation times its crest ordinate
 };
 
 // rk4: the paper's fixed step. adaptive: Dormand-Prince 5(4) with dense output (the production
@@ -86,8 +89,8 @@ enum class Method { rk4, adaptive, gsl_rkf45, gsl_rk8pd };
 
 struct SolverSettings {
   Method method = Method::adaptive;
-  double dt = 2.5e-4;        // rk4 step, s (the paper's)
-  double tolerance = 1e-8;   // adaptive: relative and scaled absolute error per step
+  double dt = 2.5e-4;       // rk4 step, s (the paper's)
+  double tolerance = 1e-8;  // adaptive: relative and scaled absolute error per step
   // Safety net: a scene that exceeds any of these stops with status "failed".
   long max_steps = 50'000'000;
   long max_events = 1'000'000;
@@ -101,8 +104,8 @@ struct InitialState {
 
 // The physics a scene simulates ("effects" in a scene file). automatic ("auto"): everything the
 // inputs make possible, pruning what they make impossible (never changing a result). Otherwise the
-// flags name one model: rocking (+ impact): Housner's rocking block, which never slides or lifts off
-// (impacts with Housner's ratio; without impact the pivot changes without loss); sliding alone:
+// flags name one model: rocking (+ impact): Housner's rocking block, which never slides or lifts
+// off (impacts with Housner's ratio; without impact the pivot changes without loss); sliding alone:
 // Newmark's sliding block, which never rocks; all four: the full model, which alone also takes
 // vertical ground motion (the fifth flag, set exactly when the scene has one).
 struct Effects {
@@ -121,8 +124,8 @@ struct Scene {
   // g (1 + lambda_v), and the block leaves the ground when the ground falls faster than g.
   GroundMotion vertical_motion = NoMotion{};
   std::optional<DamCrest> dam;  // none: the block stands on the foundation
-  double duration = 4.0;  // s
-  double g = 9.81;        // m/s^2
+  double duration = 4.0;        // s
+  double g = 9.81;              // m/s^2
   SolverSettings solver;
   InitialState initial;
 };

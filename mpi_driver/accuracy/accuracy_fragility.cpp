@@ -29,7 +29,8 @@ StudyResults run_in_process(const StudyConfig& config, const SceneEvaluator& eva
   for (std::int64_t i = 0; i < config.total_samples(); ++i) {
     const auto start = std::chrono::steady_clock::now();
     results.records.push_back(evaluate_sample(sampler, i, evaluate));
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     const Scene scene = geometry.draw(i).scene;
     results.alphas.push_back(block_alpha(scene));
   }
@@ -52,7 +53,8 @@ SceneEvaluator evaluator_for(const SolverSetting& setting) {
 
 bool exceeds_at(const LimitState& state, const StudyResults& results, std::size_t i) {
   const SampleRecord& record = results.records[i];
-  return record.status == static_cast<std::int64_t>(SampleStatus::ok) && exceeds(state, record, results.alphas[i]);
+  return record.status == static_cast<std::int64_t>(SampleStatus::ok) &&
+         exceeds(state, record, results.alphas[i]);
 }
 
 std::string number(double x, const char* format = "%.3g") {
@@ -85,12 +87,14 @@ std::vector<FragilityDifference> compare_fragility(const StudyConfig& config,
         row.failures += record.status != static_cast<std::int64_t>(SampleStatus::ok) ? 1 : 0;
       }
       for (std::size_t i = 0; i < results.records.size(); ++i) {
-        row.verdicts_changed += exceeds_at(state, results, i) != exceeds_at(state, reference_results, i) ? 1 : 0;
+        row.verdicts_changed +=
+            exceeds_at(state, results, i) != exceeds_at(state, reference_results, i) ? 1 : 0;
       }
       for (std::size_t level = 0; level < ref.probability.size(); ++level) {
         if (ref.trials[level] == 0 || curve.trials[level] == 0) continue;
         row.max_probability_difference =
-            std::max(row.max_probability_difference, std::abs(curve.probability[level] - ref.probability[level]));
+            std::max(row.max_probability_difference,
+                     std::abs(curve.probability[level] - ref.probability[level]));
         const double half_width = (ref.ci_high[level] - ref.ci_low[level]) / 2;
         row.max_sampling_half_width = std::max(row.max_sampling_half_width, half_width);
       }
@@ -106,7 +110,8 @@ std::vector<FragilityDifference> compare_fragility(const StudyConfig& config,
 }
 
 std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_document,
-                                                  const std::vector<std::int64_t>& sizes, int replicates,
+                                                  const std::vector<std::int64_t>& sizes,
+                                                  int replicates,
                                                   std::int64_t reference_samples_per_level) {
   const auto configured = [&](const char* design, std::int64_t size, std::uint64_t seed) {
     nlohmann::json document = study_document;
@@ -116,7 +121,8 @@ std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_do
     return parse_study_config(document, "design convergence");
   };
   const SceneEvaluator evaluate = evaluator_for(default_setting());
-  const StudyConfig reference_config = configured("latin_hypercube", reference_samples_per_level, 1);
+  const StudyConfig reference_config =
+      configured("latin_hypercube", reference_samples_per_level, 1);
   const LimitState& state = reference_config.limit_states.front();
   const StudyResults reference_results = run_in_process(reference_config, evaluate);
   const FragilityCurve reference =
@@ -128,7 +134,8 @@ std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_do
       std::vector<double> median_errors, beta_errors;
       for (int replicate = 0; replicate < replicates; ++replicate) {
         // Seeds far from the reference's, so no replicate reuses its streams.
-        const StudyConfig config = configured(design, size, 1000 + static_cast<std::uint64_t>(replicate));
+        const StudyConfig config =
+            configured(design, size, 1000 + static_cast<std::uint64_t>(replicate));
         const StudyResults results = run_in_process(config, evaluate);
         const FragilityCurve curve =
             fragility_curve(config, config.limit_states.front(), results.records, results.alphas);
@@ -136,25 +143,26 @@ std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_do
         median_errors.push_back(curve.median / reference.median - 1);
         beta_errors.push_back(curve.beta - reference.beta);
       }
-      rows.push_back({design, size, state.name, root_mean_square(median_errors), root_mean_square(beta_errors),
-                      static_cast<int>(median_errors.size())});
+      rows.push_back({design, size, state.name, root_mean_square(median_errors),
+                      root_mean_square(beta_errors), static_cast<int>(median_errors.size())});
     }
   }
   return rows;
 }
 
 void write_fragility_table(std::ostream& out, const std::vector<FragilityDifference>& rows) {
-  out << "| setting | limit state | failed samples | samples with another verdict | max \\|P - P_ref\\| over levels "
+  out << "| setting | limit state | failed samples | samples with another verdict | max \\|P - "
+         "P_ref\\| over levels "
          "| max Wilson 95 % half-width (sampling error) | fitted median (ref) | fitted beta (ref) "
          "| median time/sample (ms) |\n"
       << "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
-    out << "| " << setting_label(row.setting) << " | " << row.limit_state << " | " << row.failures << " | "
-        << row.verdicts_changed << " | "
-        << number(row.max_probability_difference) << " | " << number(row.max_sampling_half_width) << " | "
-        << number(row.median, "%.5g") << " (" << number(row.reference_median, "%.5g") << ") | "
-        << number(row.beta, "%.4g") << " (" << number(row.reference_beta, "%.4g") << ") | "
-        << number(1e3 * row.median_seconds) << " |\n";
+    out << "| " << setting_label(row.setting) << " | " << row.limit_state << " | " << row.failures
+        << " | " << row.verdicts_changed << " | " << number(row.max_probability_difference) << " | "
+        << number(row.max_sampling_half_width) << " | " << number(row.median, "%.5g") << " ("
+        << number(row.reference_median, "%.5g") << ") | " << number(row.beta, "%.4g") << " ("
+        << number(row.reference_beta, "%.4g") << ") | " << number(1e3 * row.median_seconds)
+        << " |\n";
   }
 }
 

@@ -21,10 +21,10 @@ namespace blockfrag {
 struct FragilityDifference {
   SolverSetting setting;
   std::string limit_state;
-  std::int64_t verdicts_changed = 0;      // samples whose exceedance differs from the reference's
-  std::int64_t failures = 0;              // samples that failed (a budget, or over 5 s) with this setting
-  double max_probability_difference = 0;  // max over levels of |p - p_reference|
-  double max_sampling_half_width = 0;     // max over levels of the reference's Wilson half-width
+  std::int64_t verdicts_changed = 0;  // samples whose exceedance differs from the reference's
+  std::int64_t failures = 0;  // samples that failed (a budget, or over 5 s) with this setting
+  double max_probability_difference = 0;    // max over levels of |p - p_reference|
+  double max_sampling_half_width = 0;       // max over levels of the reference's Wilson half-width
   double median = 0, reference_median = 0;  // of the lognormal fits (NaN when a fit does not exist)
   double beta = 0, reference_beta = 0;
   double median_seconds = 0;  // per sample, from one pass (not repeated: a rough cost)
@@ -49,7 +49,8 @@ struct DesignConvergence {
 // of the lognormal fit of the first limit state against one Latin hypercube run of
 // reference_samples_per_level samples per level.
 std::vector<DesignConvergence> design_convergence(const nlohmann::json& study_document,
-                                                  const std::vector<std::int64_t>& sizes, int replicates,
+                                                  const std::vector<std::int64_t>& sizes,
+                                                  int replicates,
                                                   std::int64_t reference_samples_per_level);
 
 void write_fragility_table(std::ostream& out, const std::vector<FragilityDifference>& rows);

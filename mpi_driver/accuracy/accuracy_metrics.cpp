@@ -57,13 +57,17 @@ double sample_quantile(std::vector<double> values, double q) {
   return values[below] + fraction * (values[above] - values[below]);
 }
 
-SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors, const std::vector<double>& seconds,
-                                     const std::vector<long>& rhs_evaluations, const std::vector<long>& steps) {
+SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors,
+                                     const std::vector<double>& seconds,
+                                     const std::vector<long>& rhs_evaluations,
+                                     const std::vector<long>& steps) {
   SettingStatistics stats;
-  for (double OutputErrors::*output : {&OutputErrors::max_abs_theta, &OutputErrors::final_theta,
-                                       &OutputErrors::final_slide, &OutputErrors::first_impact_time}) {
+  for (double OutputErrors::*output :
+       {&OutputErrors::max_abs_theta, &OutputErrors::final_theta, &OutputErrors::final_slide,
+        &OutputErrors::first_impact_time}) {
     const auto values = column(errors, output);
-    stats.max_error.*output = values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+    stats.max_error.*output =
+        values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
     stats.median_error.*output = sample_quantile(values, 0.5);
   }
   for (const auto& e : errors) {
@@ -73,16 +77,17 @@ SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors, co
   }
   stats.max_error.wrong_verdict = stats.wrong_verdicts > 0;
   stats.max_error.failed = stats.failures > 0;
-  stats.wrong_verdict_rate =
-      errors.empty() ? 0.0 : static_cast<double>(stats.wrong_verdicts) / static_cast<double>(errors.size());
+  stats.wrong_verdict_rate = errors.empty() ? 0.0
+                                            : static_cast<double>(stats.wrong_verdicts) /
+                                                  static_cast<double>(errors.size());
   stats.median_seconds = sample_quantile(seconds, 0.5);
   stats.p95_seconds = sample_quantile(seconds, 0.95);
   stats.median_rhs_evaluations = sample_quantile(as_doubles(rhs_evaluations), 0.5);
-  stats.mean_rhs_evaluations =
-      rhs_evaluations.empty()
-          ? 0.0
-          : static_cast<double>(std::accumulate(rhs_evaluations.begin(), rhs_evaluations.end(), 0L)) /
-                static_cast<double>(rhs_evaluations.size());
+  stats.mean_rhs_evaluations = rhs_evaluations.empty()
+                                   ? 0.0
+                                   : static_cast<double>(std::accumulate(
+                                         rhs_evaluations.begin(), rhs_evaluations.end(), 0L)) /
+                                         static_cast<double>(rhs_evaluations.size());
   stats.median_steps = sample_quantile(as_doubles(steps), 0.5);
   return stats;
 }

@@ -30,8 +30,8 @@ inline constexpr double max_abs_theta_target = 1e-6;  // rad
 
 // One setting over the whole suite (every per-scene vector indexed like the suite).
 struct SettingStatistics {
-  OutputErrors max_error;     // the largest error of each output over the scenes (flags: any)
-  OutputErrors median_error;  // the median of each output's errors (flags unused)
+  OutputErrors max_error;       // the largest error of each output over the scenes (flags: any)
+  OutputErrors median_error;    // the median of each output's errors (flags unused)
   long scenes_over_target = 0;  // scenes whose error in max |theta| exceeds max_abs_theta_target
   long wrong_verdicts = 0;
   double wrong_verdict_rate = 0.0;  // wrong_verdicts / scenes
@@ -43,7 +43,9 @@ struct SettingStatistics {
   double median_steps = 0.0;
 };
 
-SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors, const std::vector<double>& seconds,
-                                     const std::vector<long>& rhs_evaluations, const std::vector<long>& steps);
+SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors,
+                                     const std::vector<double>& seconds,
+                                     const std::vector<long>& rhs_evaluations,
+                                     const std::vector<long>& steps);
 
 }  // namespace blockfrag

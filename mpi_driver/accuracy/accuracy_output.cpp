@@ -50,20 +50,26 @@ void write_scenes(Hdf5Writer& file, const AccuracyStudy& study) {
   file.set_attribute("/scenes", "names", joined(study.scene_names));
   file.set_attribute("/scenes", "categories", joined(study.scene_categories));
   const auto& ref = study.reference;
-  file.write_column("/scenes/reference_max_abs_theta", collect(ref, [](const Summary& s) { return s.max_abs_theta; }));
-  file.write_column("/scenes/reference_final_theta", collect(ref, [](const Summary& s) { return s.final_theta; }));
-  file.write_column("/scenes/reference_final_slide", collect(ref, [](const Summary& s) { return s.final_slide; }));
-  file.write_column("/scenes/reference_first_impact_time",
-                    collect(ref, [](const Summary& s) { return time_or_nan(s.first_impact_time); }));
+  file.write_column("/scenes/reference_max_abs_theta",
+                    collect(ref, [](const Summary& s) { return s.max_abs_theta; }));
+  file.write_column("/scenes/reference_final_theta",
+                    collect(ref, [](const Summary& s) { return s.final_theta; }));
+  file.write_column("/scenes/reference_final_slide",
+                    collect(ref, [](const Summary& s) { return s.final_slide; }));
+  file.write_column("/scenes/reference_first_impact_time", collect(ref, [](const Summary& s) {
+                      return time_or_nan(s.first_impact_time);
+                    }));
   file.write_column("/scenes/reference_overturned",
                     collect(ref, [](const Summary& s) { return std::int64_t{s.overturned}; }));
   file.write_column("/scenes/reference_impacts",
                     collect(ref, [](const Summary& s) { return std::int64_t{s.impacts}; }));
   for (const auto& output : outputs) {
-    file.write_column(std::string("/scenes/check_error_") + output.name,
-                      collect(study.check_errors, [&](const OutputErrors& e) { return e.*output.member; }));
+    file.write_column(
+        std::string("/scenes/check_error_") + output.name,
+        collect(study.check_errors, [&](const OutputErrors& e) { return e.*output.member; }));
   }
-  file.write_column("/scenes/check_wrong_verdict", flags(study.check_errors, &OutputErrors::wrong_verdict));
+  file.write_column("/scenes/check_wrong_verdict",
+                    flags(study.check_errors, &OutputErrors::wrong_verdict));
 }
 
 void write_setting(Hdf5Writer& file, const std::string& group, const SettingResult& result) {
@@ -72,33 +78,40 @@ void write_setting(Hdf5Writer& file, const std::string& group, const SettingResu
   file.set_attribute(group, "method", method_label(result.setting.method));
   file.set_attribute(group, "parameter", result.setting.parameter);
   for (const auto& output : outputs) {
-    file.write_column(group + "/error_" + output.name,
-                      collect(result.errors, [&](const OutputErrors& e) { return e.*output.member; }));
+    file.write_column(
+        group + "/error_" + output.name,
+        collect(result.errors, [&](const OutputErrors& e) { return e.*output.member; }));
   }
   file.write_column(group + "/wrong_verdict", flags(result.errors, &OutputErrors::wrong_verdict));
   file.write_column(group + "/failed", flags(result.errors, &OutputErrors::failed));
   const auto& runs = result.runs;
-  file.write_column(group + "/seconds_per_run", collect(runs, [](const TimedRun& r) { return r.seconds; }));
-  file.write_column(group + "/repeats", collect(runs, [](const TimedRun& r) { return std::int64_t{r.repeats}; }));
-  file.write_column(group + "/steps", collect(runs, [](const TimedRun& r) { return std::int64_t{r.summary.steps}; }));
-  file.write_column(group + "/rhs_evaluations",
-                    collect(result.runs, [](const TimedRun& r) { return std::int64_t{r.summary.rhs_evaluations}; }));
+  file.write_column(group + "/seconds_per_run",
+                    collect(runs, [](const TimedRun& r) { return r.seconds; }));
+  file.write_column(group + "/repeats",
+                    collect(runs, [](const TimedRun& r) { return std::int64_t{r.repeats}; }));
+  file.write_column(group + "/steps",
+                    collect(runs, [](const TimedRun& r) { return std::int64_t{r.summary.steps}; }));
+  file.write_column(group + "/rhs_evaluations", collect(result.runs, [](const TimedRun& r) {
+                      return std::int64_t{r.summary.rhs_evaluations};
+                    }));
 }
 
 void write_summary(Hdf5Writer& file, const AccuracyStudy& study) {
   const auto& settings = study.settings;
   file.create_group("/summary");
-  file.set_attribute("/summary", "labels", joined(collect(settings, [](const SettingResult& r) {
-                       return setting_label(r.setting);
-                     })));
+  file.set_attribute(
+      "/summary", "labels",
+      joined(collect(settings, [](const SettingResult& r) { return setting_label(r.setting); })));
   file.set_attribute("/summary", "methods", joined(collect(settings, [](const SettingResult& r) {
                        return method_label(r.setting.method);
                      })));
   file.write_column("/summary/parameter",
                     collect(settings, [](const SettingResult& r) { return r.setting.parameter; }));
   for (const auto& output : outputs) {
-    const auto error_column = [&](const char* prefix, const OutputErrors SettingStatistics::*statistic) {
-      file.write_column(std::string("/summary/") + prefix + output.name, collect(settings, [&](const SettingResult& r) {
+    const auto error_column = [&](const char* prefix,
+                                  const OutputErrors SettingStatistics::*statistic) {
+      file.write_column(std::string("/summary/") + prefix + output.name,
+                        collect(settings, [&](const SettingResult& r) {
                           return (r.statistics.*statistic).*output.member;
                         }));
     };
@@ -106,12 +119,15 @@ void write_summary(Hdf5Writer& file, const AccuracyStudy& study) {
     error_column("median_error_", &SettingStatistics::median_error);
   }
   const auto stat = [&](const char* name, auto member) {
-    file.write_column(std::string("/summary/") + name,
-                      collect(settings, [&](const SettingResult& r) { return r.statistics.*member; }));
+    file.write_column(
+        std::string("/summary/") + name,
+        collect(settings, [&](const SettingResult& r) { return r.statistics.*member; }));
   };
   const auto count = [&](const char* name, long SettingStatistics::*member) {
     file.write_column(std::string("/summary/") + name,
-                      collect(settings, [&](const SettingResult& r) { return std::int64_t{r.statistics.*member}; }));
+                      collect(settings, [&](const SettingResult& r) {
+                        return std::int64_t{r.statistics.*member};
+                      }));
   };
   count("scenes_over_target", &SettingStatistics::scenes_over_target);
   count("wrong_verdicts", &SettingStatistics::wrong_verdicts);
@@ -158,24 +174,30 @@ void write_accuracy_hdf5(const std::filesystem::path& path, const AccuracyStudy&
 
 void write_accuracy_table(std::ostream& out, const AccuracyStudy& study) {
   const SettingStatistics& check = study.check_statistics;
-  out << "Reference: " << setting_label(study.reference_setting) << "; check: " << setting_label(study.check_setting)
-      << " on " << study.scene_names.size() << " scenes. Largest |check - reference|: max|theta| "
-      << number(check.max_error.max_abs_theta) << " rad, final theta " << number(check.max_error.final_theta)
-      << " rad, final slide " << number(check.max_error.final_slide) << " m, first impact "
-      << number(check.max_error.first_impact_time) << " s; verdicts that differ: " << check.wrong_verdicts
-      << "; failures: " << check.failures << ".\n\n";
-  out << "| setting | max err max\\|theta\\| (rad) | scenes with err max\\|theta\\| > 1e-6 | max err final theta (rad) "
+  out << "Reference: " << setting_label(study.reference_setting)
+      << "; check: " << setting_label(study.check_setting) << " on " << study.scene_names.size()
+      << " scenes. Largest |check - reference|: max|theta| "
+      << number(check.max_error.max_abs_theta) << " rad, final theta "
+      << number(check.max_error.final_theta) << " rad, final slide "
+      << number(check.max_error.final_slide) << " m, first impact "
+      << number(check.max_error.first_impact_time)
+      << " s; verdicts that differ: " << check.wrong_verdicts << "; failures: " << check.failures
+      << ".\n\n";
+  out << "| setting | max err max\\|theta\\| (rad) | scenes with err max\\|theta\\| > 1e-6 | max "
+         "err final theta (rad) "
          "| max err final slide (m) | max err first impact (s) | wrong verdicts | failed "
          "| median time/scene (ms) | p95 time/scene (ms) | median RHS evals/scene |\n"
       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   const std::size_t scenes = study.scene_names.size();
   for (const SettingResult& result : study.settings) {
     const SettingStatistics& s = result.statistics;
-    out << "| " << setting_label(result.setting) << " | " << number(s.max_error.max_abs_theta) << " | "
-        << s.scenes_over_target << "/" << scenes << " | " << number(s.max_error.final_theta) << " | "
-        << number(s.max_error.final_slide) << " | " << number(s.max_error.first_impact_time) << " | "
-        << s.wrong_verdicts << "/" << scenes << " | " << s.failures << " | " << number(1e3 * s.median_seconds, "%.3g")
-        << " | " << number(1e3 * s.p95_seconds, "%.3g") << " | " << number(s.median_rhs_evaluations, "%.0f") << " |\n";
+    out << "| " << setting_label(result.setting) << " | " << number(s.max_error.max_abs_theta)
+        << " | " << s.scenes_over_target << "/" << scenes << " | "
+        << number(s.max_error.final_theta) << " | " << number(s.max_error.final_slide) << " | "
+        << number(s.max_error.first_impact_time) << " | " << s.wrong_verdicts << "/" << scenes
+        << " | " << s.failures << " | " << number(1e3 * s.median_seconds, "%.3g") << " | "
+        << number(1e3 * s.p95_seconds, "%.3g") << " | " << number(s.median_rhs_evaluations, "%.0f")
+        << " |\n";
   }
 }
 

@@ -38,7 +38,8 @@ SolverSetting default_setting() {
 
 std::vector<SolverSetting> full_accuracy_settings() {
   std::vector<SolverSetting> settings;
-  for (double dt : {1e-3, 5e-4, 2.5e-4, 1e-4, 5e-5, 2.5e-5, 1e-5}) settings.push_back({Method::rk4, dt});
+  for (double dt : {1e-3, 5e-4, 2.5e-4, 1e-4, 5e-5, 2.5e-5, 1e-5})
+    settings.push_back({Method::rk4, dt});
   for (Method method : {Method::adaptive, Method::gsl_rkf45, Method::gsl_rk8pd}) {
     for (int exponent = 3; exponent <= 12; ++exponent) {
       settings.push_back({method, std::pow(10.0, -exponent)});
@@ -50,7 +51,8 @@ std::vector<SolverSetting> full_accuracy_settings() {
 SolverSetting parse_solver_setting(std::string_view text) {
   const auto colon = text.find(':');
   if (colon == std::string_view::npos) {
-    throw InvalidInput("setting \"" + std::string(text) + "\": expected METHOD:VALUE, e.g. rk4:0.00025");
+    throw InvalidInput("setting \"" + std::string(text) +
+                       "\": expected METHOD:VALUE, e.g. rk4:0.00025");
   }
   const std::string name(text.substr(0, colon));
   const std::string value_text(text.substr(colon + 1));
@@ -64,7 +66,7 @@ SolverSetting parse_solver_setting(std::string_view text) {
   }
   if (!known) {
     throw InvalidInput("setting \"" + std::string(text) +
-                                "\": the method must be rk4, adaptive, gsl_rkf45 or gsl_rk8pd");
+                       "\": the method must be rk4, adaptive, gsl_rkf45 or gsl_rk8pd");
   }
   std::size_t used = 0;
   double value = NAN;
@@ -74,7 +76,8 @@ SolverSetting parse_solver_setting(std::string_view text) {
     used = 0;
   }
   if (used == 0 || used != value_text.size() || !std::isfinite(value) || value <= 0) {
-    throw InvalidInput("setting \"" + std::string(text) + "\": the value must be a positive number");
+    throw InvalidInput("setting \"" + std::string(text) +
+                       "\": the value must be a positive number");
   }
   if (setting.method != Method::rk4 && value > 0.1) {
     throw InvalidInput("setting \"" + std::string(text) + "\": a tolerance must be <= 0.1");

@@ -63,7 +63,8 @@ AccuracyStudy run_accuracy_study(const AccuracySuite& suite, const AccuracyStudy
   study.min_batch_seconds = options.min_batch_seconds;
 
   // Scene by scene, every setting back to back: a change in the machine's load while the study runs
-  // then touches all settings of a scene alike instead of skewing whole settings against each other.
+  // then touches all settings of a scene alike instead of skewing whole settings against each
+  // other.
   std::vector<TimedRun> check_runs;
   std::vector<std::vector<TimedRun>> runs(options.settings.size());
   for (const SuiteScene& entry : suite.scenes) {
@@ -74,15 +75,18 @@ AccuracyStudy run_accuracy_study(const AccuracySuite& suite, const AccuracyStudy
     // The check is run once, untimed in effect: its cost is not the point.
     check_runs.push_back(timed_run(with_solver(entry.scene, study.check_setting), 0.0, 0));
     for (std::size_t k = 0; k < options.settings.size(); ++k) {
-      runs[k].push_back(timed_run(with_solver(entry.scene, options.settings[k]), options.min_batch_seconds));
+      runs[k].push_back(
+          timed_run(with_solver(entry.scene, options.settings[k]), options.min_batch_seconds));
     }
   }
-  const SettingResult check = evaluate_setting(study.check_setting, std::move(check_runs), study.reference);
+  const SettingResult check =
+      evaluate_setting(study.check_setting, std::move(check_runs), study.reference);
   for (const TimedRun& run : check.runs) study.check.push_back(run.summary);
   study.check_errors = check.errors;
   study.check_statistics = check.statistics;
   for (std::size_t k = 0; k < options.settings.size(); ++k) {
-    study.settings.push_back(evaluate_setting(options.settings[k], std::move(runs[k]), study.reference));
+    study.settings.push_back(
+        evaluate_setting(options.settings[k], std::move(runs[k]), study.reference));
   }
   return study;
 }

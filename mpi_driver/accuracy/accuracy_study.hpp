@@ -2,11 +2,11 @@
 // tight reference and timed.
 //
 // The reference of a scene is the adaptive Dormand-Prince method at reference_tolerance (1e-14: the
-// tightest at which its agreement with the paper's RK4 still improves; 1e-15 is at round-off). It is
-// checked against GSL's rk8pd (another method, another code) at the same tolerance, and that check
-// is reported beside the study. GSL's event times come from a cubic Hermite interpolant over long
-// steps, so the check bounds the reference loosely (about 1e-8 s in event times); the paper's RK4
-// at dt = 0.00025 s, a row of the study, agrees with the reference far more closely.
+// tightest at which its agreement with the paper's RK4 still improves; 1e-15 is at round-off). It
+// is checked against GSL's rk8pd (another method, another code) at the same tolerance, and that
+// check is reported beside the study. GSL's event times come from a cubic Hermite interpolant over
+// long steps, so the check bounds the reference loosely (about 1e-8 s in event times); the paper's
+// RK4 at dt = 0.00025 s, a row of the study, agrees with the reference far more closely.
 #pragma once
 
 #include <functional>
@@ -43,8 +43,8 @@ struct AccuracyStudyOptions {
 
 struct SettingResult {
   SolverSetting setting;
-  std::vector<TimedRun> runs;           // per scene
-  std::vector<OutputErrors> errors;     // per scene, against the reference
+  std::vector<TimedRun> runs;        // per scene
+  std::vector<OutputErrors> errors;  // per scene, against the reference
   SettingStatistics statistics;
 };
 
@@ -53,10 +53,10 @@ struct AccuracyStudy {
   SolverSetting check_setting;
   std::vector<std::string> scene_names;
   std::vector<std::string> scene_categories;
-  std::vector<Summary> reference;             // per scene
-  std::vector<Summary> check;                 // per scene
-  std::vector<OutputErrors> check_errors;     // check against reference, per scene
-  SettingStatistics check_statistics;         // of check_errors (its times are the check's)
+  std::vector<Summary> reference;          // per scene
+  std::vector<Summary> check;              // per scene
+  std::vector<OutputErrors> check_errors;  // check against reference, per scene
+  SettingStatistics check_statistics;      // of check_errors (its times are the check's)
   std::vector<SettingResult> settings;
   double min_batch_seconds = 0.0;
 };

@@ -17,9 +17,11 @@ SuiteScene read_suite_scene(ObjectReader reader, std::set<std::string>& names,
   if (!entry.name.empty() && !names.insert(entry.name).second) {
     reader.add_error("name", "must be unique (\"" + entry.name + "\" is used twice)");
   }
-  entry.category = reader.required_choice("category", {"rocking", "sliding", "slide_rock", "flight_bouncing",
-                                                       "overturning", "near_threshold", "mixed"})
-                       .value_or("");
+  entry.category =
+      reader
+          .required_choice("category", {"rocking", "sliding", "slide_rock", "flight_bouncing",
+                                        "overturning", "near_threshold", "mixed"})
+          .value_or("");
   entry.description = reader.string_or("description", "");
   if (const nlohmann::json* scene = reader.raw("scene")) {
     if (scene->is_object() && scene->contains("solver")) {
@@ -41,11 +43,13 @@ AccuracySuite accuracy_suite_from_json(const nlohmann::json& document, const std
   ConfigErrors errors(source);
   ObjectReader root(document, JsonPointer{}, errors);
   ArrayReader scenes = root.required_array("scenes");
-  if (scenes.valid() && scenes.size() == 0) root.add_error("scenes", "must have at least one scene");
+  if (scenes.valid() && scenes.size() == 0)
+    root.add_error("scenes", "must have at least one scene");
   AccuracySuite suite;
   std::set<std::string> names;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    suite.scenes.push_back(read_suite_scene(scenes.object(i), names, std::filesystem::path(source).parent_path()));
+    suite.scenes.push_back(
+        read_suite_scene(scenes.object(i), names, std::filesystem::path(source).parent_path()));
   }
   root.finish();
   errors.throw_if_any();

@@ -20,7 +20,8 @@ namespace blockfrag {
 // What a scene exercises; every category must be covered by the full suite.
 // (The reader's list of choices repeats these names.)
 inline constexpr std::array<std::string_view, 7> accuracy_categories = {
-    "rocking", "sliding", "slide_rock", "flight_bouncing", "overturning", "near_threshold", "mixed"};
+    "rocking",     "sliding",        "slide_rock", "flight_bouncing",
+    "overturning", "near_threshold", "mixed"};
 
 struct SuiteScene {
   std::string name;
@@ -33,8 +34,8 @@ struct AccuracySuite {
   std::vector<SuiteScene> scenes;
 };
 
-// Throws ConfigError listing every problem (paths like /scenes/3/scene/contact/friction); names must
-// be unique and non-empty, and the suite must have at least one scene.
+// Throws ConfigError listing every problem (paths like /scenes/3/scene/contact/friction); names
+// must be unique and non-empty, and the suite must have at least one scene.
 AccuracySuite accuracy_suite_from_json(const nlohmann::json& document, const std::string& source);
 
 AccuracySuite read_accuracy_suite(const std::filesystem::path& path);

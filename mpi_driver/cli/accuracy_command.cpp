@@ -1,21 +1,22 @@
 #include "mpi_driver/cli/accuracy_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "mpi_driver/accuracy/accuracy_fragility.hpp"
 #include "mpi_driver/accuracy/accuracy_output.hpp"
 #include "mpi_driver/accuracy/accuracy_settings.hpp"
 #include "mpi_driver/accuracy/accuracy_study.hpp"
 #include "mpi_driver/accuracy/accuracy_suite.hpp"
-#include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/cli/cli_validators.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/study_config.hpp"
-#include "mpi_driver/cli/cli_validators.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
 
 namespace blockfrag {
 
@@ -33,17 +34,19 @@ std::string valid_setting(const std::string& text) {
 // The settings whose fragility curves are compared when the command line names none: the paper's,
 // the production default, and one looser and one tighter setting of each kind.
 std::vector<SolverSetting> default_fragility_settings() {
-  return {{Method::rk4, 2.5e-4},      {Method::adaptive, 1e-4},  {Method::adaptive, 1e-6},
-          {Method::adaptive, 1e-8},   {Method::gsl_rkf45, 1e-8}, {Method::gsl_rk8pd, 1e-8}};
+  return {{Method::rk4, 2.5e-4},    {Method::adaptive, 1e-4},  {Method::adaptive, 1e-6},
+          {Method::adaptive, 1e-8}, {Method::gsl_rkf45, 1e-8}, {Method::gsl_rk8pd, 1e-8}};
 }
 
-void write_fragility_sections(std::ostream& out, const AccuracyOptions& options, const AccuracyStudyOptions& study,
+void write_fragility_sections(std::ostream& out, const AccuracyOptions& options,
+                              const AccuracyStudyOptions& study,
                               const std::vector<SolverSetting>& requested, std::ostream& log) {
   const nlohmann::json document = read_json_file(*options.fragility_study);
   const StudyConfig config = parse_study_config(document, options.fragility_study->string());
   log << "accuracy: fragility of " << options.fragility_study->string() << std::endl;
-  const auto rows = compare_fragility(config, requested.empty() ? default_fragility_settings() : requested,
-                                      {Method::adaptive, study.reference_tolerance});
+  const auto rows =
+      compare_fragility(config, requested.empty() ? default_fragility_settings() : requested,
+                        {Method::adaptive, study.reference_tolerance});
   out << "\nFragility of " << options.fragility_study->filename().string() << " ("
       << config.total_samples() << " samples) with each setting against "
       << setting_label({Method::adaptive, study.reference_tolerance}) << ":\n\n";
@@ -52,8 +55,10 @@ void write_fragility_sections(std::ostream& out, const AccuracyOptions& options,
   const std::vector<std::int64_t> sizes(options.design_sizes.begin(), options.design_sizes.end());
   const auto convergence =
       design_convergence(document, sizes, options.replicates, options.reference_samples_per_level);
-  out << "\nMonte Carlo against Latin hypercube: " << options.replicates << " seeds per row, errors against one "
-      << "Latin hypercube run of " << options.reference_samples_per_level << " samples per level:\n\n";
+  out << "\nMonte Carlo against Latin hypercube: " << options.replicates
+      << " seeds per row, errors against one "
+      << "Latin hypercube run of " << options.reference_samples_per_level
+      << " samples per level:\n\n";
   write_design_convergence_table(out, convergence);
 }
 
@@ -71,13 +76,16 @@ int run_accuracy(const AccuracyOptions& options, std::ostream& out, std::ostream
   if (!requested.empty()) study_options.settings = requested;
   study_options.reference_tolerance = options.reference_tolerance;
   study_options.min_batch_seconds = options.min_batch_ms * 1e-3;
-  study_options.progress = [&log](const std::string& label) { log << "accuracy: " << label << std::endl; };
+  study_options.progress = [&log](const std::string& label) {
+    log << "accuracy: " << label << std::endl;
+  };
 
   const AccuracyStudy study = run_accuracy_study(suite, study_options);
   write_accuracy_hdf5(options.output_path, study, options.suite_path.filename().string());
   std::ostringstream table;
   write_accuracy_table(table, study);
-  if (options.fragility_study) write_fragility_sections(table, options, study_options, requested, log);
+  if (options.fragility_study)
+    write_fragility_sections(table, options, study_options, requested, log);
   out << table.str();
   out.flush();
   if (options.table_path) write_file_atomically(*options.table_path, table.str());
@@ -86,17 +94,22 @@ int run_accuracy(const AccuracyOptions& options, std::ostream& out, std::ostream
 
 void add_accuracy_command(CLI::App& app, std::function<int()>& command) {
   auto options = std::make_shared<AccuracyOptions>();
-  CLI::App* accuracy = app.add_subcommand(
-      "accuracy", "Work-precision study: every scene of a suite with every solver setting, against a reference");
-  accuracy->add_option("suite", options->suite_path, "Scene suite (JSON), e.g. configs/accuracy_suite.json")
+  CLI::App* accuracy = app.add_subcommand("accuracy",
+                                          "Work-precision study: every scene of a suite with every "
+                                          "solver setting, against a reference");
+  accuracy
+      ->add_option("suite", options->suite_path,
+                   "Scene suite (JSON), e.g. configs/accuracy_suite.json")
       ->required()
       ->check(CLI::ExistingFile);
   accuracy
       ->add_option("--setting", options->settings,
-                   "Run only this setting (repeatable): rk4:DT, adaptive:TOL, gsl_rkf45:TOL or gsl_rk8pd:TOL")
+                   "Run only this setting (repeatable): rk4:DT, adaptive:TOL, gsl_rkf45:TOL or "
+                   "gsl_rk8pd:TOL")
       ->type_name("METHOD:VALUE")
       ->check(CLI::Validator(valid_setting, "METHOD:VALUE"));
-  accuracy->add_option("--output", options->output_path, "HDF5 file to write")->capture_default_str();
+  accuracy->add_option("--output", options->output_path, "HDF5 file to write")
+      ->capture_default_str();
   accuracy->add_option("--table", options->table_path, "Also write the markdown table to this file")
       ->type_name("FILE.md");
   accuracy
@@ -110,14 +123,19 @@ void add_accuracy_command(CLI::App& app, std::function<int()>& command) {
       ->capture_default_str()
       ->check(positive_finite_number("MS"));
   accuracy
-      ->add_option("--fragility-study", options->fragility_study,
-                   "Also compare this study's fragility curves per setting, and MC against LHS convergence")
+      ->add_option(
+          "--fragility-study", options->fragility_study,
+          "Also compare this study's fragility curves per setting, and MC against LHS convergence")
       ->check(CLI::ExistingFile)
       ->type_name("STUDY.json");
-  accuracy->add_option("--replicates", options->replicates, "Seeds per design and size (--fragility-study)")
+  accuracy
+      ->add_option("--replicates", options->replicates,
+                   "Seeds per design and size (--fragility-study)")
       ->capture_default_str()
       ->check(CLI::Range(1, 10000));
-  accuracy->add_option("--design-sizes", options->design_sizes, "Samples per level compared (--fragility-study)")
+  accuracy
+      ->add_option("--design-sizes", options->design_sizes,
+                   "Samples per level compared (--fragility-study)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   accuracy

@@ -1,10 +1,11 @@
 // `blockfrag accuracy SUITE.json [--setting METHOD:VALUE ...] [--output FILE.h5] [--table FILE.md]
 //  [--reference-tolerance TOL] [--min-batch-ms MS]`: the work-precision study of accuracy_study.hpp
-// over a scene suite (configs/accuracy_suite.json), written to HDF5 and printed as a markdown table.
-// Without --setting every setting of full_accuracy_settings() runs (minutes); with it, only those.
-// With --fragility-study STUDY.json it also compares that study's fragility curves computed with each
-// setting (--setting, or a short default list) against the reference, next to their sampling error,
-// and the convergence of Monte Carlo and Latin hypercube designs (accuracy_fragility.hpp).
+// over a scene suite (configs/accuracy_suite.json), written to HDF5 and printed as a markdown
+// table. Without --setting every setting of full_accuracy_settings() runs (minutes); with it, only
+// those. With --fragility-study STUDY.json it also compares that study's fragility curves computed
+// with each setting (--setting, or a short default list) against the reference, next to their
+// sampling error, and the convergence of Monte Carlo and Latin hypercube designs
+// (accuracy_fragility.hpp).
 #pragma once
 
 #include <filesystem>
@@ -29,8 +30,8 @@ struct AccuracyOptions {
   double reference_tolerance = 1e-14;
   double min_batch_ms = 2.0;
   std::optional<std::filesystem::path> fragility_study;
-  int replicates = 20;                                     // seeds per design and size
-  std::vector<long> design_sizes = {10, 20, 40, 80};       // samples per level
+  int replicates = 20;                                // seeds per design and size
+  std::vector<long> design_sizes = {10, 20, 40, 80};  // samples per level
   long reference_samples_per_level = 320;
 };
 

@@ -6,9 +6,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "engine/errors.hpp"
 #include "mpi_driver/cli/accuracy_command.hpp"
 #include "mpi_driver/cli/bench_command.hpp"
-#include "engine/errors.hpp"
 #include "mpi_driver/cli/exit_codes.hpp"
 #include "mpi_driver/cli/run_command.hpp"
 #include "mpi_driver/cli/simulate_command.hpp"
@@ -36,8 +36,8 @@ int run_command_line(int argc, char** argv) {
     std::cerr << error.what() << '\n';
     return exit_code_bad_input;
   } catch (const ContractViolation& error) {
-    std::cerr << "blockfrag: internal error (a bug, please report it with the input): " << error.what()
-              << '\n';
+    std::cerr << "blockfrag: internal error (a bug, please report it with the input): "
+              << error.what() << '\n';
     return exit_code_internal_error;
   } catch (const std::exception& error) {
     std::cerr << "blockfrag: " << error.what() << '\n';

@@ -7,7 +7,8 @@
 //   2  a bad scene or config (every message on stderr names the file, the JSON path and the rule)
 //      or a bad command line
 //   3  the simulation failed (its status is "failed"; the summary is still printed)
-//   4  a study was interrupted (SIGTERM, SIGINT) after writing its checkpoint: rerun the same command
+//   4  a study was interrupted (SIGTERM, SIGINT) after writing its checkpoint: rerun the same
+//   command
 #pragma once
 
 namespace blockfrag {

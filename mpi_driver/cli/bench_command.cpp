@@ -1,16 +1,17 @@
 #include "mpi_driver/cli/bench_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <memory>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "engine/simulate.hpp"
 #include "mpi_driver/accuracy/accuracy_metrics.hpp"
-#include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/cli/simulate_command.hpp"
+#include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/io/summary_json.hpp"
 
 namespace blockfrag {
@@ -43,14 +44,16 @@ int run_bench(const BenchOptions& options, std::ostream& out) {
 
 void add_bench_command(CLI::App& app, std::function<int()>& command) {
   auto options = std::make_shared<BenchOptions>();
-  CLI::App* bench = app.add_subcommand("bench", "Time one scene: N runs after a warm-up, one JSON object");
-  bench->add_option("scene", options->scene_path, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+  CLI::App* bench =
+      app.add_subcommand("bench", "Time one scene: N runs after a warm-up, one JSON object");
+  bench->add_option("scene", options->scene_path, "Scene file (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
   bench->add_option("--repeat", options->repeat, "Timed runs")
       ->capture_default_str()
       ->check(CLI::Range(1L, 1000000000L));
-  bench->callback([options, &command] {
-    command = [options] { return run_bench(*options, std::cout); };
-  });
+  bench->callback(
+      [options, &command] { command = [options] { return run_bench(*options, std::cout); }; });
 }
 
 }  // namespace blockfrag

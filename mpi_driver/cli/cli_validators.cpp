@@ -1,8 +1,9 @@
 #include "mpi_driver/cli/cli_validators.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <exception>
+
+#include <CLI/CLI.hpp>
 
 namespace blockfrag {
 

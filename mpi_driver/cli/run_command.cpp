@@ -1,6 +1,5 @@
 #include "mpi_driver/cli/run_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -8,15 +7,17 @@
 #include <memory>
 #include <optional>
 
+#include <CLI/CLI.hpp>
+
 #include "engine/simulate.hpp"
-#include "mpi_driver/io/atomic_file.hpp"
-#include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/io/study_output.hpp"
+#include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/parallel/progress.hpp"
 #include "mpi_driver/parallel/signals.hpp"
-#include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/parallel/study_lock.hpp"
-#include "mpi_driver/io/study_output.hpp"
 #include "mpi_driver/study/failure_report.hpp"
 
 namespace blockfrag {
@@ -66,7 +67,8 @@ Verdict judge_existing_output(const StudyConfig& config, std::string& message) {
   if (!std::filesystem::exists(status)) return Verdict::run;
   const bool link = std::filesystem::is_symlink(status);
   if (!link && !std::filesystem::is_regular_file(status)) {
-    message = output + ": refusing to replace something that is not a regular file; choose another --output";
+    message = output +
+              ": refusing to replace something that is not a regular file; choose another --output";
     return Verdict::refused;
   }
   const std::string hash = output_config_hash(config.output);
@@ -81,10 +83,11 @@ Verdict judge_existing_output(const StudyConfig& config, std::string& message) {
               "; blockfrag replaces only its own files: remove the link or choose another --output";
     return Verdict::refused;
   }
-  message = output + ": refusing to replace an existing file that is not this study's output" +
-            (hash.empty() ? std::string(" (not a blockfrag study output)")
-                          : " (config hash " + hash + ", this config " + hash_to_hex(config.hash) + ")") +
-            "; remove it or choose another --output";
+  message =
+      output + ": refusing to replace an existing file that is not this study's output" +
+      (hash.empty() ? std::string(" (not a blockfrag study output)")
+                    : " (config hash " + hash + ", this config " + hash_to_hex(config.hash) + ")") +
+      "; remove it or choose another --output";
   return Verdict::refused;
 }
 
@@ -133,7 +136,8 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
                   lock->path().string() + "); wait for it to end, or stop it first";
         verdict = static_cast<int>(Verdict::refused);
       } else if (!lock->held()) {
-        message = config.output.string() + ": the lock file " + lock->path().string() + " " + lock->problem();
+        message = config.output.string() + ": the lock file " + lock->path().string() + " " +
+                  lock->problem();
         verdict = static_cast<int>(Verdict::refused);
       } else {
         // Holding the lock, no other writer of these files runs: a killed one's leftovers can go.
@@ -152,11 +156,13 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
     return exit_code_bad_input;
   }
 
-  const SceneEvaluator engine = evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
+  const SceneEvaluator engine =
+      evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
   if (rank == 0) {
-    std::cerr << "study " << options.study_path.string() << ": " << config.total_samples() << " samples ("
-              << config.intensity.levels.size() << " levels x " << config.samples_per_level << ") on " << ranks
-              << (ranks == 1 ? " rank" : " ranks") << ", config hash " << hash_to_hex(config.hash) << '\n';
+    std::cerr << "study " << options.study_path.string() << ": " << config.total_samples()
+              << " samples (" << config.intensity.levels.size() << " levels x "
+              << config.samples_per_level << ") on " << ranks << (ranks == 1 ? " rank" : " ranks")
+              << ", config hash " << hash_to_hex(config.hash) << '\n';
   }
   RunResult result;
   try {
@@ -181,17 +187,20 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   if (rank == 0) {
     write_study_output(config.output, config, result.records);
     std::filesystem::remove(settings.checkpoint);
-    std::cerr << "wrote " << config.output.string() << " (" << result.computed << " samples computed in this run, "
-              << result.checkpoints << " checkpoints taking " << result.checkpoint_seconds << " s)\n";
+    std::cerr << "wrote " << config.output.string() << " (" << result.computed
+              << " samples computed in this run, " << result.checkpoints << " checkpoints taking "
+              << result.checkpoint_seconds << " s)\n";
     const FailureReport failures = report_failures(config, result.records, engine);
     if (failures.total() > 0) {
       std::cerr << failures.failed << " failed and " << failures.rejected << " rejected of "
-                << config.total_samples() << " samples (excluded from the fragility trials); the first:\n";
+                << config.total_samples()
+                << " samples (excluded from the fragility trials); the first:\n";
       for (const auto& reason : failures.first_reasons) std::cerr << "  " << reason << '\n';
     }
     if (too_many_failures(config, failures)) {
       std::cerr << "more than allowed_failed_fraction = " << config.allowed_failed_fraction
-                << " of the samples gave no verdict: exit code " << exit_code_simulation_failed << '\n';
+                << " of the samples gave no verdict: exit code " << exit_code_simulation_failed
+                << '\n';
       exit_code = exit_code_simulation_failed;
     }
   }
@@ -202,12 +211,16 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
 void add_run_command(CLI::App& app, std::function<int()>& command) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* run = app.add_subcommand("run", "Run a batch study (under mpirun for several ranks)");
-  run->add_option("study", options->study_path, "Study config (JSON)")->required()->check(CLI::ExistingFile);
-  run->add_option("--output", options->output, "Output HDF5 file (replaces the config's \"output\")");
+  run->add_option("study", options->study_path, "Study config (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  run->add_option("--output", options->output,
+                  "Output HDF5 file (replaces the config's \"output\")");
   run->add_option("--samples-per-level", options->samples_per_level,
                   "Samples per intensity level (replaces the config's \"samples_per_level\")")
       ->check(CLI::PositiveNumber);
-  run->callback([options, &command] { command = [options] { return run_study_command(*options); }; });
+  run->callback(
+      [options, &command] { command = [options] { return run_study_command(*options); }; });
 }
 
 }  // namespace blockfrag

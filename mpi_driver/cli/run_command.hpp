@@ -18,8 +18,8 @@
 #include <functional>
 #include <optional>
 
-#include "mpi_driver/parallel/study_runner.hpp"
 #include "mpi_driver/cli/exit_codes.hpp"
+#include "mpi_driver/parallel/study_runner.hpp"
 
 // CLI11 is a large header-only library: only the .cpp files that use it include it.
 namespace CLI {

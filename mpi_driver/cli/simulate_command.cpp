@@ -1,18 +1,19 @@
 #include "mpi_driver/cli/simulate_command.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "engine/scene/block_geometry.hpp"
 #include "engine/simulate.hpp"
-#include "mpi_driver/io/history_csv.hpp"
-#include "mpi_driver/config/scene_json.hpp"
-#include "mpi_driver/io/summary_json.hpp"
 #include "mpi_driver/cli/cli_validators.hpp"
+#include "mpi_driver/config/scene_json.hpp"
+#include "mpi_driver/io/history_csv.hpp"
+#include "mpi_driver/io/summary_json.hpp"
 
 namespace blockfrag {
 
@@ -37,31 +38,35 @@ std::string time_or_never(const std::optional<double>& time) {
 void write_simulate_report(std::ostream& out, const Scene& scene, const Summary& summary) {
   const double alpha = block_alpha(scene);
   if (summary.status == Status::failed) {
-    out << "verdict: simulation FAILED at t = " << fixed(summary.end_time) << " s: " << summary.status_reason
-        << "\n";
+    out << "verdict: simulation FAILED at t = " << fixed(summary.end_time)
+        << " s: " << summary.status_reason << "\n";
   } else if (summary.overturned) {
     out << "verdict: overturned at " << time_or_never(summary.overturn_time) << "\n";
   } else {
     out << "verdict: did not overturn\n";
   }
-  out << "max |theta|: " << fixed(summary.max_abs_theta) << " rad = " << fixed(summary.max_abs_theta / alpha)
-      << " alpha (alpha = " << (scene.polygon ? "atan(easier corner's tip threshold)" : "atan(a/b)") << " = "
-      << fixed(alpha) << " rad)\n"
+  out << "max |theta|: " << fixed(summary.max_abs_theta)
+      << " rad = " << fixed(summary.max_abs_theta / alpha)
+      << " alpha (alpha = " << (scene.polygon ? "atan(easier corner's tip threshold)" : "atan(a/b)")
+      << " = " << fixed(alpha) << " rad)\n"
       << "final theta: " << fixed(summary.final_theta) << " rad\n"
-      << "slide: final " << fixed(summary.final_slide) << " m, max |slide| " << fixed(summary.max_abs_slide)
-      << " m\n"
+      << "slide: final " << fixed(summary.final_slide) << " m, max |slide| "
+      << fixed(summary.max_abs_slide) << " m\n"
       << "rocking starts: " << time_or_never(summary.rock_start_time) << "\n"
       << "sliding starts: " << time_or_never(summary.slide_start_time) << "\n"
-      << "first impact: " << time_or_never(summary.first_impact_time) << "; impacts: " << summary.impacts << "\n"
+      << "first impact: " << time_or_never(summary.first_impact_time)
+      << "; impacts: " << summary.impacts << "\n"
       << "modes:";
   for (std::size_t i = 0; i < summary.modes.size() && i < modes_shown; ++i) {
-    out << (i == 0 ? " " : " -> ") << mode_name(summary.modes[i].mode) << " (" << fixed(summary.modes[i].time)
-        << " s)";
+    out << (i == 0 ? " " : " -> ") << mode_name(summary.modes[i].mode) << " ("
+        << fixed(summary.modes[i].time) << " s)";
   }
-  if (summary.modes.size() > modes_shown) out << " ... and " << summary.modes.size() - modes_shown << " more";
+  if (summary.modes.size() > modes_shown)
+    out << " ... and " << summary.modes.size() - modes_shown << " more";
   out << "\n"
       << "end time: " << fixed(summary.end_time) << " s; " << summary.steps << " steps, "
-      << summary.rhs_evaluations << " right-hand-side evaluations, " << summary.events << " events\n";
+      << summary.rhs_evaluations << " right-hand-side evaluations, " << summary.events
+      << " events\n";
 }
 
 int run_simulate(const SimulateOptions& options, std::ostream& out) {
@@ -86,19 +91,22 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
 void add_simulate_command(CLI::App& app, std::function<int()>& command) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* simulate = app.add_subcommand("simulate", "Simulate one scene and print its summary");
-  simulate->add_option("scene", options->scene_path, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+  simulate->add_option("scene", options->scene_path, "Scene file (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
   simulate->add_flag("--summary-json", options->summary_json,
                      "Print the summary as exactly one JSON object on stdout, nothing else");
-  auto* history =
-      simulate->add_option("--history", options->history_path, "Also write the time history to this CSV file")
-          ->type_name("FILE.csv");
-  simulate->add_option("--history-interval", options->history_interval, "Time between history rows, s")
+  auto* history = simulate
+                      ->add_option("--history", options->history_path,
+                                   "Also write the time history to this CSV file")
+                      ->type_name("FILE.csv");
+  simulate
+      ->add_option("--history-interval", options->history_interval, "Time between history rows, s")
       ->capture_default_str()
       ->check(positive_finite_number("SECONDS"))
       ->needs(history);
-  simulate->callback([options, &command] {
-    command = [options] { return run_simulate(*options, std::cout); };
-  });
+  simulate->callback(
+      [options, &command] { command = [options] { return run_simulate(*options, std::cout); }; });
 }
 
 }  // namespace blockfrag

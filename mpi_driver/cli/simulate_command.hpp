@@ -1,6 +1,6 @@
-// `blockfrag simulate SCENE.json [--summary-json] [--history FILE.csv] [--history-interval SECONDS]`:
-// one scene, its summary on stdout (a short report, or exactly one JSON object), and optionally its
-// time history as CSV.
+// `blockfrag simulate SCENE.json [--summary-json] [--history FILE.csv] [--history-interval
+// SECONDS]`: one scene, its summary on stdout (a short report, or exactly one JSON object), and
+// optionally its time history as CSV.
 #pragma once
 
 #include <filesystem>

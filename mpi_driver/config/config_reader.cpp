@@ -24,7 +24,9 @@ std::string join_lines(const std::vector<std::string>& lines) {
 }
 
 // JSON text of a scalar; a string built in code with invalid UTF-8 must not make the message throw.
-std::string dump(const json& value) { return value.dump(-1, ' ', false, json::error_handler_t::replace); }
+std::string dump(const json& value) {
+  return value.dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 std::string describe(const json& value) {
   switch (value.type()) {
@@ -114,8 +116,8 @@ std::string Range::text(const Bound& bound) {
 
 std::string Range::rule() const {
   if (low_ && high_) {
-    return "must be in " + std::string(low_->inclusive ? "[" : "(") + text(*low_) + ", " + text(*high_) +
-           (high_->inclusive ? "]" : ")");
+    return "must be in " + std::string(low_->inclusive ? "[" : "(") + text(*low_) + ", " +
+           text(*high_) + (high_->inclusive ? "]" : ")");
   }
   if (low_) return std::string("must be ") + (low_->inclusive ? ">= " : "> ") + text(*low_);
   if (high_) return std::string("must be ") + (high_->inclusive ? "<= " : "< ") + text(*high_);
@@ -161,7 +163,8 @@ std::optional<long> read_integer(const json& value, const JsonPointer& path, Con
     }
     n = static_cast<long>(x);
   }
-  if (!check_range(static_cast<double>(n), std::to_string(n), path, errors, range)) return std::nullopt;
+  if (!check_range(static_cast<double>(n), std::to_string(n), path, errors, range))
+    return std::nullopt;
   return n;
 }
 
@@ -173,7 +176,8 @@ std::optional<bool> read_boolean(const json& value, const JsonPointer& path, Con
   return value.get<bool>();
 }
 
-std::optional<std::string> read_string(const json& value, const JsonPointer& path, ConfigErrors& errors) {
+std::optional<std::string> read_string(const json& value, const JsonPointer& path,
+                                       ConfigErrors& errors) {
   if (!value.is_string()) {
     errors.add(path, "must be a string (got " + describe(value) + ")");
     return std::nullopt;
@@ -181,7 +185,8 @@ std::optional<std::string> read_string(const json& value, const JsonPointer& pat
   return value.get<std::string>();
 }
 
-std::optional<std::string> read_choice(const json& value, const JsonPointer& path, ConfigErrors& errors,
+std::optional<std::string> read_choice(const json& value, const JsonPointer& path,
+                                       ConfigErrors& errors,
                                        std::initializer_list<std::string_view> choices) {
   if (!value.is_string()) {
     errors.add(path, "must be one of " + quoted_list(choices) + " (got " + describe(value) + ")");
@@ -222,7 +227,9 @@ bool ObjectReader::has(std::string_view key) { return find(key) != nullptr; }
 
 const json* ObjectReader::raw(std::string_view key) { return find(key); }
 
-void ObjectReader::add_error(std::string_view key, std::string_view rule) { errors_->add(path_of(key), rule); }
+void ObjectReader::add_error(std::string_view key, std::string_view rule) {
+  errors_->add(path_of(key), rule);
+}
 
 std::optional<double> ObjectReader::number(std::string_view key, const Range& range) {
   const json* value = find(key);
@@ -262,7 +269,9 @@ std::optional<bool> ObjectReader::required_boolean(std::string_view key) {
   return value ? read_boolean(*value, path_of(key), *errors_) : std::nullopt;
 }
 
-bool ObjectReader::boolean_or(std::string_view key, bool fallback) { return boolean(key).value_or(fallback); }
+bool ObjectReader::boolean_or(std::string_view key, bool fallback) {
+  return boolean(key).value_or(fallback);
+}
 
 std::optional<std::string> ObjectReader::string(std::string_view key) {
   const json* value = find(key);
@@ -284,8 +293,8 @@ std::optional<std::string> ObjectReader::choice(std::string_view key,
   return value ? read_choice(*value, path_of(key), *errors_, choices) : std::nullopt;
 }
 
-std::optional<std::string> ObjectReader::required_choice(std::string_view key,
-                                                         std::initializer_list<std::string_view> choices) {
+std::optional<std::string> ObjectReader::required_choice(
+    std::string_view key, std::initializer_list<std::string_view> choices) {
   const json* value = find_required(key);
   return value ? read_choice(*value, path_of(key), *errors_, choices) : std::nullopt;
 }
@@ -352,7 +361,9 @@ std::optional<std::string> ArrayReader::string(std::size_t index) {
   return read_string(raw(index), path_of(index), *errors_);
 }
 
-ObjectReader ArrayReader::object(std::size_t index) { return ObjectReader(raw(index), path_of(index), *errors_); }
+ObjectReader ArrayReader::object(std::size_t index) {
+  return ObjectReader(raw(index), path_of(index), *errors_);
+}
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   // Three rows of the dynamic programme: a transposition looks two rows back.
@@ -373,13 +384,15 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return previous[b.size()];
 }
 
-std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates) {
+std::optional<std::string> closest_match(std::string_view word,
+                                         const std::vector<std::string>& candidates) {
   const std::string lower_word = lowercase(word);
   std::optional<std::string> best;
   std::size_t best_distance = std::numeric_limits<std::size_t>::max();
   for (const auto& candidate : candidates) {
     const std::size_t distance = edit_distance(lower_word, lowercase(candidate));
-    // One edit per three letters of the candidate: "frction" finds "friction", "e" does not find "g".
+    // One edit per three letters of the candidate: "frction" finds "friction", "e" does not find
+    // "g".
     if (distance < best_distance && distance <= candidate.size() / 3) {
       best = candidate;
       best_distance = distance;
@@ -391,7 +404,8 @@ std::optional<std::string> closest_match(std::string_view word, const std::vecto
 namespace {
 
 // Builds the document like nlohmann's parser does, and also notes where the text broke (nlohmann's
-// exceptions give only a byte count) and every duplicate key (nlohmann keeps the last one silently).
+// exceptions give only a byte count) and every duplicate key (nlohmann keeps the last one
+// silently).
 class DocumentBuilder final : public nlohmann::json_sax<json> {
  public:
   explicit DocumentBuilder(json& root) : root_(root) {}
@@ -415,7 +429,8 @@ class DocumentBuilder final : public nlohmann::json_sax<json> {
     return true;
   }
 
-  bool parse_error(std::size_t position, const std::string& /*token*/, const json::exception& error) override {
+  bool parse_error(std::size_t position, const std::string& /*token*/,
+                   const json::exception& error) override {
     error_position_ = position;
     error_ = error.what();
     return false;
@@ -459,7 +474,8 @@ class DocumentBuilder final : public nlohmann::json_sax<json> {
   }
 
   json& root_;
-  std::vector<Container> open_;  // only the last child of each is ever added to, so these stay valid
+  std::vector<Container>
+      open_;  // only the last child of each is ever added to, so these stay valid
   std::string key_;
   std::size_t error_position_ = 0;
   std::string error_;
@@ -507,24 +523,30 @@ std::size_t error_offset(std::string_view text, std::size_t characters_read) {
   return offset;
 }
 
-std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::size_t characters_read) {
+std::pair<std::size_t, std::size_t> line_and_column(std::string_view text,
+                                                    std::size_t characters_read) {
   const std::size_t offset = error_offset(text, characters_read);
   const std::string_view before = text.substr(0, offset);
-  const std::size_t line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
+  const std::size_t line =
+      1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
   const std::size_t newline = before.rfind('\n');
-  const std::string_view current = newline == std::string_view::npos ? before : before.substr(newline + 1);
+  const std::string_view current =
+      newline == std::string_view::npos ? before : before.substr(newline + 1);
   // Columns count characters, not bytes: skip UTF-8 continuation bytes.
   const auto continuation = std::count_if(current.begin(), current.end(),
                                           [](unsigned char c) { return (c & 0xC0) == 0x80; });
   return {line, current.size() - static_cast<std::size_t>(continuation) + 1};
 }
 
-// "[json.exception.parse_error.101] parse error at line 2, column 8: syntax error ..." -> "syntax error ..."
+// "[json.exception.parse_error.101] parse error at line 2, column 8: syntax error ..." -> "syntax
+// error ..."
 std::string parse_error_reason(const std::string& what) {
   std::string reason = what;
-  if (const auto tag_end = reason.find("] "); tag_end != std::string::npos) reason.erase(0, tag_end + 2);
+  if (const auto tag_end = reason.find("] "); tag_end != std::string::npos)
+    reason.erase(0, tag_end + 2);
   if (reason.rfind("parse error", 0) == 0) {
-    if (const auto colon = reason.find(": "); colon != std::string::npos) reason.erase(0, colon + 2);
+    if (const auto colon = reason.find(": "); colon != std::string::npos)
+      reason.erase(0, colon + 2);
   }
   return reason;
 }

@@ -60,16 +60,23 @@ class Range {
   static Range at_least(double bound) { return Range{Bound{bound, true, {}}, {}}; }
   static Range less_than(double bound) { return Range{{}, Bound{bound, false, {}}}; }
   static Range at_most(double bound) { return Range{{}, Bound{bound, true, {}}}; }
-  static Range closed(double low, double high) { return {Bound{low, true, {}}, Bound{high, true, {}}}; }
-  static Range open(double low, double high) { return {Bound{low, false, {}}, Bound{high, false, {}}}; }
-  static Range left_open(double low, double high) { return {Bound{low, false, {}}, Bound{high, true, {}}}; }
+  static Range closed(double low, double high) {
+    return {Bound{low, true, {}}, Bound{high, true, {}}};
+  }
+  static Range open(double low, double high) {
+    return {Bound{low, false, {}}, Bound{high, false, {}}};
+  }
+  static Range left_open(double low, double high) {
+    return {Bound{low, false, {}}, Bound{high, true, {}}};
+  }
   // A scene parameter's domain (engine/scene/parameter_domains.hpp), with its labels.
   static Range of(const Domain& domain) {
     std::optional<Bound> high;
     if (domain.high != std::numeric_limits<double>::infinity()) {
       high = Bound{domain.high, domain.high_inclusive, domain.high_label ? domain.high_label : ""};
     }
-    return {Bound{domain.low, domain.low_inclusive, domain.low_label ? domain.low_label : ""}, high};
+    return {Bound{domain.low, domain.low_inclusive, domain.low_label ? domain.low_label : ""},
+            high};
   }
 
   // Names the bounds in messages where the digits would not speak, e.g. "pi/2".
@@ -85,7 +92,8 @@ class Range {
     std::string label;
   };
   Range() = default;
-  Range(std::optional<Bound> low, std::optional<Bound> high) : low_(std::move(low)), high_(std::move(high)) {}
+  Range(std::optional<Bound> low, std::optional<Bound> high)
+      : low_(std::move(low)), high_(std::move(high)) {}
   static std::string text(const Bound& bound);
 
   std::optional<Bound> low_, high_;
@@ -97,11 +105,13 @@ std::optional<double> read_number(const nlohmann::json& value, const JsonPointer
                                   ConfigErrors& errors, const Range& range = Range::any());
 std::optional<long> read_integer(const nlohmann::json& value, const JsonPointer& path,
                                  ConfigErrors& errors, const Range& range = Range::any());
-std::optional<bool> read_boolean(const nlohmann::json& value, const JsonPointer& path, ConfigErrors& errors);
+std::optional<bool> read_boolean(const nlohmann::json& value, const JsonPointer& path,
+                                 ConfigErrors& errors);
 std::optional<std::string> read_string(const nlohmann::json& value, const JsonPointer& path,
                                        ConfigErrors& errors);
 std::optional<std::string> read_choice(const nlohmann::json& value, const JsonPointer& path,
-                                       ConfigErrors& errors, std::initializer_list<std::string_view> choices);
+                                       ConfigErrors& errors,
+                                       std::initializer_list<std::string_view> choices);
 
 class ArrayReader;
 
@@ -142,7 +152,8 @@ class ObjectReader {
   std::optional<std::string> required_string(std::string_view key);
   std::string string_or(std::string_view key, std::string fallback);
 
-  std::optional<std::string> choice(std::string_view key, std::initializer_list<std::string_view> choices);
+  std::optional<std::string> choice(std::string_view key,
+                                    std::initializer_list<std::string_view> choices);
   std::optional<std::string> required_choice(std::string_view key,
                                              std::initializer_list<std::string_view> choices);
 
@@ -164,7 +175,8 @@ class ObjectReader {
   std::vector<std::string> known_;
 };
 
-// Reads the elements of one JSON array; inert, like ObjectReader, over a missing or non-array value.
+// Reads the elements of one JSON array; inert, like ObjectReader, over a missing or non-array
+// value.
 class ArrayReader {
  public:
   ArrayReader(const nlohmann::json& value, JsonPointer path, ConfigErrors& errors);
@@ -190,7 +202,8 @@ class ArrayReader {
 // Optimal string alignment distance (Levenshtein plus adjacent transpositions).
 std::size_t edit_distance(std::string_view a, std::string_view b);
 // The candidate a typo most likely meant, if any is close enough to suggest.
-std::optional<std::string> closest_match(std::string_view word, const std::vector<std::string>& candidates);
+std::optional<std::string> closest_match(std::string_view word,
+                                         const std::vector<std::string>& candidates);
 
 // A config nests at most this deep (a scene's deepest value is 4 levels down): a deeper document
 // is refused before it is parsed, since each level costs the parser time and memory.

@@ -2,7 +2,6 @@
 
 #include <string>
 
-
 namespace blockfrag {
 
 std::optional<DamCrest> read_dam(ObjectReader reader) {
@@ -14,18 +13,23 @@ std::optional<DamCrest> read_dam(ObjectReader reader) {
   if (by_period && by_size) {
     reader.add_error("period", "give either period or height and elastic_modulus, not both");
   } else if (by_period) {
-    dam.stiffness = DamPeriod{reader.required_number("period", Range::of(domain::dam_period)).value_or(DamPeriod{}.period)};
+    dam.stiffness = DamPeriod{reader.required_number("period", Range::of(domain::dam_period))
+                                  .value_or(DamPeriod{}.period)};
   } else if (by_size) {
     DamSize size;
-    size.height = reader.required_number("height", Range::of(domain::dam_height)).value_or(size.height);
-    size.elastic_modulus = reader.required_number("elastic_modulus", Range::of(domain::elastic_modulus)).value_or(size.elastic_modulus);
+    size.height =
+        reader.required_number("height", Range::of(domain::dam_height)).value_or(size.height);
+    size.elastic_modulus =
+        reader.required_number("elastic_modulus", Range::of(domain::elastic_modulus))
+            .value_or(size.elastic_modulus);
     dam.stiffness = size;
   } else {
     reader.errors().add(reader.path(), "needs period, or height and elastic_modulus");
   }
   // Underdamped: the crest filter is the damped oscillator's closed form for zeta < 1.
   dam.damping = reader.number_or("damping", dam.damping, Range::of(domain::dam_damping));
-  dam.participation = reader.number_or("participation", dam.participation, Range::of(domain::participation));
+  dam.participation =
+      reader.number_or("participation", dam.participation, Range::of(domain::participation));
   reader.finish();
   return dam;
 }

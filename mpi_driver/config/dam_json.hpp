@@ -1,4 +1,5 @@
-// The scene's "dam": the block stands on a gravity dam's crest (engine/motion/dam_crest.hpp), and back.
+// The scene's "dam": the block stands on a gravity dam's crest (engine/motion/dam_crest.hpp), and
+// back.
 #pragma once
 
 #include <optional>

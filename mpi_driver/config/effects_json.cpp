@@ -1,6 +1,5 @@
 #include "mpi_driver/config/effects_json.hpp"
 
-
 #include "engine/contact/model_choice.hpp"
 #include "engine/errors.hpp"
 
@@ -17,7 +16,8 @@ Effects read_effects(const nlohmann::json* value, const JsonPointer& path, Confi
     errors.add(path, "must be \"auto\" or a non-empty list of effects");
     return effects;
   }
-  effects = {.automatic = false, .rocking = false, .sliding = false, .impact = false, .flight = false};
+  effects = {
+      .automatic = false, .rocking = false, .sliding = false, .impact = false, .flight = false};
   bool readable = true;
   for (std::size_t i = 0; i < value->size(); ++i) {
     const auto name = read_choice((*value)[i], path / i, errors,

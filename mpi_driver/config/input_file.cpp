@@ -1,11 +1,12 @@
 #include "mpi_driver/config/input_file.hpp"
 
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+
+#include <sys/stat.h>
 
 namespace blockfrag {
 namespace {
@@ -44,7 +45,8 @@ std::string read_input_file(const std::filesystem::path& path, const InputFileRu
   if (fd.get() < 0) {
     const int error = errno;
     if (error == ELOOP && !rules.follow_links) {
-      throw InputFileError(name + ": is a symbolic link (refused: this file must be the program's own)");
+      throw InputFileError(name +
+                           ": is a symbolic link (refused: this file must be the program's own)");
     }
     if (error == ENOENT) throw InputFileError(name + ": no such file");
     throw InputFileError(name + ": cannot be opened for reading (" + std::strerror(error) + ")");

@@ -8,8 +8,8 @@
 
 namespace blockfrag {
 
-std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value, const JsonPointer& path,
-                                                ConfigErrors& errors) {
+std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value,
+                                                const JsonPointer& path, ConfigErrors& errors) {
   ArrayReader vertices(value, path, errors);
   if (!vertices.valid()) return {};
   if (static_cast<double>(vertices.size()) > domain::kMaxPolygonVertices) {
@@ -27,8 +27,8 @@ std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value, con
       continue;
     }
     if (point.size() != 2) {
-      errors.add(point.path(), "must be a vertex [x, y] (got " + std::to_string(point.size()) +
-                                   " numbers)");
+      errors.add(point.path(),
+                 "must be a vertex [x, y] (got " + std::to_string(point.size()) + " numbers)");
       complete = false;
       continue;
     }
@@ -46,8 +46,8 @@ std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value, con
                  defect->rule);
     } else if (const double size = BlockGeometry(PolygonBlock{out, 1.0}).size();
                !domain::block_length.contains(size)) {
-      errors.add(path, "its size (the farthest corner from the centre of mass, " + format_number(size) +
-                           " m) " + domain::block_length.rule());
+      errors.add(path, "its size (the farthest corner from the centre of mass, " +
+                           format_number(size) + " m) " + domain::block_length.rule());
     }
   }
   return out;

@@ -14,8 +14,8 @@ namespace blockfrag {
 // coordinate at /block/polygon/2/1, a straight corner or a lone lowest vertex at /block/polygon/2,
 // a rule of the whole polygon (crossing itself, clockwise, centre of mass outside the base) at
 // /block/polygon. Returns the vertices read (check errors before using them).
-std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value, const JsonPointer& path,
-                                                ConfigErrors& errors);
+std::vector<std::array<double, 2>> read_polygon(const nlohmann::json& value,
+                                                const JsonPointer& path, ConfigErrors& errors);
 nlohmann::json polygon_to_json(const PolygonBlock& polygon);
 
 }  // namespace blockfrag

@@ -1,4 +1,5 @@
-// The near-fault pulses' keys in a scene's "ground_motion" (engine/motion/near_fault_pulses.hpp), and back.
+// The near-fault pulses' keys in a scene's "ground_motion" (engine/motion/near_fault_pulses.hpp),
+// and back.
 #pragma once
 
 #include <optional>

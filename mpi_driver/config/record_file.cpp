@@ -107,20 +107,23 @@ Header read_header_counts(const std::string& text, const std::string& file) {
     }
   }
   if (!npts || !dt) {
-    throw RecordError(file, line,
-                      "expected NPTS and DT as \"NPTS= 4000, DT= .0050 SEC\" or \"4000 .0050 NPTS, DT\", got " +
-                          in_quotes(text));
+    throw RecordError(
+        file, line,
+        "expected NPTS and DT as \"NPTS= 4000, DT= .0050 SEC\" or \"4000 .0050 NPTS, DT\", got " +
+            in_quotes(text));
   }
   const double count = parse_number(*npts, file, line);
   // Each value takes at least two bytes ("0 "): no file under the size cap holds more.
   if (!(count > 0) || count != std::floor(count) || count > kMaxRecordBytes / 2.0) {
-    throw RecordError(file, line, "NPTS must be a positive whole number (got " + in_quotes(*npts) + ")");
+    throw RecordError(file, line,
+                      "NPTS must be a positive whole number (got " + in_quotes(*npts) + ")");
   }
   const double step = parse_number(*dt, file, line);
   if (!(step > 0)) throw RecordError(file, line, "DT must be > 0 (got " + in_quotes(*dt) + ")");
   if ((count - 1) * step > domain::record_time.high) {
-    throw RecordError(file, line, "the record lasts (NPTS - 1) DT = " + format_number((count - 1) * step) +
-                                      " s, more than " + format_number(domain::record_time.high) + " s");
+    throw RecordError(file, line,
+                      "the record lasts (NPTS - 1) DT = " + format_number((count - 1) * step) +
+                          " s, more than " + format_number(domain::record_time.high) + " s");
   }
   return {static_cast<std::size_t>(count), step};
 }
@@ -139,8 +142,8 @@ Accelerogram read_at2(const std::vector<std::string>& lines, const std::string& 
   const std::size_t after = g_at + std::string("UNITS OF G").size();
   if (units.find("ACCELERATION") == std::string::npos || g_at == std::string::npos ||
       (after < units.size() && std::isalnum(static_cast<unsigned char>(units[after])))) {
-    throw RecordError(file, 3,
-                      "expected \"ACCELERATION TIME SERIES IN UNITS OF G\", got " + in_quotes(lines[2]));
+    throw RecordError(
+        file, 3, "expected \"ACCELERATION TIME SERIES IN UNITS OF G\", got " + in_quotes(lines[2]));
   }
   const Header header = read_header_counts(lines[3], file);
   if (header.points < 2) throw RecordError(file, 4, "a record needs at least 2 samples (NPTS = 1)");
@@ -152,8 +155,8 @@ Accelerogram read_at2(const std::vector<std::string>& lines, const std::string& 
     for (const std::string& token : split(lines[i], " \t")) {
       if (record.acceleration_g.size() == header.points) {
         throw RecordError(file, i + 1,
-                          "more values than NPTS = " + std::to_string(header.points) + " (the extra one is " +
-                              in_quotes(token) + ")");
+                          "more values than NPTS = " + std::to_string(header.points) +
+                              " (the extra one is " + in_quotes(token) + ")");
       }
       record.acceleration_g.push_back(parse_number(token, file, i + 1));
     }
@@ -164,7 +167,8 @@ Accelerogram read_at2(const std::vector<std::string>& lines, const std::string& 
                           " values, fewer than NPTS = " + std::to_string(header.points));
   }
   record.times.resize(header.points);
-  for (std::size_t k = 0; k < header.points; ++k) record.times[k] = static_cast<double>(k) * header.step;
+  for (std::size_t k = 0; k < header.points; ++k)
+    record.times[k] = static_cast<double>(k) * header.step;
   return record;
 }
 
@@ -178,26 +182,30 @@ Accelerogram read_two_columns(const std::vector<std::string>& lines, const std::
     std::vector<double> values;
     for (const std::string& token : tokens) values.push_back(parse_number(token, file, line));
     if (values.size() != 2) {
-      throw RecordError(file, line,
-                        "expected 2 numbers (time acceleration_g), found " + std::to_string(values.size()));
+      throw RecordError(
+          file, line,
+          "expected 2 numbers (time acceleration_g), found " + std::to_string(values.size()));
     }
-    if (values[0] < 0) throw RecordError(file, line, "time must be >= 0 (got " + printable_excerpt(tokens[0]) + ")");
+    if (values[0] < 0)
+      throw RecordError(file, line, "time must be >= 0 (got " + printable_excerpt(tokens[0]) + ")");
     if (values[0] > domain::record_time.high) {
-      throw RecordError(file, line, "time must be <= " + format_number(domain::record_time.high) + " s (got " +
-                                        printable_excerpt(tokens[0]) + ")");
+      throw RecordError(file, line,
+                        "time must be <= " + format_number(domain::record_time.high) + " s (got " +
+                            printable_excerpt(tokens[0]) + ")");
     }
     if (!record.times.empty() && !(values[0] > record.times.back())) {
       throw RecordError(file, line,
-                        "times must increase strictly (" + printable_excerpt(tokens[0]) + " follows " +
-                            printable_excerpt(previous_time) + ")");
+                        "times must increase strictly (" + printable_excerpt(tokens[0]) +
+                            " follows " + printable_excerpt(previous_time) + ")");
     }
     previous_time = tokens[0];
     record.times.push_back(values[0]);
     record.acceleration_g.push_back(values[1]);
   }
   if (record.times.size() < 2) {
-    throw RecordError(file, std::max<std::size_t>(lines.size(), 1),
-                      "a record needs at least 2 samples (found " + std::to_string(record.times.size()) + ")");
+    throw RecordError(
+        file, std::max<std::size_t>(lines.size(), 1),
+        "a record needs at least 2 samples (found " + std::to_string(record.times.size()) + ")");
   }
   return record;
 }
@@ -216,10 +224,7 @@ std::string located(const std::string& file, std::size_t line, const std::string
 }  // namespace
 
 RecordError::RecordError(const std::string& file, std::size_t line, const std::string& reason)
-    : InvalidInput(located(file, line, reason)),
-      file_(file),
-      reason_(reason),
-      line_(line) {}
+    : InvalidInput(located(file, line, reason)), file_(file), reason_(reason), line_(line) {}
 
 Accelerogram read_accelerogram(const std::filesystem::path& file) {
   const std::vector<std::string> lines = read_lines(file);

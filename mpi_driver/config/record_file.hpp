@@ -10,8 +10,8 @@
 
 namespace blockfrag {
 
-// A record file that cannot be used. what() is "<file>:<line>: <reason>", or "<file>: <reason>" when
-// no line is to blame (a file that cannot be opened); the file is named as the caller gave it.
+// A record file that cannot be used. what() is "<file>:<line>: <reason>", or "<file>: <reason>"
+// when no line is to blame (a file that cannot be opened); the file is named as the caller gave it.
 class RecordError : public InvalidInput {
  public:
   RecordError(const std::string& file, std::size_t line, const std::string& reason);

@@ -11,8 +11,8 @@
 #include "mpi_driver/config/dam_json.hpp"
 #include "mpi_driver/config/effects_json.hpp"
 #include "mpi_driver/config/polygon_json.hpp"
-#include "mpi_driver/config/record_file.hpp"
 #include "mpi_driver/config/pulse_json.hpp"
+#include "mpi_driver/config/record_file.hpp"
 #include "sampling/validation.hpp"  // format_number
 
 namespace blockfrag {
@@ -26,16 +26,19 @@ void read_block(ObjectReader reader, Scene& scene) {
   RectangularBlock& block = scene.block;
   if (reader.has("polygon")) {
     PolygonBlock polygon;
-    polygon.vertices = read_polygon(*reader.raw("polygon"), reader.path_of("polygon"), reader.errors());
+    polygon.vertices =
+        read_polygon(*reader.raw("polygon"), reader.path_of("polygon"), reader.errors());
     for (const char* key : {"half_width", "half_height"}) {
-      if (reader.has(key)) reader.add_error(key, "give either polygon or half_width and half_height, not both");
+      if (reader.has(key))
+        reader.add_error(key, "give either polygon or half_width and half_height, not both");
     }
     polygon.mass = reader.number_or("mass", polygon.mass, Range::of(domain::mass));
     scene.polygon = std::move(polygon);
   } else {
-    block.half_width = reader.required_number("half_width", Range::of(domain::block_length)).value_or(block.half_width);
-    block.half_height =
-        reader.required_number("half_height", Range::of(domain::block_length)).value_or(block.half_height);
+    block.half_width = reader.required_number("half_width", Range::of(domain::block_length))
+                           .value_or(block.half_width);
+    block.half_height = reader.required_number("half_height", Range::of(domain::block_length))
+                            .value_or(block.half_height);
     block.mass = reader.number_or("mass", block.mass, Range::of(domain::mass));
   }
   reader.finish();
@@ -43,9 +46,10 @@ void read_block(ObjectReader reader, Scene& scene) {
 
 Contact read_contact(ObjectReader reader) {
   Contact contact;
-  contact.friction = reader.required_number("friction", Range::of(domain::friction)).value_or(contact.friction);
-  contact.restitution =
-      reader.required_number("restitution", Range::of(domain::restitution)).value_or(contact.restitution);
+  contact.friction =
+      reader.required_number("friction", Range::of(domain::friction)).value_or(contact.friction);
+  contact.restitution = reader.required_number("restitution", Range::of(domain::restitution))
+                            .value_or(contact.restitution);
   reader.finish();
   return contact;
 }
@@ -54,16 +58,20 @@ Contact read_contact(ObjectReader reader) {
 template <class Pulse>
 Pulse read_periodic_pulse(ObjectReader& reader) {
   Pulse pulse;
-  pulse.amplitude_g = reader.required_number("amplitude_g", Range::of(domain::amplitude_g)).value_or(pulse.amplitude_g);
-  pulse.period = reader.required_number("period", Range::of(domain::pulse_period)).value_or(pulse.period);
+  pulse.amplitude_g = reader.required_number("amplitude_g", Range::of(domain::amplitude_g))
+                          .value_or(pulse.amplitude_g);
+  pulse.period =
+      reader.required_number("period", Range::of(domain::pulse_period)).value_or(pulse.period);
   pulse.cycles = reader.number_or("cycles", 1.0, Range::of(domain::pulse_cycles));
   return pulse;
 }
 
 RectangularPulse read_rectangular_pulse(ObjectReader& reader) {
   RectangularPulse pulse;
-  pulse.amplitude_g = reader.required_number("amplitude_g", Range::of(domain::amplitude_g)).value_or(pulse.amplitude_g);
-  pulse.duration = reader.required_number("duration", Range::of(domain::pulse_duration)).value_or(pulse.duration);
+  pulse.amplitude_g = reader.required_number("amplitude_g", Range::of(domain::amplitude_g))
+                          .value_or(pulse.amplitude_g);
+  pulse.duration = reader.required_number("duration", Range::of(domain::pulse_duration))
+                       .value_or(pulse.duration);
   return pulse;
 }
 
@@ -74,7 +82,8 @@ RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& ba
   const auto file = reader.required_string("file");
   const auto scale = reader.number("scale", Range::of(domain::record_scale));
   const auto target_pga = reader.number("target_pga_g", Range::of(domain::target_pga_g));
-  if (scale && target_pga) reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
+  if (scale && target_pga)
+    reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
   if (file && file->empty()) reader.add_error("file", "must not be empty");
   if (!file || file->empty()) return motion;
   motion.file = *file;
@@ -91,16 +100,17 @@ RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& ba
     if (peak > 0) {
       motion.scale = *target_pga / peak;
     } else {
-      reader.add_error("target_pga_g", "cannot scale " + path.string() + " to a peak: its accelerations are all 0");
+      reader.add_error("target_pga_g",
+                       "cannot scale " + path.string() + " to a peak: its accelerations are all 0");
     }
   }
   return motion;
 }
 
 GroundMotion read_ground_motion(ObjectReader reader, const std::filesystem::path& base_folder) {
-  const auto type =
-      reader.required_choice("type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", "record", makris_a_type,
-                                      makris_b_type, makris_c_type, ricker_type, mavroeidis_papageorgiou_type});
+  const auto type = reader.required_choice(
+      "type", {"none", "cosine_pulse", "sine_pulse", "rectangular_pulse", "record", makris_a_type,
+               makris_b_type, makris_c_type, ricker_type, mavroeidis_papageorgiou_type});
   // Without a valid type nobody knows which keys belong here: report nothing more.
   if (!type) return NoMotion{};
   GroundMotion motion = NoMotion{};
@@ -133,35 +143,42 @@ const char* method_name(Method method) {
 
 SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) {
   SolverSettings solver;
-  const auto method =
-      reader.has("method")
-          ? method_named(reader.required_choice("method", {"adaptive", "rk4", "gsl_rkf45", "gsl_rk8pd"}))
-          : std::optional<Method>(solver.method);
+  const auto method = reader.has("method")
+                          ? method_named(reader.required_choice(
+                                "method", {"adaptive", "rk4", "gsl_rkf45", "gsl_rk8pd"}))
+                          : std::optional<Method>(solver.method);
   if (method == Method::rk4) {
     const auto dt = reader.number("dt", Range::of(domain::rk4_step));
     if (dt) solver.dt = *dt;
     if (dt && duration && *dt > *duration) {
-      reader.add_error("dt", "must be <= duration (" + format_number(*duration) + ") (got " + format_number(*dt) + ")");
+      reader.add_error("dt", "must be <= duration (" + format_number(*duration) + ") (got " +
+                                 format_number(*dt) + ")");
     }
   } else if (method) {  // the step-size-controlled methods
-    solver.tolerance = reader.number_or("tolerance", solver.tolerance, Range::of(domain::tolerance));
+    solver.tolerance =
+        reader.number_or("tolerance", solver.tolerance, Range::of(domain::tolerance));
   }
   if (method) solver.method = *method;
   solver.max_steps = reader.integer_or("max_steps", solver.max_steps, Range::of(domain::max_steps));
-  solver.max_events = reader.integer_or("max_events", solver.max_events, Range::of(domain::max_events));
+  solver.max_events =
+      reader.integer_or("max_events", solver.max_events, Range::of(domain::max_events));
   if (method) reader.finish("for method \"" + std::string(method_name(*method)) + "\"");
   return solver;
 }
 
 // A polygon may lay a face next to its base on the ground before pi/2: the tilt must stop short.
-void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPointer& path, ConfigErrors& errors) {
+void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPointer& path,
+                        ConfigErrors& errors) {
   if (polygon_defect(polygon.vertices)) return;  // reported at the polygon
   const BlockGeometry geometry(polygon);
-  const double low = -geometry.overturn_angle(Corner::right), high = geometry.overturn_angle(Corner::left);
+  const double low = -geometry.overturn_angle(Corner::right),
+               high = geometry.overturn_angle(Corner::left);
   if (!(theta > low && theta < high)) {
-    errors.add(path, "must be in (" + format_number(low) + ", " + format_number(high) +
-                         ") for this polygon, the tilts that lay a face next to its base on the ground (got " +
-                         format_number(theta) + ")");
+    errors.add(
+        path,
+        "must be in (" + format_number(low) + ", " + format_number(high) +
+            ") for this polygon, the tilts that lay a face next to its base on the ground (got " +
+            format_number(theta) + ")");
   }
 }
 
@@ -178,20 +195,25 @@ json ground_motion_to_json(const GroundMotion& motion) {
         using Pulse = std::decay_t<decltype(pulse)>;
         if constexpr (std::is_same_v<Pulse, NoMotion>) {
           return {{"type", "none"}};
-        } else if constexpr (std::is_same_v<Pulse, CosinePulse> || std::is_same_v<Pulse, SinePulse>) {
+        } else if constexpr (std::is_same_v<Pulse, CosinePulse> ||
+                             std::is_same_v<Pulse, SinePulse>) {
           return {{"type", std::is_same_v<Pulse, CosinePulse> ? "cosine_pulse" : "sine_pulse"},
                   {"amplitude_g", pulse.amplitude_g},
                   {"period", pulse.period},
                   {"cycles", pulse.cycles}};
         } else if constexpr (std::is_same_v<Pulse, RecordedMotion>) {
           return {{"type", "record"}, {"file", pulse.file}, {"scale", pulse.scale}};
-        } else if constexpr (std::is_same_v<Pulse, MakrisPulseA> || std::is_same_v<Pulse, MakrisPulseB> ||
-                             std::is_same_v<Pulse, MakrisPulseC> || std::is_same_v<Pulse, RickerWavelet> ||
+        } else if constexpr (std::is_same_v<Pulse, MakrisPulseA> ||
+                             std::is_same_v<Pulse, MakrisPulseB> ||
+                             std::is_same_v<Pulse, MakrisPulseC> ||
+                             std::is_same_v<Pulse, RickerWavelet> ||
                              std::is_same_v<Pulse, MavroeidisPapageorgiouPulse>) {
           return pulse_to_json(pulse);
         } else {
           static_assert(std::is_same_v<Pulse, RectangularPulse>);
-          return {{"type", "rectangular_pulse"}, {"amplitude_g", pulse.amplitude_g}, {"duration", pulse.duration}};
+          return {{"type", "rectangular_pulse"},
+                  {"amplitude_g", pulse.amplitude_g},
+                  {"duration", pulse.duration}};
         }
       },
       motion);
@@ -213,7 +235,8 @@ json solver_to_json(const SolverSettings& solver) {
 
 Scene scene_from_json(const json& document, const std::string& source) {
   ConfigErrors errors(source);
-  Scene scene = scene_from_json(document, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
+  Scene scene =
+      scene_from_json(document, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
   errors.throw_if_any();
   return scene;
 }
@@ -239,7 +262,8 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
   scene.g = root.number_or("g", scene.g, Range::of(domain::g));
   scene.solver = read_solver(root.object("solver"), duration);
   scene.initial = read_initial(root.object("initial"));
-  if (scene.polygon) check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);
+  if (scene.polygon)
+    check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);
   root.finish();
   return scene;
 }
@@ -250,17 +274,17 @@ Scene read_scene_file(const std::filesystem::path& path) {
 
 json scene_to_json(const Scene& scene) {
   json out = {{"effects", effects_to_json(scene.effects)},
-          {"block",
-           scene.polygon ? polygon_to_json(*scene.polygon)
-                         : json{{"half_width", scene.block.half_width},
-                                {"half_height", scene.block.half_height},
-                                {"mass", scene.block.mass}}},
-          {"contact", {{"friction", scene.contact.friction}, {"restitution", scene.contact.restitution}}},
-          {"ground_motion", ground_motion_to_json(scene.ground_motion)},
-          {"duration", scene.duration},
-          {"g", scene.g},
-          {"solver", solver_to_json(scene.solver)},
-          {"initial", {{"theta", scene.initial.theta}}}};
+              {"block", scene.polygon ? polygon_to_json(*scene.polygon)
+                                      : json{{"half_width", scene.block.half_width},
+                                             {"half_height", scene.block.half_height},
+                                             {"mass", scene.block.mass}}},
+              {"contact",
+               {{"friction", scene.contact.friction}, {"restitution", scene.contact.restitution}}},
+              {"ground_motion", ground_motion_to_json(scene.ground_motion)},
+              {"duration", scene.duration},
+              {"g", scene.g},
+              {"solver", solver_to_json(scene.solver)},
+              {"initial", {{"theta", scene.initial.theta}}}};
   if (scene.dam) out["dam"] = dam_to_json(*scene.dam);
   if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) {
     out["vertical_motion"] = ground_motion_to_json(scene.vertical_motion);

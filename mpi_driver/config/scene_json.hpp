@@ -6,11 +6,11 @@
 //    "solver": {"method": "adaptive", "tolerance": 1e-8, "max_steps": ..., "max_events": ...},
 //    "g": 9.81, "initial": {"theta": 0.0}}
 // block, contact, ground_motion and duration are required; everything else has the defaults of
-// engine/scene/scene.hpp. Ground motion types: "none"; "cosine_pulse" and "sine_pulse" (amplitude_g,
-// period, optional cycles); "rectangular_pulse" (amplitude_g, duration); "record" (file, optional
-// scale or target_pga_g; see mpi_driver/config/record_file.hpp for the formats). Solver methods: "adaptive",
-// "gsl_rkf45" and "gsl_rk8pd" (optional tolerance), and "rk4" (optional dt). A key of another type
-// or method is an unknown key.
+// engine/scene/scene.hpp. Ground motion types: "none"; "cosine_pulse" and "sine_pulse"
+// (amplitude_g, period, optional cycles); "rectangular_pulse" (amplitude_g, duration); "record"
+// (file, optional scale or target_pga_g; see mpi_driver/config/record_file.hpp for the formats).
+// Solver methods: "adaptive", "gsl_rkf45" and "gsl_rk8pd" (optional tolerance), and "rk4" (optional
+// dt). A key of another type or method is an unknown key.
 #pragma once
 
 #include <filesystem>

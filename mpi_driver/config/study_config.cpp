@@ -21,9 +21,9 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 // Intensity levels a study may have: a fine grid for a smooth curve is a few hundred.
 constexpr double kMaxLevels = 10'000;
 
-constexpr StudyInput all_inputs[] = {StudyInput::friction, StudyInput::restitution, StudyInput::half_width,
-                                     StudyInput::half_height, StudyInput::alpha, StudyInput::R,
-                                     StudyInput::period, StudyInput::direction};
+constexpr StudyInput all_inputs[] = {
+    StudyInput::friction, StudyInput::restitution, StudyInput::half_width, StudyInput::half_height,
+    StudyInput::alpha,    StudyInput::R,           StudyInput::period,     StudyInput::direction};
 
 // The domain every sample of an input must stay within: the scene parameter's it sets.
 const Domain& input_domain(StudyInput input) {
@@ -47,8 +47,10 @@ std::pair<double, double> support_of(const Distribution& distribution) {
         using T = std::decay_t<decltype(d)>;
         if constexpr (std::is_same_v<T, Fixed>) return {d.value, d.value};
         if constexpr (std::is_same_v<T, Uniform>) return {d.min, d.max};
-        if constexpr (std::is_same_v<T, Normal>) return {d.lower.value_or(-infinity), d.upper.value_or(infinity)};
-        if constexpr (std::is_same_v<T, LogNormal>) return {d.lower.value_or(0.0), d.upper.value_or(infinity)};
+        if constexpr (std::is_same_v<T, Normal>)
+          return {d.lower.value_or(-infinity), d.upper.value_or(infinity)};
+        if constexpr (std::is_same_v<T, LogNormal>)
+          return {d.lower.value_or(0.0), d.upper.value_or(infinity)};
       },
       distribution);
 }
@@ -61,7 +63,8 @@ bool within(const Domain& domain, double low, double high, bool log_normal) {
 }
 
 std::optional<Distribution> read_distribution(ObjectReader reader) {
-  const auto kind = reader.required_choice("distribution", {"fixed", "uniform", "normal", "lognormal"});
+  const auto kind =
+      reader.required_choice("distribution", {"fixed", "uniform", "normal", "lognormal"});
   if (!kind) return std::nullopt;
   Distribution distribution = Fixed{};
   bool complete = true;
@@ -85,7 +88,8 @@ std::optional<Distribution> read_distribution(ObjectReader reader) {
   if (!complete) return std::nullopt;
   bool valid = true;
   for (const auto& violation : validate(distribution)) {
-    reader.errors().add(violation.field.empty() ? reader.path() : reader.path_of(violation.field), violation.message);
+    reader.errors().add(violation.field.empty() ? reader.path() : reader.path_of(violation.field),
+                        violation.message);
     valid = false;
   }
   return valid ? std::optional<Distribution>(distribution) : std::nullopt;
@@ -111,17 +115,22 @@ std::optional<Distribution> read_direction(ObjectReader reader) {
 
 json distribution_to_json(StudyInput input, const Distribution& distribution) {
   if (input == StudyInput::direction) {
-    if (const auto* fixed = std::get_if<Fixed>(&distribution)) return {{"distribution", "fixed"}, {"value", fixed->value}};
+    if (const auto* fixed = std::get_if<Fixed>(&distribution))
+      return {{"distribution", "fixed"}, {"value", fixed->value}};
     return {{"distribution", "random_sign"}};
   }
   return std::visit(
       [](const auto& d) -> json {
         using T = std::decay_t<decltype(d)>;
         json out;
-        if constexpr (std::is_same_v<T, Fixed>) out = {{"distribution", "fixed"}, {"value", d.value}};
-        if constexpr (std::is_same_v<T, Uniform>) out = {{"distribution", "uniform"}, {"min", d.min}, {"max", d.max}};
-        if constexpr (std::is_same_v<T, Normal>) out = {{"distribution", "normal"}, {"mean", d.mean}, {"std_dev", d.std_dev}};
-        if constexpr (std::is_same_v<T, LogNormal>) out = {{"distribution", "lognormal"}, {"median", d.median}, {"beta", d.beta}};
+        if constexpr (std::is_same_v<T, Fixed>)
+          out = {{"distribution", "fixed"}, {"value", d.value}};
+        if constexpr (std::is_same_v<T, Uniform>)
+          out = {{"distribution", "uniform"}, {"min", d.min}, {"max", d.max}};
+        if constexpr (std::is_same_v<T, Normal>)
+          out = {{"distribution", "normal"}, {"mean", d.mean}, {"std_dev", d.std_dev}};
+        if constexpr (std::is_same_v<T, LogNormal>)
+          out = {{"distribution", "lognormal"}, {"median", d.median}, {"beta", d.beta}};
         if constexpr (std::is_same_v<T, Normal> || std::is_same_v<T, LogNormal>) {
           if (d.lower) out["lower"] = *d.lower;
           if (d.upper) out["upper"] = *d.upper;
@@ -137,13 +146,15 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
     if (!reader.has(key)) continue;
     ObjectReader spec = reader.required_object(key);
     if (!spec.valid()) continue;
-    const auto distribution = input == StudyInput::direction ? read_direction(spec) : read_distribution(spec);
+    const auto distribution =
+        input == StudyInput::direction ? read_direction(spec) : read_distribution(spec);
     if (!distribution) continue;
     const auto [low, high] = support_of(*distribution);
     if (input != StudyInput::direction &&
         !within(input_domain(input), low, high, std::holds_alternative<LogNormal>(*distribution))) {
-      reader.add_error(key, "every value " + input_domain(input).rule() + ", but this distribution reaches [" +
-                                format_number(low) + ", " + format_number(high) +
+      reader.add_error(key, "every value " + input_domain(input).rule() +
+                                ", but this distribution reaches [" + format_number(low) + ", " +
+                                format_number(high) +
                                 "] (truncate it with \"lower\"/\"upper\" or narrow its range)");
     }
     config.inputs.push_back({input, *distribution});
@@ -165,10 +176,12 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
   // Sampling draws a rectangle's sizes; a polygon block keeps its shape (friction, restitution,
   // period and direction still vary).
   if (base.polygon) {
-    for (const StudyInput input : {StudyInput::half_width, StudyInput::half_height, StudyInput::alpha, StudyInput::R}) {
+    for (const StudyInput input :
+         {StudyInput::half_width, StudyInput::half_height, StudyInput::alpha, StudyInput::R}) {
       if (has(input)) {
-        reader.add_error(input_key(input), "varies a rectangle's size, but /scene/block is a polygon (studies keep "
-                                           "a polygon's shape)");
+        reader.add_error(input_key(input),
+                         "varies a rectangle's size, but /scene/block is a polygon (studies keep "
+                         "a polygon's shape)");
       }
     }
   }
@@ -203,7 +216,8 @@ std::vector<double> read_levels(ObjectReader reader) {
       const auto value = array.number(k, Range::of(domain::intensity_g));
       if (!value) continue;
       if (!levels.empty() && *value <= levels.back()) {
-        reader.errors().add(array.path_of(k), "must be greater than the level before it (levels increase)");
+        reader.errors().add(array.path_of(k),
+                            "must be greater than the level before it (levels increase)");
       }
       levels.push_back(*value);
     }
@@ -211,10 +225,13 @@ std::vector<double> read_levels(ObjectReader reader) {
     const auto from = reader.required_number("from", Range::of(domain::intensity_g));
     const auto to = reader.required_number("to", Range::of(domain::intensity_g));
     const auto count = reader.required_integer("count", Range::closed(2, kMaxLevels));
-    if (from && to && *to <= *from) reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
+    if (from && to && *to <= *from)
+      reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
     if (from && to && count && *to > *from) {
       for (long k = 0; k < *count; ++k) {
-        levels.push_back(k == *count - 1 ? *to : *from + (*to - *from) * static_cast<double>(k) / static_cast<double>(*count - 1));
+        levels.push_back(k == *count - 1 ? *to
+                                         : *from + (*to - *from) * static_cast<double>(k) /
+                                                       static_cast<double>(*count - 1));
       }
     }
   }
@@ -231,33 +248,41 @@ std::optional<std::string> output_name_problem(const std::string& name) {
   if (name.find('\0') != std::string::npos) return "must not contain a NUL byte";
   const std::filesystem::path path(name);
   const std::string file = path.filename().string();
-  if (file.empty() || file == "." || file == "..") return "must name a file, not a folder (got \"" + printable_excerpt(name) + "\")";
+  if (file.empty() || file == "." || file == "..")
+    return "must name a file, not a folder (got \"" + printable_excerpt(name) + "\")";
   return std::nullopt;
 }
 
 bool valid_group_name(const std::string& name) {
-  if (name.empty() || !(std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+  if (name.empty() || !(std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_'))
+    return false;
   for (const char c : name) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
+      return false;
   }
   return true;
 }
 
 void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& config) {
-  if (array.valid() && array.size() == 0) root.add_error("limit_states", "must name at least one limit state");
+  if (array.valid() && array.size() == 0)
+    root.add_error("limit_states", "must name at least one limit state");
   for (std::size_t k = 0; k < array.size(); ++k) {
     ObjectReader reader = array.object(k);
     if (!reader.valid()) continue;
     LimitState state;
     const auto name = reader.required_string("name");
     if (name && !valid_group_name(*name)) {
-      reader.add_error("name", "must start with a letter, digit or '_', then letters, digits, '_', '-' or '.' (got \"" +
-                                   printable_excerpt(*name) + "\")");
+      reader.add_error(
+          "name",
+          "must start with a letter, digit or '_', then letters, digits, '_', '-' or '.' (got \"" +
+              printable_excerpt(*name) + "\")");
     }
     for (const auto& other : config.limit_states) {
-      if (name && other.name == *name) reader.add_error("name", "\"" + *name + "\" is used by another limit state");
+      if (name && other.name == *name)
+        reader.add_error("name", "\"" + *name + "\" is used by another limit state");
     }
-    const auto type = reader.required_choice("type", {"overturning", "max_rotation", "residual_slide"});
+    const auto type =
+        reader.required_choice("type", {"overturning", "max_rotation", "residual_slide"});
     if (type == "max_rotation") {
       state.kind = LimitStateKind::max_rotation;
       state.threshold = reader.required_number("theta_over_alpha", positive).value_or(0.0);
@@ -281,8 +306,8 @@ json limit_state_to_json(const LimitState& state) {
 }
 
 // A scene's errors come back with paths inside the scene; put them under /scene.
-void read_scene(const json& value, const std::string& source, ConfigErrors& errors, StudyConfig& config,
-                bool& valid) {
+void read_scene(const json& value, const std::string& source, ConfigErrors& errors,
+                StudyConfig& config, bool& valid) {
   try {
     config.base_scene = scene_from_json(value, source);
     valid = true;
@@ -302,12 +327,14 @@ void read_scene(const json& value, const std::string& source, ConfigErrors& erro
 
 json canonical_json(const StudyConfig& config) {
   json inputs = json::object();
-  for (const auto& spec : config.inputs) inputs[input_key(spec.input)] = distribution_to_json(spec.input, spec.distribution);
+  for (const auto& spec : config.inputs)
+    inputs[input_key(spec.input)] = distribution_to_json(spec.input, spec.distribution);
   json limit_states = json::array();
   for (const auto& state : config.limit_states) limit_states.push_back(limit_state_to_json(state));
   return {{"scene", scene_to_json(config.base_scene)},
           {"inputs", inputs},
-          {"intensity_measure", {{"name", im_name}, {"units", im_units}, {"levels", config.intensity.levels}}},
+          {"intensity_measure",
+           {{"name", im_name}, {"units", im_units}, {"levels", config.intensity.levels}}},
           {"samples_per_level", config.samples_per_level},
           {"design", config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"},
           {"limit_states", limit_states},
@@ -344,7 +371,8 @@ const char* limit_state_kind_name(LimitStateKind kind) {
 
 std::string canonical_text(const json& canonical) { return canonical.dump(); }
 
-StudyConfig parse_study_config(const json& document, const std::string& source, const StudyOverrides& overrides) {
+StudyConfig parse_study_config(const json& document, const std::string& source,
+                               const StudyOverrides& overrides) {
   ConfigErrors errors(source);
   ObjectReader root(document, JsonPointer{}, errors);
   StudyConfig config;
@@ -355,21 +383,25 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
   } else {
     root.required_object("scene");
   }
-  if (root.has("inputs")) read_inputs(root.required_object("inputs"), config.base_scene, scene_valid, config);
+  if (root.has("inputs"))
+    read_inputs(root.required_object("inputs"), config.base_scene, scene_valid, config);
 
   config.intensity.levels = read_levels(root.required_object("intensity_measure"));
   if (scene_valid && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
-    root.add_error("intensity_measure", "scales the pulse amplitude, but /scene/ground_motion has type \"none\"");
+    root.add_error("intensity_measure",
+                   "scales the pulse amplitude, but /scene/ground_motion has type \"none\"");
   }
   if (const auto* record = std::get_if<RecordedMotion>(&config.base_scene.ground_motion);
       scene_valid && record && !(peak_acceleration_g(*record->record) > 0)) {
-    root.add_error("intensity_measure", "scales the record's peak acceleration, but every sample of " +
-                                            record->file + " is 0");
+    root.add_error(
+        "intensity_measure",
+        "scales the record's peak acceleration, but every sample of " + record->file + " is 0");
   }
   if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
       scene_valid && mp && mp->velocity_amplitude == 0.0) {
-    root.add_error("intensity_measure", "scales the pulse's peak acceleration, but /scene/ground_motion has "
-                                        "velocity_amplitude 0");
+    root.add_error("intensity_measure",
+                   "scales the pulse's peak acceleration, but /scene/ground_motion has "
+                   "velocity_amplitude 0");
   }
   const Range samples_range = Range::closed(1, 2147483648.0);
   const auto samples = root.required_integer("samples_per_level", samples_range);
@@ -382,11 +414,13 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
   } else if (samples) {
     config.samples_per_level = static_cast<std::uint32_t>(*samples);
   }
-  const auto design = root.has("design") ? root.required_choice("design", {"monte_carlo", "latin_hypercube"})
-                                         : std::optional<std::string>("monte_carlo");
+  const auto design = root.has("design")
+                          ? root.required_choice("design", {"monte_carlo", "latin_hypercube"})
+                          : std::optional<std::string>("monte_carlo");
   config.design = design == "latin_hypercube" ? Design::latin_hypercube : Design::monte_carlo;
   read_limit_states(root.required_array("limit_states"), root, config);
-  config.seed = static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
+  config.seed =
+      static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
   const auto output = root.string("output");
   if (output) {
     if (const auto problem = output_name_problem(*output)) root.add_error("output", *problem);
@@ -402,17 +436,18 @@ StudyConfig parse_study_config(const json& document, const std::string& source, 
     // Without an output key the study writes STUDY.h5 in the working folder.
     config.output = std::filesystem::path(source).stem().string() + ".h5";
   }
-  config.checkpoint_interval_s =
-      root.number_or("checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
-  config.allowed_failed_fraction =
-      root.number_or("allowed_failed_fraction", config.allowed_failed_fraction, Range::closed(0.0, 1.0));
+  config.checkpoint_interval_s = root.number_or(
+      "checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
+  config.allowed_failed_fraction = root.number_or(
+      "allowed_failed_fraction", config.allowed_failed_fraction, Range::closed(0.0, 1.0));
   root.finish();
   if (errors.empty() && config.total_samples() > kMaxTotalSamples) {
     errors.add(JsonPointer("/samples_per_level"),
                "the study has " + std::to_string(config.intensity.levels.size()) + " levels x " +
-                   std::to_string(config.samples_per_level) + " samples = " +
-                   std::to_string(config.total_samples()) + ", more than the " +
-                   std::to_string(kMaxTotalSamples) + " rank 0 can hold; split it into several studies");
+                   std::to_string(config.samples_per_level) +
+                   " samples = " + std::to_string(config.total_samples()) + ", more than the " +
+                   std::to_string(kMaxTotalSamples) +
+                   " rank 0 can hold; split it into several studies");
   }
   errors.throw_if_any();
 

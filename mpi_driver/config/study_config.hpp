@@ -39,7 +39,16 @@ namespace blockfrag {
 
 // The scene values a study can draw. Geometry is given either as half_width/half_height or as
 // alpha/R (alpha = atan(a / b) in rad, R = sqrt(a^2 + b^2) in m), never both.
-enum class StudyInput { friction, restitution, half_width, half_height, alpha, R, period, direction };
+enum class StudyInput {
+  friction,
+  restitution,
+  half_width,
+  half_height,
+  alpha,
+  R,
+  period,
+  direction
+};
 
 // The config key (and the /samples column name) of an input: the enumerator's name ("friction",
 // "half_width", "alpha", "R", "period" (s, as in the scene), "direction").
@@ -108,7 +117,8 @@ struct StudyOverrides {
 // Throws ConfigError listing every problem, each as "source: /json/pointer: rule".
 StudyConfig parse_study_config(const nlohmann::json& document, const std::string& source,
                                const StudyOverrides& overrides = {});
-StudyConfig read_study_config(const std::filesystem::path& path, const StudyOverrides& overrides = {});
+StudyConfig read_study_config(const std::filesystem::path& path,
+                              const StudyOverrides& overrides = {});
 
 // The canonical text (nlohmann's dump of the canonical config: sorted keys, shortest round-trip
 // numbers) that is hashed and stored in outputs.

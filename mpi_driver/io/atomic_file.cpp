@@ -1,7 +1,6 @@
 #include "mpi_driver/io/atomic_file.hpp"
 
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,6 +10,8 @@
 #include <cstring>
 #include <string>
 #include <thread>
+
+#include <sys/stat.h>
 
 namespace blockfrag {
 namespace {
@@ -55,9 +56,10 @@ int create_exclusively(const std::filesystem::path& path) {
   return fd;
 }
 
-void replace_file_atomically(const std::filesystem::path& path,
-                             const std::function<void(const std::filesystem::path&)>& write_temporary,
-                             const AtomicWriteHooks& hooks) {
+void replace_file_atomically(
+    const std::filesystem::path& path,
+    const std::function<void(const std::filesystem::path&)>& write_temporary,
+    const AtomicWriteHooks& hooks) {
   const auto temporary = fresh_temporary_name(path);
   try {
     write_temporary(temporary);
@@ -105,7 +107,9 @@ std::optional<std::string> folder_write_problem(const std::filesystem::path& tar
   }
   std::string probe = (folder / (temporary_prefix(target) + "XXXXXX")).string();
   const int fd = ::mkstemp(probe.data());
-  if (fd < 0) return "cannot create a file in the folder " + folder.string() + " (" + std::strerror(errno) + ")";
+  if (fd < 0)
+    return "cannot create a file in the folder " + folder.string() + " (" + std::strerror(errno) +
+           ")";
   ::close(fd);
   ::unlink(probe.c_str());
   return std::nullopt;

@@ -34,9 +34,10 @@ struct AtomicWriteHooks {
 // write_temporary must create the file at the path it is given exclusively (the path does not
 // exist: create_exclusively() below, or HDF5's H5F_ACC_EXCL), write the complete content and close
 // it; then the file is fsynced and renamed over path.
-void replace_file_atomically(const std::filesystem::path& path,
-                             const std::function<void(const std::filesystem::path&)>& write_temporary,
-                             const AtomicWriteHooks& hooks = {});
+void replace_file_atomically(
+    const std::filesystem::path& path,
+    const std::function<void(const std::filesystem::path&)>& write_temporary,
+    const AtomicWriteHooks& hooks = {});
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
                            const AtomicWriteHooks& hooks = {});

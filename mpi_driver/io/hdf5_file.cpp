@@ -44,8 +44,8 @@ void write_typed_column(hid_t file, const std::string& path, const std::vector<T
   const hsize_t size = values.size();
   Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose, "create a dataspace for " + path);
   const auto properties = creation_properties(H5P_DATASET_CREATE, path);
-  Handle dataset(H5Dcreate2(file, path.c_str(), file_type, space.get(), H5P_DEFAULT, properties.get(),
-                            H5P_DEFAULT),
+  Handle dataset(H5Dcreate2(file, path.c_str(), file_type, space.get(), H5P_DEFAULT,
+                            properties.get(), H5P_DEFAULT),
                  H5Dclose, "create dataset " + path);
   if (!values.empty()) {
     check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
@@ -59,8 +59,9 @@ void write_attribute(hid_t file, const std::string& object, const std::string& n
   const std::string what = "attribute " + name + " of " + object;
   Handle target(H5Oopen(file, object.c_str(), H5P_DEFAULT), H5Oclose, "open " + object);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a dataspace for " + what);
-  Handle attribute(H5Acreate2(target.get(), name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose, "create " + what);
+  Handle attribute(
+      H5Acreate2(target.get(), name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+      "create " + what);
   check(H5Awrite(attribute.get(), type, value), "write " + what);
 }
 
@@ -99,8 +100,8 @@ void Hdf5Writer::close() {
 
 void Hdf5Writer::create_group(const std::string& path) {
   const auto properties = creation_properties(H5P_GROUP_CREATE, path);
-  Handle group(H5Gcreate2(file_, path.c_str(), H5P_DEFAULT, properties.get(), H5P_DEFAULT), H5Gclose,
-               "create group " + path);
+  Handle group(H5Gcreate2(file_, path.c_str(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
+               H5Gclose, "create group " + path);
 }
 
 void Hdf5Writer::write_column(const std::string& path, const std::vector<double>& values) {
@@ -111,7 +112,8 @@ void Hdf5Writer::write_column(const std::string& path, const std::vector<std::in
   write_typed_column(file_, path, values, H5T_STD_I64LE, H5T_NATIVE_INT64);
 }
 
-void Hdf5Writer::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
+void Hdf5Writer::set_attribute(const std::string& object, const std::string& name,
+                               const std::string& value) {
   const auto type = utf8_string_type();
   const char* text = value.c_str();
   write_attribute(file_, object, name, type.get(), &text);
@@ -121,14 +123,16 @@ void Hdf5Writer::set_attribute(const std::string& object, const std::string& nam
   write_attribute(file_, object, name, H5T_NATIVE_DOUBLE, &value);
 }
 
-void Hdf5Writer::set_attribute(const std::string& object, const std::string& name, std::int64_t value) {
+void Hdf5Writer::set_attribute(const std::string& object, const std::string& name,
+                               std::int64_t value) {
   write_attribute(file_, object, name, H5T_NATIVE_INT64, &value);
 }
 
 std::string read_root_string_attribute(const std::filesystem::path& path, const std::string& name) {
   silence_hdf5_error_printing();
   const std::string what = "attribute " + name + " of " + path.string();
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open " + path.string());
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+              "open " + path.string());
   Handle attribute(H5Aopen(file.get(), name.c_str(), H5P_DEFAULT), H5Aclose, "open " + what);
   const auto type = utf8_string_type();
   char* text = nullptr;

@@ -32,7 +32,8 @@ void write_history_csv(std::ostream& out, const std::vector<HistoryRow>& rows) {
   }
 }
 
-void write_history_csv_file(const std::filesystem::path& path, const std::vector<HistoryRow>& rows) {
+void write_history_csv_file(const std::filesystem::path& path,
+                            const std::vector<HistoryRow>& rows) {
   std::ostringstream text;
   write_history_csv(text, rows);
   write_file_atomically(path, text.str());

@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "engine/scene/block_geometry.hpp"
+#include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
 #include "mpi_driver/study/limit_states.hpp"
-#include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
 namespace blockfrag {
@@ -46,25 +46,33 @@ void write_samples(Hdf5Writer& file, const StudyConfig& config, std::vector<doub
 void write_results(Hdf5Writer& file, const std::vector<SampleRecord>& records) {
   file.create_group("/results");
   file.write_column("/results/status", column<std::int64_t>(records, &SampleRecord::status));
-  file.set_attribute("/results/status", "meaning", std::string("0 ok, 1 failed (engine budget exceeded), 2 rejected (invalid scene)"));
-  file.write_column("/results/overturned", column<std::int64_t>(records, &SampleRecord::overturned));
+  file.set_attribute(
+      "/results/status", "meaning",
+      std::string("0 ok, 1 failed (engine budget exceeded), 2 rejected (invalid scene)"));
+  file.write_column("/results/overturned",
+                    column<std::int64_t>(records, &SampleRecord::overturned));
   file.write_column("/results/impacts", column<std::int64_t>(records, &SampleRecord::impacts));
   file.write_column("/results/steps", column<std::int64_t>(records, &SampleRecord::steps));
-  file.write_column("/results/rhs_evaluations", column<std::int64_t>(records, &SampleRecord::rhs_evaluations));
-  file.write_column("/results/max_abs_theta", column<double>(records, &SampleRecord::max_abs_theta));
+  file.write_column("/results/rhs_evaluations",
+                    column<std::int64_t>(records, &SampleRecord::rhs_evaluations));
+  file.write_column("/results/max_abs_theta",
+                    column<double>(records, &SampleRecord::max_abs_theta));
   file.write_column("/results/final_theta", column<double>(records, &SampleRecord::final_theta));
   file.write_column("/results/final_slide", column<double>(records, &SampleRecord::final_slide));
-  file.write_column("/results/max_abs_slide", column<double>(records, &SampleRecord::max_abs_slide));
-  file.write_column("/results/overturn_time", column<double>(records, &SampleRecord::overturn_time));
+  file.write_column("/results/max_abs_slide",
+                    column<double>(records, &SampleRecord::max_abs_slide));
+  file.write_column("/results/overturn_time",
+                    column<double>(records, &SampleRecord::overturn_time));
 }
 
-void write_fragility(Hdf5Writer& file, const StudyConfig& config, const std::vector<SampleRecord>& records,
-                     const std::vector<double>& alphas) {
+void write_fragility(Hdf5Writer& file, const StudyConfig& config,
+                     const std::vector<SampleRecord>& records, const std::vector<double>& alphas) {
   file.create_group("/fragility");
   file.set_attribute("/fragility", "im_name", std::string(im_name));
   file.set_attribute("/fragility", "im_units", std::string(im_units));
-  file.set_attribute("/fragility", "trials_exclude",
-                     std::string("samples whose status is not 0 (failed or rejected) are not trials"));
+  file.set_attribute(
+      "/fragility", "trials_exclude",
+      std::string("samples whose status is not 0 (failed or rejected) are not trials"));
   for (const auto& state : config.limit_states) {
     const FragilityCurve curve = fragility_curve(config, state, records, alphas);
     const std::string group = "/fragility/" + state.name;
@@ -97,9 +105,11 @@ void write_study_output(const std::filesystem::path& path, const StudyConfig& co
     file.set_attribute("/", "config_hash", hash_to_hex(config.hash));
     file.set_attribute("/", "blockfrag_version", std::string(BLOCKFRAG_VERSION));
     file.set_attribute("/", "total_samples", config.total_samples());
-    file.set_attribute("/", "samples_per_level", static_cast<std::int64_t>(config.samples_per_level));
-    file.set_attribute("/", "design",
-                       std::string(config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"));
+    file.set_attribute("/", "samples_per_level",
+                       static_cast<std::int64_t>(config.samples_per_level));
+    file.set_attribute(
+        "/", "design",
+        std::string(config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"));
     std::vector<double> alphas;
     write_samples(file, config, alphas);
     write_results(file, records);

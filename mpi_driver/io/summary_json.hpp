@@ -9,8 +9,8 @@ namespace blockfrag {
 
 // Keys: status ("ok"/"failed"), status_reason (null when ok), overturned, overturn_time,
 // max_abs_theta, final_theta, final_slide, max_abs_slide, rock_start_time, slide_start_time,
-// first_impact_time (each time null when it never happened), impacts, modes ([[time, "mode"], ...]),
-// end_time, steps, rhs_evaluations, events, max_impact_energy_gain, max_contact_violation,
+// first_impact_time (each time null when it never happened), impacts, modes ([[time, "mode"],
+// ...]), end_time, steps, rhs_evaluations, events, max_impact_energy_gain, max_contact_violation,
 // max_penetration, painleve_events.
 // dump() writes each double as the shortest text that reads back to the same bits.
 nlohmann::json summary_to_json(const Summary& summary);

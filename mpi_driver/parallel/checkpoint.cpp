@@ -55,7 +55,8 @@ CheckpointState decode_checkpoint(std::string_view bytes, const std::string& sou
   state.config_hash = read_at<std::uint64_t>(bytes, magic.size());
   state.total_samples = read_at<std::int64_t>(bytes, magic.size() + 8);
   const auto count = read_at<std::int64_t>(bytes, magic.size() + 16);
-  if (count < 0 || bytes.size() != header_size + static_cast<std::size_t>(count) * sizeof(SampleRecord) + 8) {
+  if (count < 0 ||
+      bytes.size() != header_size + static_cast<std::size_t>(count) * sizeof(SampleRecord) + 8) {
     throw fail("wrong length");
   }
   state.done.resize(static_cast<std::size_t>(count));
@@ -65,7 +66,8 @@ CheckpointState decode_checkpoint(std::string_view bytes, const std::string& sou
   }
   std::vector<bool> seen(static_cast<std::size_t>(std::max<std::int64_t>(state.total_samples, 0)));
   for (const auto& record : state.done) {
-    if (record.index < 0 || record.index >= state.total_samples) throw fail("sample index out of range");
+    if (record.index < 0 || record.index >= state.total_samples)
+      throw fail("sample index out of range");
     if (seen[static_cast<std::size_t>(record.index)]) throw fail("a sample recorded twice");
     seen[static_cast<std::size_t>(record.index)] = true;
   }
@@ -77,11 +79,13 @@ void write_checkpoint(const std::filesystem::path& path, const CheckpointState& 
   write_file_atomically(path, encode_checkpoint(state), hooks);
 }
 
-std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path, std::int64_t total_samples) {
+std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path,
+                                               std::int64_t total_samples) {
   std::error_code error;
   if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return std::nullopt;
   const std::size_t largest =
-      header_size + static_cast<std::size_t>(std::max<std::int64_t>(total_samples, 0)) * sizeof(SampleRecord) + 8;
+      header_size +
+      static_cast<std::size_t>(std::max<std::int64_t>(total_samples, 0)) * sizeof(SampleRecord) + 8;
   try {
     return decode_checkpoint(read_input_file(path, {largest, false}), path.string());
   } catch (const InputFileError& refused) {

@@ -40,7 +40,8 @@ void write_checkpoint(const std::filesystem::path& path, const CheckpointState& 
 // nullopt when there is no checkpoint at path (a fresh start). The checkpoint is the program's own
 // file: a link, a FIFO or anything but a regular file there is refused (CheckpointError), as is a
 // file larger than a checkpoint of total_samples records can be.
-std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path, std::int64_t total_samples);
+std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path,
+                                               std::int64_t total_samples);
 
 // The checkpoint that belongs to an output file: OUTPUT.checkpoint, next to it.
 std::filesystem::path checkpoint_path_for(const std::filesystem::path& output);

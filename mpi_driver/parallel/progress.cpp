@@ -7,7 +7,8 @@
 namespace blockfrag {
 namespace {
 
-double seconds_between(ProgressReporter::Clock::time_point from, ProgressReporter::Clock::time_point to) {
+double seconds_between(ProgressReporter::Clock::time_point from,
+                       ProgressReporter::Clock::time_point to) {
   return std::chrono::duration<double>(to - from).count();
 }
 
@@ -41,7 +42,8 @@ ProgressReporter::ProgressReporter(std::ostream& out, bool is_terminal, std::int
 std::string ProgressReporter::line(std::int64_t done, Clock::time_point now) const {
   const double elapsed = seconds_between(start_, now);
   const auto done_here = done - already_done_;
-  const double percent = total_ > 0 ? 100.0 * static_cast<double>(done) / static_cast<double>(total_) : 100.0;
+  const double percent =
+      total_ > 0 ? 100.0 * static_cast<double>(done) / static_cast<double>(total_) : 100.0;
   char head[96];
   std::snprintf(head, sizeof head, "%lld/%lld (%.1f %%)", static_cast<long long>(done),
                 static_cast<long long>(total_), percent);

@@ -15,8 +15,8 @@ class ProgressReporter {
   using Clock = std::chrono::steady_clock;
 
   // already_done: samples restored from a checkpoint (they count as done but not in the rate).
-  ProgressReporter(std::ostream& out, bool is_terminal, std::int64_t total, std::int64_t already_done,
-                   double log_interval_s = 30.0);
+  ProgressReporter(std::ostream& out, bool is_terminal, std::int64_t total,
+                   std::int64_t already_done, double log_interval_s = 30.0);
 
   // Cheap when called after every sample: draws only when the redraw or log interval has passed.
   void update(std::int64_t done, Clock::time_point now = Clock::now());

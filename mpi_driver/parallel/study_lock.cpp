@@ -1,11 +1,12 @@
 #include "mpi_driver/parallel/study_lock.hpp"
 
 #include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+
+#include <sys/file.h>
 
 namespace blockfrag {
 namespace {
@@ -22,8 +23,9 @@ std::filesystem::path canonical_lock_path(const std::filesystem::path& output) {
 StudyLock::StudyLock(const std::filesystem::path& output) : path_(canonical_lock_path(output)) {
   const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
   if (fd < 0) {
-    problem_ = errno == ELOOP ? "is a symbolic link (refused: the lock must be the program's own file)"
-                              : std::string("cannot be opened: ") + std::strerror(errno);
+    problem_ = errno == ELOOP
+                   ? "is a symbolic link (refused: the lock must be the program's own file)"
+                   : std::string("cannot be opened: ") + std::strerror(errno);
     return;
   }
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {

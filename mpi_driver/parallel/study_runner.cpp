@@ -6,10 +6,10 @@
 #include <optional>
 #include <thread>
 
+#include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/parallel/progress.hpp"
 #include "mpi_driver/parallel/signals.hpp"
-#include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/parallel/work_distribution.hpp"
 
 namespace blockfrag {
@@ -21,9 +21,10 @@ using Clock = std::chrono::steady_clock;
 // Rank 0 -> worker: a chunk (count 0: no more work), a stop request, or the final goodbye.
 enum Tag : int { tag_report = 1, tag_chunk = 2, tag_stop = 3, tag_goodbye = 4 };
 
-constexpr std::int64_t wants_more = 1;   // also a request for the next chunk
-constexpr std::int64_t interrupted = 2;  // the worker got a signal or a stop: it computes nothing more
-constexpr std::int64_t finished = 4;     // the worker's last report: no request is outstanding
+constexpr std::int64_t wants_more = 1;  // also a request for the next chunk
+constexpr std::int64_t interrupted =
+    2;                                // the worker got a signal or a stop: it computes nothing more
+constexpr std::int64_t finished = 4;  // the worker's last report: no request is outstanding
 
 struct ReportHeader {
   std::int64_t chunk_first = 0;
@@ -39,10 +40,13 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void send_report(MPI_Comm comm, const ReportHeader& header, const std::vector<SampleRecord>& records) {
+void send_report(MPI_Comm comm, const ReportHeader& header,
+                 const std::vector<SampleRecord>& records) {
   std::vector<char> buffer(sizeof header + records.size() * sizeof(SampleRecord));
   std::memcpy(buffer.data(), &header, sizeof header);
-  if (!records.empty()) std::memcpy(buffer.data() + sizeof header, records.data(), records.size() * sizeof(SampleRecord));
+  if (!records.empty())
+    std::memcpy(buffer.data() + sizeof header, records.data(),
+                records.size() * sizeof(SampleRecord));
   MPI_Send(buffer.data(), static_cast<int>(buffer.size()), MPI_BYTE, 0, tag_report, comm);
 }
 
@@ -91,7 +95,8 @@ void run_worker(MPI_Comm comm, StudySampler& sampler, const SceneEvaluator& eval
     }
     const bool more = !no_more_work && !stopped;
     const std::int64_t flags = (more ? wants_more : 0) | (stopped ? interrupted : 0);
-    send_report(comm, {chunk.first, chunk.count, static_cast<std::int64_t>(records.size()), flags}, records);
+    send_report(comm, {chunk.first, chunk.count, static_cast<std::int64_t>(records.size()), flags},
+                records);
     if (more) ++outstanding;
   }
   send_report(comm, {0, 0, 0, finished | (stopped ? interrupted : 0)}, {});
@@ -106,7 +111,8 @@ void run_worker(MPI_Comm comm, StudySampler& sampler, const SceneEvaluator& eval
 // Rank 0's state: what is done, what is left, who is still working.
 class Coordinator {
  public:
-  Coordinator(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings, CheckpointState restored)
+  Coordinator(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
+              CheckpointState restored)
       : comm_(comm), config_(config), settings_(settings) {
     MPI_Comm_size(comm_, &ranks_);
     const auto total = config.total_samples();
@@ -120,11 +126,12 @@ class Coordinator {
   }
 
   RunResult run(StudySampler& sampler, const SceneEvaluator& evaluate) {
-    ProgressReporter progress(settings_.log ? *settings_.log : null_stream(), settings_.log_is_terminal,
-                              config_.total_samples(), done_count_, settings_.log_interval_s);
+    ProgressReporter progress(settings_.log ? *settings_.log : null_stream(),
+                              settings_.log_is_terminal, config_.total_samples(), done_count_,
+                              settings_.log_interval_s);
     if (settings_.log && result_.restored > 0) {
-      *settings_.log << "resumed from " << settings_.checkpoint.string() << ": " << result_.restored << " of "
-                     << config_.total_samples() << " samples already done\n";
+      *settings_.log << "resumed from " << settings_.checkpoint.string() << ": " << result_.restored
+                     << " of " << config_.total_samples() << " samples already done\n";
     }
     auto last_checkpoint = Clock::now();
     for (;;) {
@@ -139,7 +146,8 @@ class Coordinator {
       }
       const bool all_done = done_count_ == config_.total_samples();
       if ((all_done || interrupted_) && active_workers_ == 0) break;
-      if (interrupted_ || queue_->remaining() == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+      if (interrupted_ || queue_->remaining() == 0)
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
       if (!all_done && seconds_since(last_checkpoint) >= settings_.checkpoint_interval_s) {
         write_checkpoint_now();
         last_checkpoint = Clock::now();
@@ -187,7 +195,8 @@ class Coordinator {
       int bytes = 0;
       MPI_Get_count(&status, MPI_BYTE, &bytes);
       std::vector<char> buffer(static_cast<std::size_t>(bytes));
-      MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, tag_report, comm_, MPI_STATUS_IGNORE);
+      MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, tag_report, comm_,
+               MPI_STATUS_IGNORE);
       handle_report(status.MPI_SOURCE, buffer);
     }
   }
@@ -197,14 +206,17 @@ class Coordinator {
     std::memcpy(&header, buffer.data(), sizeof header);
     for (std::int64_t k = 0; k < header.computed; ++k) {
       SampleRecord record;
-      std::memcpy(&record, buffer.data() + sizeof header + static_cast<std::size_t>(k) * sizeof record, sizeof record);
+      std::memcpy(&record,
+                  buffer.data() + sizeof header + static_cast<std::size_t>(k) * sizeof record,
+                  sizeof record);
       store(record);
     }
     result_.computed += header.computed;
     queue_->give_back({header.chunk_first + header.computed, header.chunk_count - header.computed});
     if (header.flags & interrupted) interrupt();
     if (header.flags & wants_more) {
-      send_chunk(comm_, worker, interrupted_ ? IndexRange{} : queue_->next_chunk(ranks_, settings_.max_chunk));
+      send_chunk(comm_, worker,
+                 interrupted_ ? IndexRange{} : queue_->next_chunk(ranks_, settings_.max_chunk));
     }
     if (header.flags & finished) {
       finished_[static_cast<std::size_t>(worker)] = true;
@@ -242,7 +254,8 @@ class Coordinator {
 
 // Rank 0 reads the checkpoint and checks it against the config; the verdict goes to every rank so
 // all of them stop together when it is refused.
-std::optional<CheckpointState> restore(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings) {
+std::optional<CheckpointState> restore(MPI_Comm comm, const StudyConfig& config,
+                                       const RunSettings& settings) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   std::optional<CheckpointState> restored;
@@ -282,7 +295,8 @@ RunResult run_study_samples(MPI_Comm comm, const StudyConfig& config, const RunS
     run_worker(comm, sampler, evaluate);
     return {};
   }
-  Coordinator coordinator(comm, config, settings, restored ? std::move(*restored) : CheckpointState{});
+  Coordinator coordinator(comm, config, settings,
+                          restored ? std::move(*restored) : CheckpointState{});
   return coordinator.run(sampler, evaluate);
 }
 

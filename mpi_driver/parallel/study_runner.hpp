@@ -19,10 +19,10 @@
 #include "engine/errors.hpp"
 #include "engine/scene/scene.hpp"
 #include "engine/summary.hpp"
-#include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/config/study_config.hpp"
-#include "mpi_driver/study/study_record.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/study/sample_evaluation.hpp"
+#include "mpi_driver/study/study_record.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
 namespace blockfrag {

@@ -21,9 +21,9 @@ FailureReport report_failures(const StudyConfig& config, const std::vector<Sampl
     } catch (const InvalidInput& refused) {
       why = refused.what();
     }
-    report.first_reasons.push_back("sample " + std::to_string(record.index) + " (level " +
-                                   std::to_string(sample.level) + ", " +
-                                   (status == SampleStatus::failed ? "failed" : "rejected") + "): " + why);
+    report.first_reasons.push_back(
+        "sample " + std::to_string(record.index) + " (level " + std::to_string(sample.level) +
+        ", " + (status == SampleStatus::failed ? "failed" : "rejected") + "): " + why);
   }
   return report;
 }

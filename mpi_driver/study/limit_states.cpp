@@ -8,14 +8,16 @@ namespace blockfrag {
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha) {
   switch (state.kind) {
     case LimitStateKind::overturning: return record.overturned != 0;
-    case LimitStateKind::max_rotation: return record.overturned != 0 || record.max_abs_theta / alpha > state.threshold;
+    case LimitStateKind::max_rotation:
+      return record.overturned != 0 || record.max_abs_theta / alpha > state.threshold;
     case LimitStateKind::residual_slide: return std::abs(record.final_slide) > state.threshold;
   }
   return false;
 }
 
 FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& state,
-                               const std::vector<SampleRecord>& records, const std::vector<double>& alphas) {
+                               const std::vector<SampleRecord>& records,
+                               const std::vector<double>& alphas) {
   const std::size_t levels = config.intensity.levels.size();
   std::vector<std::int64_t> trials(levels, 0), exceedances(levels, 0);
   for (std::size_t i = 0; i < records.size(); ++i) {

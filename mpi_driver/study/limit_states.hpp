@@ -17,6 +17,7 @@ bool exceeds(const LimitState& state, const SampleRecord& record, double alpha);
 
 // records[i] and alphas[i] belong to sample i (all samples of the study).
 FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& state,
-                               const std::vector<SampleRecord>& records, const std::vector<double>& alphas);
+                               const std::vector<SampleRecord>& records,
+                               const std::vector<double>& alphas);
 
 }  // namespace blockfrag

@@ -4,7 +4,8 @@
 
 namespace blockfrag {
 
-SampleRecord evaluate_sample(StudySampler& sampler, std::int64_t index, const SceneEvaluator& evaluate) {
+SampleRecord evaluate_sample(StudySampler& sampler, std::int64_t index,
+                             const SceneEvaluator& evaluate) {
   const StudySample sample = sampler.draw(index);
   try {
     return make_record(index, evaluate(sample.scene));

@@ -18,6 +18,7 @@ using SceneEvaluator = std::function<Summary(const Scene&)>;
 // The record of sample `index` (pure): its scene evaluated, or a rejected record when the engine
 // refuses the scene (InvalidInput). A simulation failure is the record's status "failed"; a broken
 // contract (ContractViolation) propagates: it is a bug, and the study stops.
-SampleRecord evaluate_sample(StudySampler& sampler, std::int64_t index, const SceneEvaluator& evaluate);
+SampleRecord evaluate_sample(StudySampler& sampler, std::int64_t index,
+                             const SceneEvaluator& evaluate);
 
 }  // namespace blockfrag

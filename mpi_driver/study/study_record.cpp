@@ -6,7 +6,7 @@ SampleRecord make_record(std::int64_t index, const Summary& summary) {
   SampleRecord record;
   record.index = index;
   record.status = static_cast<std::int64_t>(summary.status == Status::ok ? SampleStatus::ok
-                                                                          : SampleStatus::failed);
+                                                                         : SampleStatus::failed);
   record.overturned = summary.overturned ? 1 : 0;
   record.impacts = summary.impacts;
   record.steps = summary.steps;

@@ -19,15 +19,16 @@ void set_pulse(GroundMotion& motion, double amplitude_g, const double* period, d
         if constexpr (std::is_same_v<T, NoMotion>) {
           throw ContractViolation("a study's base scene needs a pulse to scale");
         } else if constexpr (std::is_same_v<T, RecordedMotion>) {
-          // A record's intensity is its peak ground acceleration (study_config refuses a zero peak).
+          // A record's intensity is its peak ground acceleration (study_config refuses a zero
+          // peak).
           if (period) throw ContractViolation("a period input needs a cosine or sine pulse");
           pulse.scale = amplitude_g / peak_acceleration_g(*pulse.record);
         } else if constexpr (std::is_same_v<T, MavroeidisPapageorgiouPulse>) {
           // Given by its velocity: scaled so its peak |lambda| (its PGA in g) is the intensity
           // (study_config refuses a zero velocity amplitude).
           if (period) throw ContractViolation("a period input needs a cosine or sine pulse");
-          pulse.velocity_amplitude =
-              amplitude_g * std::abs(pulse.velocity_amplitude) / GroundMotionPieces(pulse, g).peak_abs_lambda();
+          pulse.velocity_amplitude = amplitude_g * std::abs(pulse.velocity_amplitude) /
+                                     GroundMotionPieces(pulse, g).peak_abs_lambda();
         } else {
           pulse.amplitude_g = amplitude_g;
           if constexpr (std::is_same_v<T, CosinePulse> || std::is_same_v<T, SinePulse>) {
@@ -48,7 +49,8 @@ SamplingPlan sampling_plan(const StudyConfig& config) {
   plan.design = config.design;
   plan.samples_per_level = config.samples_per_level;
   plan.levels = static_cast<std::uint32_t>(config.intensity.levels.size());
-  for (const auto& spec : config.inputs) plan.inputs.push_back({input_key(spec.input), spec.distribution});
+  for (const auto& spec : config.inputs)
+    plan.inputs.push_back({input_key(spec.input), spec.distribution});
   return plan;
 }
 
@@ -81,7 +83,8 @@ Scene apply_sample(const StudyConfig& config, const std::vector<double>& values,
   return scene;
 }
 
-StudySampler::StudySampler(const StudyConfig& config) : config_(config), sampler_(sampling_plan(config)) {}
+StudySampler::StudySampler(const StudyConfig& config)
+    : config_(config), sampler_(sampling_plan(config)) {}
 
 StudySample StudySampler::draw(std::int64_t index) {
   StudySample sample;
@@ -90,7 +93,8 @@ StudySample StudySampler::draw(std::int64_t index) {
   sample.im = config_.intensity.levels.at(sample.level);
   sample.values = sampler_.draw(static_cast<std::uint64_t>(index));
   for (std::size_t k = 0; k < config_.inputs.size(); ++k) {
-    if (config_.inputs[k].input == StudyInput::direction) sample.values[k] = sign_of(sample.values[k]);
+    if (config_.inputs[k].input == StudyInput::direction)
+      sample.values[k] = sign_of(sample.values[k]);
   }
   sample.scene = apply_sample(config_, sample.values, sample.im);
   return sample;

@@ -24,7 +24,8 @@ struct StudySample {
 SamplingPlan sampling_plan(const StudyConfig& config);
 
 // The base scene with the inputs' values and a pulse of amplitude direction * im. Throws
-// ContractViolation if the base scene has no pulse to scale (the study config refuses such a scene).
+// ContractViolation if the base scene has no pulse to scale (the study config refuses such a
+// scene).
 Scene apply_sample(const StudyConfig& config, const std::vector<double>& values, double im);
 
 // Draws samples of one study; keeps the current level's Latin hypercube permutations, so draw

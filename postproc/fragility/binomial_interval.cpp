@@ -1,21 +1,24 @@
 #include "postproc/fragility/binomial_interval.hpp"
 
-#include <gsl/gsl_cdf.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include <gsl/gsl_cdf.h>
 
 namespace blockfrag {
 namespace {
 
 void check_arguments(std::int64_t successes, std::int64_t trials, double confidence) {
-  if (trials <= 0) throw IntervalError("binomial interval: trials must be > 0 (got " + std::to_string(trials) + ")");
+  if (trials <= 0)
+    throw IntervalError("binomial interval: trials must be > 0 (got " + std::to_string(trials) +
+                        ")");
   if (successes < 0 || successes > trials)
-    throw IntervalError("binomial interval: successes must lie in [0, " + std::to_string(trials) + "] (got " +
-                        std::to_string(successes) + ")");
+    throw IntervalError("binomial interval: successes must lie in [0, " + std::to_string(trials) +
+                        "] (got " + std::to_string(successes) + ")");
   if (!(confidence > 0.0 && confidence < 1.0))
-    throw IntervalError("binomial interval: confidence must lie in (0, 1) (got " + std::to_string(confidence) + ")");
+    throw IntervalError("binomial interval: confidence must lie in (0, 1) (got " +
+                        std::to_string(confidence) + ")");
 }
 
 // The p with cdf(p) = target for a continuous increasing cdf on [0, 1] with 0 < target < 1.
@@ -36,7 +39,8 @@ double invert_cdf(const Cdf& cdf, double target) {
     if (!(p > low + 0.01 * width && p < high - 0.01 * width)) p = low + 0.5 * width;
     const double f = cdf(p) - target;
     if (!std::isfinite(f))
-      throw IntervalError("Clopper-Pearson interval: the incomplete beta function did not converge");
+      throw IntervalError(
+          "Clopper-Pearson interval: the incomplete beta function did not converge");
     if (f == 0.0) return p;
     if (f < 0.0) {
       low = p;
@@ -68,7 +72,8 @@ ProportionInterval wilson_interval(std::int64_t successes, std::int64_t trials, 
           successes == trials ? 1.0 : std::min(1.0, centre + half_width)};
 }
 
-ProportionInterval clopper_pearson_interval(std::int64_t successes, std::int64_t trials, double confidence) {
+ProportionInterval clopper_pearson_interval(std::int64_t successes, std::int64_t trials,
+                                            double confidence) {
   check_arguments(successes, trials, confidence);
   const double tail = 0.5 * (1.0 - confidence);
   const double x = static_cast<double>(successes);
@@ -76,17 +81,20 @@ ProportionInterval clopper_pearson_interval(std::int64_t successes, std::int64_t
   // The bounds are the tail quantile of Beta(x, n - x + 1) and the 1 - tail quantile of
   // Beta(x + 1, n - x); solving for them directly keeps their full relative accuracy near 0.
   const double low =
-      successes == 0 ? 0.0 : invert_cdf([&](double q) { return gsl_cdf_beta_P(q, x, n - x + 1.0); }, tail);
+      successes == 0
+          ? 0.0
+          : invert_cdf([&](double q) { return gsl_cdf_beta_P(q, x, n - x + 1.0); }, tail);
   const double high =
-      successes == trials ? 1.0 : invert_cdf([&](double q) { return gsl_cdf_beta_P(q, x + 1.0, n - x); }, 1.0 - tail);
+      successes == trials
+          ? 1.0
+          : invert_cdf([&](double q) { return gsl_cdf_beta_P(q, x + 1.0, n - x); }, 1.0 - tail);
   return {low, high};
 }
 
-ProportionInterval binomial_interval(IntervalMethod method, std::int64_t successes, std::int64_t trials,
-                                     double confidence) {
+ProportionInterval binomial_interval(IntervalMethod method, std::int64_t successes,
+                                     std::int64_t trials, double confidence) {
   switch (method) {
-    case IntervalMethod::wilson:
-      return wilson_interval(successes, trials, confidence);
+    case IntervalMethod::wilson: return wilson_interval(successes, trials, confidence);
     case IntervalMethod::clopper_pearson:
       return clopper_pearson_interval(successes, trials, confidence);
   }

@@ -11,8 +11,18 @@ namespace blockfrag {
 FragilityCurve fragility_from_counts(std::vector<double> im, std::vector<std::int64_t> trials,
                                      std::vector<std::int64_t> exceedances) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  FragilityCurve curve{std::move(im), std::move(trials), std::move(exceedances), {}, {}, {}, nan, nan, nan,
-                       {}, nan, nan};
+  FragilityCurve curve{std::move(im),
+                       std::move(trials),
+                       std::move(exceedances),
+                       {},
+                       {},
+                       {},
+                       nan,
+                       nan,
+                       nan,
+                       {},
+                       nan,
+                       nan};
   for (std::size_t k = 0; k < curve.im.size(); ++k) {
     const auto n = curve.trials[k], z = curve.exceedances[k];
     curve.probability.push_back(n > 0 ? static_cast<double>(z) / static_cast<double>(n) : nan);

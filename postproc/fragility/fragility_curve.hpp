@@ -15,7 +15,7 @@ struct FragilityCurve {
   std::vector<double> probability;  // exceedances / trials; NaN without trials
   std::vector<double> ci_low;
   std::vector<double> ci_high;
-  double median;          // of the lognormal fit; NaN when the fit does not exist
+  double median;  // of the lognormal fit; NaN when the fit does not exist
   double beta;
   double log_likelihood;  // binomial log-likelihood at the fit, coefficients included; NaN likewise
   std::string fit_status;  // FitStatus's name: "ok", "no_exceedances", "separated", ...

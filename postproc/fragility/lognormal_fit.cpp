@@ -1,9 +1,5 @@
 #include "postproc/fragility/lognormal_fit.hpp"
 
-#include <gsl/gsl_cdf.h>
-#include <gsl/gsl_math.h>
-#include <gsl/gsl_sf_erf.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,12 +7,16 @@
 #include <string>
 #include <vector>
 
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_sf_erf.h>
+
 // The fit works in probit coordinates: p_j = Phi(a + s (u_j - centre)), u_j = ln x_j, s = 1 / beta,
 // a = (centre - ln median) / beta. There ln L is concave (Pratt 1981), so Newton's method with a
 // backtracking line search climbs to the maximum from any start, and whether that maximum exists is
-// decided by the data alone (Albert & Anderson 1984: it does unless the levels are separated), which
-// is checked before iterating. Centring u at the trials-weighted mean of ln x decouples a from s and
-// makes the result independent of the units of the intensity measure.
+// decided by the data alone (Albert & Anderson 1984: it does unless the levels are separated),
+// which is checked before iterating. Centring u at the trials-weighted mean of ln x decouples a
+// from s and makes the result independent of the units of the intensity measure.
 
 namespace blockfrag {
 namespace {
@@ -32,24 +32,29 @@ struct Level {
 std::vector<Level> checked_levels(std::span<const double> im, std::span<const std::int64_t> trials,
                                   std::span<const std::int64_t> exceedances) {
   if (trials.size() != im.size() || exceedances.size() != im.size())
-    throw FitError("lognormal fit: im, trials and exceedances differ in size (" + std::to_string(im.size()) + ", " +
-                   std::to_string(trials.size()) + ", " + std::to_string(exceedances.size()) + ")");
+    throw FitError("lognormal fit: im, trials and exceedances differ in size (" +
+                   std::to_string(im.size()) + ", " + std::to_string(trials.size()) + ", " +
+                   std::to_string(exceedances.size()) + ")");
   std::vector<Level> levels;
   for (std::size_t j = 0; j < im.size(); ++j) {
     const std::string where = "lognormal fit: level " + std::to_string(j) + ": ";
     if (!(std::isfinite(im[j]) && im[j] > 0.0))
       throw FitError(where + "im must be finite and > 0 (got " + std::to_string(im[j]) + ")");
-    if (trials[j] < 0) throw FitError(where + "trials must be >= 0 (got " + std::to_string(trials[j]) + ")");
+    if (trials[j] < 0)
+      throw FitError(where + "trials must be >= 0 (got " + std::to_string(trials[j]) + ")");
     if (exceedances[j] < 0 || exceedances[j] > trials[j])
-      throw FitError(where + "exceedances must lie in [0, trials] (got " + std::to_string(exceedances[j]) + " of " +
-                     std::to_string(trials[j]) + ")");
+      throw FitError(where + "exceedances must lie in [0, trials] (got " +
+                     std::to_string(exceedances[j]) + " of " + std::to_string(trials[j]) + ")");
     if (trials[j] > 0)
-      levels.push_back({std::log(im[j]), static_cast<double>(trials[j]), static_cast<double>(exceedances[j])});
+      levels.push_back(
+          {std::log(im[j]), static_cast<double>(trials[j]), static_cast<double>(exceedances[j])});
   }
   return levels;
 }
 
-double log_choose(double n, double z) { return std::lgamma(n + 1.0) - std::lgamma(z + 1.0) - std::lgamma(n - z + 1.0); }
+double log_choose(double n, double z) {
+  return std::lgamma(n + 1.0) - std::lgamma(z + 1.0) - std::lgamma(n - z + 1.0);
+}
 
 // ln Phi(eta), accurate far into the lower tail where Phi itself underflows.
 double log_normal_cdf(double eta) { return gsl_sf_log_erfc(-eta / M_SQRT2) - M_LN2; }
@@ -111,8 +116,8 @@ ProbitEvaluation evaluate(const std::vector<Level>& levels, double centre, Probi
     const double ratio_p = std::exp(log_density - log_p);
     const double ratio_q = std::exp(log_density - log_q);
     const double slope = level.z * ratio_p - misses * ratio_q;
-    const double weight =
-        std::max(0.0, level.z * ratio_p * (eta + ratio_p)) + std::max(0.0, misses * ratio_q * (ratio_q - eta));
+    const double weight = std::max(0.0, level.z * ratio_p * (eta + ratio_p)) +
+                          std::max(0.0, misses * ratio_q * (ratio_q - eta));
     e.gradient_a += slope;
     e.gradient_s += slope * v;
     e.curvature_aa += weight;
@@ -140,7 +145,8 @@ std::vector<Level> pooled_by_im(std::vector<Level> levels) {
   return pooled;
 }
 
-LognormalFit degenerate(FitStatus status, double log_likelihood, double median_low, double median_high) {
+LognormalFit degenerate(FitStatus status, double log_likelihood, double median_low,
+                        double median_high) {
   LognormalFit fit;
   fit.status = status;
   fit.log_likelihood = log_likelihood;
@@ -161,8 +167,8 @@ std::optional<LognormalFit> degenerate_case(const std::vector<Level>& levels) {
     z_total += level.z;
   }
   auto pooled_proportion = [&pooled](const Level& level) {
-    const auto at =
-        std::lower_bound(pooled.begin(), pooled.end(), level.u, [](const Level& l, double u) { return l.u < u; });
+    const auto at = std::lower_bound(pooled.begin(), pooled.end(), level.u,
+                                     [](const Level& l, double u) { return l.u < u; });
     return at->z / at->n;
   };
   const double saturated = binomial_log_likelihood(levels, pooled_proportion);
@@ -172,16 +178,22 @@ std::optional<LognormalFit> degenerate_case(const std::vector<Level>& levels) {
   if (z_total == n_total) return degenerate(FitStatus::all_exceedances, saturated, 0.0, lowest);
   if (pooled.size() == 1) {
     const double p = z_total / n_total;
-    return degenerate(FitStatus::single_level, saturated, p <= 0.5 ? lowest : 0.0, p >= 0.5 ? lowest : inf);
+    return degenerate(FitStatus::single_level, saturated, p <= 0.5 ? lowest : 0.0,
+                      p >= 0.5 ? lowest : inf);
   }
   // u of the first level with any exceedance and of the last without all, and the reverse pair.
-  const auto first_hit = std::find_if(pooled.begin(), pooled.end(), [](const Level& l) { return l.z > 0.0; })->u;
-  const auto last_miss = std::find_if(pooled.rbegin(), pooled.rend(), [](const Level& l) { return l.z < l.n; })->u;
-  const auto last_hit = std::find_if(pooled.rbegin(), pooled.rend(), [](const Level& l) { return l.z > 0.0; })->u;
-  const auto first_miss = std::find_if(pooled.begin(), pooled.end(), [](const Level& l) { return l.z < l.n; })->u;
+  const auto first_hit =
+      std::find_if(pooled.begin(), pooled.end(), [](const Level& l) { return l.z > 0.0; })->u;
+  const auto last_miss =
+      std::find_if(pooled.rbegin(), pooled.rend(), [](const Level& l) { return l.z < l.n; })->u;
+  const auto last_hit =
+      std::find_if(pooled.rbegin(), pooled.rend(), [](const Level& l) { return l.z > 0.0; })->u;
+  const auto first_miss =
+      std::find_if(pooled.begin(), pooled.end(), [](const Level& l) { return l.z < l.n; })->u;
   if (last_miss <= first_hit)
     return degenerate(FitStatus::separated, saturated, std::exp(last_miss), std::exp(first_hit));
-  if (last_hit <= first_miss) return degenerate(FitStatus::no_trend, flat_log_likelihood(levels), 0.0, inf);
+  if (last_hit <= first_miss)
+    return degenerate(FitStatus::no_trend, flat_log_likelihood(levels), 0.0, inf);
   return std::nullopt;
 }
 
@@ -189,7 +201,8 @@ std::optional<LognormalFit> degenerate_case(const std::vector<Level>& levels) {
 // weighted by the trials; a curve spanning the levels when that slope is not positive.
 ProbitPoint starting_point(const std::vector<Level>& levels, double centre, double n_total) {
   double mean_y = 0.0, sxy = 0.0, sxx = 0.0;
-  for (const auto& level : levels) mean_y += level.n * gsl_cdf_ugaussian_Pinv((level.z + 0.5) / (level.n + 1.0));
+  for (const auto& level : levels)
+    mean_y += level.n * gsl_cdf_ugaussian_Pinv((level.z + 0.5) / (level.n + 1.0));
   mean_y /= n_total;
   for (const auto& level : levels) {
     const double v = level.u - centre;
@@ -201,40 +214,37 @@ ProbitPoint starting_point(const std::vector<Level>& levels, double centre, doub
   return {mean_y, slope > 0.0 ? slope : 1.0 / std::sqrt(sxx / n_total)};
 }
 
-double gradient_norm(const ProbitEvaluation& e) { return std::hypot(e.gradient_log_median, e.gradient_log_beta); }
+double gradient_norm(const ProbitEvaluation& e) {
+  return std::hypot(e.gradient_log_median, e.gradient_log_beta);
+}
 
 // Stationary in the probit coordinates, and in the fragility ones when they exist (s > 0): near
 // s = 0 the map between them degenerates and either test alone could pass too early.
 bool stationary(const ProbitEvaluation& e, double s, double tolerance) {
-  return std::hypot(e.gradient_a, e.gradient_s) <= tolerance && (s <= 0.0 || gradient_norm(e) <= tolerance);
+  return std::hypot(e.gradient_a, e.gradient_s) <= tolerance &&
+         (s <= 0.0 || gradient_norm(e) <= tolerance);
 }
 
 }  // namespace
 
 const char* fit_status_name(FitStatus status) {
   switch (status) {
-    case FitStatus::ok:
-      return "ok";
-    case FitStatus::no_data:
-      return "no_data";
-    case FitStatus::no_exceedances:
-      return "no_exceedances";
-    case FitStatus::all_exceedances:
-      return "all_exceedances";
-    case FitStatus::single_level:
-      return "single_level";
-    case FitStatus::separated:
-      return "separated";
-    case FitStatus::no_trend:
-      return "no_trend";
-    case FitStatus::not_converged:
-      return "not_converged";
+    case FitStatus::ok: return "ok";
+    case FitStatus::no_data: return "no_data";
+    case FitStatus::no_exceedances: return "no_exceedances";
+    case FitStatus::all_exceedances: return "all_exceedances";
+    case FitStatus::single_level: return "single_level";
+    case FitStatus::separated: return "separated";
+    case FitStatus::no_trend: return "no_trend";
+    case FitStatus::not_converged: return "not_converged";
   }
   return "unknown";
 }
 
-LognormalFit fit_lognormal_fragility(std::span<const double> im, std::span<const std::int64_t> trials,
-                                     std::span<const std::int64_t> exceedances, const FitOptions& options) {
+LognormalFit fit_lognormal_fragility(std::span<const double> im,
+                                     std::span<const std::int64_t> trials,
+                                     std::span<const std::int64_t> exceedances,
+                                     const FitOptions& options) {
   if (!(options.gradient_tolerance > 0.0) || options.max_iterations <= 0)
     throw FitError("lognormal fit: gradient_tolerance and max_iterations must be > 0");
   const auto levels = checked_levels(im, trials, exceedances);
@@ -260,8 +270,10 @@ LognormalFit fit_lognormal_fragility(std::span<const double> im, std::span<const
     // Newton's step on the concave ln L; steepest ascent if the curvature is numerically singular.
     const double det = e.curvature_aa * e.curvature_ss - e.curvature_as * e.curvature_as;
     const bool newton = det > 1e-12 * e.curvature_aa * e.curvature_ss;
-    const double da = newton ? (e.curvature_ss * e.gradient_a - e.curvature_as * e.gradient_s) / det : e.gradient_a;
-    const double ds = newton ? (e.curvature_aa * e.gradient_s - e.curvature_as * e.gradient_a) / det : e.gradient_s;
+    const double da = newton ? (e.curvature_ss * e.gradient_a - e.curvature_as * e.gradient_s) / det
+                             : e.gradient_a;
+    const double ds = newton ? (e.curvature_aa * e.gradient_s - e.curvature_as * e.gradient_a) / det
+                             : e.gradient_s;
     const double predicted = e.gradient_a * da + e.gradient_s * ds;
     // Close to the maximum the predicted gain is below what ln L can resolve: take the step whole.
     const bool unresolvable = newton && predicted <= 1e-13 * (e.kernel_scale + 1.0);
@@ -290,8 +302,8 @@ LognormalFit fit_lognormal_fragility(std::span<const double> im, std::span<const
   }
   // The unconstrained maximum has a falling curve, or one flat to rounding over the levels (equal
   // proportions everywhere: median and beta then overflow): under beta > 0 the best is a flat one.
-  const auto [lowest, highest] =
-      std::minmax_element(levels.begin(), levels.end(), [](const Level& l, const Level& r) { return l.u < r.u; });
+  const auto [lowest, highest] = std::minmax_element(
+      levels.begin(), levels.end(), [](const Level& l, const Level& r) { return l.u < r.u; });
   const double median = std::exp(centre - point.a / point.s);
   if (!(point.s * (highest->u - lowest->u) > 1e-9) || !std::isfinite(median) || median == 0.0) {
     auto flat = degenerate(FitStatus::no_trend, flat_log_likelihood(levels), 0.0, inf);
@@ -308,8 +320,10 @@ LognormalFit fit_lognormal_fragility(std::span<const double> im, std::span<const
 }
 
 double lognormal_log_likelihood(std::span<const double> im, std::span<const std::int64_t> trials,
-                                std::span<const std::int64_t> exceedances, double median, double beta) {
-  if (!(median > 0.0 && beta > 0.0)) throw FitError("lognormal log-likelihood: median and beta must be > 0");
+                                std::span<const std::int64_t> exceedances, double median,
+                                double beta) {
+  if (!(median > 0.0 && beta > 0.0))
+    throw FitError("lognormal log-likelihood: median and beta must be > 0");
   const auto levels = checked_levels(im, trials, exceedances);
   return evaluate(levels, 0.0, {-std::log(median) / beta, 1.0 / beta}).log_likelihood;
 }

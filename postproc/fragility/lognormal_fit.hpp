@@ -21,9 +21,9 @@ class FitError : public ContractViolation {
 };
 
 enum class FitStatus {
-  ok,               // the maximum exists and was found
-  no_data,          // no level has any trial
-  no_exceedances,   // every z_j = 0: the median lies above the largest level, beta is not identified
+  ok,              // the maximum exists and was found
+  no_data,         // no level has any trial
+  no_exceedances,  // every z_j = 0: the median lies above the largest level, beta is not identified
   all_exceedances,  // every z_j = n_j: the median lies below the smallest level
   single_level,     // one distinct level: only ln(x / median) / beta is identified
   separated,        // every level below some x has z = 0 and every one above has z = n (at most one
@@ -37,7 +37,8 @@ const char* fit_status_name(FitStatus status);
 
 struct FitOptions {
   // Converged when |grad ln L| / (total trials) <= gradient_tolerance, the gradient taken with
-  // respect to (ln median, ln beta): dividing by the trials makes it independent of the sample size.
+  // respect to (ln median, ln beta): dividing by the trials makes it independent of the sample
+  // size.
   double gradient_tolerance = 1e-10;
   int max_iterations = 100;
 };
@@ -61,16 +62,20 @@ struct LognormalFit {
   double median_low = nan;
   double median_high = nan;
   int iterations = 0;
-  double gradient_norm = nan;  // of ln L with respect to (ln median, ln beta); NaN unless status == ok
+  double gradient_norm =
+      nan;  // of ln L with respect to (ln median, ln beta); NaN unless status == ok
 };
 
 // im[j] > 0 and finite, trials[j] >= 0, 0 <= exceedances[j] <= trials[j], all of one size; levels
 // without trials are ignored. Throws FitError naming the first offending level otherwise.
-LognormalFit fit_lognormal_fragility(std::span<const double> im, std::span<const std::int64_t> trials,
-                                     std::span<const std::int64_t> exceedances, const FitOptions& options = {});
+LognormalFit fit_lognormal_fragility(std::span<const double> im,
+                                     std::span<const std::int64_t> trials,
+                                     std::span<const std::int64_t> exceedances,
+                                     const FitOptions& options = {});
 
 // ln L as above at (median, beta), both > 0; same requirements on the data.
 double lognormal_log_likelihood(std::span<const double> im, std::span<const std::int64_t> trials,
-                                std::span<const std::int64_t> exceedances, double median, double beta);
+                                std::span<const std::int64_t> exceedances, double median,
+                                double beta);
 
 }  // namespace blockfrag

@@ -1,5 +1,5 @@
-// What each model costs on the same scenes: Housner's rocking block, Newmark's sliding block, "auto"
-// and the full model, each over one grid of 36 scenes (slender to stocky blocks, low to high
+// What each model costs on the same scenes: Housner's rocking block, Newmark's sliding block,
+// "auto" and the full model, each over one grid of 36 scenes (slender to stocky blocks, low to high
 // friction, pulses from below onset to overturning). Time is per scene (items are scenes); the
 // counters give the steps and right-hand-side evaluations per scene. Compare ratios within one run.
 #include <vector>

@@ -1,10 +1,10 @@
 // A fixture for hard-case tests that must hold with the paper's RK4 and the adaptive method alike.
 #pragma once
 
-#include <gtest/gtest.h>
-
 #include <array>
 #include <initializer_list>
+
+#include <gtest/gtest.h>
 
 #include "engine/scene/scene.hpp"
 #include "engine/simulate.hpp"
@@ -23,10 +23,11 @@ class BothMethods : public ::testing::TestWithParam<Method> {
   }
 };
 
-// One scene with the adaptive method and with the paper's RK4 (its dt), for tests that compare them:
-// each run must finish inside the contact laws, above the ground, and begin with the given modes.
-inline std::array<Summary, 2> simulate_with_both_methods(Scene scene,
-                                                         std::initializer_list<ModeKind> first_modes) {
+// One scene with the adaptive method and with the paper's RK4 (its dt), for tests that compare
+// them: each run must finish inside the contact laws, above the ground, and begin with the given
+// modes.
+inline std::array<Summary, 2> simulate_with_both_methods(
+    Scene scene, std::initializer_list<ModeKind> first_modes) {
   std::array<Summary, 2> runs;
   for (const Method method : {Method::adaptive, Method::rk4}) {
     scene.solver.method = method;

@@ -10,7 +10,8 @@
 
 namespace blockfrag::testing {
 
-inline std::string scene_errors(const nlohmann::json& document, const std::string& source = "scene.json") {
+inline std::string scene_errors(const nlohmann::json& document,
+                                const std::string& source = "scene.json") {
   try {
     scene_from_json(document, source);
   } catch (const ConfigError& error) {

@@ -7,8 +7,6 @@
 // the uniforms are the same bits on every platform and standard library, and each input maps them
 // to its range by plain arithmetic (log-uniform ranges through std::pow) or, for a choice among n,
 // by index_below; no std::*_distribution, no rejection.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,6 +15,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/config/scene_json.hpp"
@@ -85,11 +85,13 @@ Scene random_scene(const SceneDraws& d) {
     const double top_right = w - 0.9 * w * d.uniform("top_right");
     std::vector<std::array<double, 2>> v = {{-w, 0}, {w, 0}, {top_right, h}, {top_left, h}};
     if (d.chance("gable", 0.5)) {
-      v.insert(v.begin() + 3, {0.5 * (top_left + top_right), h * (1 + 0.3 * d.uniform("gable_height"))});
+      v.insert(v.begin() + 3,
+               {0.5 * (top_left + top_right), h * (1 + 0.3 * d.uniform("gable_height"))});
     }
     s.polygon = PolygonBlock{v, 1.0};
   }
-  if (d.chance("dam", 0.2)) s.dam = DamCrest{DamPeriod{d.log_uniform("dam_period", 0.05, 0.5)}, 0.05, 1.0};
+  if (d.chance("dam", 0.2))
+    s.dam = DamCrest{DamPeriod{d.log_uniform("dam_period", 0.05, 0.5)}, 0.05, 1.0};
   s.solver.tolerance = d.log_uniform("tolerance", 1e-10, 1e-6);
   return s;
 }

@@ -1,12 +1,12 @@
 // Hard cases at the contact thresholds: mu exactly a/b, lambda grazing a/b, friction reaching the
 // cone's edge, unstable balance.
-#include <gtest/gtest.h>
-
 #include <cmath>
 
+#include <gtest/gtest.h>
+
+#include "engine/simulate.hpp"
 #include "tests/support/both_integrators.hpp"
 #include "tests/support/scene_builders.hpp"
-#include "engine/simulate.hpp"
 
 namespace blockfrag {
 namespace {
@@ -21,8 +21,8 @@ TEST_P(BothMethods, FrictionExactlyAtAspectRatioIsContinuous) {
   const double beta = 0.5;
   std::vector<Summary> runs;
   for (const double mu : {beta * (1 - 1e-9), beta, beta * (1 + 1e-9)}) {
-    runs.push_back(simulate(with_method(
-        block_scene(0.5, 1.0, mu, 0.5, RectangularPulse{0.8, 0.3}, 2.0))));
+    runs.push_back(
+        simulate(with_method(block_scene(0.5, 1.0, mu, 0.5, RectangularPulse{0.8, 0.3}, 2.0))));
   }
   // Newmark's slide for N = mu: the reference for all three.
   const double A = 0.8, t0 = 0.3, g = 9.81;
@@ -31,8 +31,9 @@ TEST_P(BothMethods, FrictionExactlyAtAspectRatioIsContinuous) {
     EXPECT_EQ(s.status, Status::ok);
     EXPECT_LT(s.max_abs_theta, 1e-6);
     EXPECT_NEAR(s.final_slide, newmark, 1e-5);
-    EXPECT_EQ(s.modes.front().mode == ModeKind::slide || s.modes.front().mode == ModeKind::slide_rock,
-              true);
+    EXPECT_EQ(
+        s.modes.front().mode == ModeKind::slide || s.modes.front().mode == ModeKind::slide_rock,
+        true);
   }
   EXPECT_EQ(runs[0].modes.front().mode, ModeKind::slide);
   EXPECT_EQ(runs[1].modes.front().mode, ModeKind::slide);

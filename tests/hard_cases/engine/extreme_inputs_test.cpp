@@ -1,13 +1,13 @@
 // Hard cases at the edges of the input space: slender, stocky, tiny and huge blocks, 100 g, a
 // 600 s record, and the safety net's budgets.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 
+#include <gtest/gtest.h>
+
+#include "engine/simulate.hpp"
 #include "tests/support/both_integrators.hpp"
 #include "tests/support/scene_builders.hpp"
-#include "engine/simulate.hpp"
 
 namespace blockfrag {
 namespace {
@@ -96,9 +96,10 @@ TEST(CornerUnderTheGround, ABouncingCornerTheContactToleranceLeftUnderTheGroundL
   // rotated on through the ground to 0.2 R. It is watched like any unarmed guard now. Bound: no
   // corner deeper than the contact tolerance (the helper's 1e-9 R); the mirrored pulse mirrors
   // the response.
-  Scene scene = block_scene(0.09431906616914858, 0.07975991013875293, 1.6036322979355901,
-                            0.06288283695023845, CosinePulse{1.3788519599203863, 0.3090951492387029, 2.0},
-                            2.6181902984774057, 1.5497186686440278e-08);
+  Scene scene =
+      block_scene(0.09431906616914858, 0.07975991013875293, 1.6036322979355901, 0.06288283695023845,
+                  CosinePulse{1.3788519599203863, 0.3090951492387029, 2.0}, 2.6181902984774057,
+                  1.5497186686440278e-08);
   const auto runs = testing::simulate_with_both_methods(scene, {ModeKind::rock, ModeKind::flight});
   EXPECT_EQ(runs[0].impacts, runs[1].impacts);
   EXPECT_NEAR(runs[0].max_abs_theta, runs[1].max_abs_theta, 1e-8);
@@ -113,7 +114,8 @@ TEST(CornerUnderTheGround, ABouncingCornerTheContactToleranceLeftUnderTheGroundL
 TEST(LongRecord, SixHundredSecondsOfShakingFinishInBoundedWork) {
   // 600 s of a sine that keeps the block rocking and bouncing without overturning; the adaptive
   // method only (RK4 at the paper's dt would take 2.4 M steps).
-  const Summary s = simulate(block_scene(0.6, 2.0, 0.9, 0.5, SinePulse{0.33, 1.0, 600.0}, 600.0, 1e-8));
+  const Summary s =
+      simulate(block_scene(0.6, 2.0, 0.9, 0.5, SinePulse{0.33, 1.0, 600.0}, 600.0, 1e-8));
   EXPECT_EQ(s.status, Status::ok) << s.status_reason;
   EXPECT_FALSE(s.overturned);
   EXPECT_GT(s.impacts, 1000);

@@ -1,13 +1,13 @@
 // Hard cases at the impact: e = 1 loses nothing, small e and e = 0 settle (Zeno) in finite time
 // and bounded work, a Painleve jam and the Painleve singular point resolve admissibly.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "engine/simulate.hpp"
 #include "tests/support/both_integrators.hpp"
 #include "tests/support/scene_builders.hpp"
-#include "engine/simulate.hpp"
 
 namespace blockfrag {
 namespace {
@@ -104,12 +104,12 @@ void expect_contact_laws_along(const Scene& scene, const std::vector<HistoryRow>
 }
 
 TEST(PainleveSingularPoint, SlideRockLiftsOffWithinTheContactLawsWithEitherMethod) {
-  // There stick needs friction just outside the cone and lift-off a pull from the ground. Slide-rock
-  // stops at the Painleve margin and the block lifts off (counted in painleve_events); sticking
-  // instead held friction outside the cone for 0.05 s, up to 4.4 times the weight. RK4 retakes
-  // the step that crosses the margin and lifts off where the adaptive method does (to 1e-9 s for
-  // mu 1.512 and 1.52); at mu 1.516 one of its steps passes the singular point whole (with forces
-  // of up to 30,000 times the weight inside the cone) and it lifts off two steps later.
+  // There stick needs friction just outside the cone and lift-off a pull from the ground.
+  // Slide-rock stops at the Painleve margin and the block lifts off (counted in painleve_events);
+  // sticking instead held friction outside the cone for 0.05 s, up to 4.4 times the weight. RK4
+  // retakes the step that crosses the margin and lifts off where the adaptive method does (to 1e-9
+  // s for mu 1.512 and 1.52); at mu 1.516 one of its steps passes the singular point whole (with
+  // forces of up to 30,000 times the weight inside the cone) and it lifts off two steps later.
   for (const double mu : {1.512, 1.516, 1.52}) {
     SCOPED_TRACE("mu " + std::to_string(mu));
     const auto run = [&](double amplitude, Method method) {

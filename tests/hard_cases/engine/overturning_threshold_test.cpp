@@ -1,11 +1,11 @@
 // Amplitudes just below and above the overturning threshold of a rectangular pulse: the verdict
 // flips once, at the nonlinear threshold of docs/references.md, for both integrators.
-#include <gtest/gtest.h>
-
 #include <cmath>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -15,12 +15,11 @@ using testing::housner_p;
 using testing::rk4;
 
 struct Threshold {
-  double p_t1;       // pulse length in units of 1/p
-  double psi_tan;    // threshold amplitude over tan(alpha), nonlinear rocking
+  double p_t1;     // pulse length in units of 1/p
+  double psi_tan;  // threshold amplitude over tan(alpha), nonlinear rocking
 };
 
-class RectangularPulseThreshold
-    : public ::testing::TestWithParam<std::tuple<Threshold, Method>> {};
+class RectangularPulseThreshold : public ::testing::TestWithParam<std::tuple<Threshold, Method>> {};
 
 TEST_P(RectangularPulseThreshold, VerdictFlipsOnceAtTheNonlinearThreshold) {
   const auto [threshold, method] = GetParam();
@@ -52,11 +51,11 @@ TEST_P(RectangularPulseThreshold, VerdictFlipsOnceAtTheNonlinearThreshold) {
   EXPECT_NEAR(0.5 * (lo + hi) / threshold.psi_tan, 1.0, tolerance);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    References, RectangularPulseThreshold,
-    ::testing::Combine(::testing::Values(Threshold{0.5, 2.564527}, Threshold{1.0, 1.583046},
-                                         Threshold{2.0, 1.151926}),
-                       ::testing::Values(Method::adaptive, Method::rk4)));
+INSTANTIATE_TEST_SUITE_P(References, RectangularPulseThreshold,
+                         ::testing::Combine(::testing::Values(Threshold{0.5, 2.564527},
+                                                              Threshold{1.0, 1.583046},
+                                                              Threshold{2.0, 1.151926}),
+                                            ::testing::Values(Method::adaptive, Method::rk4)));
 
 }  // namespace
 }  // namespace blockfrag

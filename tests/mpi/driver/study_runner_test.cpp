@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/config/study_config.hpp"
+#include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
 namespace blockfrag {
@@ -26,7 +26,8 @@ class MpiEnvironment : public ::testing::Environment {
   void SetUp() override { MPI_Init(nullptr, nullptr); }
   void TearDown() override { MPI_Finalize(); }
 };
-[[maybe_unused]] auto* const mpi_environment = ::testing::AddGlobalTestEnvironment(new MpiEnvironment);
+[[maybe_unused]] auto* const mpi_environment =
+    ::testing::AddGlobalTestEnvironment(new MpiEnvironment);
 
 class TemporaryFolder {
  public:
@@ -41,7 +42,9 @@ class TemporaryFolder {
   std::filesystem::path path_;
 };
 
-bool same_bits(const SampleRecord& a, const SampleRecord& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(const SampleRecord& a, const SampleRecord& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 StudyConfig tiny_study(std::uint64_t seed = 5) {
   nlohmann::json document = nlohmann::json::parse(R"({
@@ -79,7 +82,8 @@ RunSettings settings_in(const TemporaryFolder& folder) {
 TEST(StudyRunner, EachRecordIsTheSamplesOwnEvaluation) {
   TemporaryFolder folder;
   const StudyConfig config = tiny_study();
-  const RunResult result = run_study_samples(MPI_COMM_WORLD, config, settings_in(folder), fake_simulate);
+  const RunResult result =
+      run_study_samples(MPI_COMM_WORLD, config, settings_in(folder), fake_simulate);
   ASSERT_EQ(result.outcome, RunOutcome::completed);
   ASSERT_EQ(result.records.size(), 40u);
   EXPECT_EQ(result.computed, 40);
@@ -103,24 +107,28 @@ TEST(StudyRunner, ResumeComputesExactlyTheMissingSamples) {
   CheckpointState partial;
   partial.config_hash = config.hash;
   partial.total_samples = 40;
-  for (const std::int64_t i : {0, 1, 2, 17, 39}) partial.done.push_back(full.records[static_cast<std::size_t>(i)]);
+  for (const std::int64_t i : {0, 1, 2, 17, 39})
+    partial.done.push_back(full.records[static_cast<std::size_t>(i)]);
   write_checkpoint(settings.checkpoint, partial);
 
   std::set<double> evaluated_friction;
   int calls = 0;
-  const RunResult resumed = run_study_samples(MPI_COMM_WORLD, config, settings, [&](const Scene& scene) {
-    ++calls;
-    evaluated_friction.insert(scene.contact.friction);
-    return fake_simulate(scene);
-  });
+  const RunResult resumed =
+      run_study_samples(MPI_COMM_WORLD, config, settings, [&](const Scene& scene) {
+        ++calls;
+        evaluated_friction.insert(scene.contact.friction);
+        return fake_simulate(scene);
+      });
   EXPECT_EQ(resumed.restored, 5);
   EXPECT_EQ(resumed.computed, 35);
   EXPECT_EQ(calls, 35);
   StudySampler sampler(config);
   for (const std::int64_t i : {0, 1, 2, 17, 39}) {
-    EXPECT_EQ(evaluated_friction.count(sampler.draw(i).scene.contact.friction), 0u) << "recomputed " << i;
+    EXPECT_EQ(evaluated_friction.count(sampler.draw(i).scene.contact.friction), 0u)
+        << "recomputed " << i;
   }
-  for (std::size_t i = 0; i < 40; ++i) EXPECT_TRUE(same_bits(resumed.records[i], full.records[i])) << i;
+  for (std::size_t i = 0; i < 40; ++i)
+    EXPECT_TRUE(same_bits(resumed.records[i], full.records[i])) << i;
 }
 
 TEST(StudyRunner, ACheckpointOfAnotherConfigIsRefused) {
@@ -134,7 +142,8 @@ TEST(StudyRunner, ACheckpointOfAnotherConfigIsRefused) {
     run_study_samples(MPI_COMM_WORLD, tiny_study(5), settings, fake_simulate);
     FAIL() << "no refusal";
   } catch (const StudyMismatchError& error) {
-    EXPECT_NE(std::string(error.what()).find("different study config"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("different study config"), std::string::npos)
+        << error.what();
   }
 }
 
@@ -144,7 +153,8 @@ TEST(StudyRunner, WritesCheckpointsAtTheInterval) {
   settings.checkpoint_interval_s = 0.0;  // after every sample
   const RunResult result = run_study_samples(MPI_COMM_WORLD, tiny_study(), settings, fake_simulate);
   EXPECT_GE(result.checkpoints, 39);
-  // The last periodic checkpoint holds every sample but the last one (none is written once all are done).
+  // The last periodic checkpoint holds every sample but the last one (none is written once all are
+  // done).
   const auto state = read_checkpoint(settings.checkpoint, tiny_study().total_samples());
   ASSERT_TRUE(state.has_value());
   EXPECT_EQ(state->done.size(), 39u);

@@ -1,15 +1,15 @@
 // Blocks under the near-fault pulses: Makris's types A and B are the one-cycle sine and cosine
 // pulses by another name, and a block that cannot slide starts to rock where lambda first passes
 // a/b (Shenton 1996), at the time each pulse's own formula gives.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <functional>
 #include <numbers>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
 #include "mpi_driver/io/summary_json.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -56,7 +56,8 @@ double first_crossing(const std::function<double(double)>& f, double from, doubl
 
 // A block with a/b = beta, friction far above Shenton's critical value and e = 0: it starts to
 // rock, never slides, and the first mode change is to rocking at `expected`.
-void expect_rocking_onset(const GroundMotion& motion, double beta, double expected, double duration) {
+void expect_rocking_onset(const GroundMotion& motion, double beta, double expected,
+                          double duration) {
   const Summary s = simulate(block_scene(beta, 1.0, 10.0, 0.0, motion, duration));
   ASSERT_TRUE(s.rock_start_time.has_value());
   EXPECT_NEAR(*s.rock_start_time, expected, 1e-9);
@@ -92,20 +93,23 @@ TEST(PulseResponse, RockingStartsWhereEachPulseFirstExceedsTheAspectRatio) {
       const double u = pi * (t - t0) / Tp;
       return A * (1 - 2 * u * u) * std::exp(-u * u) - beta;
     };
-    expect_rocking_onset(RickerWavelet{A, Tp, {}}, beta, first_crossing(rise, t0 - 0.5 * Tp / pi, t0), 2.0);
+    expect_rocking_onset(RickerWavelet{A, Tp, {}}, beta,
+                         first_crossing(rise, t0 - 0.5 * Tp / pi, t0), 2.0);
   }
   {  // Mavroeidis-Papageorgiou: lambda = -v'/g from its velocity, differentiated by hand as a
-     // product: v' = -(Vp Omega / 2) [k sin(k x) cos(x + nu) + (1 + cos(k x)) sin(x + nu)], x = Omega (t - t0).
+     // product: v' = -(Vp Omega / 2) [k sin(k x) cos(x + nu) + (1 + cos(k x)) sin(x + nu)], x =
+     // Omega (t - t0).
     const double vp = 0.3, Tp = 0.5, gamma = 2.0, nu = 0.5, t0 = 0.5 * gamma * Tp, k = 1 / gamma;
     const double omega = 2 * pi / Tp;
     const auto excess = [&](double t) {
       const double x = omega * (t - t0);
-      const double lambda = vp * omega / (2 * g) *
-                            (k * std::sin(k * x) * std::cos(x + nu) + (1 + std::cos(k * x)) * std::sin(x + nu));
+      const double lambda =
+          vp * omega / (2 * g) *
+          (k * std::sin(k * x) * std::cos(x + nu) + (1 + std::cos(k * x)) * std::sin(x + nu));
       return std::abs(lambda) - beta;
     };
-    expect_rocking_onset(MavroeidisPapageorgiouPulse{vp, Tp, gamma, nu, {}}, beta, first_crossing(excess, 0.0, 2 * t0),
-                         2.0);
+    expect_rocking_onset(MavroeidisPapageorgiouPulse{vp, Tp, gamma, nu, {}}, beta,
+                         first_crossing(excess, 0.0, 2 * t0), 2.0);
   }
 }
 

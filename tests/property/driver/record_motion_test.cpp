@@ -12,9 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/support/scene_builders.hpp"
 #include "engine/simulate.hpp"
 #include "mpi_driver/config/scene_json.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -41,11 +41,11 @@ Scene with_record(Scene scene, std::shared_ptr<const Accelerogram> record, doubl
 
 // Linear interpolation misses a smooth f by at most h^2/8 max|f''| (and by h^2/12 |f''| on average
 // over a step): for A cos(omega t) the record's forcing is the pulse's to within A delta, with
-// delta = (omega h)^2 / 8, and acts on average like the pulse with its amplitude cut by 2/3 of that.
-// A result therefore differs by about its sensitivity to the amplitude times delta. The sensitivity
-// is measured on the pulse itself (central difference at +-1e-5 of the amplitude, well inside the
-// range where the events stay the same); the allowance is twice sensitivity x delta (three times
-// the mean effect), plus 1e-7 for what the solver's tolerance leaves.
+// delta = (omega h)^2 / 8, and acts on average like the pulse with its amplitude cut by 2/3 of
+// that. A result therefore differs by about its sensitivity to the amplitude times delta. The
+// sensitivity is measured on the pulse itself (central difference at +-1e-5 of the amplitude, well
+// inside the range where the events stay the same); the allowance is twice sensitivity x delta
+// (three times the mean effect), plus 1e-7 for what the solver's tolerance leaves.
 struct Allowance {
   double theta, slide, time;
 };
@@ -86,7 +86,8 @@ TEST(RecordMotion, AFinelySampledCosinePulseActsAsThePulse) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     const CosinePulse pulse = std::get<CosinePulse>(c.scene.ground_motion);
-    const Scene recorded = with_record(c.scene, sampled_cosine(pulse.amplitude_g, pulse.period, pulse.cycles, h));
+    const Scene recorded =
+        with_record(c.scene, sampled_cosine(pulse.amplitude_g, pulse.period, pulse.cycles, h));
     const Summary expected = simulate(c.scene), got = simulate(recorded);
     ASSERT_EQ(expected.status, Status::ok);
     ASSERT_EQ(got.status, Status::ok) << got.status_reason;
@@ -97,11 +98,11 @@ TEST(RecordMotion, AFinelySampledCosinePulseActsAsThePulse) {
     const double omega = 2 * std::numbers::pi / pulse.period;
     const Allowance tol = allowance(c.scene, std::pow(omega * h, 2) / 8);
     std::cout << c.name << ": max|theta| " << expected.max_abs_theta << " vs " << got.max_abs_theta
-              << " (allowed " << tol.theta << "), slide " << expected.final_slide << " vs " << got.final_slide
-              << " (allowed " << tol.slide << ")";
+              << " (allowed " << tol.theta << "), slide " << expected.final_slide << " vs "
+              << got.final_slide << " (allowed " << tol.slide << ")";
     if (expected.overturn_time) {
-      std::cout << ", overturns at " << *expected.overturn_time << " vs " << got.overturn_time.value_or(-1)
-                << " (allowed " << tol.time << ")";
+      std::cout << ", overturns at " << *expected.overturn_time << " vs "
+                << got.overturn_time.value_or(-1) << " (allowed " << tol.time << ")";
     }
     std::cout << "\n";
     EXPECT_EQ(got.overturned, expected.overturned);
@@ -119,10 +120,12 @@ TEST(RecordMotion, TheDifferenceFromThePulseFallsAsTheSquareOfTheSampleStep) {
   const Scene pulse_scene = block_scene(0.2, 1.0, 0.7, 0.8, CosinePulse{0.3, 1.0, 2.0}, 4.0);
   const double expected = simulate(pulse_scene).final_slide;
   const auto difference = [&](double h) {
-    return simulate(with_record(pulse_scene, sampled_cosine(0.3, 1.0, 2.0, h))).final_slide - expected;
+    return simulate(with_record(pulse_scene, sampled_cosine(0.3, 1.0, 2.0, h))).final_slide -
+           expected;
   };
   const double coarse = difference(1e-3), fine = difference(5e-4);
-  std::cout << "residual slide minus the pulse's: " << coarse << " (h = 1 ms), " << fine << " (h = 0.5 ms)\n";
+  std::cout << "residual slide minus the pulse's: " << coarse << " (h = 1 ms), " << fine
+            << " (h = 0.5 ms)\n";
   EXPECT_GT(coarse / fine, 3.0);
   EXPECT_LT(coarse / fine, 5.0);
 }
@@ -133,7 +136,8 @@ TEST(RecordMotion, TheDifferenceFromThePulseFallsAsTheSquareOfTheSampleStep) {
 TEST(RecordMotion, TargetPgaScalingIsThePulseOfThatAmplitude) {
   const double h = 1e-3, T = 1.0, target = 0.3;
   const auto unit = sampled_cosine(1.0, T, 2.0, h);
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "blockfrag_unit_cosine.txt";
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "blockfrag_unit_cosine.txt";
   {
     std::FILE* out = std::fopen(file.c_str(), "w");
     ASSERT_NE(out, nullptr);
@@ -145,7 +149,8 @@ TEST(RecordMotion, TargetPgaScalingIsThePulseOfThatAmplitude) {
   }
   const Scene pulse_scene = block_scene(0.2, 1.0, 0.7, 0.8, CosinePulse{target, T, 2.0}, 4.0);
   nlohmann::json document = scene_to_json(pulse_scene);
-  document["ground_motion"] = {{"type", "record"}, {"file", file.string()}, {"target_pga_g", target}};
+  document["ground_motion"] = {
+      {"type", "record"}, {"file", file.string()}, {"target_pga_g", target}};
   const Scene scaled = scene_from_json(document, "record_scene.json");
   std::filesystem::remove(file);
   const auto& motion = std::get<RecordedMotion>(scaled.ground_motion);
@@ -163,8 +168,8 @@ TEST(RecordMotion, TargetPgaScalingIsThePulseOfThatAmplitude) {
 }
 
 // A record at 1.3 ms does not fit rk4's 0.25 ms grid: resampled, rk4 takes its full steps (about as
-// many as on the pulse itself, where one short step per sample would add 1,538 over its 2 s) and its
-// result stays within the resampling and rk4 errors of the adaptive run on the record as it is.
+// many as on the pulse itself, where one short step per sample would add 1,538 over its 2 s) and
+// its result stays within the resampling and rk4 errors of the adaptive run on the record as it is.
 TEST(RecordMotion, Rk4ResamplesAnOffGridRecordAndAgreesWithTheAdaptiveRun) {
   const double h = 1.3e-3, dt = 2.5e-4;
   const Scene pulse_scene = block_scene(0.2, 1.0, 0.7, 0.8, CosinePulse{0.3, 1.0, 2.0}, 4.0);
@@ -172,8 +177,9 @@ TEST(RecordMotion, Rk4ResamplesAnOffGridRecordAndAgreesWithTheAdaptiveRun) {
   const Summary adaptive = simulate(recorded);
   const Summary fixed = simulate(rk4(recorded, dt));
   const Summary fixed_pulse = simulate(rk4(pulse_scene, dt));
-  std::cout << "rk4 steps: record " << fixed.steps << ", pulse " << fixed_pulse.steps << "; max|theta| adaptive "
-            << adaptive.max_abs_theta << ", rk4 " << fixed.max_abs_theta << "\n";
+  std::cout << "rk4 steps: record " << fixed.steps << ", pulse " << fixed_pulse.steps
+            << "; max|theta| adaptive " << adaptive.max_abs_theta << ", rk4 " << fixed.max_abs_theta
+            << "\n";
   ASSERT_EQ(fixed.status, Status::ok);
   EXPECT_LE(fixed.steps, fixed_pulse.steps + 2 * (fixed.events + fixed_pulse.events) + 10);
   // Resampling moves the forcing by at most dt h max|f''| / 4 (the kinks it rounds off), 5e-7 of

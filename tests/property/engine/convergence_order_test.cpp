@@ -1,12 +1,12 @@
 // Orders of convergence of the integrators, measured on nonlinear problems with closed forms:
 // the slope of log(error) against log(step) over a halving sequence of steps.
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "engine/integrate/dormand_prince_stepper.hpp"
 #include "engine/integrate/rk4_stepper.hpp"

@@ -28,9 +28,7 @@ DamCrest dam_with(double period, double zeta) {
 
 // |pseudo-acceleration| / |a_g| and |absolute acceleration| / |a_g| of the steady state at
 // frequency ratio r (Chopra, Dynamics of Structures, sections 3.2 and 3.6).
-double pseudo_ratio(double r, double zeta) {
-  return 1.0 / std::hypot(1 - r * r, 2 * zeta * r);
-}
+double pseudo_ratio(double r, double zeta) { return 1.0 / std::hypot(1 - r * r, 2 * zeta * r); }
 double absolute_ratio(double r, double zeta) {
   return std::hypot(1.0, 2 * zeta * r) / std::hypot(1 - r * r, 2 * zeta * r);
 }
@@ -127,7 +125,8 @@ TEST(DamCrestResponse, AStiffDamIsNoDam) {
     EXPECT_NEAR(*b.rock_start_time, *a.rock_start_time, 1e-4);
   }
   {
-    const Scene bare = testing::block_scene(0.3, 1.2, 0.9, 0.9, SinePulse{0.3, 2.0, 1.0}, 5.0, 1e-9);
+    const Scene bare =
+        testing::block_scene(0.3, 1.2, 0.9, 0.9, SinePulse{0.3, 2.0, 1.0}, 5.0, 1e-9);
     Scene on_dam = bare;
     on_dam.dam = dam_with(stiff, 0.05);
     const Summary a = simulate(bare), b = simulate(on_dam);

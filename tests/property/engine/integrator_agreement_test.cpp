@@ -1,10 +1,10 @@
 // The paper's RK4 and the adaptive Dormand-Prince agree, and RK4 converges at fourth order.
-#include <gtest/gtest.h>
-
 #include <cmath>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {

@@ -1,11 +1,11 @@
 // A block that cannot rock (mu < a/b) slides exactly as Newmark's rigid block (docs/references.md).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -23,8 +23,11 @@ double newmark_rectangular(double A, double N, double t0, double g = 9.81) {
 }
 
 TEST(Newmark, RectangularPulseSlipMatchesClosedForm) {
-  struct Case { double A, N, t0, slip, stop; };
-  for (const Case c : {Case{0.5, 0.3, 0.5, 0.408750, 0.833333}, Case{1.0, 0.6, 0.2, 0.130800, 1.0 / 3}}) {
+  struct Case {
+    double A, N, t0, slip, stop;
+  };
+  for (const Case c :
+       {Case{0.5, 0.3, 0.5, 0.408750, 0.833333}, Case{1.0, 0.6, 0.2, 0.130800, 1.0 / 3}}) {
     EXPECT_NEAR(newmark_rectangular(c.A, c.N, c.t0), c.slip, 5e-7);  // the closed form itself
     for (const Scene& scene : {stocky(c.N, RectangularPulse{c.A, c.t0}, 2.0),
                                rk4(stocky(c.N, RectangularPulse{c.A, c.t0}, 2.0), 2.5e-4)}) {
@@ -42,10 +45,12 @@ TEST(Newmark, RectangularPulseSlipMatchesClosedForm) {
 
 TEST(Newmark, HalfSinePulseSlipMatchesReference) {
   // A sin(omega t) for half a period (sine_pulse, cycles = 0.5): docs/references.md values.
-  struct Case { double A, N, omega, slip; };
-  for (const Case c : {Case{0.5, 0.2, std::numbers::pi, 1.123778},
-                       Case{1.0, 0.3, 2 * std::numbers::pi, 0.950781},
-                       Case{0.5, 0.45, std::numbers::pi, 0.022829}}) {
+  struct Case {
+    double A, N, omega, slip;
+  };
+  for (const Case c :
+       {Case{0.5, 0.2, std::numbers::pi, 1.123778}, Case{1.0, 0.3, 2 * std::numbers::pi, 0.950781},
+        Case{0.5, 0.45, std::numbers::pi, 0.022829}}) {
     const double period = 2 * std::numbers::pi / c.omega;
     const Summary s = simulate(stocky(c.N, SinePulse{c.A, period, 0.5}, 4.0));
     EXPECT_NEAR(s.final_slide, c.slip, 1e-6) << "A = " << c.A << " N = " << c.N;

@@ -1,11 +1,11 @@
 // Onset from rest (Shenton 1996): when and in which mode a resting block starts to move.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {

@@ -1,13 +1,13 @@
 // A polygon block responds as the physics says it must: given a rectangle's vertices it is that
 // rectangle; mirrored (with the ground motion) it mirrors; it starts rocking about a corner exactly
 // when lambda passes that corner's tip threshold.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -21,12 +21,14 @@ PolygonBlock rectangle_polygon(const RectangularBlock& r, int first_vertex, doub
                                                   {dx + r.half_width, dy + 2 * r.half_height},
                                                   {dx - r.half_width, dy + 2 * r.half_height}};
   PolygonBlock polygon{{}, r.mass};
-  for (int i = 0; i < 4; ++i) polygon.vertices.push_back(ccw[static_cast<std::size_t>((first_vertex + i) % 4)]);
+  for (int i = 0; i < 4; ++i)
+    polygon.vertices.push_back(ccw[static_cast<std::size_t>((first_vertex + i) % 4)]);
   return polygon;
 }
 
 bool visits(const Summary& s, ModeKind kind) {
-  return std::any_of(s.modes.begin(), s.modes.end(), [&](const ModeChange& m) { return m.mode == kind; });
+  return std::any_of(s.modes.begin(), s.modes.end(),
+                     [&](const ModeChange& m) { return m.mode == kind; });
 }
 
 void expect_same(const Summary& a, const Summary& b, double tolerance) {
@@ -72,25 +74,28 @@ TEST(PolygonResponse, RectangleVerticesGiveTheRectanglesResults) {
       // exact about the centre).
       for (const int first : {0, 1, 2, 3}) {
         Scene polygon = base;
-        polygon.polygon = rectangle_polygon(base.block, first, 0.0, first == 3 ? -base.block.half_height : 0.0);
+        polygon.polygon =
+            rectangle_polygon(base.block, first, 0.0, first == 3 ? -base.block.half_height : 0.0);
         polygon.block = {};  // unused
         SCOPED_TRACE("first vertex " + std::to_string(first));
         expect_same(simulate(polygon), expected, 0.0);
       }
     }
   }
-  EXPECT_TRUE(overturned && flew && slid && slide_rocked && impacted) << "the scenes must cover every mode";
+  EXPECT_TRUE(overturned && flew && slid && slide_rocked && impacted)
+      << "the scenes must cover every mode";
 }
 
 PolygonBlock mirrored(const PolygonBlock& p) {
   PolygonBlock m{{}, p.mass};
   // x -> -x reverses the turning: list the mirrored vertices backwards to stay counter-clockwise.
-  for (auto it = p.vertices.rbegin(); it != p.vertices.rend(); ++it) m.vertices.push_back({-(*it)[0], (*it)[1]});
+  for (auto it = p.vertices.rbegin(); it != p.vertices.rend(); ++it)
+    m.vertices.push_back({-(*it)[0], (*it)[1]});
   return m;
 }
 
-// The paper's type A dam block (tests/unit/engine/polygon_block_test.cpp explains the vertices), and a
-// trapezoid, mirrored with the ground motion's sign: theta and x flip, nothing else changes.
+// The paper's type A dam block (tests/unit/engine/polygon_block_test.cpp explains the vertices),
+// and a trapezoid, mirrored with the ground motion's sign: theta and x flip, nothing else changes.
 TEST(PolygonResponse, MirroredBlockAndMotionMirrorTheResponse) {
   const PolygonBlock dam{{{0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}}, 411204.0};
   const PolygonBlock trapezoid{{{0, 0}, {1, 0}, {0.7, 1.6}, {0.1, 1.6}}, 1.0};
@@ -110,9 +115,11 @@ TEST(PolygonResponse, MirroredBlockAndMotionMirrorTheResponse) {
   for (const Scene& scene : scenes) {
     Scene mirror = scene;
     mirror.polygon = mirrored(*scene.polygon);
-    std::visit([](auto& m) {
-      if constexpr (requires { m.amplitude_g; }) m.amplitude_g = -m.amplitude_g;
-    }, mirror.ground_motion);
+    std::visit(
+        [](auto& m) {
+          if constexpr (requires { m.amplitude_g; }) m.amplitude_g = -m.amplitude_g;
+        },
+        mirror.ground_motion);
     const auto a = simulate_with_history(scene, 0.01), b = simulate_with_history(mirror, 0.01);
     EXPECT_EQ(a.summary.overturned, b.summary.overturned);
     EXPECT_EQ(a.summary.impacts, b.summary.impacts);
@@ -133,8 +140,8 @@ TEST(PolygonResponse, MirroredBlockAndMotionMirrorTheResponse) {
 }
 
 // Right triangle, legs 3 (base) and 4: corner arms (-1, -4/3) and (2, -4/3) from the centroid
-// (1, 4/3), so rocking starts about the right corner for lambda > 2 / (4/3) = 1.5 and about the left
-// one for -lambda > 1 / (4/3) = 0.75 (friction too large to slide).
+// (1, 4/3), so rocking starts about the right corner for lambda > 2 / (4/3) = 1.5 and about the
+// left one for -lambda > 1 / (4/3) = 0.75 (friction too large to slide).
 TEST(PolygonResponse, RockingStartsAtEachCornersTipThreshold) {
   const PolygonBlock triangle{{{0, 0}, {3, 0}, {0, 4}}, 1.0};
   const auto run = [&](double lambda) {
@@ -151,12 +158,14 @@ TEST(PolygonResponse, RockingStartsAtEachCornersTipThreshold) {
     EXPECT_EQ(left.summary.rock_start_time.has_value(), rocks);
     EXPECT_FALSE(right.summary.slide_start_time.has_value());
     // Clockwise about the right corner, counter-clockwise about the left.
-    const auto [low, high] = std::minmax_element(right.history.begin(), right.history.end(),
-                                                 [](const auto& p, const auto& q) { return p.theta < q.theta; });
+    const auto [low, high] =
+        std::minmax_element(right.history.begin(), right.history.end(),
+                            [](const auto& p, const auto& q) { return p.theta < q.theta; });
     EXPECT_EQ(high->theta, 0.0);
     EXPECT_EQ(low->theta < 0, rocks);
-    const auto [low_l, high_l] = std::minmax_element(left.history.begin(), left.history.end(),
-                                                     [](const auto& p, const auto& q) { return p.theta < q.theta; });
+    const auto [low_l, high_l] =
+        std::minmax_element(left.history.begin(), left.history.end(),
+                            [](const auto& p, const auto& q) { return p.theta < q.theta; });
     EXPECT_EQ(low_l->theta, 0.0);
     EXPECT_EQ(high_l->theta > 0, rocks);
   }

@@ -1,16 +1,16 @@
 // The one-degree-of-freedom models against the full model where they must agree, against their own
 // closed forms, and "auto" against the full model over random scenes (docs/physics.md: pruning must
 // never change a result).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <random>
 
-#include "engine/errors.hpp"
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/contact/reduced_contact.hpp"
+#include "engine/errors.hpp"
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -48,8 +48,8 @@ TEST(HousnerModel, EqualsTheFullModelForASlenderBlockWithHugeFriction) {
   int rocked = 0;
   for (const double a : {0.1, 0.15, 0.25}) {
     for (const double scale : {1.05, 1.3, 1.6}) {
-      for (const GroundMotion& motion :
-           {GroundMotion{SinePulse{scale * a, 1.0, 1.0}}, GroundMotion{CosinePulse{scale * a, 0.6, 2.0}}}) {
+      for (const GroundMotion& motion : {GroundMotion{SinePulse{scale * a, 1.0, 1.0}},
+                                         GroundMotion{CosinePulse{scale * a, 0.6, 2.0}}}) {
         const Scene scene = block_scene(a, 1.0, 1e3, 0.0, motion, 5.0);
         const Summary full = simulate(with(scene, kFull));
         // Where the full block lifts off or slips, Housner's model does not apply.
@@ -129,7 +129,8 @@ TEST(AutoModel, NeverChangesAResultComparedWithTheFullModel) {
   std::array<int, 4> chosen{};
   for (int i = 0; i < 600; ++i) {
     const double b = 0.5 + 2.0 * unit(rng), a = b * (0.1 + 1.4 * unit(rng));
-    const double mu = 0.1 + 1.2 * unit(rng), amplitude = (unit(rng) < 0.5 ? -1 : 1) * 1.5 * unit(rng);
+    const double mu = 0.1 + 1.2 * unit(rng),
+                 amplitude = (unit(rng) < 0.5 ? -1 : 1) * 1.5 * unit(rng);
     const double period = 0.2 + 2.0 * unit(rng);
     const GroundMotion motion = i % 3 == 0   ? GroundMotion{SinePulse{amplitude, period, 1.0}}
                                 : i % 3 == 1 ? GroundMotion{CosinePulse{amplitude, period, 2.0}}
@@ -160,9 +161,11 @@ TEST(AutoModel, FrictionAboveThePeakGroundAccelerationDoesNotPreventSliding) {
 
 TEST(Effects, SetsThatNameNoModelAreRefused) {
   Scene scene = block_scene(0.2, 1.0, 0.5, 0.5, NoMotion{}, 1.0);
-  scene.effects = {.automatic = false, .rocking = true, .sliding = true, .impact = false, .flight = true};
+  scene.effects = {
+      .automatic = false, .rocking = true, .sliding = true, .impact = false, .flight = true};
   EXPECT_THROW(simulate(scene), InvalidInput);
-  scene.effects = {.automatic = false, .rocking = false, .sliding = true, .impact = true, .flight = false};
+  scene.effects = {
+      .automatic = false, .rocking = false, .sliding = true, .impact = true, .flight = false};
   EXPECT_THROW(simulate(scene), InvalidInput);
 }
 

@@ -1,11 +1,11 @@
 // Free rocking against Housner (1963): impact ratio, energy, period, amplitude map.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -69,9 +69,9 @@ TEST(HousnerRocking, EnergyIsConservedBetweenImpacts) {
   int checked = 0;
   for (const HistoryRow& row : run.history) {
     if (row.mode != ModeKind::rock) continue;
-    const double energy = 0.5 * (row.vx * row.vx + row.vy * row.vy +
-                                 (a * a + b * b) / 3.0 * row.omega * row.omega) +
-                          g * row.y;
+    const double energy =
+        0.5 * (row.vx * row.vx + row.vy * row.vy + (a * a + b * b) / 3.0 * row.omega * row.omega) +
+        g * row.y;
     if (row.t < run.impacts.front().time) {
       if (std::isnan(reference)) reference = energy;
       EXPECT_NEAR(energy / reference - 1.0, 0.0, 1e-8) << "t = " << row.t;

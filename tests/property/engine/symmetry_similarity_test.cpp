@@ -1,12 +1,12 @@
 // Invariances: mirror symmetry, mass independence, Dimitrakopoulos & DeJong's similarity.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <limits>
 #include <set>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -27,8 +27,8 @@ TEST(Symmetry, TheVariedScenesVisitEveryMode) {
   for (const Scene& scene : varied_scenes()) {
     for (const ModeChange& change : simulate(scene).modes) visited.insert(change.mode);
   }
-  for (const ModeKind mode : {ModeKind::rest, ModeKind::slide, ModeKind::rock,
-                              ModeKind::slide_rock, ModeKind::flight}) {
+  for (const ModeKind mode :
+       {ModeKind::rest, ModeKind::slide, ModeKind::rock, ModeKind::slide_rock, ModeKind::flight}) {
     EXPECT_TRUE(visited.contains(mode)) << mode_name(mode) << " is never visited";
   }
 }
@@ -36,9 +36,11 @@ TEST(Symmetry, TheVariedScenesVisitEveryMode) {
 TEST(Symmetry, ReversingThePulseMirrorsThetaAndX) {
   for (const Scene& scene : varied_scenes()) {
     Scene mirrored = scene;
-    std::visit([](auto& m) {
-      if constexpr (requires { m.amplitude_g; }) m.amplitude_g = -m.amplitude_g;
-    }, mirrored.ground_motion);
+    std::visit(
+        [](auto& m) {
+          if constexpr (requires { m.amplitude_g; }) m.amplitude_g = -m.amplitude_g;
+        },
+        mirrored.ground_motion);
     const Summary a = simulate(scene), b = simulate(mirrored);
     EXPECT_EQ(a.overturned, b.overturned);
     EXPECT_EQ(a.impacts, b.impacts);
@@ -88,10 +90,12 @@ TEST(Similarity, ScaledBlocksGiveTheSameRotationInScaledTime) {
       scaled.block.half_width *= k;
       scaled.block.half_height *= k;
       scaled.duration *= std::sqrt(k);
-      std::visit([k](auto& m) {
-        if constexpr (requires { m.period; }) m.period *= std::sqrt(k);
-        if constexpr (requires { m.duration; }) m.duration *= std::sqrt(k);
-      }, scaled.ground_motion);
+      std::visit(
+          [k](auto& m) {
+            if constexpr (requires { m.period; }) m.period *= std::sqrt(k);
+            if constexpr (requires { m.duration; }) m.duration *= std::sqrt(k);
+          },
+          scaled.ground_motion);
       const auto a = simulate_with_history(base, 0.01);
       const auto b = simulate_with_history(scaled, 0.01 * std::sqrt(k));
       EXPECT_EQ(a.summary.overturned, b.summary.overturned);

@@ -2,16 +2,16 @@
 // the similarity it implies (a constant lambda_v is the same scene with g' = g (1 + c) and
 // lambda' = lambda / (1 + c)), the closed-form lift-off flight, and the onset thresholds of
 // docs/references.md with g replaced by g (1 + lambda_v).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <memory>
 #include <numbers>
 #include <vector>
 
-#include "tests/support/scene_builders.hpp"
+#include <gtest/gtest.h>
+
 #include "engine/motion/accelerogram.hpp"
 #include "engine/simulate.hpp"
+#include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
@@ -30,7 +30,8 @@ TEST(VerticalMotion, ConstantVerticalAccelerationIsScaledGravity) {
         scaled.g = 9.81 * (1 + c);
         scaled.ground_motion = SinePulse{amplitude / (1 + c), 1.0, 1.0};
         const Summary a = simulate(vertical), b = simulate(scaled);
-        SCOPED_TRACE("c " + std::to_string(c) + " mu " + std::to_string(mu) + " A " + std::to_string(amplitude));
+        SCOPED_TRACE("c " + std::to_string(c) + " mu " + std::to_string(mu) + " A " +
+                     std::to_string(amplitude));
         EXPECT_EQ(a.model, Model::full_vertical);
         EXPECT_EQ(a.overturned, b.overturned);
         EXPECT_EQ(a.impacts, b.impacts);

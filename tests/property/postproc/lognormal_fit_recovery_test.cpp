@@ -2,12 +2,12 @@
 // from the observed Fisher information (a numerical Hessian of a likelihood written here), and the
 // 95 % Wald intervals of the median and of beta cover the true values at their nominal rate over
 // many data sets.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "postproc/fragility/lognormal_fit.hpp"
 
@@ -47,7 +47,8 @@ Data draw(std::mt19937& engine) {
   Data d{levels(), {}, {}};
   for (const double x : d.im) {
     d.trials.push_back(trials_per_level);
-    d.exceedances.push_back(binomial_draw(engine, trials_per_level, normal_cdf(std::log(x / true_median) / true_beta)));
+    d.exceedances.push_back(
+        binomial_draw(engine, trials_per_level, normal_cdf(std::log(x / true_median) / true_beta)));
   }
   return d;
 }
@@ -84,8 +85,8 @@ std::pair<int, int> binomial_range(int n, double p) {
   std::vector<double> cdf;
   double sum = 0.0;
   for (int k = 0; k <= n; ++k) {
-    sum += std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0) + k * std::log(p) +
-                    (n - k) * std::log1p(-p));
+    sum += std::exp(std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0) +
+                    k * std::log(p) + (n - k) * std::log1p(-p));
     cdf.push_back(sum);
   }
   int low = 0, high = n;

@@ -3,8 +3,6 @@
 // 0.1% critical value, unbiased Latin hypercube permutations, uncorrelated streams, and Latin
 // hypercube's smaller variance of the mean for monotone functions. All seeds are fixed, so a pass
 // is reproducible; the bounds are what make a failure meaningful.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -13,6 +11,8 @@
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "sampling/designs.hpp"
 #include "sampling/distributions.hpp"

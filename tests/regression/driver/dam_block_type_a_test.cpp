@@ -2,10 +2,10 @@
 // lambda = A cos(pi t) for 0 <= t < 2 s with mu = 1.05, against what the paper reports where a
 // rigid block on rigid ground can be compared with its finite-element dam (which also shakes the
 // crest more than the ground: its numbers are not ours to match, see docs/validation.md).
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/simulate.hpp"
@@ -15,7 +15,8 @@ namespace blockfrag {
 namespace {
 
 Scene dam_scene(double amplitude_g) {
-  Scene scene = read_scene_file(std::string(BLOCKFRAG_SOURCE_DIR) + "/configs/dam_block_type_a.json");
+  Scene scene =
+      read_scene_file(std::string(BLOCKFRAG_SOURCE_DIR) + "/configs/dam_block_type_a.json");
   std::get<CosinePulse>(scene.ground_motion).amplitude_g = amplitude_g;
   return scene;
 }

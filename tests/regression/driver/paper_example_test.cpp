@@ -1,8 +1,8 @@
 // The paper's section 3 example (configs/paper_example.json) against the paper's statements.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/config/scene_json.hpp"

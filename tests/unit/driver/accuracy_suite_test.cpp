@@ -2,6 +2,8 @@
 // does what its category says, checked against Shenton's onset criteria and the modes the engine
 // reports), the error metrics and quantiles on hand-made cases, and the reference against
 // Newmark's closed forms, Housner's free-rocking period and its check (gsl_rk8pd).
+#include "mpi_driver/accuracy/accuracy_suite.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -19,7 +21,6 @@
 #include "mpi_driver/accuracy/accuracy_metrics.hpp"
 #include "mpi_driver/accuracy/accuracy_settings.hpp"
 #include "mpi_driver/accuracy/accuracy_study.hpp"
-#include "mpi_driver/accuracy/accuracy_suite.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/study_config.hpp"
 
@@ -29,7 +30,8 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-const std::filesystem::path suite_path = std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "configs/accuracy_suite.json";
+const std::filesystem::path suite_path =
+    std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "configs/accuracy_suite.json";
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 bool has_mode(const Summary& summary, ModeKind mode) {
@@ -119,14 +121,15 @@ TEST(AccuracySuite, RefusesASolverDuplicateNamesAndUnknownCategories) {
     EXPECT_THAT(text, HasSubstr("/scenes/1/name: must be unique"));
     EXPECT_THAT(text, HasSubstr("/scenes/2/category: must be one of"));
   }
-  EXPECT_THROW(accuracy_suite_from_json(json{{"scenes", json::array()}}, "empty.json"), ConfigError);
+  EXPECT_THROW(accuracy_suite_from_json(json{{"scenes", json::array()}}, "empty.json"),
+               ConfigError);
 }
 
 TEST(AccuracySettings, ParsesMethodAndValueAndRefusesNonsense) {
   EXPECT_EQ(parse_solver_setting("rk4:0.00025"), (SolverSetting{Method::rk4, 0.00025}));
   EXPECT_EQ(parse_solver_setting("gsl_rk8pd:1e-10"), (SolverSetting{Method::gsl_rk8pd, 1e-10}));
-  for (const char* bad : {"rk4", "euler:1e-3", "adaptive:", "adaptive:-1e-8", "adaptive:nan", "adaptive:0.5",
-                          "rk4:1e-3x"}) {
+  for (const char* bad : {"rk4", "euler:1e-3", "adaptive:", "adaptive:-1e-8", "adaptive:nan",
+                          "adaptive:0.5", "rk4:1e-3x"}) {
     EXPECT_THROW(parse_solver_setting(bad), InvalidInput) << bad;
   }
   const auto full = full_accuracy_settings();
@@ -138,7 +141,8 @@ TEST(AccuracySettings, ParsesMethodAndValueAndRefusesNonsense) {
   EXPECT_EQ(applied.dt, 1e-4);
 }
 
-Summary synthetic(double max_theta, double final_theta, double slide, std::optional<double> impact, bool over) {
+Summary synthetic(double max_theta, double final_theta, double slide, std::optional<double> impact,
+                  bool over) {
   Summary s;
   s.max_abs_theta = max_theta;
   s.final_theta = final_theta;
@@ -157,8 +161,11 @@ TEST(AccuracyMetrics, ErrorsAreAbsoluteDifferencesWithMissingImpactsInfinite) {
   EXPECT_EQ(e.first_impact_time, 0.25);
   EXPECT_FALSE(e.wrong_verdict);
 
-  EXPECT_EQ(output_errors(reference, synthetic(0.3, -0.1, 0.25, std::nullopt, false)).first_impact_time, infinity);
-  EXPECT_EQ(output_errors(synthetic(0.3, 0, 0, std::nullopt, false), synthetic(0.3, 0, 0, std::nullopt, false))
+  EXPECT_EQ(
+      output_errors(reference, synthetic(0.3, -0.1, 0.25, std::nullopt, false)).first_impact_time,
+      infinity);
+  EXPECT_EQ(output_errors(synthetic(0.3, 0, 0, std::nullopt, false),
+                          synthetic(0.3, 0, 0, std::nullopt, false))
                 .first_impact_time,
             0.0);
   EXPECT_TRUE(output_errors(reference, synthetic(0.3, -0.1, 0.25, 1.5, true)).wrong_verdict);
@@ -183,11 +190,13 @@ TEST(AccuracyMetrics, QuantilesInterpolateLikeNumpy) {
 
 TEST(AccuracyMetrics, StatisticsOverScenes) {
   const Summary reference = synthetic(0.3, 0.0, 0.0, std::nullopt, false);
-  const std::vector<OutputErrors> errors = {output_errors(reference, synthetic(0.3 + 1e-3, 0, 0, std::nullopt, false)),
-                                            output_errors(reference, synthetic(0.3 + 4e-3, 0, 0, std::nullopt, true)),
-                                            output_errors(reference, synthetic(0.3 + 2e-3, 0, 0, std::nullopt, false)),
-                                            output_errors(reference, synthetic(0.3, 0, 0, std::nullopt, false))};
-  const SettingStatistics s = setting_statistics(errors, {1.0, 2.0, 3.0, 4.0}, {10, 20, 30, 40}, {1, 2, 3, 4});
+  const std::vector<OutputErrors> errors = {
+      output_errors(reference, synthetic(0.3 + 1e-3, 0, 0, std::nullopt, false)),
+      output_errors(reference, synthetic(0.3 + 4e-3, 0, 0, std::nullopt, true)),
+      output_errors(reference, synthetic(0.3 + 2e-3, 0, 0, std::nullopt, false)),
+      output_errors(reference, synthetic(0.3, 0, 0, std::nullopt, false))};
+  const SettingStatistics s =
+      setting_statistics(errors, {1.0, 2.0, 3.0, 4.0}, {10, 20, 30, 40}, {1, 2, 3, 4});
   EXPECT_NEAR(s.max_error.max_abs_theta, 4e-3, 1e-15);
   EXPECT_NEAR(s.median_error.max_abs_theta, 1.5e-3, 1e-15);
   EXPECT_EQ(s.scenes_over_target, 3);  // 1e-3, 4e-3, 2e-3 exceed 1e-6 rad; 0 does not
@@ -203,7 +212,8 @@ TEST(AccuracyMetrics, StatisticsOverScenes) {
 // Housner's free rocking from rest at theta0 reaches theta = 0 after a quarter of the exact period
 // of docs/references.md:
 //   t = Int_0^theta0 dtheta / (p sqrt(2 [cos(alpha - theta0) - cos(alpha - theta)])).
-// With theta = theta0 (1 - s^2) the integrand is smooth on [0, 1], and Simpson's rule converges fast.
+// With theta = theta0 (1 - s^2) the integrand is smooth on [0, 1], and Simpson's rule converges
+// fast.
 double free_rocking_quarter_period(const Scene& scene) {
   const double a = scene.block.half_width, b = scene.block.half_height;
   const double alpha = std::atan(a / b), p = std::sqrt(3 * scene.g / (4 * std::hypot(a, b)));
@@ -211,7 +221,8 @@ double free_rocking_quarter_period(const Scene& scene) {
   const auto integrand = [&](double s) {
     if (s == 0.0) return 2 * theta0 / (p * std::sqrt(2 * std::sin(alpha - theta0) * theta0));
     const double theta = theta0 * (1 - s * s);
-    return 2 * theta0 * s / (p * std::sqrt(2 * (std::cos(alpha - theta0) - std::cos(alpha - theta))));
+    return 2 * theta0 * s /
+           (p * std::sqrt(2 * (std::cos(alpha - theta0) - std::cos(alpha - theta))));
   };
   const int n = 20000;
   const double h = 1.0 / n;
@@ -239,12 +250,13 @@ TEST(AccuracyStudy, ReferenceMatchesClosedFormsAndItsCheck) {
   EXPECT_EQ(study.check_statistics.failures, 0);
   EXPECT_LT(study.check_statistics.max_error.max_abs_theta, 1e-9);
   EXPECT_LT(study.check_statistics.max_error.final_slide, 1e-9);
-  // GSL's steppers locate events on a cubic Hermite interpolant over their long steps: rk8pd's event
-  // times are good to about 1e-8 s only (the quarter period below shows the reference is the
+  // GSL's steppers locate events on a cubic Hermite interpolant over their long steps: rk8pd's
+  // event times are good to about 1e-8 s only (the quarter period below shows the reference is the
   // accurate one).
   EXPECT_LT(study.check_statistics.max_error.first_impact_time, 1e-7);
   ASSERT_TRUE(study.reference[2].first_impact_time.has_value());
-  EXPECT_NEAR(*study.reference[2].first_impact_time, free_rocking_quarter_period(suite.scenes[2].scene), 1e-10);
+  EXPECT_NEAR(*study.reference[2].first_impact_time,
+              free_rocking_quarter_period(suite.scenes[2].scene), 1e-10);
 
   ASSERT_EQ(study.settings.size(), 2u);
   for (const auto& result : study.settings) {
@@ -269,7 +281,8 @@ TEST(AccuracyStudy, ReferenceMatchesClosedFormsAndItsCheck) {
 // setting counts the samples whose verdict changed consistently with the curves: a level's
 // probability can move by at most (changed verdicts at that level) / trials.
 TEST(AccuracyFragility, ASettingAgainstItselfChangesNothing) {
-  nlohmann::json document = read_json_file(std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "configs/example_study.json");
+  nlohmann::json document =
+      read_json_file(std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "configs/example_study.json");
   document["samples_per_level"] = 4;
   const StudyConfig config = parse_study_config(document, "example_study.json");
   const SolverSetting reference{Method::adaptive, 1e-10};
@@ -281,9 +294,11 @@ TEST(AccuracyFragility, ASettingAgainstItselfChangesNothing) {
     EXPECT_EQ(same.verdicts_changed, 0);
     EXPECT_EQ(same.max_probability_difference, 0.0);
     EXPECT_GT(same.max_sampling_half_width, 0.0);
-    EXPECT_TRUE(std::isnan(same.median) ? std::isnan(same.reference_median) : same.median == same.reference_median);
+    EXPECT_TRUE(std::isnan(same.median) ? std::isnan(same.reference_median)
+                                        : same.median == same.reference_median);
     const FragilityDifference& coarse = rows[config.limit_states.size() + i];
-    EXPECT_LE(coarse.max_probability_difference, static_cast<double>(coarse.verdicts_changed) / 4 + 1e-12);
+    EXPECT_LE(coarse.max_probability_difference,
+              static_cast<double>(coarse.verdicts_changed) / 4 + 1e-12);
   }
   const auto convergence = design_convergence(document, {2, 4}, 2, 8);
   ASSERT_EQ(convergence.size(), 4u);

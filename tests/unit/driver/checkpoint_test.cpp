@@ -4,6 +4,8 @@
 // which needs MPI, is tested in tests/mpi/driver/study_runner_test.cpp.)
 #include "mpi_driver/parallel/checkpoint.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -14,13 +16,10 @@
 #include <string>
 
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
-
 #include "mpi_driver/parallel/study_lock.hpp"
 #include "mpi_driver/parallel/work_distribution.hpp"
 
@@ -56,7 +55,9 @@ SampleRecord some_record(std::int64_t index) {
   return record;
 }
 
-bool same_bits(const SampleRecord& a, const SampleRecord& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(const SampleRecord& a, const SampleRecord& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 CheckpointState some_state() {
   CheckpointState state;
@@ -72,7 +73,8 @@ TEST(Checkpoint, RoundTripsEveryRecordBitForBit) {
   EXPECT_EQ(back.config_hash, state.config_hash);
   EXPECT_EQ(back.total_samples, 50);
   ASSERT_EQ(back.done.size(), state.done.size());
-  for (std::size_t k = 0; k < state.done.size(); ++k) EXPECT_TRUE(same_bits(back.done[k], state.done[k])) << k;
+  for (std::size_t k = 0; k < state.done.size(); ++k)
+    EXPECT_TRUE(same_bits(back.done[k], state.done[k])) << k;
 }
 
 TEST(Checkpoint, EmptyStateRoundTrips) {
@@ -88,8 +90,10 @@ TEST(Checkpoint, EveryDamageIsRefused) {
     damaged[position] = static_cast<char>(damaged[position] ^ 0x20);
     EXPECT_THROW(decode_checkpoint(damaged, "test"), CheckpointError) << "byte " << position;
   }
-  for (const std::size_t length : {std::size_t{0}, std::size_t{5}, bytes.size() / 2, bytes.size() - 1}) {
-    EXPECT_THROW(decode_checkpoint(bytes.substr(0, length), "test"), CheckpointError) << "length " << length;
+  for (const std::size_t length :
+       {std::size_t{0}, std::size_t{5}, bytes.size() / 2, bytes.size() - 1}) {
+    EXPECT_THROW(decode_checkpoint(bytes.substr(0, length), "test"), CheckpointError)
+        << "length " << length;
   }
 }
 
@@ -179,9 +183,12 @@ TEST(AtomicFile, FolderProblemsAreFoundBeforeAnyWork) {
   TemporaryFolder folder;
   EXPECT_FALSE(folder_write_problem(folder.path() / "out.h5").has_value());
   EXPECT_EQ(files_in(folder.path()), 0u);  // the probe is gone
-  EXPECT_NE(folder_write_problem(folder.path() / "missing" / "out.h5").value_or("").find("does not exist"),
+  EXPECT_NE(folder_write_problem(folder.path() / "missing" / "out.h5")
+                .value_or("")
+                .find("does not exist"),
             std::string::npos);
-  EXPECT_NE(folder_write_problem("/proc/out.h5").value_or("").find("cannot create a file"), std::string::npos);
+  EXPECT_NE(folder_write_problem("/proc/out.h5").value_or("").find("cannot create a file"),
+            std::string::npos);
 }
 
 TEST(StudyLock, OneHolderAtATimeAndFreeAgainAfterwards) {
@@ -220,7 +227,8 @@ TEST(StudyLock, ALinkAtTheLocksNameIsRefusedAndNotFollowed) {
   EXPECT_FALSE(std::filesystem::exists(victim));
 }
 
-// --- The work queue ---------------------------------------------------------------------------------
+// --- The work queue
+// ---------------------------------------------------------------------------------
 
 TEST(WorkQueue, HandsOutEveryPendingIndexExactlyOnce) {
   std::vector<bool> done(1000, false);

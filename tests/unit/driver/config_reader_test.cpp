@@ -2,7 +2,6 @@
 // get a hint, malformed text gets line:column. Expected messages are written out by hand from the
 // documented format, and positions are counted by hand in the test texts.
 #include "mpi_driver/config/config_reader.hpp"
-#include "mpi_driver/config/input_file.hpp"
 
 #include <cmath>
 #include <limits>
@@ -10,6 +9,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include "mpi_driver/config/input_file.hpp"
 
 namespace blockfrag {
 namespace {
@@ -62,11 +63,12 @@ TEST(Range, RuleTextAndBoundaries) {
 }
 
 TEST(ReadNumber, RangeErrorNamesPathRuleAndValueAsWritten) {
-  const auto messages = messages_of(json::parse(R"({"contact": {"friction": -0.3}})"), [](ObjectReader& root) {
-    auto contact = root.object("contact");
-    EXPECT_FALSE(contact.number("friction", Range::at_least(0)).has_value());
-    contact.finish();
-  });
+  const auto messages =
+      messages_of(json::parse(R"({"contact": {"friction": -0.3}})"), [](ObjectReader& root) {
+        auto contact = root.object("contact");
+        EXPECT_FALSE(contact.number("friction", Range::at_least(0)).has_value());
+        contact.finish();
+      });
   EXPECT_THAT(messages, ElementsAre("test.json: /contact/friction: must be >= 0 (got -0.3)"));
 }
 
@@ -78,14 +80,17 @@ TEST(ReadNumber, RefusesNonNumbersWithTheirKind) {
       EXPECT_FALSE(root.number(key).has_value()) << key;
     }
   });
-  EXPECT_THAT(messages,
-              ElementsAre("test.json: /nan: must be a finite number (got \"NaN\"; JSON has no NaN or Infinity)",
-                          "test.json: /inf: must be a finite number (got \"-Infinity\"; JSON has no NaN or Infinity)",
-                          "test.json: /text: must be a number, not a string (got \"0.6\")",
-                          "test.json: /flag: must be a number (got true)",
-                          "test.json: /nothing: must be a number (got null)",
-                          "test.json: /list: must be a number (got an array)",
-                          "test.json: /map: must be a number (got an object)"));
+  EXPECT_THAT(
+      messages,
+      ElementsAre(
+          "test.json: /nan: must be a finite number (got \"NaN\"; JSON has no NaN or Infinity)",
+          "test.json: /inf: must be a finite number (got \"-Infinity\"; JSON has no NaN or "
+          "Infinity)",
+          "test.json: /text: must be a number, not a string (got \"0.6\")",
+          "test.json: /flag: must be a number (got true)",
+          "test.json: /nothing: must be a number (got null)",
+          "test.json: /list: must be a number (got an array)",
+          "test.json: /map: must be a number (got an object)"));
 }
 
 TEST(ReadNumber, RefusesNonFiniteValuesBuiltInCode) {
@@ -111,11 +116,13 @@ TEST(ReadInteger, AcceptsWholeNumbersOnly) {
     EXPECT_FALSE(root.integer("huge").has_value());
     EXPECT_FALSE(root.integer("text").has_value());
   });
-  EXPECT_THAT(messages,
-              ElementsAre("test.json: /half: must be an integer (got 2.5)",
-                          "test.json: /negative: must be > 0 (got -4)",
-                          "test.json: /huge: must be an integer that fits in 64 bits (got 18446744073709551615)",
-                          "test.json: /text: must be a number, not a string (got \"7\")"));
+  EXPECT_THAT(
+      messages,
+      ElementsAre(
+          "test.json: /half: must be an integer (got 2.5)",
+          "test.json: /negative: must be > 0 (got -4)",
+          "test.json: /huge: must be an integer that fits in 64 bits (got 18446744073709551615)",
+          "test.json: /text: must be a number, not a string (got \"7\")"));
 }
 
 TEST(ObjectReader, DefaultsRequiredAndChoices) {
@@ -129,9 +136,11 @@ TEST(ObjectReader, DefaultsRequiredAndChoices) {
     EXPECT_FALSE(root.required_choice("kind", {"cosine", "sines"}).has_value());
     EXPECT_FALSE(root.choice("absent_choice", {"a"}).has_value());
   });
-  EXPECT_THAT(messages, ElementsAre("test.json: /needed: is required",
-                                    "test.json: /kind: must be one of \"cosine\", \"sines\" (got \"sine\"; did you "
-                                    "mean \"sines\"?)"));
+  EXPECT_THAT(
+      messages,
+      ElementsAre("test.json: /needed: is required",
+                  "test.json: /kind: must be one of \"cosine\", \"sines\" (got \"sine\"; did you "
+                  "mean \"sines\"?)"));
 }
 
 TEST(ObjectReader, UnknownKeysGetTheNearestKnownKeyOrTheList) {
@@ -140,8 +149,9 @@ TEST(ObjectReader, UnknownKeysGetTheNearestKnownKeyOrTheList) {
     root.number("friction");
     root.number("restitution");
   });
-  EXPECT_THAT(messages, ElementsAre("test.json: /frction: unknown key; did you mean \"friction\"?",
-                                    "test.json: /zzz: unknown key (known keys: friction restitution)"));
+  EXPECT_THAT(messages,
+              ElementsAre("test.json: /frction: unknown key; did you mean \"friction\"?",
+                          "test.json: /zzz: unknown key (known keys: friction restitution)"));
 }
 
 TEST(ObjectReader, FinishNamesTheContext) {
@@ -157,7 +167,8 @@ TEST(ObjectReader, FinishNamesTheContext) {
     FAIL() << "accepted";
   } catch (const ConfigError& error) {
     EXPECT_EQ(std::string(error.what()),
-              "s.json: /ground_motion/duration: unknown key for type \"cosine_pulse\" (known keys: period type)");
+              "s.json: /ground_motion/duration: unknown key for type \"cosine_pulse\" (known keys: "
+              "period type)");
   }
 }
 
@@ -172,12 +183,13 @@ TEST(ObjectReader, MissingOrWrongObjectsDoNotCascade) {
     contact.required_number("friction");
     contact.finish();
   });
-  EXPECT_THAT(messages,
-              ElementsAre("test.json: /block: must be an object (got 3)", "test.json: /contact: is required"));
+  EXPECT_THAT(messages, ElementsAre("test.json: /block: must be an object (got 3)",
+                                    "test.json: /contact: is required"));
 }
 
 TEST(ObjectReader, RootThatIsNotAnObject) {
-  const auto messages = messages_of(json::parse("[1, 2]"), [](ObjectReader& root) { root.number("a"); });
+  const auto messages =
+      messages_of(json::parse("[1, 2]"), [](ObjectReader& root) { root.number("a"); });
   EXPECT_THAT(messages, ElementsAre("test.json: must be an object (got an array)"));
 }
 
@@ -255,27 +267,32 @@ TEST(ParseJsonText, MalformedTextGivesLineAndColumn) {
   EXPECT_THAT(parse_error_of("{\n  \"a\": 1,\n  \"b\": @\n}"),
               HasSubstr("doc.json:3:8: malformed JSON: syntax error while parsing value"));
   // A missing comma: the parser stops at the second key's opening quote, line 2 column 2.
-  EXPECT_THAT(parse_error_of("{\"a\": 1\n \"b\": 2}"), HasSubstr("doc.json:2:2: malformed JSON: syntax error"));
+  EXPECT_THAT(parse_error_of("{\"a\": 1\n \"b\": 2}"),
+              HasSubstr("doc.json:2:2: malformed JSON: syntax error"));
   EXPECT_THAT(parse_error_of(""), HasSubstr("doc.json:1:1: malformed JSON: syntax error"));
   // Unterminated object: the end of input is at line 2, column 1.
   EXPECT_THAT(parse_error_of("{\"a\": 1,\n"), HasSubstr("doc.json:2:1: malformed JSON"));
   // Columns count characters: the two-byte u-umlaut is one column.
   EXPECT_THAT(parse_error_of("{\"\xc3\xbc\": @}"), HasSubstr("doc.json:1:7: malformed JSON"));
   EXPECT_THAT(parse_error_of("{\"a\": NaN}"), HasSubstr("doc.json:1:7: malformed JSON"));
-  EXPECT_THAT(parse_error_of("{\"a\": 1e999}"), HasSubstr("malformed JSON: number overflow parsing '1e999'"));
+  EXPECT_THAT(parse_error_of("{\"a\": 1e999}"),
+              HasSubstr("malformed JSON: number overflow parsing '1e999'"));
 }
 
 TEST(ParseJsonText, DuplicateKeysAreErrorsWithTheirPaths) {
   try {
-    parse_json_text(R"({"a": {"b": 1, "b": 2}, "list": [{"x": 1}, {"x": 1, "x": 2}], "c": 3})", "doc.json");
+    parse_json_text(R"({"a": {"b": 1, "b": 2}, "list": [{"x": 1}, {"x": 1, "x": 2}], "c": 3})",
+                    "doc.json");
     FAIL() << "accepted";
   } catch (const ConfigError& error) {
-    EXPECT_THAT(error.messages(), ElementsAre("doc.json: /a/b: duplicate key", "doc.json: /list/1/x: duplicate key"));
+    EXPECT_THAT(error.messages(),
+                ElementsAre("doc.json: /a/b: duplicate key", "doc.json: /list/1/x: duplicate key"));
   }
 }
 
 TEST(ParseJsonText, BuildsTheSameDocumentAsNlohmann) {
-  const std::string text = R"({"a": [1, -2, 3.5, 1e-300, 18446744073709551615, true, false, null, "s\u00fc"],
+  const std::string text =
+      R"({"a": [1, -2, 3.5, 1e-300, 18446744073709551615, true, false, null, "s\u00fc"],
     "b": {"c": {"d": []}, "e": {}}, "f": [[1, [2]], {"g": [{"h": 0.1}]}], "": -0.0})";
   const json ours = parse_json_text(text, "doc.json");
   EXPECT_EQ(ours, json::parse(text));
@@ -289,10 +306,13 @@ TEST(ReadJsonFile, MissingFileIsASystemError) {
 
 TEST(ReadJsonFile, NamesTheFileAsGiven) {
   try {
-    read_json_file(std::string(BLOCKFRAG_SOURCE_DIR) + "/tests/data/bad_scenes/malformed_missing_comma.json");
+    read_json_file(std::string(BLOCKFRAG_SOURCE_DIR) +
+                   "/tests/data/bad_scenes/malformed_missing_comma.json");
     FAIL() << "accepted";
   } catch (const ConfigError& error) {
-    EXPECT_THAT(error.what(), HasSubstr("tests/data/bad_scenes/malformed_missing_comma.json:4:3: malformed JSON"));
+    EXPECT_THAT(
+        error.what(),
+        HasSubstr("tests/data/bad_scenes/malformed_missing_comma.json:4:3: malformed JSON"));
   }
 }
 

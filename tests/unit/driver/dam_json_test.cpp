@@ -5,9 +5,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/support/scene_json_errors.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/scene_json.hpp"
+#include "tests/support/scene_json_errors.hpp"
 
 namespace blockfrag {
 namespace {
@@ -44,7 +44,8 @@ TEST(DamJson, ReadsAPeriodWithTheDocumentedDefaults) {
 }
 
 TEST(DamJson, ReadsHeightAndModulusAndWritesThemBack) {
-  const json dam = {{"height", 100.0}, {"elastic_modulus", 25e9}, {"damping", 0.1}, {"participation", 1.6}};
+  const json dam = {
+      {"height", 100.0}, {"elastic_modulus", 25e9}, {"damping", 0.1}, {"participation", 1.6}};
   const Scene scene = scene_from_json(scene_with_dam(dam), "scene.json");
   ASSERT_TRUE(scene.dam.has_value());
   const auto& size = std::get<DamSize>(scene.dam->stiffness);
@@ -58,12 +59,15 @@ TEST(DamJson, ReadsHeightAndModulusAndWritesThemBack) {
 }
 
 TEST(DamJson, RefusesEachRuleAtItsPath) {
-  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"height", 100.0}, {"elastic_modulus", 25e9}})),
-            "scene.json: /dam/period: give either period or height and elastic_modulus, not both");
+  EXPECT_EQ(
+      errors_of(scene_with_dam({{"period", 0.3}, {"height", 100.0}, {"elastic_modulus", 25e9}})),
+      "scene.json: /dam/period: give either period or height and elastic_modulus, not both");
   EXPECT_EQ(errors_of(scene_with_dam({{"damping", 0.05}})),
             "scene.json: /dam: needs period, or height and elastic_modulus");
-  EXPECT_EQ(errors_of(scene_with_dam({{"height", 100.0}})), "scene.json: /dam/elastic_modulus: is required");
-  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.0}})), "scene.json: /dam/period: must be in [0.001, 10] (got 0)");
+  EXPECT_EQ(errors_of(scene_with_dam({{"height", 100.0}})),
+            "scene.json: /dam/elastic_modulus: is required");
+  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.0}})),
+            "scene.json: /dam/period: must be in [0.001, 10] (got 0)");
   EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"damping", 1.0}})),
             "scene.json: /dam/damping: must be in [0, 1) (got 1)");
   EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"damping", -0.1}})),

@@ -1,15 +1,15 @@
 // The near-fault pulses in scene JSON: each type reads into its struct, writes back with its
 // defaults filled in, and each rule is refused at its path.
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
 
+#include <gtest/gtest.h>
+
 #include "engine/errors.hpp"
-#include "tests/support/scene_json_errors.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/scene_json.hpp"
+#include "tests/support/scene_json_errors.hpp"
 
 namespace blockfrag {
 namespace {
@@ -26,25 +26,30 @@ json scene_with(const json& motion) {
 std::string errors_of(const json& motion) { return testing::scene_errors(scene_with(motion)); }
 
 TEST(PulseJson, EachTypeReadsIntoItsPulse) {
-  const auto c = scene_from_json(scene_with({{"type", "makris_c"}, {"amplitude_g", -0.4}, {"period", 0.6}, {"n", 3}}),
-                                 "scene.json");
+  const auto c = scene_from_json(
+      scene_with({{"type", "makris_c"}, {"amplitude_g", -0.4}, {"period", 0.6}, {"n", 3}}),
+      "scene.json");
   const auto& pulse = std::get<MakrisPulseC>(c.ground_motion);
   EXPECT_EQ(pulse.amplitude_g, -0.4);
   EXPECT_EQ(pulse.period, 0.6);
   EXPECT_EQ(pulse.n, 3);
 
-  const auto mp = scene_from_json(
-      scene_with({{"type", "mavroeidis_papageorgiou"}, {"velocity_amplitude", 0.9}, {"period", 1.2}, {"gamma", 2.5}}),
-      "scene.json");
+  const auto mp = scene_from_json(scene_with({{"type", "mavroeidis_papageorgiou"},
+                                              {"velocity_amplitude", 0.9},
+                                              {"period", 1.2},
+                                              {"gamma", 2.5}}),
+                                  "scene.json");
   const auto& m = std::get<MavroeidisPapageorgiouPulse>(mp.ground_motion);
   EXPECT_EQ(m.velocity_amplitude, 0.9);
-  EXPECT_EQ(m.phase, 0.0);         // default
-  EXPECT_EQ(m.center(), 1.5);      // default gamma Tp / 2
-  EXPECT_EQ(std::get<RickerWavelet>(scene_from_json(scene_with({{"type", "ricker"}, {"amplitude_g", 1}, {"period", 0.4}}),
-                                                    "scene.json")
-                                        .ground_motion)
-                .center(),
-            0.4 * 1.5);
+  EXPECT_EQ(m.phase, 0.0);     // default
+  EXPECT_EQ(m.center(), 1.5);  // default gamma Tp / 2
+  EXPECT_EQ(
+      std::get<RickerWavelet>(
+          scene_from_json(scene_with({{"type", "ricker"}, {"amplitude_g", 1}, {"period", 0.4}}),
+                          "scene.json")
+              .ground_motion)
+          .center(),
+      0.4 * 1.5);
 }
 
 TEST(PulseJson, CanonicalFormFillsTheCentresAndReadsBack) {
@@ -54,8 +59,12 @@ TEST(PulseJson, CanonicalFormFillsTheCentresAndReadsBack) {
       {{{"type", "makris_c"}, {"amplitude_g", 0.5}, {"period", 0.3}, {"n", 2}}, {}},
       {{{"type", "ricker"}, {"amplitude_g", 0.5}, {"period", 0.4}},
        {{"type", "ricker"}, {"amplitude_g", 0.5}, {"period", 0.4}, {"t0", 0.4 * 1.5}}},
-      {{{"type", "mavroeidis_papageorgiou"}, {"velocity_amplitude", 0.7}, {"period", 0.5}, {"gamma", 2.0},
-        {"phase", 1.0}, {"t0", 2.0}},
+      {{{"type", "mavroeidis_papageorgiou"},
+        {"velocity_amplitude", 0.7},
+        {"period", 0.5},
+        {"gamma", 2.0},
+        {"phase", 1.0},
+        {"t0", 2.0}},
        {}},
   };
   for (const auto& [motion, expected] : cases) {
@@ -74,18 +83,23 @@ TEST(PulseJson, RulesAreRefusedAtTheirPath) {
   bad["n"] = 1.5;
   EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/n: must be an integer (got 1.5)");
 
-  const json mp = {{"type", "mavroeidis_papageorgiou"}, {"velocity_amplitude", 0.7}, {"period", 0.5}, {"gamma", 2.0}};
+  const json mp = {{"type", "mavroeidis_papageorgiou"},
+                   {"velocity_amplitude", 0.7},
+                   {"period", 0.5},
+                   {"gamma", 2.0}};
   bad = mp;
   bad["gamma"] = 1.0;
   EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/gamma: must be in (1, 100] (got 1)");
   bad = mp;
   bad["t0"] = 0.4;
   EXPECT_EQ(errors_of(bad),
-            "scene.json: /ground_motion/t0: must be >= gamma period / 2 = 0.5 (the pulse starts at t >= 0) (got 0.4)");
+            "scene.json: /ground_motion/t0: must be >= gamma period / 2 = 0.5 (the pulse starts at "
+            "t >= 0) (got 0.4)");
   bad = mp;
   bad["amplitude_g"] = 1.0;  // this pulse is given by its velocity
   EXPECT_EQ(errors_of(bad),
-            "scene.json: /ground_motion/amplitude_g: unknown key for type \"mavroeidis_papageorgiou\" (known keys: gamma "
+            "scene.json: /ground_motion/amplitude_g: unknown key for type "
+            "\"mavroeidis_papageorgiou\" (known keys: gamma "
             "period phase t0 type velocity_amplitude)");
 
   EXPECT_EQ(errors_of({{"type", "ricker"}, {"amplitude_g", 0.5}, {"period", 0.4}, {"t0", 0.0}}),

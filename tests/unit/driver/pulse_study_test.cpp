@@ -1,10 +1,10 @@
 // A study scales a Mavroeidis-Papageorgiou pulse, which is given by its ground velocity, so that
 // its peak |lambda| (its PGA in g) is the intensity level.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "engine/motion/ground_motion.hpp"
 #include "mpi_driver/config/study_config.hpp"
@@ -16,7 +16,8 @@ namespace {
 // max |lambda| on a grid of 1e5 points: an estimate independent of the engine's extrema.
 double scanned_peak(const GroundMotionPieces& motion, double end) {
   double peak = 0.0;
-  for (int i = 0; i <= 100000; ++i) peak = std::max(peak, std::abs(motion.lambda(end * i / 100000.0)));
+  for (int i = 0; i <= 100000; ++i)
+    peak = std::max(peak, std::abs(motion.lambda(end * i / 100000.0)));
   return peak;
 }
 

@@ -1,25 +1,27 @@
-// Reading records: the synthetic files of tests/data/records/ (written by make_records.py) give back
-// the formulas that wrote them; every file of tests/data/bad_records/ is refused with its file, the
-// line to blame and the reason.
+// Reading records: the synthetic files of tests/data/records/ (written by make_records.py) give
+// back the formulas that wrote them; every file of tests/data/bad_records/ is refused with its
+// file, the line to blame and the reason.
 #include "mpi_driver/config/record_file.hpp"
+
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <numbers>
-#include <fstream>
 #include <string>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 namespace blockfrag {
 namespace {
 
-const std::filesystem::path records = std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/records";
-const std::filesystem::path bad_records = std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/bad_records";
+const std::filesystem::path records =
+    std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/records";
+const std::filesystem::path bad_records =
+    std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/bad_records";
 
 TEST(RecordFile, ReadsPeerNgaAt2WithTheNgaWest2Header) {
   const Accelerogram record = read_accelerogram(records / "decaying_sine.AT2");
@@ -66,7 +68,8 @@ struct Broken {
 // One file per way a record can be malformed, the line a reader should be sent to, and the words.
 const std::map<std::string, Broken> broken = {
     {"short_header.AT2", {3, "the file ends before header line 3 of 4"}},
-    {"velocity_units.AT2", {3, "expected \"ACCELERATION TIME SERIES IN UNITS OF G\", got \"VELOCITY"}},
+    {"velocity_units.AT2",
+     {3, "expected \"ACCELERATION TIME SERIES IN UNITS OF G\", got \"VELOCITY"}},
     {"no_npts.AT2", {4, "expected NPTS and DT"}},
     {"old_header_without_names.at2", {4, "expected NPTS and DT"}},
     {"zero_npts.AT2", {4, "NPTS must be a positive whole number (got \"0\")"}},
@@ -98,10 +101,12 @@ void expect_refused(const std::filesystem::path& file, const Broken& expected) {
     read_accelerogram(file);
     ADD_FAILURE() << file << " was accepted";
   } catch (const RecordError& error) {
-    const std::string where = file.string() + (expected.line ? ":" + std::to_string(expected.line) : "") + ": ";
+    const std::string where =
+        file.string() + (expected.line ? ":" + std::to_string(expected.line) : "") + ": ";
     const std::string message = error.what();
     EXPECT_EQ(message.rfind(where, 0), 0u) << message << "\ndoes not start with " << where;
-    EXPECT_NE(message.find(expected.reason), std::string::npos) << message << "\nlacks " << expected.reason;
+    EXPECT_NE(message.find(expected.reason), std::string::npos)
+        << message << "\nlacks " << expected.reason;
     EXPECT_EQ(error.file(), file.string());
     EXPECT_EQ(error.line(), expected.line);
   }
@@ -130,7 +135,8 @@ TEST(RecordFile, RefusesAMissingFileAndAFolderWithoutALine) {
 
 // A FIFO would block the read forever and a device never ends: both are refused before any read.
 TEST(RecordFile, RefusesAFifoAndADeviceWithoutReadingThem) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("blockfrag_fifo_" + std::to_string(::getpid()));
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("blockfrag_fifo_" + std::to_string(::getpid()));
   std::filesystem::create_directories(folder);
   const std::filesystem::path fifo = folder / "record.txt";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
@@ -142,8 +148,8 @@ TEST(RecordFile, RefusesAFifoAndADeviceWithoutReadingThem) {
 // A message quotes at most a short printable excerpt of the file: a record that is really a
 // secret, or a binary, or a 10 MB line, is not echoed.
 TEST(RecordFile, QuotesAtMostSixtyPrintableCharactersOfTheFile) {
-  const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / ("blockfrag_long_line_" + std::to_string(::getpid()) + ".txt");
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("blockfrag_long_line_" + std::to_string(::getpid()) + ".txt");
   {
     std::ofstream out(file);
     out << "0.0 0.1\n0.01 secret\x01" << std::string(10'000'000, 'x') << "\n";
@@ -154,7 +160,8 @@ TEST(RecordFile, QuotesAtMostSixtyPrintableCharactersOfTheFile) {
   } catch (const RecordError& error) {
     const std::string message = error.what();
     EXPECT_LT(message.size(), file.string().size() + 120) << message.substr(0, 200);
-    EXPECT_NE(message.find("not a number: \"secret?xxxx"), std::string::npos) << message.substr(0, 200);
+    EXPECT_NE(message.find("not a number: \"secret?xxxx"), std::string::npos)
+        << message.substr(0, 200);
     EXPECT_NE(message.find("...\""), std::string::npos);
   }
   std::filesystem::remove(file);

@@ -11,11 +11,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/support/scene_json_errors.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/study/study_sample.hpp"
+#include "tests/support/scene_json_errors.hpp"
 
 namespace blockfrag {
 namespace {
@@ -23,7 +23,8 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-const std::filesystem::path records = std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/records";
+const std::filesystem::path records =
+    std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/records";
 // A scene file next to the records (it need not exist: only its folder matters).
 const std::string scene_file = (records / "scene.json").string();
 
@@ -49,7 +50,8 @@ std::string errors_of(const json& document, const std::string& source = scene_fi
 }
 
 TEST(SceneJsonRecord, ARelativeFileIsTakenFromTheSceneFilesFolder) {
-  const Scene scene = scene_from_json(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}}), scene_file);
+  const Scene scene =
+      scene_from_json(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}}), scene_file);
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   EXPECT_EQ(motion.file, "decaying_sine.AT2");
   EXPECT_EQ(motion.scale, 1.0);
@@ -59,8 +61,9 @@ TEST(SceneJsonRecord, ARelativeFileIsTakenFromTheSceneFilesFolder) {
 
 TEST(SceneJsonRecord, AnAbsoluteFileIgnoresTheFolder) {
   const std::string file = (records / "cosine_pulse.txt").string();
-  const Scene scene = scene_from_json(scene_with({{"type", "record"}, {"file", file}, {"scale", -2.0}}),
-                                      "/no/such/folder/scene.json");
+  const Scene scene =
+      scene_from_json(scene_with({{"type", "record"}, {"file", file}, {"scale", -2.0}}),
+                      "/no/such/folder/scene.json");
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   EXPECT_EQ(motion.scale, -2.0);
   ASSERT_NE(motion.record, nullptr);
@@ -68,8 +71,9 @@ TEST(SceneJsonRecord, AnAbsoluteFileIgnoresTheFolder) {
 }
 
 TEST(SceneJsonRecord, TargetPgaScalesThePeakToTheTarget) {
-  const Scene scene =
-      scene_from_json(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}}), scene_file);
+  const Scene scene = scene_from_json(
+      scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}}),
+      scene_file);
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   // Against the formula's peak: the file keeps 8 digits, so the two agree to 5e-8 relative.
   EXPECT_NEAR(motion.scale, 0.45 / decaying_sine_peak(), 5e-8 * motion.scale);
@@ -77,7 +81,8 @@ TEST(SceneJsonRecord, TargetPgaScalesThePeakToTheTarget) {
 }
 
 TEST(SceneJsonRecord, CanonicalFormWritesTheFileAsGivenAndTheResolvedScale) {
-  const json document = scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}});
+  const json document =
+      scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}});
   const json canonical = scene_to_json(scene_from_json(document, scene_file));
   const json& motion = canonical["ground_motion"];
   EXPECT_EQ(motion["type"], "record");
@@ -88,39 +93,52 @@ TEST(SceneJsonRecord, CanonicalFormWritesTheFileAsGivenAndTheResolvedScale) {
 }
 
 TEST(SceneJsonRecord, ScaleAndTargetPgaAreExclusiveAndTheFileIsRequired) {
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"scale", 2}, {"target_pga_g", 0.4}})),
-            scene_file + ": /ground_motion/target_pga_g: give either scale or target_pga_g, not both");
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"scale", 2}})), scene_file + ": /ground_motion/file: is required");
+  EXPECT_EQ(
+      errors_of(scene_with({{"type", "record"},
+                            {"file", "decaying_sine.AT2"},
+                            {"scale", 2},
+                            {"target_pga_g", 0.4}})),
+      scene_file + ": /ground_motion/target_pga_g: give either scale or target_pga_g, not both");
+  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"scale", 2}})),
+            scene_file + ": /ground_motion/file: is required");
   EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", ""}})),
             scene_file + ": /ground_motion/file: must not be empty");
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0}})),
+  EXPECT_EQ(errors_of(scene_with(
+                {{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0}})),
             scene_file + ": /ground_motion/target_pga_g: must be in (0, 1000] (got 0)");
-  EXPECT_THAT(errors_of(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"amplitude_g", 1}})),
+  EXPECT_THAT(errors_of(scene_with(
+                  {{"type", "record"}, {"file", "decaying_sine.AT2"}, {"amplitude_g", 1}})),
               HasSubstr("/ground_motion/amplitude_g: unknown key for type \"record\""));
 }
 
 TEST(SceneJsonRecord, AnUnreadableRecordIsAnErrorAtFileWithTheReadersLineAndReason) {
   const std::filesystem::path bad = records / "../bad_records/non_numeric.AT2";
   EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", "../bad_records/non_numeric.AT2"}})),
-            scene_file + ": /ground_motion/file: " + bad.string() + ":6: not a number: \"2.0000000E-0Z\"");
+            scene_file + ": /ground_motion/file: " + bad.string() +
+                ":6: not a number: \"2.0000000E-0Z\"");
   EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", "missing.AT2"}})),
-            scene_file + ": /ground_motion/file: " + (records / "missing.AT2").string() + ": no such file");
+            scene_file + ": /ground_motion/file: " + (records / "missing.AT2").string() +
+                ": no such file");
 }
 
 TEST(SceneJsonRecord, ARecordOfZerosCannotBeScaledToAPeak) {
-  const std::filesystem::path zeros = std::filesystem::temp_directory_path() / "blockfrag_zero_record.txt";
+  const std::filesystem::path zeros =
+      std::filesystem::temp_directory_path() / "blockfrag_zero_record.txt";
   std::ofstream(zeros) << "0 0\n0.01 0\n0.02 0\n";
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", zeros.string()}, {"target_pga_g", 0.3}})),
-            scene_file + ": /ground_motion/target_pga_g: cannot scale " + zeros.string() +
-                " to a peak: its accelerations are all 0");
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", zeros.string()}, {"scale", 3}})), "(accepted)");
+  EXPECT_EQ(
+      errors_of(scene_with({{"type", "record"}, {"file", zeros.string()}, {"target_pga_g", 0.3}})),
+      scene_file + ": /ground_motion/target_pga_g: cannot scale " + zeros.string() +
+          " to a peak: its accelerations are all 0");
+  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", zeros.string()}, {"scale", 3}})),
+            "(accepted)");
   std::filesystem::remove(zeros);
 }
 
 TEST(SceneJsonRecord, AnEmbeddedSceneTakesRecordsFromTheGivenFolder) {
   ConfigErrors errors("suite.json");
   const json suite_scene = scene_with({{"type", "record"}, {"file", "records/cosine_pulse.txt"}});
-  const Scene scene = scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors, records.parent_path());
+  const Scene scene =
+      scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors, records.parent_path());
   EXPECT_TRUE(errors.empty());
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   ASSERT_NE(motion.record, nullptr);

@@ -14,8 +14,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/support/scene_json_errors.hpp"
 #include "mpi_driver/config/config_reader.hpp"
+#include "tests/support/scene_json_errors.hpp"
 
 namespace blockfrag {
 namespace {
@@ -87,9 +87,11 @@ TEST(SceneJson, OmittedKeysTakeTheDocumentedDefaults) {
 }
 
 TEST(SceneJson, ReadsEveryGroundMotionTypeAndRk4) {
-  json rectangular = with(paper_scene(), "/ground_motion",
-                          json{{"type", "rectangular_pulse"}, {"amplitude_g", 0.7}, {"duration", 0.3}});
-  rectangular["solver"] = {{"method", "rk4"}, {"dt", 0.001}, {"max_steps", 1e6}, {"max_events", 10}};
+  json rectangular =
+      with(paper_scene(), "/ground_motion",
+           json{{"type", "rectangular_pulse"}, {"amplitude_g", 0.7}, {"duration", 0.3}});
+  rectangular["solver"] = {
+      {"method", "rk4"}, {"dt", 0.001}, {"max_steps", 1e6}, {"max_events", 10}};
   const Scene scene = scene_from_json(rectangular, "scene.json");
   EXPECT_EQ(std::get<RectangularPulse>(scene.ground_motion).amplitude_g, 0.7);
   EXPECT_EQ(std::get<RectangularPulse>(scene.ground_motion).duration, 0.3);
@@ -98,7 +100,8 @@ TEST(SceneJson, ReadsEveryGroundMotionTypeAndRk4) {
   EXPECT_EQ(scene.solver.max_steps, 1000000);
   EXPECT_EQ(scene.solver.max_events, 10);
 
-  const Scene still = scene_from_json(with(paper_scene(), "/ground_motion", json{{"type", "none"}}), "scene.json");
+  const Scene still =
+      scene_from_json(with(paper_scene(), "/ground_motion", json{{"type", "none"}}), "scene.json");
   EXPECT_TRUE(std::holds_alternative<NoMotion>(still.ground_motion));
 }
 
@@ -113,44 +116,60 @@ class SceneRule : public ::testing::TestWithParam<RuleCase> {};
 TEST_P(SceneRule, IsRefusedWithPathAndRule) {
   const RuleCase& rule = GetParam();
   json document = paper_scene();
-  if (std::string(rule.pointer).rfind("/solver/dt", 0) == 0) document["solver"] = {{"method", "rk4"}};
-  EXPECT_EQ(errors_of(with(document, rule.pointer, rule.value)), std::string("scene.json: ") + rule.message);
+  if (std::string(rule.pointer).rfind("/solver/dt", 0) == 0)
+    document["solver"] = {{"method", "rk4"}};
+  EXPECT_EQ(errors_of(with(document, rule.pointer, rule.value)),
+            std::string("scene.json: ") + rule.message);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     EveryRule, SceneRule,
     ::testing::Values(
         RuleCase{"/block/half_width", 0, "/block/half_width: must be in [1e-04, 10000] (got 0)"},
-        RuleCase{"/block/half_height", -1.5, "/block/half_height: must be in [1e-04, 10000] (got -1.5)"},
-        RuleCase{"/block/half_height", 1e5, "/block/half_height: must be in [1e-04, 10000] (got 1e+05)"},
+        RuleCase{"/block/half_height", -1.5,
+                 "/block/half_height: must be in [1e-04, 10000] (got -1.5)"},
+        RuleCase{"/block/half_height", 1e5,
+                 "/block/half_height: must be in [1e-04, 10000] (got 1e+05)"},
         RuleCase{"/block/mass", 0.0, "/block/mass: must be > 0 (got 0)"},
         RuleCase{"/contact/friction", -0.3, "/contact/friction: must be in [0, 10000] (got -0.3)"},
-        RuleCase{"/contact/friction", 1e308, "/contact/friction: must be in [0, 10000] (got 1e+308)"},
+        RuleCase{"/contact/friction", 1e308,
+                 "/contact/friction: must be in [0, 10000] (got 1e+308)"},
         RuleCase{"/contact/restitution", 1.2, "/contact/restitution: must be in [0, 1] (got 1.2)"},
-        RuleCase{"/contact/restitution", -0.1, "/contact/restitution: must be in [0, 1] (got -0.1)"},
-        RuleCase{"/ground_motion/period", 0, "/ground_motion/period: must be in [0.001, 1000] (got 0)"},
-        RuleCase{"/ground_motion/period", 5e-324, "/ground_motion/period: must be in [0.001, 1000] (got 5e-324)"},
-        RuleCase{"/ground_motion/cycles", -1, "/ground_motion/cycles: must be in (0, 10000] (got -1)"},
-        RuleCase{"/ground_motion/cycles", 1e9, "/ground_motion/cycles: must be in (0, 10000] (got 1e+09)"},
-        RuleCase{"/ground_motion/amplitude_g", 1e308, "/ground_motion/amplitude_g: must be in [-1000, 1000] (got 1e+308)"},
+        RuleCase{"/contact/restitution", -0.1,
+                 "/contact/restitution: must be in [0, 1] (got -0.1)"},
+        RuleCase{"/ground_motion/period", 0,
+                 "/ground_motion/period: must be in [0.001, 1000] (got 0)"},
+        RuleCase{"/ground_motion/period", 5e-324,
+                 "/ground_motion/period: must be in [0.001, 1000] (got 5e-324)"},
+        RuleCase{"/ground_motion/cycles", -1,
+                 "/ground_motion/cycles: must be in (0, 10000] (got -1)"},
+        RuleCase{"/ground_motion/cycles", 1e9,
+                 "/ground_motion/cycles: must be in (0, 10000] (got 1e+09)"},
+        RuleCase{"/ground_motion/amplitude_g", 1e308,
+                 "/ground_motion/amplitude_g: must be in [-1000, 1000] (got 1e+308)"},
         RuleCase{"/ground_motion/amplitude_g", "NaN",
-                 "/ground_motion/amplitude_g: must be a finite number (got \"NaN\"; JSON has no NaN or Infinity)"},
+                 "/ground_motion/amplitude_g: must be a finite number (got \"NaN\"; JSON has no "
+                 "NaN or Infinity)"},
         RuleCase{"/ground_motion/type", "cosine",
                  "/ground_motion/type: must be one of \"none\", \"cosine_pulse\", \"sine_pulse\", "
-                 "\"rectangular_pulse\", \"record\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
+                 "\"rectangular_pulse\", \"record\", \"makris_a\", \"makris_b\", \"makris_c\", "
+                 "\"ricker\", "
                  "\"mavroeidis_papageorgiou\" (got \"cosine\")"},
         RuleCase{"/ground_motion/type", "sine_puls",
                  "/ground_motion/type: must be one of \"none\", \"cosine_pulse\", \"sine_pulse\", "
-                 "\"rectangular_pulse\", \"record\", \"makris_a\", \"makris_b\", \"makris_c\", \"ricker\", "
+                 "\"rectangular_pulse\", \"record\", \"makris_a\", \"makris_b\", \"makris_c\", "
+                 "\"ricker\", "
                  "\"mavroeidis_papageorgiou\" (got \"sine_puls\"; did you mean \"sine_pulse\"?)"},
         RuleCase{"/duration", 0, "/duration: must be in (0, 1e+05] (got 0)"},
         RuleCase{"/duration", "4", "/duration: must be a number, not a string (got \"4\")"},
         RuleCase{"/g", -9.81, "/g: must be in [0.01, 1000] (got -9.81)"},
         RuleCase{"/solver/tolerance", 0, "/solver/tolerance: must be in [1e-14, 0.1] (got 0)"},
-        RuleCase{"/solver/tolerance", 1e-300, "/solver/tolerance: must be in [1e-14, 0.1] (got 1e-300)"},
+        RuleCase{"/solver/tolerance", 1e-300,
+                 "/solver/tolerance: must be in [1e-14, 0.1] (got 1e-300)"},
         RuleCase{"/solver/tolerance", 0.2, "/solver/tolerance: must be in [1e-14, 0.1] (got 0.2)"},
         RuleCase{"/solver/method", "euler",
-                 "/solver/method: must be one of \"adaptive\", \"rk4\", \"gsl_rkf45\", \"gsl_rk8pd\" (got \"euler\")"},
+                 "/solver/method: must be one of \"adaptive\", \"rk4\", \"gsl_rkf45\", "
+                 "\"gsl_rk8pd\" (got \"euler\")"},
         RuleCase{"/solver/dt", 0, "/solver/dt: must be in [1e-07, 10] (got 0)"},
         RuleCase{"/solver/dt", 1e-300, "/solver/dt: must be in [1e-07, 10] (got 1e-300)"},
         RuleCase{"/solver/dt", 4.5, "/solver/dt: must be <= duration (4) (got 4.5)"},
@@ -160,35 +179,45 @@ INSTANTIATE_TEST_SUITE_P(
         RuleCase{"/initial/theta", 1.6, "/initial/theta: must be in (-pi/2, pi/2) (got 1.6)"},
         RuleCase{"/initial/theta", -1.6, "/initial/theta: must be in (-pi/2, pi/2) (got -1.6)"},
         RuleCase{"/block", 1, "/block: must be an object (got 1)"},
-        RuleCase{"/contact/frction", 0.6, "/contact/frction: unknown key; did you mean \"friction\"?"},
+        RuleCase{"/contact/frction", 0.6,
+                 "/contact/frction: unknown key; did you mean \"friction\"?"},
         RuleCase{"/ground_motion/duration", 1.0,
-                 "/ground_motion/duration: unknown key for type \"cosine_pulse\" (known keys: amplitude_g cycles "
+                 "/ground_motion/duration: unknown key for type \"cosine_pulse\" (known keys: "
+                 "amplitude_g cycles "
                  "period type)"},
         RuleCase{"/solver/dt", json{{"nested", 1}}, "/solver/dt: must be a number (got an object)"},
         RuleCase{"/durration", 4, "/durration: unknown key; did you mean \"duration\"?"},
         RuleCase{"/effects", "all", "/effects: must be \"auto\" or a list of effects"},
-        RuleCase{"/effects", json::array(), "/effects: must be \"auto\" or a non-empty list of effects"},
+        RuleCase{"/effects", json::array(),
+                 "/effects: must be \"auto\" or a non-empty list of effects"},
         RuleCase{"/effects", json{"rocking", "rocking"}, "/effects/1: \"rocking\" is listed twice"},
         RuleCase{"/effects", json{"rockin"},
-                 "/effects/0: must be one of \"rocking\", \"sliding\", \"impact\", \"flight\", \"vertical\" "
+                 "/effects/0: must be one of \"rocking\", \"sliding\", \"impact\", \"flight\", "
+                 "\"vertical\" "
                  "(got \"rockin\"; did you mean \"rocking\"?)"},
         RuleCase{"/effects", json{"sliding", "impact"},
-                 "/effects: effects name no model: use [\"rocking\"] or [\"rocking\", \"impact\"] (Housner), "
-                 "[\"sliding\"] (Newmark), all of rocking, sliding, impact, flight (full), or \"auto\""}));
+                 "/effects: effects name no model: use [\"rocking\"] or [\"rocking\", \"impact\"] "
+                 "(Housner), "
+                 "[\"sliding\"] (Newmark), all of rocking, sliding, impact, flight (full), or "
+                 "\"auto\""}));
 
 TEST(SceneJson, EffectsNameAModelAndRoundTrip) {
-  const Scene housner = scene_from_json(with(paper_scene(), "/effects", json{"impact", "rocking"}), "scene.json");
+  const Scene housner =
+      scene_from_json(with(paper_scene(), "/effects", json{"impact", "rocking"}), "scene.json");
   EXPECT_FALSE(housner.effects.automatic);
   EXPECT_TRUE(housner.effects.rocking && housner.effects.impact);
   EXPECT_FALSE(housner.effects.sliding || housner.effects.flight);
   EXPECT_EQ(scene_to_json(housner)["effects"], json({"rocking", "impact"}));
-  const Scene newmark = scene_from_json(with(paper_scene(), "/effects", json{"sliding"}), "scene.json");
+  const Scene newmark =
+      scene_from_json(with(paper_scene(), "/effects", json{"sliding"}), "scene.json");
   EXPECT_EQ(scene_to_json(newmark)["effects"], json({"sliding"}));
-  EXPECT_TRUE(scene_from_json(with(paper_scene(), "/effects", "auto"), "scene.json").effects.automatic);
-  EXPECT_EQ(errors_of(with(paper_scene(), "/effects", json{"rocking", "vertical"})),
-            "scene.json: /effects: effects: vertical ground motion needs the full model (rocking, "
-            "sliding, impact, flight)\nscene.json: /effects: lists \"vertical\" exactly when the scene "
-            "has a vertical_motion");
+  EXPECT_TRUE(
+      scene_from_json(with(paper_scene(), "/effects", "auto"), "scene.json").effects.automatic);
+  EXPECT_EQ(
+      errors_of(with(paper_scene(), "/effects", json{"rocking", "vertical"})),
+      "scene.json: /effects: effects: vertical ground motion needs the full model (rocking, "
+      "sliding, impact, flight)\nscene.json: /effects: lists \"vertical\" exactly when the scene "
+      "has a vertical_motion");
 }
 
 TEST(SceneJson, VerticalMotionTakesAnyGroundMotionTypeAndTheFullModel) {
@@ -199,29 +228,38 @@ TEST(SceneJson, VerticalMotionTakesAnyGroundMotionTypeAndTheFullModel) {
   EXPECT_EQ(std::get<RectangularPulse>(automatic.vertical_motion).amplitude_g, -0.5);
   EXPECT_EQ(scene_to_json(automatic)["vertical_motion"], vertical);
   const json all = {"rocking", "sliding", "impact", "flight", "vertical"};
-  EXPECT_EQ(scene_to_json(scene_from_json(with(document, "/effects", all), "scene.json"))["effects"], all);
-  EXPECT_EQ(errors_of(with(document, "/effects", json{"rocking", "sliding", "impact", "flight"})),
-            "scene.json: /effects: lists \"vertical\" exactly when the scene has a vertical_motion");
+  EXPECT_EQ(
+      scene_to_json(scene_from_json(with(document, "/effects", all), "scene.json"))["effects"],
+      all);
+  EXPECT_EQ(
+      errors_of(with(document, "/effects", json{"rocking", "sliding", "impact", "flight"})),
+      "scene.json: /effects: lists \"vertical\" exactly when the scene has a vertical_motion");
   EXPECT_EQ(errors_of(with(document, "/vertical_motion/duration", 0)),
             "scene.json: /vertical_motion/duration: must be in [1e-04, 10000] (got 0)");
-  EXPECT_FALSE(scene_to_json(scene_from_json(paper_scene(), "scene.json")).contains("vertical_motion"));
+  EXPECT_FALSE(
+      scene_to_json(scene_from_json(paper_scene(), "scene.json")).contains("vertical_motion"));
 }
 
 TEST(SceneJson, KeysOfAnotherMethodOrTypeAreUnknown) {
   EXPECT_EQ(errors_of(with(paper_scene(), "/solver/dt", 0.001)),
-            "scene.json: /solver/dt: unknown key for method \"adaptive\" (known keys: max_events max_steps "
+            "scene.json: /solver/dt: unknown key for method \"adaptive\" (known keys: max_events "
+            "max_steps "
             "method tolerance)");
-  EXPECT_THAT(errors_of(with(paper_scene(), "/ground_motion", json{{"type", "none"}, {"amplitude_g", 1}})),
-              HasSubstr("/ground_motion/amplitude_g: unknown key for type \"none\""));
+  EXPECT_THAT(
+      errors_of(with(paper_scene(), "/ground_motion", json{{"type", "none"}, {"amplitude_g", 1}})),
+      HasSubstr("/ground_motion/amplitude_g: unknown key for type \"none\""));
 }
 
 TEST(SceneJson, RequiredKeysAreNamed) {
-  for (const char* pointer : {"/block", "/contact", "/ground_motion", "/duration", "/block/half_width",
-                              "/block/half_height", "/contact/friction", "/contact/restitution",
-                              "/ground_motion/type", "/ground_motion/amplitude_g", "/ground_motion/period"}) {
-    EXPECT_EQ(errors_of(without(paper_scene(), pointer)), "scene.json: " + std::string(pointer) + ": is required");
+  for (const char* pointer :
+       {"/block", "/contact", "/ground_motion", "/duration", "/block/half_width",
+        "/block/half_height", "/contact/friction", "/contact/restitution", "/ground_motion/type",
+        "/ground_motion/amplitude_g", "/ground_motion/period"}) {
+    EXPECT_EQ(errors_of(without(paper_scene(), pointer)),
+              "scene.json: " + std::string(pointer) + ": is required");
   }
-  EXPECT_EQ(errors_of(with(paper_scene(), "/ground_motion", json{{"type", "rectangular_pulse"}, {"amplitude_g", 1}})),
+  EXPECT_EQ(errors_of(with(paper_scene(), "/ground_motion",
+                           json{{"type", "rectangular_pulse"}, {"amplitude_g", 1}})),
             "scene.json: /ground_motion/duration: is required");
 }
 
@@ -288,11 +326,14 @@ TEST(SceneJson, CanonicalRoundTripIsExact) {
   json document = paper_scene();
   document["block"] = {{"half_width", 1.0 / 3.0}, {"half_height", 0.1 + 0.2}, {"mass", 5e-324}};
   document["contact"] = {{"friction", std::numbers::pi / 7}, {"restitution", 1.0 - 1e-16}};
-  document["ground_motion"] = {
-      {"type", "sine_pulse"}, {"amplitude_g", -0.0}, {"period", std::nextafter(1000.0, 0.0)}, {"cycles", 2.5}};
+  document["ground_motion"] = {{"type", "sine_pulse"},
+                               {"amplitude_g", -0.0},
+                               {"period", std::nextafter(1000.0, 0.0)},
+                               {"cycles", 2.5}};
   document["g"] = std::nextafter(9.81, 10.0);
   document["initial"] = {{"theta", std::nextafter(-std::numbers::pi / 2, 0.0)}};
-  document["solver"] = {{"method", "rk4"}, {"dt", std::nextafter(1e-7, 1.0)}, {"max_steps", 9876543210}};
+  document["solver"] = {
+      {"method", "rk4"}, {"dt", std::nextafter(1e-7, 1.0)}, {"max_steps", 9876543210}};
   const Scene first = scene_from_json(document, "scene.json");
   const json canonical = scene_to_json(first);
   const Scene second = scene_from_json(json::parse(canonical.dump()), "canonical.json");
@@ -317,7 +358,8 @@ TEST(SceneJson, GslMethodsTakeATolerance) {
   for (const char* name : {"gsl_rkf45", "gsl_rk8pd"}) {
     const json solver = {{"method", name}, {"tolerance", 1e-6}};
     const Scene scene = scene_from_json(with(paper_scene(), "/solver", solver), "scene.json");
-    EXPECT_EQ(scene.solver.method, std::string(name) == "gsl_rkf45" ? Method::gsl_rkf45 : Method::gsl_rk8pd);
+    EXPECT_EQ(scene.solver.method,
+              std::string(name) == "gsl_rkf45" ? Method::gsl_rkf45 : Method::gsl_rk8pd);
     EXPECT_EQ(scene.solver.tolerance, 1e-6);
     const json canonical = scene_to_json(scene);
     EXPECT_EQ(canonical["solver"]["method"], name);
@@ -330,10 +372,12 @@ TEST(SceneJson, GslMethodsTakeATolerance) {
 }
 
 TEST(SceneJson, EveryTypeRoundTrips) {
-  for (const json& motion : {json{{"type", "none"}},
-                             json{{"type", "cosine_pulse"}, {"amplitude_g", 0.3}, {"period", 0.7}, {"cycles", 3}},
-                             json{{"type", "rectangular_pulse"}, {"amplitude_g", -1.1}, {"duration", 0.25}}}) {
-    const json canonical = scene_to_json(scene_from_json(with(paper_scene(), "/ground_motion", motion), "scene.json"));
+  for (const json& motion :
+       {json{{"type", "none"}},
+        json{{"type", "cosine_pulse"}, {"amplitude_g", 0.3}, {"period", 0.7}, {"cycles", 3}},
+        json{{"type", "rectangular_pulse"}, {"amplitude_g", -1.1}, {"duration", 0.25}}}) {
+    const json canonical =
+        scene_to_json(scene_from_json(with(paper_scene(), "/ground_motion", motion), "scene.json"));
     EXPECT_EQ(canonical["ground_motion"], motion);
     EXPECT_EQ(scene_to_json(scene_from_json(canonical, "canonical.json")), canonical);
   }

@@ -126,14 +126,14 @@ TEST(StudyConfig, HashIgnoresOutputIntervalAndSpellingButNotTheScience) {
   spelled["scene"]["block"]["mass"] = 1.0;
   EXPECT_EQ(parse_study_config(spelled, "study.json").hash, hash);
 
-  for (const auto& [pointer, value] : std::vector<std::pair<std::string, json>>{
-           {"/seed", 43},
-           {"/samples_per_level", 9},
-           {"/design", "monte_carlo"},
-           {"/inputs/friction/max", 0.91},
-           {"/scene/duration", 2.5},
-           {"/limit_states/1/theta_over_alpha", 0.6},
-           {"/intensity_measure/levels/2", 1.0}}) {
+  for (const auto& [pointer, value] :
+       std::vector<std::pair<std::string, json>>{{"/seed", 43},
+                                                 {"/samples_per_level", 9},
+                                                 {"/design", "monte_carlo"},
+                                                 {"/inputs/friction/max", 0.91},
+                                                 {"/scene/duration", 2.5},
+                                                 {"/limit_states/1/theta_over_alpha", 0.6},
+                                                 {"/intensity_measure/levels/2", 1.0}}) {
     json changed = small_study();
     changed[JsonPointer(pointer)] = value;
     EXPECT_NE(parse_study_config(changed, "study.json").hash, hash) << pointer;
@@ -157,12 +157,14 @@ TEST(StudyConfig, ReportsEveryErrorAtOnceWithItsPath) {
 
 TEST(StudyConfig, TruncationMakesAnUnboundedLawAcceptable) {
   json document = small_study();
-  document["inputs"]["restitution"] = {{"distribution", "normal"}, {"mean", 0.7}, {"std_dev", 0.2},
-                                       {"lower", 0.0}, {"upper", 1.0}};
-  document["inputs"]["friction"] = {{"distribution", "normal"}, {"mean", 0.7}, {"std_dev", 0.2}, {"lower", 0.0}};
+  document["inputs"]["restitution"] = {
+      {"distribution", "normal"}, {"mean", 0.7}, {"std_dev", 0.2}, {"lower", 0.0}, {"upper", 1.0}};
+  document["inputs"]["friction"] = {
+      {"distribution", "normal"}, {"mean", 0.7}, {"std_dev", 0.2}, {"lower", 0.0}};
   // Friction's domain is bounded above too: truncated below only, the law still leaves it.
   EXPECT_THAT(::testing::PrintToString(messages_of(document)),
-              HasSubstr("/inputs/friction: every value must be in [0, 10000], but this distribution reaches [0, inf]"));
+              HasSubstr("/inputs/friction: every value must be in [0, 10000], but this "
+                        "distribution reaches [0, inf]"));
   document["inputs"]["friction"]["upper"] = 2.0;
   EXPECT_TRUE(messages_of(document).empty()) << ::testing::PrintToString(messages_of(document));
 }
@@ -175,7 +177,8 @@ TEST(StudyConfig, SceneErrorsCarryTheScenePrefix) {
   EXPECT_THAT(messages[0], HasSubstr("study.json: /scene/contact/restitution: must be in [0, 1]"));
 }
 
-// --- The sample-to-scene mapping -------------------------------------------------------------------
+// --- The sample-to-scene mapping
+// -------------------------------------------------------------------
 
 TEST(StudySample, IndexMapsToLevelAndAmplitudeWithTheDirectionsSign) {
   const StudyConfig config = parse_study_config(small_study(), "study.json");
@@ -278,7 +281,8 @@ TEST(StudyFragility, CountsPerLevelExcludeFailedSamples) {
       record(1, false, 0.6 * alpha, -0.06),  // rocks past 0.5 alpha, slides 6 cm the other way
       record(2, true, 1.6, 0.01, SampleStatus::failed),  // excluded whatever it says
       record(3, false, 0.4 * alpha, 0.04),
-      record(4, true, std::numbers::pi / 2, 0.3),  // an overturned block exceeds every rotation limit
+      record(4, true, std::numbers::pi / 2,
+             0.3),  // an overturned block exceeds every rotation limit
       record(5, true, std::numbers::pi / 2, 0.0),
       record(6, false, 0.0, 0.0, SampleStatus::rejected),
       record(7, false, 0.55 * alpha, 0.05),  // exactly at the slide threshold: not above it
@@ -307,9 +311,11 @@ TEST(StudyFragility, WilsonIntervalAndFitMatchTheReferenceData) {
   const StudyConfig config = parse_study_config(document, "study.json");
   std::vector<SampleRecord> records;
   for (std::size_t level = 0; level < levels.size(); ++level) {
-    for (int j = 0; j < 40; ++j) records.push_back(record(static_cast<std::int64_t>(level * 40 + j), j < z[level], 0.0, 0.0));
+    for (int j = 0; j < 40; ++j)
+      records.push_back(record(static_cast<std::int64_t>(level * 40 + j), j < z[level], 0.0, 0.0));
   }
-  const auto curve = fragility_curve(config, config.limit_states[0], records, std::vector<double>(records.size(), 0.46));
+  const auto curve = fragility_curve(config, config.limit_states[0], records,
+                                     std::vector<double>(records.size(), 0.46));
   EXPECT_NEAR(curve.median, 1.076116, 1e-5);
   EXPECT_NEAR(curve.beta, 0.429237, 1e-5);
   EXPECT_NEAR(curve.log_likelihood, -10.797705, 1e-5);
@@ -323,8 +329,10 @@ TEST(StudyFragility, WilsonIntervalAndFitMatchTheReferenceData) {
 TEST(StudyFragility, NoFitWithoutExceedances) {
   const StudyConfig config = parse_study_config(small_study(), "study.json");
   std::vector<SampleRecord> records;
-  for (std::int64_t i = 0; i < config.total_samples(); ++i) records.push_back(record(i, false, 0.0, 0.0));
-  const auto curve = fragility_curve(config, config.limit_states[0], records, std::vector<double>(records.size(), 0.46));
+  for (std::int64_t i = 0; i < config.total_samples(); ++i)
+    records.push_back(record(i, false, 0.0, 0.0));
+  const auto curve = fragility_curve(config, config.limit_states[0], records,
+                                     std::vector<double>(records.size(), 0.46));
   EXPECT_TRUE(std::isnan(curve.median));
   EXPECT_TRUE(std::isnan(curve.beta));
   EXPECT_TRUE(std::isnan(curve.log_likelihood));

@@ -1,14 +1,13 @@
 // ContactResolver at impacts: a rocking block landing on its other corner against Housner's ratio,
 // a flat block dropped on its base against Newton's restitution (docs/references.md, "Rocking
 // without sliding"), and, over random impacts, that no resolution gains kinetic energy.
-#include "engine/contact/contact_resolution.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdint>
 #include <random>
 
+#include <gtest/gtest.h>
+
+#include "engine/contact/contact_resolution.hpp"
 #include "tests/support/contact_states.hpp"
 
 namespace blockfrag {
@@ -27,9 +26,7 @@ TEST(ContactResolverImpact, ALandingCornerThatSticksWithoutBounceKeepsHousnersRa
   // kept: omega+ = (1 - 1.5 sin^2 alpha) omega-, sin^2 alpha = a^2 / (a^2 + b^2)
   // (a/b = 0.5: 0.70, 0.25: 0.911765, 1: 0.25). The block goes on rocking about its left corner
   // at x - a, the centre moving at omega+ x (centre - corner) = (-omega+ b, omega+ a).
-  const struct {
-    double a, eta;
-  } cases[] = {{0.5, 0.70}, {0.25, 0.911765}, {1.0, 0.25}};
+  const struct { double a, eta; } cases[] = {{0.5, 0.70}, {0.25, 0.911765}, {1.0, 0.25}};
   for (const auto& c : cases) {
     SCOPED_TRACE(c.a);
     const double a = c.a, b = 1.0, omega = 1.0, x = 3.0;

@@ -4,12 +4,11 @@
 // slipping goes on slipping, or jams into stick past the Painleve boundary. Expected modes from
 // the paper's equations (docs/references.md, "The paper the physics follows") worked by hand for
 // the paper's block (a = 0.5, b = 1, I/M = 5/12) on its right corner, r = (0.5, -1).
-#include "engine/contact/contact_resolution.hpp"
+#include <cmath>
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-
+#include "engine/contact/contact_resolution.hpp"
 #include "tests/support/contact_states.hpp"
 
 namespace blockfrag {
@@ -145,7 +144,8 @@ TEST(ContactResolverOneCorner, ASlipPastThePainleveBoundaryJamsIntoStick) {
   EXPECT_NEAR(s.vy + s.omega * a, 0.0, 1e-12);   // and u_y
   BlockState before = turning_about(a, b, 0.0, -1.0, 0.0);
   before.vx += u_x;
-  EXPECT_LT(testing::rectangle_kinetic_energy(a, b, s), testing::rectangle_kinetic_energy(a, b, before));
+  EXPECT_LT(testing::rectangle_kinetic_energy(a, b, s),
+            testing::rectangle_kinetic_energy(a, b, before));
 }
 
 }  // namespace

@@ -50,8 +50,9 @@ TEST(NigamJennings, StepResponseMatchesTheClosedForm) {
     ASSERT_GT(h.times.size(), 900u);
     for (std::size_t i = 0; i < h.times.size(); ++i) {
       const double t = h.times[i], decay = std::exp(-zeta * w * t);
-      const double q = -(a0 / (w * w)) *
-                       (1 - decay * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t)));
+      const double q =
+          -(a0 / (w * w)) *
+          (1 - decay * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t)));
       const double v = -(a0 / wd) * decay * std::sin(wd * t);
       EXPECT_NEAR(h.modal[i].q, q, 1e-10 * std::abs(a0) / (w * w)) << "zeta " << zeta << " t " << t;
       EXPECT_NEAR(h.modal[i].v, v, 1e-10 * std::abs(a0) / w) << "zeta " << zeta << " t " << t;
@@ -63,14 +64,16 @@ TEST(NigamJennings, StepResponseMatchesTheClosedForm) {
 TEST(NigamJennings, RampResponseMatchesTheClosedForm) {
   const double zeta = 0.05, period = 0.25, w = 2 * pi / period, wd = w * std::sqrt(1 - zeta * zeta);
   const double end = 2.0, lambda_end = 0.5, r = -lambda_end * g / end;  // a = -lambda g
-  const GroundMotionPieces foundation(std::vector<double>{0.0, end}, std::vector<double>{0.0, lambda_end});
+  const GroundMotionPieces foundation(std::vector<double>{0.0, end},
+                                      std::vector<double>{0.0, lambda_end});
   const CrestHistory h = dam_crest_history(foundation, dam_with(period, zeta), end, g);
   const double c1 = -2 * zeta * r / (w * w * w), c2 = (r / (w * w) + zeta * w * c1) / wd;
   for (std::size_t i = 0; i < h.times.size(); ++i) {
     const double t = h.times[i], decay = std::exp(-zeta * w * t);
     const double C = std::cos(wd * t), S = std::sin(wd * t);
     const double q = -(r / (w * w)) * (t - 2 * zeta / w) + decay * (c1 * C + c2 * S);
-    const double v = -r / (w * w) + decay * ((wd * c2 - zeta * w * c1) * C - (wd * c1 + zeta * w * c2) * S);
+    const double v =
+        -r / (w * w) + decay * ((wd * c2 - zeta * w * c1) * C - (wd * c1 + zeta * w * c2) * S);
     EXPECT_NEAR(h.modal[i].q, q, 1e-10 * std::abs(r * end) / (w * w)) << t;
     EXPECT_NEAR(h.modal[i].v, v, 1e-10 * std::abs(r * end) / w) << t;
   }
@@ -84,8 +87,9 @@ TEST(NigamJennings, ShortStepsFollowTheStepResponse) {
   OscillatorState s;
   for (int i = 0; i < 20000; ++i) s = step(s, a0, a0);
   const double t = 20000 * h, decay = std::exp(-zeta * w * t);
-  const double q = -(a0 / (w * w)) *
-                   (1 - decay * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t)));
+  const double q =
+      -(a0 / (w * w)) *
+      (1 - decay * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t)));
   EXPECT_NEAR(s.q, q, 1e-10 * a0 / (w * w));
   EXPECT_NEAR(s.v, -(a0 / wd) * decay * std::sin(wd * t), 1e-10 * a0 / w);
 }
@@ -123,7 +127,8 @@ TEST(DamCrestMotion, JumpsWhereTheFoundationJumpsUnlessTheParticipationIsOne) {
   const double lambda = 0.3, pulse_end = 0.7;
   const GroundMotionPieces foundation(RectangularPulse{lambda, pulse_end});
   for (const double gamma_phi : {1.0, 1.6}) {
-    const GroundMotionPieces crest = dam_crest_motion(foundation, dam_with(0.25, 0.05, gamma_phi), 2.0, g);
+    const GroundMotionPieces crest =
+        dam_crest_motion(foundation, dam_with(0.25, 0.05, gamma_phi), 2.0, g);
     EXPECT_NEAR(crest.lambda(0.0), (1 - gamma_phi) * lambda, 1e-15);
     const double before = crest.lambda(std::nextafter(pulse_end, 0.0));
     const double after = crest.lambda(pulse_end);

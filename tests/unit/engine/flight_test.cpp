@@ -1,8 +1,8 @@
 #include "engine/modes/flight.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {
@@ -19,7 +19,8 @@ TEST(Flight, FlatBlockThrownUpLandsAfterTwiceTheRiseTime) {
 
 TEST(Flight, SpinningBlockLandsOnTheCornerItTurnsDown) {
   // Rising at 1 m/s while turning counter-clockwise: the left base corner comes down first. Its
-  // height is y(t) - a sin(w t) - b cos(w t); the landing is its first root, found here by bisection.
+  // height is y(t) - a sin(w t) - b cos(w t); the landing is its first root, found here by
+  // bisection.
   const double a = 0.5, b = 1.0, w = 1.5, vy = 1.0;
   const BlockGeometry block(RectangularBlock{a, b, 1.0});
   const auto height = [&](double t) {

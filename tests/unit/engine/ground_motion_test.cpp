@@ -1,9 +1,9 @@
 #include "engine/motion/ground_motion.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {
@@ -49,7 +49,8 @@ TEST(GroundMotion, ExtremaAreWhereTheDerivativeVanishes) {
   EXPECT_NEAR(sin_extrema[0], 0.25, 1e-15);
   EXPECT_NEAR(sin_extrema[1], 0.75, 1e-15);
 
-  EXPECT_TRUE(GroundMotionPieces(RectangularPulse{1.0, 1.0}).piece_at(0.0).extrema_between(0, 1).empty());
+  EXPECT_TRUE(
+      GroundMotionPieces(RectangularPulse{1.0, 1.0}).piece_at(0.0).extrema_between(0, 1).empty());
 }
 
 }  // namespace

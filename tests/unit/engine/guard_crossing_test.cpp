@@ -2,10 +2,10 @@
 // the step, and at a dip narrower than the samples' spacing.
 #include "engine/integrate/guard_crossing.hpp"
 
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {

@@ -2,14 +2,14 @@
 // re-derived independently, the energy identity of a corner impulse, and symmetries.
 #include "engine/contact/impact.hpp"
 
-#include <gtest/gtest.h>
-
-#include "engine/errors.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "engine/errors.hpp"
 
 namespace blockfrag {
 namespace {
@@ -278,21 +278,15 @@ TEST(CornerImpact, RandomSweepKeepsTheLawsAndNeverGainsEnergy) {
     // What each regime means for the corner's tangential velocity.
     const double s = ux == 0.0 ? 0.0 : sign(ux);
     switch (p.regime) {
-      case ImpactRegime::stick:
-        EXPECT_EQ(ux, 0.0);
-        [[fallthrough]];
-      case ImpactRegime::slip_then_stick:
-        EXPECT_NEAR(u.u_x, 0.0, 1e-12 * speed);
-        break;
+      case ImpactRegime::stick: EXPECT_EQ(ux, 0.0); [[fallthrough]];
+      case ImpactRegime::slip_then_stick: EXPECT_NEAR(u.u_x, 0.0, 1e-12 * speed); break;
       case ImpactRegime::slip:
         EXPECT_NEAR(std::abs(p.p_x), mu * p.p_y, 1e-12 * p.p_y);
         if (s != 0.0) {
           EXPECT_GE(s * u.u_x, -1e-12 * speed);
         }
         break;
-      case ImpactRegime::slip_reversal:
-        EXPECT_LT(s * u.u_x, 0.0);
-        break;
+      case ImpactRegime::slip_reversal: EXPECT_LT(s * u.u_x, 0.0); break;
     }
     const double painleve_condition =
         body.inertia / body.mass + body.r_x * body.r_x + s * mu * body.r_x * body.r_y;

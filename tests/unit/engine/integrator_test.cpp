@@ -1,13 +1,13 @@
 // The two ODE integrators against closed forms: accuracy, dense output, evaluation counts, resets,
 // breakpoints, N = 0, error control and its failure mode. No heap allocation while stepping.
-#include <gtest/gtest.h>
-
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <new>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "engine/errors.hpp"
 #include "engine/integrate/dormand_prince_stepper.hpp"

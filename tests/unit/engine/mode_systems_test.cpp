@@ -3,13 +3,13 @@
 // theta = 0 (docs/references.md, "The paper the physics follows" and "Rocking without sliding"):
 // theta'', the contact forces, the guards by name and the events they stand for, and the map
 // between coordinates and the full state (the pivot stays on the ground where the mode says).
-#include "engine/modes/modes.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <utility>
+
+#include <gtest/gtest.h>
+
+#include "engine/modes/modes.hpp"
 
 namespace blockfrag {
 namespace {
@@ -84,7 +84,8 @@ TEST(RockSystem, FullStateKeepsThePivotStillOnTheGroundAndMapsBack) {
   // (vx - w r_y, vy + w r_x) = 0.
   const double pivot_x = 1.25;
   const RockSystem rock{context(lambda_one, 0.6), Corner::right, pivot_x};
-  for (const OdeState<2> q : {OdeState<2>{0.0, 0.0}, OdeState<2>{-0.3, 1.7}, OdeState<2>{0.2, -0.4}}) {
+  for (const OdeState<2> q :
+       {OdeState<2>{0.0, 0.0}, OdeState<2>{-0.3, 1.7}, OdeState<2>{0.2, -0.4}}) {
     const BlockState s = rock.full(0.0, q);
     const double r_x = 0.5 * std::cos(q[0]) + std::sin(q[0]);
     const double r_y = 0.5 * std::sin(q[0]) - std::cos(q[0]);
@@ -140,7 +141,8 @@ TEST(SlideRockSystem, FrictionIsMuTimesTheNormalForceAgainstTheSlip) {
 TEST(SlideRockSystem, GuardsMeasureWhatTheirEventsNeed) {
   EXPECT_EQ(SlideRockSystem::kEvents[SlideRockSystem::normal_force], GuardEvent::lift_off);
   EXPECT_EQ(SlideRockSystem::kEvents[SlideRockSystem::slip_velocity], GuardEvent::slip_stops);
-  EXPECT_EQ(SlideRockSystem::kEvents[SlideRockSystem::other_corner_height], GuardEvent::corner_lands);
+  EXPECT_EQ(SlideRockSystem::kEvents[SlideRockSystem::other_corner_height],
+            GuardEvent::corner_lands);
   EXPECT_EQ(SlideRockSystem::kEvents[SlideRockSystem::overturn_margin], GuardEvent::overturns);
   EXPECT_EQ(SlideRockSystem::kEvents[SlideRockSystem::painleve_distance],
             GuardEvent::painleve_boundary);

@@ -27,14 +27,14 @@ TEST(ModelNamedBy, EachModelsEffectsNameIt) {
 
 TEST(ModelNamedBy, RefusesSetsThatNameNoModel) {
   const Effects refused[] = {
-      named(false, false, false, false),  // nothing
-      named(false, false, true, false),   // impact alone
-      named(false, false, false, true),   // flight alone
-      named(true, true, false, false),    // rocking and sliding without impact and flight
-      named(true, true, true, false),      // all but flight
-      named(true, false, true, true),     // rocking with flight but no sliding
-      named(false, true, true, false),    // sliding with impact
-      named(false, true, false, true),    // sliding with flight
+      named(false, false, false, false),       // nothing
+      named(false, false, true, false),        // impact alone
+      named(false, false, false, true),        // flight alone
+      named(true, true, false, false),         // rocking and sliding without impact and flight
+      named(true, true, true, false),          // all but flight
+      named(true, false, true, true),          // rocking with flight but no sliding
+      named(false, true, true, false),         // sliding with impact
+      named(false, true, false, true),         // sliding with flight
       named(true, false, true, false, true),   // vertical with Housner's model
       named(false, true, false, false, true),  // vertical with Newmark's
   };
@@ -99,9 +99,11 @@ TEST(ChooseModel, ABlockReleasedTiltedIsAlreadyRocking) {
   Scene scene;
   scene.initial.theta = -0.1;
   scene.contact.friction = 0.3;  // would be Newmark's from rest under a pulse, at_rest without
-  for (const GroundMotion& motion : {GroundMotion{NoMotion{}}, GroundMotion{RectangularPulse{0.4, 1.0}}}) {
+  for (const GroundMotion& motion :
+       {GroundMotion{NoMotion{}}, GroundMotion{RectangularPulse{0.4, 1.0}}}) {
     scene.ground_motion = motion;
-    EXPECT_EQ(choose_model(scene, GroundMotionPieces(motion), BlockGeometry(scene.block)), Model::full);
+    EXPECT_EQ(choose_model(scene, GroundMotionPieces(motion), BlockGeometry(scene.block)),
+              Model::full);
   }
 }
 
@@ -121,12 +123,14 @@ TEST(ChooseModel, VerticalMotionRunsTheFullVerticalModel) {
     scene.ground_motion = RectangularPulse{0.1, 1.0};
     scene.vertical_motion = SinePulse{0.2, 1.0, 1.0};
     scene.effects = named(true, true, true, true, true);
-    EXPECT_EQ(choose_model(scene, GroundMotionPieces(scene.ground_motion), BlockGeometry(scene.block)),
-              Model::full_vertical)
+    EXPECT_EQ(
+        choose_model(scene, GroundMotionPieces(scene.ground_motion), BlockGeometry(scene.block)),
+        Model::full_vertical)
         << "mu = " << mu;
     scene.effects = Effects{};
-    EXPECT_EQ(choose_model(scene, GroundMotionPieces(scene.ground_motion), BlockGeometry(scene.block)),
-              Model::full_vertical)
+    EXPECT_EQ(
+        choose_model(scene, GroundMotionPieces(scene.ground_motion), BlockGeometry(scene.block)),
+        Model::full_vertical)
         << "mu = " << mu;
   }
 }

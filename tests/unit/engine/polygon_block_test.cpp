@@ -1,9 +1,9 @@
 // Polygon blocks: mass properties against hand computations, the geometry the engine sees, and the
 // rules a vertex list must keep.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/polygon_properties.hpp"
@@ -48,7 +48,8 @@ TEST(PolygonProperties, RightTriangle) {
   // Corner arms (-1, -4/3) and (2, -4/3): tip thresholds 1 / (4/3) and 2 / (4/3).
   EXPECT_NEAR(block.tip_threshold(Corner::left), 0.75, 1e-15);
   EXPECT_NEAR(block.tip_threshold(Corner::right), 1.5, 1e-15);
-  EXPECT_NEAR(block.flat_slide_friction_limit(+1), 1.5, 1e-15);  // sliding right: leads on the right
+  EXPECT_NEAR(block.flat_slide_friction_limit(+1), 1.5,
+              1e-15);  // sliding right: leads on the right
   EXPECT_NEAR(block.flat_slide_friction_limit(-1), 0.75, 1e-15);
   // The vertical leg lands after pi/2 about the left corner; the hypotenuse, rising at
   // atan2(4, -3) from the right corner, after pi - atan(4/3) clockwise.
@@ -98,11 +99,11 @@ TEST(PolygonProperties, TypeADamBlockMatchesTheHandComputation) {
   EXPECT_NEAR(block.inertia_per_mass(), k2, 1e-11);
   EXPECT_NEAR(block.rest_height(), cy, 1e-12);
   // Upstream heel (left) at cx from the centroid, downstream toe (right) at 12.55 - cx.
-  EXPECT_NEAR(block.tip_threshold(Corner::left), cx / cy, 1e-12);           // 0.6303: 32.2 deg
+  EXPECT_NEAR(block.tip_threshold(Corner::left), cx / cy, 1e-12);             // 0.6303: 32.2 deg
   EXPECT_NEAR(block.tip_threshold(Corner::right), (12.55 - cx) / cy, 1e-12);  // 0.9063: 42.2 deg
   Scene scene;
   scene.polygon = PolygonBlock{dam, mass};
-  EXPECT_NEAR(block_alpha(scene), std::atan(cx / cy), 1e-12);  // the heel tips first
+  EXPECT_NEAR(block_alpha(scene), std::atan(cx / cy), 1e-12);    // the heel tips first
   EXPECT_NEAR(block.size(), std::hypot(12.55 - cx, cy), 1e-12);  // the toe is the farthest corner
 }
 
@@ -111,7 +112,8 @@ TEST(PolygonProperties, TypeADamBlockMatchesTheHandComputation) {
 // block on the hull's face from the toe to the crest's downstream corner (10, 16.7), after
 // pi - atan(16.7 / 2.55) = 98.7 deg, before the slope could land.
 TEST(PolygonBlockGeometry, TypeADamBlockTouchesTheGroundWithItsConvexHull) {
-  const BlockGeometry block(PolygonBlock{{{0, 16.7}, {0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}}, 1.0});
+  const BlockGeometry block(
+      PolygonBlock{{{0, 16.7}, {0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}}, 1.0});
   ASSERT_EQ(block.corner_count(), 4);
   const double cx = block.corner(0).x, cy = block.corner(0).y;  // heel minus centroid
   EXPECT_NEAR(block.corner(1).x - cx, 12.55, 1e-12);
@@ -159,7 +161,8 @@ TEST(PolygonDefect, NamesTheRuleAndTheVertex) {
   EXPECT_EQ(defect_of({{0, 0}, {1, 0}, {0, NAN}}), "2: coordinates must be finite");
   EXPECT_EQ(defect_of({{0, 0}, {0, 1}, {1, 0}}).substr(0, 16), "-1: is clockwise");
   // (1, 0) is a straight corner (three vertices on the base); (1, 0) again repeats a vertex.
-  EXPECT_EQ(defect_of({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0, 1}}).substr(0, 25), "1: makes a straight corne");
+  EXPECT_EQ(defect_of({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0, 1}}).substr(0, 25),
+            "1: makes a straight corne");
   EXPECT_EQ(defect_of({{0, 0}, {1, 0}, {1, 0}, {1, 1}}).substr(0, 10), "1: makes a");
   // A bow tie, and a pentagram (it turns left at every vertex but winds twice).
   EXPECT_EQ(defect_of({{0, 0}, {1, 0}, {0, 1}, {1, 1}}).substr(0, 19), "-1: crosses itself ");
@@ -172,8 +175,9 @@ TEST(PolygonDefect, NamesTheRuleAndTheVertex) {
   // A diamond stands on a vertex, not an edge; a U stands on two feet.
   EXPECT_EQ(defect_of({{0, -1}, {1, 0}, {0, 1}, {-1, 0}}).substr(0, 37),
             "0: is at the lowest y with 0 other ve");
-  EXPECT_EQ(defect_of({{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 0}, {3, 0}, {3, 2}, {0, 2}}).substr(0, 37),
-            "0: is at the lowest y with 3 other ve");
+  EXPECT_EQ(
+      defect_of({{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 0}, {3, 0}, {3, 2}, {0, 2}}).substr(0, 37),
+      "0: is at the lowest y with 3 other ve");
   // Overhanging so far that the centre of mass is beyond the base's right end.
   EXPECT_EQ(defect_of({{0, 0}, {1, 0}, {5, 1}, {4, 1}}).substr(0, 36),
             "-1: has its centre of mass (x = 2.5)");

@@ -1,8 +1,7 @@
 // The near-fault pulses as pieces: each lambda against its formula written out here, the Makris
 // C_n pulse's return to rest, the Mavroeidis-Papageorgiou acceleration against its velocity, and
 // the extrema the rest mode relies on.
-#include <gsl/gsl_integration.h>
-#include <gtest/gtest.h>
+#include "engine/motion/pulse_shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +9,10 @@
 #include <numbers>
 #include <vector>
 
+#include <gsl/gsl_integration.h>
+#include <gtest/gtest.h>
+
 #include "engine/motion/ground_motion.hpp"
-#include "engine/motion/pulse_shapes.hpp"
 
 namespace blockfrag {
 namespace {
@@ -27,7 +28,9 @@ double integrate(const std::function<double(double)>& f, double a, double b) {
   double sum = 0.0;
   for (int i = 0; i < panels; ++i) {
     const double lo = a + (b - a) * i / panels, hi = a + (b - a) * (i + 1) / panels;
-    gsl_function F{[](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); },
+    gsl_function F{[](double x, void* p) {
+                     return (*static_cast<const std::function<double(double)>*>(p))(x);
+                   },
                    const_cast<std::function<double(double)>*>(&f)};
     sum += gsl_integration_glfixed(&F, lo, hi, table);
   }
@@ -76,7 +79,8 @@ TEST(PulseShapes, MakrisTypeCReturnsTheGroundToRest) {
     // twice-repeated integral), in m/s and m; the pulse's own scale is A g Tp / (2 pi) ~ 1.2 m/s.
     const auto lambda = [&](double s) { return c.pieces().front().lambda(s); };
     const double velocity = -g * integrate(lambda, 0.0, end);
-    const double displacement = -g * integrate([&](double s) { return (end - s) * lambda(s); }, 0.0, end);
+    const double displacement =
+        -g * integrate([&](double s) { return (end - s) * lambda(s); }, 0.0, end);
     EXPECT_NEAR(velocity, 0.0, 1e-12) << n;
     EXPECT_NEAR(displacement, 0.0, 1e-12) << n;
     // Not zero by accident: halfway through, the ground is moving.
@@ -94,7 +98,8 @@ TEST(PulseShapes, RickerWaveletFollowsItsFormulaInsideItsWindow) {
     const double u = pi * (t - t0) / Tp;
     return A * (1 - 2 * u * u) * std::exp(-u * u);
   };
-  for (const double t : {0.0, 0.3, 0.7, 0.75, 0.8, 1.1, 1.49}) EXPECT_NEAR(r.lambda(t), formula(t), 1e-15) << t;
+  for (const double t : {0.0, 0.3, 0.7, 0.75, 0.8, 1.1, 1.49})
+    EXPECT_NEAR(r.lambda(t), formula(t), 1e-15) << t;
   EXPECT_DOUBLE_EQ(r.lambda(t0), A);
   // The default centre cuts tails below 1e-6 A (the brief) at both ends of [0, 2 t0].
   EXPECT_LT(std::abs(r.lambda(0.0)), 1e-6 * std::abs(A));
@@ -179,7 +184,8 @@ void expect_extrema_found(const MotionPiece& piece, double t0, double t1, std::s
     const double slope = piece.lambda(t + step) - piece.lambda(t);
     if ((slope > 0) != (previous > 0)) {
       ++grid_extrema;
-      const bool near = std::any_of(found.begin(), found.end(), [&](double x) { return std::abs(x - t) < 2 * step; });
+      const bool near = std::any_of(found.begin(), found.end(),
+                                    [&](double x) { return std::abs(x - t) < 2 * step; });
       EXPECT_TRUE(near) << "missed the extremum near t = " << t;
     }
     previous = slope;
@@ -214,7 +220,8 @@ TEST(PulseShapes, ZeroSearchFindsTwoZerosInsideOneCell) {
   ASSERT_EQ(zeros.size(), 2u);
   EXPECT_NEAR(zeros[0], 0.3, 1e-15);
   EXPECT_NEAR(zeros[1], 0.3001, 1e-15);
-  EXPECT_TRUE(pulse::zeros_between([](double t) { return 1.0 + t; }, 1.0, 0.0, 1.0, 0.1, 1e-9).empty());
+  EXPECT_TRUE(
+      pulse::zeros_between([](double t) { return 1.0 + t; }, 1.0, 0.0, 1.0, 0.1, 1e-9).empty());
 }
 
 TEST(PulseShapes, PeakLambdaIsTheLargestValueOverAllPieces) {
@@ -222,7 +229,8 @@ TEST(PulseShapes, PeakLambdaIsTheLargestValueOverAllPieces) {
   EXPECT_NEAR(GroundMotionPieces(MakrisPulseC{0.6, 1.0, 2}, g).peak_abs_lambda(), 0.6, 1e-15);
   // nu = pi/2, gamma large: at tau = 0 the three sines add to 2 (Vp Omega / (2 g)).
   const double vp = 0.3, omega = 2 * pi / 0.5;
-  EXPECT_NEAR(GroundMotionPieces(MavroeidisPapageorgiouPulse{vp, 0.5, 5.0, pi / 2, {}}, g).peak_abs_lambda(),
+  EXPECT_NEAR(GroundMotionPieces(MavroeidisPapageorgiouPulse{vp, 0.5, 5.0, pi / 2, {}}, g)
+                  .peak_abs_lambda(),
               vp * omega / g, 1e-12);
 }
 

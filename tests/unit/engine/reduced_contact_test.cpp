@@ -6,9 +6,9 @@
 // Newmark's block slides from rest past |lambda| = mu and goes on while its base moves.
 #include "engine/contact/reduced_contact.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "engine/tolerances.hpp"
 #include "tests/support/contact_states.hpp"
@@ -50,8 +50,8 @@ TEST(HousnerRules, StartsToRockOnlyPastTheTipThresholdAboutThePushedCorner) {
 TEST(HousnerRules, ABlockReleasedTiltedRocksOnItsLowerCorner) {
   // Tilted clockwise (theta < 0) the right corner is the lower one, whatever lambda says.
   for (const double lambda : {0.0, -2.0}) {
-    const ContactOutcome out = HousnerRules(paper_block, true, g)
-                                   .start(turning_about(a, b, -0.1, 0.0, 4.0), lambda);
+    const ContactOutcome out =
+        HousnerRules(paper_block, true, g).start(turning_about(a, b, -0.1, 0.0, 4.0), lambda);
     const auto* rock = std::get_if<RockMode>(&out.mode);
     ASSERT_NE(rock, nullptr) << "lambda = " << lambda;
     EXPECT_EQ(rock->pivot, Corner::right);
@@ -65,8 +65,8 @@ TEST(HousnerRules, ALandingHandsOverToTheOtherCornerWithHousnersRatio) {
   // at omega+ x (centre - corner) = (-omega+ b, omega+ a) = (-0.7, 0.35).
   EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::right), 0.7, 1e-15);
   EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::left), 0.7, 1e-15);
-  const ContactOutcome out =
-      HousnerRules(paper_block, true, g).impact(turning_about(a, b, 0.0, 1.0, a), Corner::right, 0.0);
+  const ContactOutcome out = HousnerRules(paper_block, true, g)
+                                 .impact(turning_about(a, b, 0.0, 1.0, a), Corner::right, 0.0);
   EXPECT_TRUE(out.impact);
   const auto* rock = std::get_if<RockMode>(&out.mode);
   ASSERT_NE(rock, nullptr);

@@ -1,10 +1,10 @@
 // Event location: the bracket always holds the crossing, closes to the tolerance in few
 // evaluations wherever the crossing lies, and stops at a guard's rounding noise when told to.
-#include <gtest/gtest.h>
+#include "engine/integrate/root_finding.hpp"
 
 #include <cmath>
 
-#include "engine/integrate/root_finding.hpp"
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {
@@ -45,8 +45,8 @@ TEST(LocateCrossing, AnEndValueThatSaysLittleDoesNotPinTheEstimateToThatEnd) {
   // points at the start, where the guard is still positive (a corner that lifts and lands later).
   int evaluations = 0;
   const Counted f{4.5e-6, 0.0, &evaluations};
-  const Bracket at = locate_crossing(f, 0.0, 2e-4, std::numeric_limits<double>::min(), f(2e-4),
-                                     1e-15);
+  const Bracket at =
+      locate_crossing(f, 0.0, 2e-4, std::numeric_limits<double>::min(), f(2e-4), 1e-15);
   EXPECT_NEAR(at.after, 4.5e-6, 1e-15);
   EXPECT_LE(evaluations, 30);
 }

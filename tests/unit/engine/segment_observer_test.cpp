@@ -1,9 +1,9 @@
 // The summary's extremes as the observer records them: the deepest corner below the ground.
 #include "engine/segment_observer.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {

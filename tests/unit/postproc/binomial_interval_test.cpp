@@ -3,12 +3,12 @@
 // exact coverage.
 #include "postproc/fragility/binomial_interval.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {
@@ -57,9 +57,10 @@ TEST(WilsonInterval, MatchesReferenceValues) {
 
 // The Wilson bounds are the two roots in p of (x/n - p)^2 = z^2 p (1 - p) / n.
 TEST(WilsonInterval, BoundsSolveTheScoreEquation) {
-  for (const auto& [confidence, z] : std::vector<std::pair<double, double>>{{0.90, z_90}, {0.95, z_95}, {0.99, z_99}}) {
-    for (const auto& [x, n] :
-         std::vector<std::pair<std::int64_t, std::int64_t>>{{1, 3}, {7, 20}, {16, 40}, {123, 1000}}) {
+  for (const auto& [confidence, z] :
+       std::vector<std::pair<double, double>>{{0.90, z_90}, {0.95, z_95}, {0.99, z_99}}) {
+    for (const auto& [x, n] : std::vector<std::pair<std::int64_t, std::int64_t>>{
+             {1, 3}, {7, 20}, {16, 40}, {123, 1000}}) {
       const auto interval = wilson_interval(x, n, confidence);
       const double p_hat = static_cast<double>(x) / static_cast<double>(n);
       for (const double p : {interval.low, interval.high}) {
@@ -85,7 +86,8 @@ TEST(ClopperPearsonInterval, MatchesReferenceValues) {
   EXPECT_NEAR(interval.high, 0.5922, printed);
 }
 
-// With no successes the upper bound solves (1 - p)^n = alpha / 2; with all, the lower one p^n = alpha / 2.
+// With no successes the upper bound solves (1 - p)^n = alpha / 2; with all, the lower one p^n =
+// alpha / 2.
 TEST(ClopperPearsonInterval, MatchesClosedFormsAtTheEnds) {
   for (const std::int64_t n : {1, 5, 40, 1000, 100000}) {
     const double nn = static_cast<double>(n);
@@ -98,16 +100,19 @@ TEST(ClopperPearsonInterval, MatchesClosedFormsAtTheEnds) {
   }
 }
 
-// The lower bound p_L solves P(X >= x | p_L) = alpha / 2 and the upper one P(X <= x | p_U) = alpha / 2,
-// here summed term by term. 2 of 260 is a case where GSL's own beta quantile fails to converge.
+// The lower bound p_L solves P(X >= x | p_L) = alpha / 2 and the upper one P(X <= x | p_U) = alpha
+// / 2, here summed term by term. 2 of 260 is a case where GSL's own beta quantile fails to
+// converge.
 TEST(ClopperPearsonInterval, BoundsSolveTheTailEquations) {
   for (const auto& [x, n] : std::vector<std::pair<std::int64_t, std::int64_t>>{
            {1, 2}, {7, 20}, {16, 40}, {2, 260}, {258, 260}, {7, 291}, {5, 10000}, {5000, 10000}}) {
     for (const double confidence : {0.9, 0.95, 0.99}) {
       const auto interval = clopper_pearson_interval(x, n, confidence);
       const long double tail = 0.5L * (1.0L - confidence);
-      EXPECT_NEAR(static_cast<double>(binomial_at_least(x, n, interval.low) / tail), 1.0, 1e-9) << x << "/" << n;
-      EXPECT_NEAR(static_cast<double>(binomial_at_most(x, n, interval.high) / tail), 1.0, 1e-9) << x << "/" << n;
+      EXPECT_NEAR(static_cast<double>(binomial_at_least(x, n, interval.low) / tail), 1.0, 1e-9)
+          << x << "/" << n;
+      EXPECT_NEAR(static_cast<double>(binomial_at_most(x, n, interval.high) / tail), 1.0, 1e-9)
+          << x << "/" << n;
     }
   }
 }

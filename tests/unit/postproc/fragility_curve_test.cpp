@@ -2,11 +2,11 @@
 // the interval's closed form), levels without trials, and the fit's outcome carried into the curve.
 #include "postproc/fragility/fragility_curve.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "postproc/fragility/lognormal_fit.hpp"
 
@@ -28,7 +28,8 @@ TEST(FragilityFromCounts, ProbabilitiesAndWilsonIntervalsPerLevel) {
   EXPECT_DOUBLE_EQ(curve.probability[0], 0.0);
   EXPECT_DOUBLE_EQ(curve.probability[1], 0.3);
   EXPECT_DOUBLE_EQ(curve.probability[2], 0.95);
-  const std::vector<std::pair<double, double>> expected{wilson(0, 10), wilson(3, 10), wilson(38, 40)};
+  const std::vector<std::pair<double, double>> expected{wilson(0, 10), wilson(3, 10),
+                                                        wilson(38, 40)};
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_NEAR(curve.ci_low[k], expected[k].first, 1e-12) << k;
     EXPECT_NEAR(curve.ci_high[k], expected[k].second, 1e-12) << k;

@@ -1,13 +1,14 @@
 // The lognormal fragility fit against Baker's (2015) check data (docs/references.md), against a
 // likelihood written here from the definition (std::erfc, not the library's tail-safe forms), and
-// through each degenerate case, where the likelihood itself is probed to show the maximum is missing.
+// through each degenerate case, where the likelihood itself is probed to show the maximum is
+// missing.
 #include "postproc/fragility/lognormal_fit.hpp"
-
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {
@@ -18,8 +19,9 @@ struct Data {
   std::vector<std::int64_t> exceedances;
 };
 
-const Data baker{
-    {0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0}, std::vector<std::int64_t>(8, 40), {0, 0, 0, 4, 6, 13, 12, 16}};
+const Data baker{{0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0},
+                 std::vector<std::int64_t>(8, 40),
+                 {0, 0, 0, 4, 6, 13, 12, 16}};
 
 // docs/references.md prints six decimals: half a unit in the last one.
 constexpr double printed = 0.5e-6;
@@ -27,12 +29,14 @@ constexpr double printed = 0.5e-6;
 double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
 // ln L from the definition; with_coefficients adds ln C(n, z).
-double independent_log_likelihood(const Data& d, double median, double beta, bool with_coefficients = true) {
+double independent_log_likelihood(const Data& d, double median, double beta,
+                                  bool with_coefficients = true) {
   double sum = 0.0;
   for (std::size_t j = 0; j < d.im.size(); ++j) {
     const double n = static_cast<double>(d.trials[j]), z = static_cast<double>(d.exceedances[j]);
     const double p = normal_cdf(std::log(d.im[j] / median) / beta);
-    if (with_coefficients) sum += std::lgamma(n + 1.0) - std::lgamma(z + 1.0) - std::lgamma(n - z + 1.0);
+    if (with_coefficients)
+      sum += std::lgamma(n + 1.0) - std::lgamma(z + 1.0) - std::lgamma(n - z + 1.0);
     if (z > 0) sum += z * std::log(p);
     if (n > z) sum += (n - z) * std::log(1.0 - p);
   }
@@ -40,7 +44,8 @@ double independent_log_likelihood(const Data& d, double median, double beta, boo
 }
 
 // Central differences in (ln median, ln beta).
-std::pair<double, double> numerical_gradient(const Data& d, double median, double beta, double h = 1e-5) {
+std::pair<double, double> numerical_gradient(const Data& d, double median, double beta,
+                                             double h = 1e-5) {
   auto at = [&](double dm, double db) {
     return independent_log_likelihood(d, median * std::exp(dm), beta * std::exp(db));
   };
@@ -56,7 +61,8 @@ TEST(LognormalFit, MatchesBakersCheckValues) {
   EXPECT_NEAR(result.median, 1.076116, printed);
   EXPECT_NEAR(result.beta, 0.429237, printed);
   EXPECT_NEAR(-result.log_likelihood, 10.797705, printed);
-  EXPECT_NEAR(-independent_log_likelihood(baker, result.median, result.beta, false), 107.899826, printed);
+  EXPECT_NEAR(-independent_log_likelihood(baker, result.median, result.beta, false), 107.899826,
+              printed);
   EXPECT_EQ(result.median_low, result.median);
   EXPECT_EQ(result.median_high, result.median);
 }
@@ -75,7 +81,8 @@ TEST(LognormalFit, GradientOfAnIndependentLikelihoodVanishesAtTheEstimate) {
   for (const double dm : {-1e-3, 0.0, 1e-3}) {
     for (const double db : {-1e-3, 0.0, 1e-3}) {
       if (dm == 0.0 && db == 0.0) continue;
-      EXPECT_LT(independent_log_likelihood(baker, result.median * std::exp(dm), result.beta * std::exp(db)),
+      EXPECT_LT(independent_log_likelihood(baker, result.median * std::exp(dm),
+                                           result.beta * std::exp(db)),
                 result.log_likelihood);
     }
   }
@@ -85,14 +92,14 @@ TEST(LognormalFit, LikelihoodMatchesAnIndependentEvaluation) {
   for (const double median : {0.3, 1.076116, 4.0})
     for (const double beta : {0.05, 0.4, 2.0}) {
       const double expected = independent_log_likelihood(baker, median, beta);
-      EXPECT_NEAR(lognormal_log_likelihood(baker.im, baker.trials, baker.exceedances, median, beta), expected,
-                  1e-11 * std::abs(expected))
+      EXPECT_NEAR(lognormal_log_likelihood(baker.im, baker.trials, baker.exceedances, median, beta),
+                  expected, 1e-11 * std::abs(expected))
           << median << " " << beta;
     }
 }
 
-// In the far tails Phi underflows and the definition gives -inf; the library's ln L must stay finite
-// and close to its asymptote ln Phi(-t) ~ -t^2/2 - ln(t sqrt(2 pi)).
+// In the far tails Phi underflows and the definition gives -inf; the library's ln L must stay
+// finite and close to its asymptote ln Phi(-t) ~ -t^2/2 - ln(t sqrt(2 pi)).
 TEST(LognormalFit, LikelihoodStaysFiniteInTheFarTails) {
   const std::vector<double> im{1.0};
   const std::vector<std::int64_t> n{1}, z{1};
@@ -224,10 +231,11 @@ TEST(LognormalFit, ReportsQuasiSeparatedDataWithTheBoundaryLevel) {
   EXPECT_EQ(result.median_low, 0.7);
   EXPECT_EQ(result.median_high, 0.7);
   const double p = 13.0 / 40.0;
-  const double expected =
-      std::lgamma(41.0) - std::lgamma(14.0) - std::lgamma(28.0) + 13 * std::log(p) + 27 * std::log(1 - p);
+  const double expected = std::lgamma(41.0) - std::lgamma(14.0) - std::lgamma(28.0) +
+                          13 * std::log(p) + 27 * std::log(1 - p);
   EXPECT_NEAR(result.log_likelihood, expected, 1e-10);
-  const double beta = 1e-3, median = 0.7 * std::exp(beta * 0.4537621901698793);  // Phi(-0.45376...) = 13/40
+  const double beta = 1e-3,
+               median = 0.7 * std::exp(beta * 0.4537621901698793);  // Phi(-0.45376...) = 13/40
   EXPECT_NEAR(independent_log_likelihood(data, median, beta), expected, 1e-6);
 }
 
@@ -276,7 +284,8 @@ TEST(LognormalFit, ReportsEqualProportionsAsNoTrend) {
 
 // The iteration limit ends the fit with a status, never with a half-converged estimate.
 TEST(LognormalFit, ReportsTheIterationLimit) {
-  const auto result = fit_lognormal_fragility(baker.im, baker.trials, baker.exceedances, {1e-10, 1});
+  const auto result =
+      fit_lognormal_fragility(baker.im, baker.trials, baker.exceedances, {1e-10, 1});
   EXPECT_EQ(result.status, FitStatus::not_converged);
   EXPECT_FALSE(result.converged);
   EXPECT_EQ(result.iterations, 1);
@@ -299,8 +308,10 @@ TEST(LognormalFit, RejectsInvalidData) {
   EXPECT_THROW(fit({{0.5, 1.0}, {-1, 10}, {0, 2}}), FitError);
   EXPECT_THROW(fit({{0.5, 1.0}, {10, 10}, {11, 2}}), FitError);
   EXPECT_THROW(fit({{0.5, 1.0}, {10, 10}, {-1, 2}}), FitError);
-  EXPECT_THROW(fit_lognormal_fragility(baker.im, baker.trials, baker.exceedances, {0.0, 100}), FitError);
-  EXPECT_THROW(lognormal_log_likelihood(baker.im, baker.trials, baker.exceedances, 1.0, 0.0), FitError);
+  EXPECT_THROW(fit_lognormal_fragility(baker.im, baker.trials, baker.exceedances, {0.0, 100}),
+               FitError);
+  EXPECT_THROW(lognormal_log_likelihood(baker.im, baker.trials, baker.exceedances, 1.0, 0.0),
+               FitError);
 }
 
 TEST(LognormalFit, NamesEveryStatus) {

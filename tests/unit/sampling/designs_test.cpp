@@ -2,14 +2,14 @@
 // purity that makes samples independent of order, rank count and of the other inputs.
 #include "sampling/designs.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "engine/errors.hpp"
 #include "sampling/philox_stream.hpp"

@@ -2,14 +2,14 @@
 // for the constants), truncation bounds at the extreme u, monotonicity, and validation messages.
 #include "sampling/distributions.hpp"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <variant>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace blockfrag {
 namespace {

@@ -1,13 +1,13 @@
 // Counter-based streams: known answers pin the generator, the key/counter layout and the
 // bits-to-double map, so neither a library upgrade nor a refactoring can silently change every
 // study's inputs.
-#include <Random123/philox.h>
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <set>
+
+#include <Random123/philox.h>
+#include <gtest/gtest.h>
 
 #include "sampling/philox_stream.hpp"
 
