@@ -122,8 +122,11 @@ void validate_dam(const DamCrest& dam) {
   require_in(domain::participation, dam.participation, "dam participation");
 }
 
-void validate_solver(const SolverSettings& solver) {
+void validate_solver(const SolverSettings& solver, double duration) {
   require_in(domain::rk4_step, solver.dt, "solver dt");
+  require(
+      solver.method != Method::rk4 || duration / solver.dt <= static_cast<double>(solver.max_steps),
+      "solver dt needs more steps for the duration than max_steps");
   require_in(domain::tolerance, solver.tolerance, "solver tolerance");
   require_in(domain::max_steps, static_cast<double>(solver.max_steps), "solver max_steps");
   require_in(domain::max_events, static_cast<double>(solver.max_events), "solver max_events");
@@ -141,7 +144,7 @@ void validate_scene(const Scene& scene) {
   const bool has_vertical = !std::holds_alternative<NoMotion>(scene.vertical_motion);
   require(scene.effects.automatic || has_vertical == scene.effects.vertical,
           "effects list \"vertical\" exactly when the scene has a vertical_motion");
-  validate_solver(scene.solver);
+  validate_solver(scene.solver, scene.duration);
   validate_motion(scene.ground_motion);
   validate_motion(scene.vertical_motion);
   if (scene.dam) validate_dam(*scene.dam);

@@ -11,6 +11,7 @@
 #include "engine/scene/block_geometry.hpp"
 #include "engine/simulate.hpp"
 #include "mpi_driver/cli/cli_validators.hpp"
+#include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/io/history_csv.hpp"
 #include "mpi_driver/io/summary_json.hpp"
@@ -18,6 +19,10 @@
 namespace blockfrag {
 
 namespace {
+
+// A history longer than this (about 1 GB of CSV) is refused before the run: rows are held in
+// memory until the file is written.
+constexpr double kMaxHistoryRows = 1e7;
 
 // Past this many the mode sequence of a chattering block says nothing more to a reader.
 constexpr std::size_t modes_shown = 20;
@@ -71,6 +76,12 @@ void write_simulate_report(std::ostream& out, const Scene& scene, const Summary&
 
 int run_simulate(const SimulateOptions& options, std::ostream& out) {
   const Scene scene = read_scene_file(options.scene_path);
+  if (options.history_path && scene.duration / options.history_interval > kMaxHistoryRows) {
+    throw ConfigError({"--history-interval: " + fixed(options.history_interval) +
+                       " s over the scene's " + fixed(scene.duration) +
+                       " s would write more than " + fixed(kMaxHistoryRows) +
+                       " rows; choose at least " + fixed(scene.duration / kMaxHistoryRows) + " s"});
+  }
   Summary summary;
   if (options.history_path) {
     auto result = simulate_with_history(scene, options.history_interval);

@@ -1,5 +1,6 @@
 #include "mpi_driver/config/scene_json.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -162,6 +163,13 @@ SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) 
   solver.max_steps = reader.integer_or("max_steps", solver.max_steps, Range::of(domain::max_steps));
   solver.max_events =
       reader.integer_or("max_events", solver.max_events, Range::of(domain::max_events));
+  // A fixed step needs duration / dt steps at least: refused now rather than failing at the budget.
+  if (method == Method::rk4 && duration &&
+      *duration / solver.dt > static_cast<double>(solver.max_steps)) {
+    reader.add_error("dt", "needs " + format_number(std::ceil(*duration / solver.dt)) +
+                               " steps for the duration, more than max_steps (" +
+                               std::to_string(solver.max_steps) + ")");
+  }
   if (method) reader.finish("for method \"" + std::string(method_name(*method)) + "\"");
   return solver;
 }
