@@ -64,6 +64,7 @@ class Simulation {
         motion_(scene_motion(scene)),
         vertical_(scene_vertical_motion(scene)),
         model_(choose_model(scene, motion_, geometry_)),
+        excitation_end_(std::max(motion_.end_of_motion(), vertical_.end_of_motion())),
         resolver_(geometry_, scene.contact, scene.g),
         housner_(geometry_, scene.effects.automatic || scene.effects.impact, scene.g),
         newmark_(geometry_, scene.contact.friction, scene.g),
@@ -109,6 +110,8 @@ class Simulation {
         mode_);
   }
   BlockState initial_state() const;
+  // At rest with every excitation over: nothing can move the block again.
+  bool at_rest_for_good() const;
   ContactOutcome resolve_contact() const;
   bool mode_holds_under(const MotionPiece& piece) const;
   void enter(const ContactOutcome& outcome);
@@ -134,6 +137,8 @@ class Simulation {
   GroundMotionPieces motion_;
   GroundMotionPieces vertical_;  // lambda_v; zero throughout when the scene has none
   Model model_;
+  double
+      excitation_end_;  // s: the ground, the vertical motion and the dam crest are still after it
   ContactResolver resolver_;
   HousnerRules housner_;
   NewmarkRules newmark_;
@@ -144,6 +149,8 @@ class Simulation {
   Mode mode_ = RestMode{};
   bool stopped_ = false;
   std::optional<GuardEvent> last_event_;  // what ended the last integrated stretch, if a guard did
+  double rest_since_ = 0.0;               // when the block last came to rest
+  double run_end_ = 0.0;                  // where the run stops at the latest
   int stalled_events_ = 0;
   bool log_impacts_;
   std::vector<ImpactRecord> impact_log_;
@@ -201,6 +208,9 @@ void Simulation::enter(const ContactOutcome& outcome) {
   }
   const bool first = summary_.modes.empty();
   const ModeKind before = mode_kind(mode_);
+  if (std::holds_alternative<RestMode>(outcome.mode) && (first || before != ModeKind::rest)) {
+    rest_since_ = t_;
+  }
   const bool was_rocking =
       std::holds_alternative<RockMode>(mode_) || std::holds_alternative<SlideRockMode>(mode_);
   mode_ = outcome.mode;
@@ -315,7 +325,13 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
   const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
   const double t0 = t_;
   const double min_step = kFlightMinStep * std::sqrt(geometry_.size() / g);
-  double t_end = t_stop;
+  // The flight ends where it lands or overturns. When this stretch ends the run, both are looked
+  // for up to where the centre of mass would reach the ground in free fall (a corner lands before
+  // that), not up to the run's end: where a run ends then cannot move a landing it reaches, and a
+  // run past the settle time gives the settled run's summary.
+  const bool ends_run = t_stop >= run_end_;
+  double t_end =
+      ends_run ? t0 + (start.vy + std::sqrt(start.vy * start.vy + 2.0 * g * start.y)) / g : t_stop;
   bool overturns = false;
   if (start.omega != 0.0) {
     const double tau = (geometry_.overturn_theta(start.omega) - start.theta) / start.omega;
@@ -329,6 +345,10 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
       t_end = t0 + *landing;
       overturns = false;
     }
+  }
+  if (t_end > t_stop) {  // the run ends first
+    t_end = t_stop;
+    overturns = false;
   }
   // Only the horizontal drift feels the ground motion.
   OdeState<2> q{state_.x, state_.vx};
@@ -441,8 +461,11 @@ void Simulation::run() {
   state_ = initial_state();
   observer_.start(state_);
   enter(resolve_contact());
-  const double t_end = scene_.duration;
+  run_end_ = run_end_time(scene_, motion_, vertical_);
+  const double t_end = run_end_;
   while (!stopped_ && t_ < t_end) {
+    // Settling: once every excitation is over, a block at rest stays at rest.
+    if (!scene_.duration && at_rest_for_good()) break;
     const MotionPiece& piece = motion_.piece_at(t_);
     const double t_stop = std::min({t_end, piece.end(), vertical_.piece_at(t_).end()});
     const double t_before = t_;
@@ -482,9 +505,19 @@ bool Simulation::mode_holds_under(const MotionPiece& piece) const {
   });
 }
 
+bool Simulation::at_rest_for_good() const {
+  return std::holds_alternative<RestMode>(mode_) && t_ >= excitation_end_;
+}
+
 // Also called when the scene fails: the summary then tells where it stopped.
 void Simulation::finish() {
   summary_.end_time = t_;
+  summary_.settled = summary_.status == Status::ok && (summary_.overturned || at_rest_for_good());
+  if (summary_.overturned) {
+    summary_.settle_time = summary_.overturn_time;
+  } else if (summary_.settled) {
+    summary_.settle_time = rest_since_;
+  }
   summary_.final_theta = state_.theta;
   summary_.final_slide = state_.x - observer_.x0();
   observer_.finish(t_, state_, forces_now(), mode_kind(mode_));
@@ -522,6 +555,11 @@ SimulationWithHistory run_scene(const Scene& scene, double output_interval) {
 }  // namespace
 
 Summary simulate(const Scene& scene) { return run_scene(scene, 0.0).summary; }
+
+double scene_run_end_time(const Scene& scene) {
+  validate_scene(scene);
+  return run_end_time(scene, scene_motion(scene), scene_vertical_motion(scene));
+}
 
 SimulationWithHistory simulate_with_history(const Scene& scene, double output_interval) {
   if (!(output_interval > 0)) throw ContractViolation("output interval must be > 0");

@@ -13,6 +13,11 @@ namespace blockfrag {
 // (engine/errors.hpp).
 Summary simulate(const Scene& scene);
 
+// Where a run of the scene stops at the latest (s): its duration, or for a settling run its
+// max_duration or the default cap after the last excitation. Throws InvalidInput for an invalid
+// scene.
+double scene_run_end_time(const Scene& scene);
+
 struct SimulationWithHistory {
   Summary summary;
   std::vector<HistoryRow> history;  // rows at t = 0, dt, 2 dt, ... and the end time

@@ -43,7 +43,12 @@ struct Summary {
   std::optional<double> first_impact_time;
   long impacts = 0;
   std::vector<ModeChange> modes;
-  double end_time = 0.0;  // s, where the simulation stopped (duration, or overturning)
+  double end_time = 0.0;  // s, where the simulation stopped (duration, settling, or overturning)
+  // The block's fate is final at the end: every excitation has ended and it rests on its base, or
+  // it has overturned. settle_time: since when it rests for good (0 if it never moved), or the
+  // overturning time; none when not settled.
+  bool settled = false;
+  std::optional<double> settle_time;
 
   long steps = 0;
   long rhs_evaluations = 0;

@@ -82,6 +82,15 @@ inline constexpr double kOutputTimeRounding = 1e-15;
 // point; a given pulse start t0 within this of its lower bound is at the bound.
 inline constexpr double kGridRounding = 1e-12;
 
+// --- Settling: the run without a duration -------------------------------------------------------
+// A run that has not settled stops this long after the last excitation ends (unless the scene
+// gives max_duration): a rocking block with e < 1 settles within seconds; one with e = 1 never
+// does.
+inline constexpr double kSettleAllowance = 60.0;  // s
+// The dam's ringing has ended once the crest's acceleration is below this (in g): a thousand times
+// below any friction or tipping threshold of a real block.
+inline constexpr double kRingingEnd = 1e-6;
+
 // --- Budgets: what stops a scene that does not end
 // -------------------------------------------------- The defaults of a scene's max_steps and
 // max_events: far above any real scene (a 600 s record with 20,000 impacts takes under 2 million

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "engine/errors.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -98,7 +99,7 @@ OscillatorState NigamJenningsStep::operator()(const OscillatorState& s, double a
 }
 
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,
-                               double duration, double g) {
+                               double duration, double g, bool until_quiet) {
   const double period = dam_period(dam);
   const double omega = 2 * std::numbers::pi / period;
   const double zeta = dam.damping, gamma_phi = dam.participation;
@@ -132,9 +133,20 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
     h.crest_lambda.push_back(-(a_g + gamma_phi * a_rel) / g);
   };
 
+  // After the foundation stops, the crest rings freely: q = A e^{-zeta omega t} cos(omega_d t -
+  // phi), whose every derivative has amplitude omega times the one before, so |lambda_crest| is at
+  // most Gamma phi omega^2 A / g.
+  const double omega_d = omega * std::sqrt(1.0 - zeta * zeta);
+  const auto quiet = [&](const OscillatorState& s) {
+    const double amplitude = std::hypot(s.q, (s.v + zeta * omega * s.q) / omega_d);
+    return gamma_phi * omega * omega * amplitude / g < kRingingEnd;
+  };
+  const double foundation_end = foundation.end_of_motion();
+
   OscillatorState state;
   for (const PieceGrid& grid : grids) {
     const MotionPiece& piece = *grid.piece;
+    const bool ringing = until_quiet && grid.start >= foundation_end;
     const double a_start = -piece.lambda(grid.start) * g;
     if (h.times.empty() || a_start != h.foundation_acceleration.back()) {
       record(grid.start, a_start, state);
@@ -148,14 +160,15 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
       state = advance(state, a0, a1);
       record(t, a1, state);
       a0 = a1;
+      if (ringing && quiet(state)) return h;
     }
   }
   return h;
 }
 
 GroundMotionPieces dam_crest_motion(const GroundMotionPieces& foundation, const DamCrest& dam,
-                                    double duration, double g) {
-  CrestHistory history = dam_crest_history(foundation, dam, duration, g);
+                                    double duration, double g, bool until_quiet) {
+  CrestHistory history = dam_crest_history(foundation, dam, duration, g, until_quiet);
   // A repeated node whose crest value did not jump (participation 1 makes the crest continuous
   // where the foundation jumps) would only be an empty piece.
   std::vector<double> times, lambdas;

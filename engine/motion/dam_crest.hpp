@@ -57,12 +57,15 @@ struct CrestHistory {
 // scene's duration (period / 100 per node) is refused with InvalidInput.
 constexpr std::size_t kMaxCrestNodes = 2'000'000;
 
+// Up to `duration`; with until_quiet, the history ends earlier once the foundation has stopped
+// and the crest's free ringing can no longer exceed kRingingEnd (engine/tolerances.hpp).
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,
-                               double duration, double g);
+                               double duration, double g, bool until_quiet = false);
 
 // The crest motion as the block feels it: the history's lambdas, linear between nodes, zero after
-// the duration. The dam keeps ringing after the foundation stops, up to the duration.
+// the history ends. The dam keeps ringing after the foundation stops, up to the duration, or with
+// until_quiet until its ringing has died out.
 GroundMotionPieces dam_crest_motion(const GroundMotionPieces& foundation, const DamCrest& dam,
-                                    double duration, double g);
+                                    double duration, double g, bool until_quiet = false);
 
 }  // namespace blockfrag

@@ -96,6 +96,8 @@ class GroundMotionPieces {
   const std::vector<MotionPiece>& pieces() const { return pieces_; }
   // The largest |lambda| (the peak ground acceleration in g): at the pieces' ends and extrema.
   double peak_abs_lambda() const;
+  // Where the motion ends: lambda is zero from here on (0 for no motion).
+  double end_of_motion() const { return pieces_.back().start(); }
 
  private:
   void add(const MotionPiece::Formula& formula, double end);

@@ -1,6 +1,9 @@
 #include "engine/motion/scene_motion.hpp"
 
+#include <algorithm>
+
 #include "engine/motion/dam_crest.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -35,7 +38,17 @@ GroundMotion upward(GroundMotion motion) {
 GroundMotionPieces scene_motion(const Scene& scene) {
   GroundMotionPieces foundation(fitted_to_solver(scene.ground_motion, scene.solver), scene.g);
   if (!scene.dam) return foundation;
-  return dam_crest_motion(foundation, *scene.dam, scene.duration, scene.g);
+  if (scene.duration) return dam_crest_motion(foundation, *scene.dam, *scene.duration, scene.g);
+  // Settling: the crest is followed until its ringing dies out, within the run's cap.
+  const double horizon = scene.max_duration.value_or(foundation.end_of_motion() + kSettleAllowance);
+  return dam_crest_motion(foundation, *scene.dam, horizon, scene.g, true);
+}
+
+double run_end_time(const Scene& scene, const GroundMotionPieces& motion,
+                    const GroundMotionPieces& vertical) {
+  if (scene.duration) return *scene.duration;
+  if (scene.max_duration) return *scene.max_duration;
+  return std::max(motion.end_of_motion(), vertical.end_of_motion()) + kSettleAllowance;
 }
 
 GroundMotionPieces scene_vertical_motion(const Scene& scene) {

@@ -12,4 +12,9 @@ GroundMotionPieces scene_motion(const Scene& scene);
 // horizontal only).
 GroundMotionPieces scene_vertical_motion(const Scene& scene);
 
+// Where the run stops at the latest: the scene's duration, or (settling) its max_duration, or
+// kSettleAllowance after the last of its motions ends.
+double run_end_time(const Scene& scene, const GroundMotionPieces& motion,
+                    const GroundMotionPieces& vertical);
+
 }  // namespace blockfrag

@@ -124,8 +124,14 @@ struct Scene {
   // g (1 + lambda_v), and the block leaves the ground when the ground falls faster than g.
   GroundMotion vertical_motion = NoMotion{};
   std::optional<DamCrest> dam;  // none: the block stands on the foundation
-  double duration = 4.0;        // s
-  double g = 9.81;              // m/s^2
+  // The simulated time, s. None: the run goes on until the block has settled (every excitation,
+  // the dam crest's ringing included, has ended and the block is at rest on its base, or it has
+  // overturned), and stops unsettled at max_duration.
+  std::optional<double> duration = 4.0;
+  // Without a duration, where a run that has not settled stops (s); none: kSettleAllowance after
+  // the last excitation ends.
+  std::optional<double> max_duration;
+  double g = 9.81;  // m/s^2
   SolverSettings solver;
   InitialState initial;
 };

@@ -122,11 +122,11 @@ void validate_dam(const DamCrest& dam) {
   require_in(domain::participation, dam.participation, "dam participation");
 }
 
-void validate_solver(const SolverSettings& solver, double duration) {
+void validate_solver(const SolverSettings& solver, std::optional<double> longest_run) {
   require_in(domain::rk4_step, solver.dt, "solver dt");
-  require(
-      solver.method != Method::rk4 || duration / solver.dt <= static_cast<double>(solver.max_steps),
-      "solver dt needs more steps for the duration than max_steps");
+  require(solver.method != Method::rk4 || !longest_run ||
+              *longest_run / solver.dt <= static_cast<double>(solver.max_steps),
+          "solver dt needs more steps for the duration than max_steps");
   require_in(domain::tolerance, solver.tolerance, "solver tolerance");
   require_in(domain::max_steps, static_cast<double>(solver.max_steps), "solver max_steps");
   require_in(domain::max_events, static_cast<double>(solver.max_events), "solver max_events");
@@ -138,13 +138,16 @@ void validate_scene(const Scene& scene) {
   validate_block(scene);
   require_in(domain::friction, scene.contact.friction, "friction");
   require_in(domain::restitution, scene.contact.restitution, "restitution");
-  require_in(domain::duration, scene.duration, "duration");
+  if (scene.duration) require_in(domain::duration, *scene.duration, "duration");
+  if (scene.max_duration) require_in(domain::duration, *scene.max_duration, "max_duration");
+  require(!(scene.duration && scene.max_duration),
+          "give duration (a fixed run) or max_duration (a run to settle), not both");
   require_in(domain::g, scene.g, "g");
   model_named_by(scene.effects);
   const bool has_vertical = !std::holds_alternative<NoMotion>(scene.vertical_motion);
   require(scene.effects.automatic || has_vertical == scene.effects.vertical,
           "effects list \"vertical\" exactly when the scene has a vertical_motion");
-  validate_solver(scene.solver, scene.duration);
+  validate_solver(scene.solver, scene.duration ? scene.duration : scene.max_duration);
   validate_motion(scene.ground_motion);
   validate_motion(scene.vertical_motion);
   if (scene.dam) validate_dam(*scene.dam);

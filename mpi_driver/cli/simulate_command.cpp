@@ -50,6 +50,10 @@ void write_simulate_report(std::ostream& out, const Scene& scene, const Summary&
   } else {
     out << "verdict: did not overturn\n";
   }
+  out << "settled: "
+      << (summary.settled ? "yes, at " + time_or_never(summary.settle_time)
+                          : std::string("no (still moving, or the motion goes on, at the end)"))
+      << "\n";
   out << "max |theta|: " << fixed(summary.max_abs_theta)
       << " rad = " << fixed(summary.max_abs_theta / alpha)
       << " alpha (alpha = " << (scene.polygon ? "atan(easier corner's tip threshold)" : "atan(a/b)")
@@ -76,11 +80,14 @@ void write_simulate_report(std::ostream& out, const Scene& scene, const Summary&
 
 int run_simulate(const SimulateOptions& options, std::ostream& out) {
   const Scene scene = read_scene_file(options.scene_path);
-  if (options.history_path && scene.duration / options.history_interval > kMaxHistoryRows) {
-    throw ConfigError({"--history-interval: " + fixed(options.history_interval) +
-                       " s over the scene's " + fixed(scene.duration) +
-                       " s would write more than " + fixed(kMaxHistoryRows) +
-                       " rows; choose at least " + fixed(scene.duration / kMaxHistoryRows) + " s"});
+  if (options.history_path) {
+    const double longest = scene_run_end_time(scene);
+    if (longest / options.history_interval > kMaxHistoryRows) {
+      throw ConfigError({"--history-interval: " + fixed(options.history_interval) +
+                         " s over the scene's " + fixed(longest) + " s would write more than " +
+                         fixed(kMaxHistoryRows) + " rows; choose at least " +
+                         fixed(longest / kMaxHistoryRows) + " s"});
+    }
   }
   Summary summary;
   if (options.history_path) {

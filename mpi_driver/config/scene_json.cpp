@@ -265,10 +265,16 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
     errors.add(path / "effects", "lists \"vertical\" exactly when the scene has a vertical_motion");
   }
   scene.dam = read_dam(root.object("dam"));
-  const auto duration = root.required_number("duration", Range::of(domain::duration));
-  if (duration) scene.duration = *duration;
+  // Without a duration the run settles (engine/scene/scene.hpp), at most max_duration.
+  const auto duration = root.number("duration", Range::of(domain::duration));
+  scene.duration = duration;
+  scene.max_duration = root.number("max_duration", Range::of(domain::duration));
+  if (duration && scene.max_duration) {
+    root.add_error("max_duration",
+                   "give duration (a fixed run) or max_duration (a run to settle), not both");
+  }
   scene.g = root.number_or("g", scene.g, Range::of(domain::g));
-  scene.solver = read_solver(root.object("solver"), duration);
+  scene.solver = read_solver(root.object("solver"), duration ? duration : scene.max_duration);
   scene.initial = read_initial(root.object("initial"));
   if (scene.polygon)
     check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);
@@ -289,10 +295,12 @@ json scene_to_json(const Scene& scene) {
               {"contact",
                {{"friction", scene.contact.friction}, {"restitution", scene.contact.restitution}}},
               {"ground_motion", ground_motion_to_json(scene.ground_motion)},
-              {"duration", scene.duration},
               {"g", scene.g},
               {"solver", solver_to_json(scene.solver)},
               {"initial", {{"theta", scene.initial.theta}}}};
+  // A settling run has no duration, and a max_duration only when the scene gives one.
+  if (scene.duration) out["duration"] = *scene.duration;
+  if (scene.max_duration) out["max_duration"] = *scene.max_duration;
   if (scene.dam) out["dam"] = dam_to_json(*scene.dam);
   if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) {
     out["vertical_motion"] = ground_motion_to_json(scene.vertical_motion);

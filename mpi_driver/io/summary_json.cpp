@@ -32,6 +32,8 @@ nlohmann::json summary_to_json(const Summary& summary) {
           {"impacts", summary.impacts},
           {"modes", std::move(modes)},
           {"end_time", summary.end_time},
+          {"settled", summary.settled},
+          {"settle_time", optional_time(summary.settle_time)},
           {"steps", summary.steps},
           {"rhs_evaluations", summary.rhs_evaluations},
           {"events", summary.events},

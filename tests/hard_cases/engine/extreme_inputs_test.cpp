@@ -44,7 +44,7 @@ TEST_P(BothMethods, TinyAndHugeBlocksFollowSimilarity) {
     Scene scaled = base;
     scaled.block.half_width *= k;
     scaled.block.half_height *= k;
-    scaled.duration *= std::sqrt(k);
+    scaled.duration = *scaled.duration * std::sqrt(k);
     std::get<CosinePulse>(scaled.ground_motion).period *= std::sqrt(k);
     if (GetParam() == Method::rk4) scaled.solver.dt *= std::sqrt(k);
     const Summary s = simulate(scaled);

@@ -89,7 +89,7 @@ TEST(Similarity, ScaledBlocksGiveTheSameRotationInScaledTime) {
       Scene scaled = base;
       scaled.block.half_width *= k;
       scaled.block.half_height *= k;
-      scaled.duration *= std::sqrt(k);
+      scaled.duration = *scaled.duration * std::sqrt(k);
       std::visit(
           [k](auto& m) {
             if constexpr (requires { m.period; }) m.period *= std::sqrt(k);

@@ -252,8 +252,8 @@ TEST(SceneJson, KeysOfAnotherMethodOrTypeAreUnknown) {
 
 TEST(SceneJson, RequiredKeysAreNamed) {
   for (const char* pointer :
-       {"/block", "/contact", "/ground_motion", "/duration", "/block/half_width",
-        "/block/half_height", "/contact/friction", "/contact/restitution", "/ground_motion/type",
+       {"/block", "/contact", "/ground_motion", "/block/half_width", "/block/half_height",
+        "/contact/friction", "/contact/restitution", "/ground_motion/type",
         "/ground_motion/amplitude_g", "/ground_motion/period"}) {
     EXPECT_EQ(errors_of(without(paper_scene(), pointer)),
               "scene.json: " + std::string(pointer) + ": is required");
@@ -261,6 +261,29 @@ TEST(SceneJson, RequiredKeysAreNamed) {
   EXPECT_EQ(errors_of(with(paper_scene(), "/ground_motion",
                            json{{"type", "rectangular_pulse"}, {"amplitude_g", 1}})),
             "scene.json: /ground_motion/duration: is required");
+}
+
+// Without a duration the run settles (at most max_duration); the two are exclusive, and the
+// canonical form keeps whichever was given.
+TEST(SceneJson, DurationIsOptionalAndExclusiveWithMaxDuration) {
+  const Scene settling = scene_from_json(without(paper_scene(), "/duration"), "scene.json");
+  EXPECT_FALSE(settling.duration.has_value());
+  EXPECT_FALSE(settling.max_duration.has_value());
+  const json canonical = scene_to_json(settling);
+  EXPECT_FALSE(canonical.contains("duration"));
+  EXPECT_FALSE(canonical.contains("max_duration"));
+
+  const Scene capped = scene_from_json(
+      with(without(paper_scene(), "/duration"), "/max_duration", 30.0), "scene.json");
+  EXPECT_EQ(capped.max_duration, 30.0);
+  EXPECT_EQ(scene_to_json(capped).at("max_duration"), 30.0);
+  EXPECT_EQ(scene_from_json(scene_to_json(capped), "canonical.json").max_duration, 30.0);
+
+  EXPECT_EQ(errors_of(with(paper_scene(), "/max_duration", 30.0)),
+            "scene.json: /max_duration: give duration (a fixed run) or max_duration (a run to "
+            "settle), not both");
+  EXPECT_EQ(errors_of(with(without(paper_scene(), "/duration"), "/max_duration", 0.0)),
+            "scene.json: /max_duration: must be in (0, 1e+05] (got 0)");
 }
 
 TEST(SceneJson, BoundaryValuesAreAccepted) {
@@ -286,7 +309,6 @@ TEST(SceneJson, EveryErrorIsReportedTogether) {
             "scene.json: /block/half_width: must be in [1e-04, 10000] (got -1)\n"
             "scene.json: /contact/restitution: must be in [0, 1] (got 2)\n"
             "scene.json: /contact/frictoin: unknown key; did you mean \"friction\"?\n"
-            "scene.json: /duration: is required\n"
             "scene.json: /g: must be a number, not a string (got \"9.81\")");
 }
 
