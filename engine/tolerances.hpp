@@ -64,19 +64,18 @@ inline constexpr double kFlightMinStep = 1e-4;
 // (the guards' arming margin).
 inline constexpr double kLandingSinkAllowance = 1e-12;
 
-// --- Ground motion: where a pulse's lambda has its extremes
-// --------------------------------------- Extremes without a closed form (the
-// Mavroeidis-Papageorgiou pulse) are searched in cells of 1/64 of the fastest period, each proved
-// empty or searched by the bound on the slope's derivative; a maximum and minimum this close in
-// lambda (over the pulse's scale) are one flat point, far below the onset margin above; a zero of
-// the slope is located to this fraction of the slope's largest change over a cell.
+// --- Ground motion: where a pulse's lambda has its extremes --------------------------------------
+// Extremes without a closed form (the Mavroeidis-Papageorgiou pulse) are searched in cells of 1/64
+// of the fastest period, each proved empty or searched by the bound on the slope's derivative; a
+// maximum and minimum this close in lambda (over the pulse's scale) are one flat point, far below
+// the onset margin above; a zero of the slope is located to this fraction of the slope's largest
+// change over a cell.
 inline constexpr double kExtremumCellsPerPeriod = 64.0;
 inline constexpr double kNegligibleExtremumPair = 1e-15;
 inline constexpr double kSlopeZeroTolerance = 1e-12;
 
-// --- Rounding: comparisons of values computed two ways
-// -------------------------------------------- A history row due at time t belongs to the step that
-// ends within this relative distance of t.
+// --- Rounding: comparisons of values computed two ways -------------------------------------------
+// A history row due at time t belongs to the step that ends within this relative distance of t.
 inline constexpr double kOutputTimeRounding = 1e-15;
 // A record resampled onto a step grid keeps a last sample within this relative distance of a grid
 // point; a given pulse start t0 within this of its lower bound is at the bound.
@@ -91,10 +90,9 @@ inline constexpr double kSettleAllowance = 60.0;  // s
 // below any friction or tipping threshold of a real block.
 inline constexpr double kRingingEnd = 1e-6;
 
-// --- Budgets: what stops a scene that does not end
-// -------------------------------------------------- The defaults of a scene's max_steps and
-// max_events: far above any real scene (a 600 s record with 20,000 impacts takes under 2 million
-// steps), so only a pathology reaches them.
+// --- Budgets: what stops a scene that does not end -----------------------------------------------
+// The defaults of a scene's max_steps and max_events: far above any real scene (a 600 s record with
+// 20,000 impacts takes under 2 million steps), so only a pathology reaches them.
 inline constexpr long kDefaultMaxSteps = 50'000'000;
 inline constexpr long kDefaultMaxEvents = 1'000'000;
 // The step budget is checked every this many steps (and at every event): a power of two minus

@@ -87,9 +87,8 @@ inline constexpr Domain elastic_modulus{1e6, 1e13, true, true, "Pa"};
 inline constexpr Domain dam_damping{0.0, 1.0, true, false, ""};
 inline constexpr Domain participation{0.0, 100.0, false, true, ""};
 
-// --- The run
-// -------------------------------------------------------------------------------------- A scene's
-// duration: up to about 28 hours of motion.
+// --- The run -------------------------------------------------------------------------------------
+// A scene's duration: up to about 28 hours of motion.
 inline constexpr Domain duration{0.0, 1e5, false, true, "s"};
 // Gravity: the Moon's 1.6 to a centrifuge's 100 g.
 inline constexpr Domain g{1e-2, 1e3, true, true, "m/s^2"};

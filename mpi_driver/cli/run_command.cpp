@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -91,11 +92,47 @@ Verdict judge_existing_output(const StudyConfig& config, std::string& message) {
   return Verdict::refused;
 }
 
-// Any error inside the distributed run leaves other ranks waiting on messages: abort them all.
+// The exit code for an error of this kind (mpi_driver/cli/exit_codes.hpp).
+int exit_code_for(const std::exception& error) {
+  if (dynamic_cast<const InvalidInput*>(&error)) return exit_code_bad_input;
+  if (dynamic_cast<const ContractViolation*>(&error)) return exit_code_internal_error;
+  return exit_code_file_failure;
+}
+
+// Any error inside the distributed run leaves other ranks waiting on messages: abort them all,
+// with the exit code of the error's kind.
 [[noreturn]] void abort_run(MPI_Comm comm, int rank, const std::exception& error) {
-  std::cerr << "blockfrag: rank " << rank << ": " << error.what() << '\n' << std::flush;
-  MPI_Abort(comm, 1);
+  const bool bug = dynamic_cast<const ContractViolation*>(&error) != nullptr;
+  std::cerr << "blockfrag: rank " << rank << ": "
+            << (bug ? "internal error (a bug, please report it with the input): " : "")
+            << error.what() << '\n'
+            << std::flush;
+  MPI_Abort(comm, exit_code_for(error));
   std::abort();
+}
+
+// Rank 0, once every sample is done: the output, the failures' summary, the exit code.
+int finish_study(const StudyConfig& config, const RunSettings& settings, const RunResult& result,
+                 const SceneEvaluator& engine) {
+  write_study_output(config.output, config, result.records);
+  std::filesystem::remove(settings.checkpoint);
+  std::cerr << "wrote " << config.output.string() << " (" << result.computed
+            << " samples computed in this run, " << result.checkpoints << " checkpoints taking "
+            << result.checkpoint_seconds << " s)\n";
+  const FailureReport failures = report_failures(config, result.records, engine);
+  if (failures.total() > 0) {
+    std::cerr << failures.failed << " failed and " << failures.rejected << " rejected of "
+              << config.total_samples()
+              << " samples (excluded from the fragility trials); the first:\n";
+    for (const auto& reason : failures.first_reasons) std::cerr << "  " << reason << '\n';
+  }
+  if (too_many_failures(config, failures)) {
+    std::cerr << "more than allowed_failed_fraction = " << config.allowed_failed_fraction
+              << " of the samples gave no verdict: exit code " << exit_code_simulation_failed
+              << '\n';
+    return exit_code_simulation_failed;
+  }
+  return exit_code_success;
 }
 
 }  // namespace
@@ -183,28 +220,20 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
     }
     return exit_code_interrupted;
   }
+  // Rank 0 finishes alone; whatever happens there, every rank learns its exit code (a rank left
+  // waiting on the broadcast would hang the job), then rank 0 reports an error the usual way.
   int exit_code = exit_code_success;
+  std::exception_ptr failure;
   if (rank == 0) {
-    write_study_output(config.output, config, result.records);
-    std::filesystem::remove(settings.checkpoint);
-    std::cerr << "wrote " << config.output.string() << " (" << result.computed
-              << " samples computed in this run, " << result.checkpoints << " checkpoints taking "
-              << result.checkpoint_seconds << " s)\n";
-    const FailureReport failures = report_failures(config, result.records, engine);
-    if (failures.total() > 0) {
-      std::cerr << failures.failed << " failed and " << failures.rejected << " rejected of "
-                << config.total_samples()
-                << " samples (excluded from the fragility trials); the first:\n";
-      for (const auto& reason : failures.first_reasons) std::cerr << "  " << reason << '\n';
-    }
-    if (too_many_failures(config, failures)) {
-      std::cerr << "more than allowed_failed_fraction = " << config.allowed_failed_fraction
-                << " of the samples gave no verdict: exit code " << exit_code_simulation_failed
-                << '\n';
-      exit_code = exit_code_simulation_failed;
+    try {
+      exit_code = finish_study(config, settings, result, engine);
+    } catch (const std::exception& error) {
+      failure = std::current_exception();
+      exit_code = exit_code_for(error);
     }
   }
   MPI_Bcast(&exit_code, 1, MPI_INT, 0, comm);
+  if (failure) std::rethrow_exception(failure);
   return exit_code;
 }
 

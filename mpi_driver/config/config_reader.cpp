@@ -23,9 +23,10 @@ std::string join_lines(const std::vector<std::string>& lines) {
   return joined;
 }
 
-// JSON text of a scalar; a string built in code with invalid UTF-8 must not make the message throw.
+// JSON text of a scalar for a message: at most a short printable excerpt of what the file holds;
+// a string with invalid UTF-8 must not make the message throw.
 std::string dump(const json& value) {
-  return value.dump(-1, ' ', false, json::error_handler_t::replace);
+  return printable_excerpt(value.dump(-1, ' ', false, json::error_handler_t::replace));
 }
 
 std::string describe(const json& value) {
@@ -87,7 +88,9 @@ ConfigError::ConfigError(std::vector<std::string> messages)
     : InvalidInput(join_lines(messages)), messages_(std::move(messages)) {}
 
 void ConfigErrors::add(const JsonPointer& path, std::string_view rule) {
-  const std::string where = path.empty() ? std::string{} : path.to_string() + ": ";
+  // The path is made of the file's own keys: quoted no longer than a few of them.
+  const std::string where =
+      path.empty() ? std::string{} : printable_excerpt(path.to_string(), 120) + ": ";
   messages_.push_back(source_ + ": " + where + std::string(rule));
 }
 

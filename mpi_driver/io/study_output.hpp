@@ -1,8 +1,10 @@
-// The study's HDF5 output, written by rank 0 once every sample is done, through FILE.tmp + fsync
-// + rename + fsync of the folder (a finished file is never modified in place). Layout:
+// The study's HDF5 output, written by rank 0 once every sample is done, through a fresh temporary
+// file, fsync, rename and fsync of the folder (atomic_file.hpp: a finished file is never modified
+// in place). Layout:
 //
 //   /                 attributes: config (canonical JSON), config_hash (16 hex digits, FNV-1a 64
-//                     of the canonical config without output and checkpoint_interval_s),
+//                     of the canonical config without output, checkpoint_interval_s and
+//                     allowed_failed_fraction),
 //                     blockfrag_version, total_samples, samples_per_level, design
 //   /samples/<input>  float64[total]: one column per input of the config (direction as +1/-1)
 //   /samples/level    int64[total]: intensity level index, i / samples_per_level

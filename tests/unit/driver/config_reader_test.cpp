@@ -154,6 +154,25 @@ TEST(ObjectReader, UnknownKeysGetTheNearestKnownKeyOrTheList) {
                           "test.json: /zzz: unknown key (known keys: friction restitution)"));
 }
 
+// A file's keys and strings are its content: a message quotes a short printable excerpt of them,
+// however long or binary they are.
+TEST(ObjectReader, MessagesQuoteAtMostAnExcerptOfTheFilesKeysAndStrings) {
+  json document;
+  document[std::string(300, 'k') + "\x01"] = 1;
+  document["friction"] = "secret-" + std::string(300, 's');
+  const auto messages = messages_of(document, [](ObjectReader& root) { root.number("friction"); });
+  ASSERT_EQ(messages.size(), 2u);
+  for (const auto& message : messages) {
+    EXPECT_LT(message.size(), 200u) << message;
+    EXPECT_EQ(message.find('\x01'), std::string::npos);
+  }
+  EXPECT_THAT(messages[0],
+              ::testing::StartsWith(
+                  "test.json: /friction: must be a number, not a string (got \"secret-sss"));
+  EXPECT_THAT(messages[1], ::testing::StartsWith("test.json: /kkkkkkkk"));
+  EXPECT_THAT(messages[1], ::testing::HasSubstr("...: unknown key"));
+}
+
 TEST(ObjectReader, FinishNamesTheContext) {
   ConfigErrors errors("s.json");
   const json object = json::parse(R"({"type": "cosine_pulse", "duration": 1})");
