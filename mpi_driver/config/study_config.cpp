@@ -18,8 +18,9 @@ using nlohmann::json;
 
 const Range positive = Range::greater_than(0.0);
 constexpr double infinity = std::numeric_limits<double>::infinity();
-// Intensity levels a study may have: a fine grid for a smooth curve is a few hundred.
-constexpr double kMaxLevels = 10'000;
+// Intensity levels a study may have: a fine grid for a smooth curve is a few hundred; a grid of
+// single amplitudes (one sample each) a few tens of thousands.
+constexpr double kMaxLevels = 1'000'000;
 
 constexpr StudyInput all_inputs[] = {
     StudyInput::friction, StudyInput::restitution, StudyInput::half_width, StudyInput::half_height,

@@ -63,6 +63,8 @@ void write_results(Hdf5Writer& file, const std::vector<SampleRecord>& records) {
                     column<double>(records, &SampleRecord::max_abs_slide));
   file.write_column("/results/overturn_time",
                     column<double>(records, &SampleRecord::overturn_time));
+  file.write_column("/results/settled", column<std::int64_t>(records, &SampleRecord::settled));
+  file.write_column("/results/settle_time", column<double>(records, &SampleRecord::settle_time));
 }
 
 void write_fragility(Hdf5Writer& file, const StudyConfig& config,

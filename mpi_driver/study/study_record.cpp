@@ -16,6 +16,8 @@ SampleRecord make_record(std::int64_t index, const Summary& summary) {
   record.final_slide = summary.final_slide;
   record.max_abs_slide = summary.max_abs_slide;
   if (summary.overturn_time) record.overturn_time = *summary.overturn_time;
+  record.settled = summary.settled ? 1 : 0;
+  if (summary.settle_time) record.settle_time = *summary.settle_time;
   return record;
 }
 

@@ -108,7 +108,7 @@ run_case study_1e8_per_level 2 "huge.json: /samples_per_level: the study has 10 
 study_with '{"samples_per_level": 2147483648}' >too_many.json
 run_case samples_per_level_2147483648 2 "too_many.json: /samples_per_level: the study has 10 levels x 2147483648 samples" "$B" run too_many.json
 study_with '{"intensity_measure": {"from": 0.2, "to": 2.0, "count": 1000000000}}' >count.json
-run_case level_count_1e9 2 "count.json: /intensity_measure/count: must be in [2, 10000]" "$B" run count.json
+run_case level_count_1e9 2 "count.json: /intensity_measure/count: must be in [2, 1e+06]" "$B" run count.json
 
 # --- Leaks -----------------------------------------------------------------------------------------
 printf '0.0 0.1\n0.01 PRIVATE-KEY-0123456789abcdefghijklmnopqrstuvwxyz-0123456789-SECRET-TAIL\n' >secret.txt
