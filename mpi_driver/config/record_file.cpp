@@ -26,7 +26,9 @@ std::vector<std::string> read_lines(const std::filesystem::path& file) {
     throw RecordError(name, 0, what.substr(std::min(what.size(), name.size() + 2)));
   }
   std::vector<std::string> lines;
-  std::size_t start = 0;
+  // A UTF-8 byte order mark, which some spreadsheet programs write, is not part of the first line.
+  constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
+  std::size_t start = content.starts_with(byte_order_mark) ? byte_order_mark.size() : 0;
   while (start < content.size()) {
     std::size_t end = content.find('\n', start);
     if (end == std::string::npos) end = content.size();

@@ -128,6 +128,33 @@ TEST(RecordFile, RefusesEveryBrokenFileNamingItsLineAndTheReason) {
   EXPECT_EQ(seen, broken.size()) << "a file of the table is missing from tests/data/bad_records";
 }
 
+// The project's real records (configs/records/, the USGS SLAMMER set) are read as they are: two
+// comma-separated columns, '#' header lines, CRLF line ends, one with a UTF-8 byte order mark.
+// Each has one sample per data line, at a uniform step from 0.
+TEST(RecordFile, ReadsEveryRecordOfTheProjectsSuiteAsItIs) {
+  const std::filesystem::path folder =
+      std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "configs/records";
+  int read = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".csv" || entry.path().filename() == "catalogue.csv") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    std::ifstream in(entry.path());
+    std::size_t data_lines = 0;
+    for (std::string line; std::getline(in, line);) {
+      const auto first = line.find_first_not_of("\xEF\xBB\xBF \t\r");
+      if (first != std::string::npos && line[first] != '#') ++data_lines;
+    }
+    const Accelerogram record = read_accelerogram(entry.path());
+    ASSERT_EQ(record.times.size(), data_lines);
+    ASSERT_GE(record.times.size(), 1000u);
+    EXPECT_EQ(record.times.front(), 0.0);
+    const double step = record.times[1] - record.times[0];
+    EXPECT_NEAR(record.times.back(), step * static_cast<double>(record.times.size() - 1), 1e-6);
+    ++read;
+  }
+  EXPECT_EQ(read, 18);
+}
+
 TEST(RecordFile, RefusesAMissingFileAndAFolderWithoutALine) {
   expect_refused(bad_records / "no_such_record.AT2", {0, "no such file"});
   expect_refused(records, {0, "is a folder"});
