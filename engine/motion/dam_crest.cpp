@@ -28,21 +28,14 @@ constexpr double kNodesPerPeriod = 100.0;
 // ((omega h)^3): about 2e-12 against 2e-13 of the state's scale here.
 constexpr double kTaylorBelow = 1e-4;
 
-// The steps of one piece: [start, end] cut into equal steps no longer than max_step.
-struct PieceGrid {
-  const MotionPiece* piece;
-  double start, end;
-  long steps;
-};
+}  // namespace
 
-PieceGrid grid_of(const MotionPiece& piece, double duration, double period) {
+PieceGrid piece_grid(const MotionPiece& piece, double duration, double period) {
   const double end = std::min(piece.end(), duration);
   const double max_step = std::min(period, piece.time_scale()) / kNodesPerPeriod;
   const long steps = std::max(1L, static_cast<long>(std::ceil((end - piece.start()) / max_step)));
   return {&piece, piece.start(), end, steps};
 }
-
-}  // namespace
 
 double fenves_chopra_period(double height_m, double elastic_modulus_pa) {
   const double height_ft = height_m / kMetresPerFoot;
@@ -109,7 +102,7 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
   for (const MotionPiece& piece : foundation.pieces()) {
     if (piece.start() >= duration) break;
     if (piece.end() <= piece.start()) continue;
-    grids.push_back(grid_of(piece, duration, period));
+    grids.push_back(piece_grid(piece, duration, period));
     nodes += static_cast<std::size_t>(grids.back().steps) + 1;  // + 1: a possible repeated node
     if (nodes > kMaxCrestNodes) {
       std::ostringstream why;

@@ -42,6 +42,16 @@ class NigamJenningsStep {
   double b11_ = 0, b12_ = 0, b21_ = 0, b22_ = 0;
 };
 
+// The filter's grid over one piece: from its start to min(its end, duration) in `steps` equal
+// steps, none longer than min(period, the piece's time scale) / 100. The dam filter and the
+// response spectrum (engine/motion/intensity_measures.hpp) both step on it.
+struct PieceGrid {
+  const MotionPiece* piece;
+  double start, end;
+  long steps;
+};
+PieceGrid piece_grid(const MotionPiece& piece, double duration, double period);
+
 // The crest's response at the nodes of the filter's grid: every boundary of the foundation's
 // pieces, and steps of at most min(T1, the piece's time scale) / 100 between them. Where the
 // foundation's acceleration jumps, the node is repeated: first with the value before the jump,

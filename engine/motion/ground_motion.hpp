@@ -35,6 +35,7 @@ class MotionPiece {
   MotionPiece(const Formula& formula, double start, double end)
       : f_(formula), start_(start), end_(end) {}
 
+  const Formula& formula() const { return f_; }
   double start() const { return start_; }
   double end() const { return end_; }
   bool is_zero() const {
