@@ -197,7 +197,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
       evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
   if (rank == 0) {
     std::cerr << "study " << options.study_path.string() << ": " << config.total_samples()
-              << " samples (" << config.intensity.levels.size() << " levels x "
+              << " samples (" << config.intensity.level_count() << " levels x "
               << config.samples_per_level << ") on " << ranks << (ranks == 1 ? " rank" : " ranks")
               << ", config hash " << hash_to_hex(config.hash) << '\n';
   }

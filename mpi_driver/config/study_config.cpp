@@ -5,6 +5,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "engine/motion/intensity_measures.hpp"
+#include "engine/scene/block_geometry.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/scene_json.hpp"
@@ -18,9 +20,9 @@ using nlohmann::json;
 
 const Range positive = Range::greater_than(0.0);
 constexpr double infinity = std::numeric_limits<double>::infinity();
-// Intensity levels a study may have: a fine grid for a smooth curve is a few hundred; a grid of
-// single amplitudes (one sample each) a few tens of thousands.
-constexpr double kMaxLevels = 1'000'000;
+// A record is scaled by at most this much to reach a stripe: beyond, the motion is no longer the
+// record's character at another intensity but a different earthquake.
+constexpr double kMaxRecordScale = 100.0;
 
 constexpr StudyInput all_inputs[] = {
     StudyInput::friction, StudyInput::restitution, StudyInput::half_width, StudyInput::half_height,
@@ -186,58 +188,16 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
       }
     }
   }
-  const bool has_pulse = !std::holds_alternative<NoMotion>(base.ground_motion);
+  const bool has_motion = config.suite || !std::holds_alternative<NoMotion>(base.ground_motion);
   const bool periodic = std::holds_alternative<CosinePulse>(base.ground_motion) ||
                         std::holds_alternative<SinePulse>(base.ground_motion);
   if (has(StudyInput::period) && !periodic) {
     reader.add_error("period", "needs a cosine_pulse or sine_pulse in /scene/ground_motion");
   }
-  if (has(StudyInput::direction) && !has_pulse) {
-    reader.add_error("direction", "needs a pulse in /scene/ground_motion (its type is \"none\")");
+  if (has(StudyInput::direction) && !has_motion) {
+    reader.add_error("direction",
+                     "needs a ground motion in /scene/ground_motion (its type is \"none\")");
   }
-}
-
-std::vector<double> read_levels(ObjectReader reader) {
-  std::vector<double> levels;
-  reader.choice("name", {im_name});
-  reader.choice("units", {im_units});
-  if (reader.has("levels")) {
-    if (reader.has("from") || reader.has("to") || reader.has("count")) {
-      reader.add_error("levels", "give either levels or from/to/count, not both");
-      for (const char* key : {"from", "to", "count"}) reader.raw(key);  // known: reported above
-    }
-    ArrayReader array = reader.required_array("levels");
-    if (array.valid() && array.size() == 0) reader.add_error("levels", "must not be empty");
-    if (static_cast<double>(array.size()) > kMaxLevels) {
-      reader.add_error("levels", "has " + std::to_string(array.size()) + " levels, more than " +
-                                     format_number(kMaxLevels));
-      return levels;
-    }
-    for (std::size_t k = 0; k < array.size(); ++k) {
-      const auto value = array.number(k, Range::of(domain::intensity_g));
-      if (!value) continue;
-      if (!levels.empty() && *value <= levels.back()) {
-        reader.errors().add(array.path_of(k),
-                            "must be greater than the level before it (levels increase)");
-      }
-      levels.push_back(*value);
-    }
-  } else {
-    const auto from = reader.required_number("from", Range::of(domain::intensity_g));
-    const auto to = reader.required_number("to", Range::of(domain::intensity_g));
-    const auto count = reader.required_integer("count", Range::closed(2, kMaxLevels));
-    if (from && to && *to <= *from)
-      reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
-    if (from && to && count && *to > *from) {
-      for (long k = 0; k < *count; ++k) {
-        levels.push_back(k == *count - 1 ? *to
-                                         : *from + (*to - *from) * static_cast<double>(k) /
-                                                       static_cast<double>(*count - 1));
-      }
-    }
-  }
-  reader.finish();
-  return levels;
 }
 
 // An HDF5 group name of its own: starts with a letter, digit or '_' ("." and ".." name the group
@@ -306,12 +266,34 @@ json limit_state_to_json(const LimitState& state) {
   return out;
 }
 
-// A scene's errors come back with paths inside the scene; put them under /scene.
+// A scene's errors come back with paths inside the scene; put them under /scene. A record suite
+// (studies only) is read here; the scene reader sees no ground motion in its place.
 void read_scene(const json& value, const std::string& source, ConfigErrors& errors,
                 StudyConfig& config, bool& valid) {
+  json scene = value;
+  const bool suite_given = value.is_object() && value.contains("ground_motion") &&
+                           value["ground_motion"].is_object() &&
+                           value["ground_motion"].value("type", "") == "record_suite";
+  if (suite_given) {
+    ObjectReader reader(value["ground_motion"], JsonPointer("/scene/ground_motion"), errors);
+    reader.required_choice("type", {"record_suite"});
+    config.suite = read_record_suite(reader, std::filesystem::path(source).parent_path());
+    reader.finish("for type \"record_suite\"");
+    scene["ground_motion"] = {{"type", "none"}};
+  }
   try {
-    config.base_scene = scene_from_json(value, source);
-    valid = true;
+    config.base_scene = scene_from_json(scene, source);
+    if (const auto* record = std::get_if<RecordedMotion>(&config.base_scene.ground_motion)) {
+      // One record is a suite of one: samples run it scaled to their intensity.
+      config.suite = RecordSuite{{SuiteRecord{record->file,
+                                              record->record,
+                                              {},
+                                              nullptr,
+                                              1.0,
+                                              record_content_hash(*record->record),
+                                              {}}}};
+    }
+    valid = !suite_given || config.suite.has_value();
   } catch (const ConfigError& error) {
     const std::string prefix = source + ": ";
     for (const auto& message : error.messages()) {
@@ -326,16 +308,67 @@ void read_scene(const json& value, const std::string& source, ConfigErrors& erro
   }
 }
 
+// The largest tan(alpha) a sample's block can have: the base block's, or the extreme of the
+// sampled geometry's supports (alpha, or a / b from half_width and half_height).
+double largest_tan_alpha(const StudyConfig& config) {
+  double a = config.base_scene.block.half_width, b = config.base_scene.block.half_height;
+  std::optional<double> alpha;
+  for (const auto& spec : config.inputs) {
+    const auto [low, high] = support_of(spec.distribution);
+    if (spec.input == StudyInput::alpha) alpha = high;
+    if (spec.input == StudyInput::half_width) a = high;
+    if (spec.input == StudyInput::half_height) b = low;
+  }
+  if (alpha) return std::tan(*alpha);
+  return config.base_scene.polygon ? std::tan(block_alpha(config.base_scene)) : a / b;
+}
+
+// Every record's measures (as recorded); stripes must reach every level with a scale of at most
+// kMaxRecordScale, and a record whose measure is 0 cannot be scaled at all.
+void measure_suite(StudyConfig& config, ConfigErrors& errors, bool single_record) {
+  const IntensityMeasure& measure = config.intensity;
+  const std::vector<double> periods =
+      measure.type == ImType::sa ? std::vector<double>{measure.period} : std::vector<double>{};
+  const double tan_alpha = largest_tan_alpha(config);
+  for (std::size_t k = 0; k < config.suite->records.size(); ++k) {
+    SuiteRecord& record = config.suite->records[k];
+    const JsonPointer where = single_record ? JsonPointer("/scene/ground_motion/file")
+                                            : JsonPointer("/scene/ground_motion/records") / k;
+    record.measures =
+        intensity_measures(*record.record, periods, measure.damping, config.base_scene.g);
+    double unit = record.measures.pga_g;
+    if (measure.type == ImType::pgv) unit = record.measures.pgv;
+    if (measure.type == ImType::sa) unit = record.measures.sa_g.front();
+    if (measure.type == ImType::pga_over_g_tan_alpha) unit /= tan_alpha;
+    if (!(unit > 0)) {
+      errors.add(where, record.file + ": its " + im_label(measure) +
+                            " is 0, so no scale brings it to an intensity");
+      continue;
+    }
+    const double top = measure.cloud ? measure.scale * unit : measure.levels.back();
+    if (!measure.cloud && top / unit > kMaxRecordScale) {
+      errors.add(where, record.file + ": reaching the level " + format_number(top) + " " +
+                            im_unit(measure.type) + " needs a scale of " +
+                            format_number(top / unit) + ", more than " +
+                            format_number(kMaxRecordScale) + " (its " + im_label(measure) + " is " +
+                            format_number(unit) + " " + im_unit(measure.type) + ")");
+    }
+  }
+}
+
 json canonical_json(const StudyConfig& config) {
   json inputs = json::object();
   for (const auto& spec : config.inputs)
     inputs[input_key(spec.input)] = distribution_to_json(spec.input, spec.distribution);
   json limit_states = json::array();
   for (const auto& state : config.limit_states) limit_states.push_back(limit_state_to_json(state));
-  return {{"scene", scene_to_json(config.base_scene)},
+  json scene = scene_to_json(config.base_scene);
+  if (config.suite && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
+    scene["ground_motion"] = record_suite_to_json(*config.suite);
+  }
+  return {{"scene", scene},
           {"inputs", inputs},
-          {"intensity_measure",
-           {{"name", im_name}, {"units", im_units}, {"levels", config.intensity.levels}}},
+          {"intensity_measure", intensity_measure_to_json(config.intensity)},
           {"samples_per_level", config.samples_per_level},
           {"design", config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"},
           {"limit_states", limit_states},
@@ -387,16 +420,20 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   if (root.has("inputs"))
     read_inputs(root.required_object("inputs"), config.base_scene, scene_valid, config);
 
-  config.intensity.levels = read_levels(root.required_object("intensity_measure"));
-  if (scene_valid && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
+  const bool pulse = !config.suite;
+  config.intensity = read_intensity_measure(root.required_object("intensity_measure"),
+                                            pulse ? ImType::pulse_amplitude : ImType::pga);
+  if (scene_valid && pulse && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
     root.add_error("intensity_measure",
-                   "scales the pulse amplitude, but /scene/ground_motion has type \"none\"");
+                   "scales the ground motion, but /scene/ground_motion has type \"none\"");
   }
-  if (const auto* record = std::get_if<RecordedMotion>(&config.base_scene.ground_motion);
-      scene_valid && record && !(peak_acceleration_g(*record->record) > 0)) {
-    root.add_error(
-        "intensity_measure",
-        "scales the record's peak acceleration, but every sample of " + record->file + " is 0");
+  if (!pulse && config.intensity.type == ImType::pulse_amplitude) {
+    root.errors().add(JsonPointer("/intensity_measure/type"),
+                      "a record has no pulse amplitude: use \"pga\", \"pgv\", \"sa\" or "
+                      "\"pga_over_g_tan_alpha\"");
+  } else if (!pulse && errors.empty()) {
+    measure_suite(config, errors,
+                  std::holds_alternative<RecordedMotion>(config.base_scene.ground_motion));
   }
   if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
       scene_valid && mp && mp->velocity_amplitude == 0.0) {
@@ -444,7 +481,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   root.finish();
   if (errors.empty() && config.total_samples() > kMaxTotalSamples) {
     errors.add(JsonPointer("/samples_per_level"),
-               "the study has " + std::to_string(config.intensity.levels.size()) + " levels x " +
+               "the study has " + std::to_string(config.intensity.level_count()) + " levels x " +
                    std::to_string(config.samples_per_level) +
                    " samples = " + std::to_string(config.total_samples()) + ", more than the " +
                    std::to_string(kMaxTotalSamples) +

@@ -32,6 +32,8 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/scene/scene.hpp"
+#include "mpi_driver/config/intensity_measure.hpp"
+#include "mpi_driver/config/record_suite.hpp"
 #include "sampling/designs.hpp"
 #include "sampling/distributions.hpp"
 
@@ -74,15 +76,12 @@ struct LimitState {
 
 const char* limit_state_kind_name(LimitStateKind kind);
 
-// The intensity measure is the pulse amplitude (in g); the direction input gives its sign.
-struct IntensityMeasure {
-  std::vector<double> levels;  // > 0, increasing
-};
-inline constexpr const char* im_name = "pulse_amplitude";
-inline constexpr const char* im_units = "g";
-
 struct StudyConfig {
+  // Its ground motion is a pulse, or a recorded motion; with a record suite, `suite` holds the
+  // records and the base scene's ground motion is none.
   Scene base_scene;
+  // The records samples run: the base scene's record_suite, or its one record.
+  std::optional<RecordSuite> suite;
   std::vector<StudyInputSpec> inputs;  // in StudyInput order: the /samples columns
   IntensityMeasure intensity;
   std::uint32_t samples_per_level = 1;
@@ -100,7 +99,7 @@ struct StudyConfig {
   std::uint64_t hash = 0;
 
   std::int64_t total_samples() const {
-    return static_cast<std::int64_t>(intensity.levels.size()) * samples_per_level;
+    return static_cast<std::int64_t>(intensity.level_count()) * samples_per_level;
   }
 };
 

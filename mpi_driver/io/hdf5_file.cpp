@@ -112,6 +112,14 @@ void Hdf5Writer::write_column(const std::string& path, const std::vector<std::in
   write_typed_column(file_, path, values, H5T_STD_I64LE, H5T_NATIVE_INT64);
 }
 
+void Hdf5Writer::write_column(const std::string& path, const std::vector<std::string>& values) {
+  const auto type = utf8_string_type();
+  std::vector<const char*> texts;
+  texts.reserve(values.size());
+  for (const auto& value : values) texts.push_back(value.c_str());
+  write_typed_column(file_, path, texts, type.get(), type.get());
+}
+
 void Hdf5Writer::set_attribute(const std::string& object, const std::string& name,
                                const std::string& value) {
   const auto type = utf8_string_type();

@@ -30,6 +30,8 @@ class Hdf5Writer {
   void create_group(const std::string& path);
   void write_column(const std::string& path, const std::vector<double>& values);
   void write_column(const std::string& path, const std::vector<std::int64_t>& values);
+  // Variable-length UTF-8 strings (h5py reads them as bytes, .asstr() as str).
+  void write_column(const std::string& path, const std::vector<std::string>& values);
 
   // Attributes on an existing object ("/" for the file).
   void set_attribute(const std::string& object, const std::string& name, const std::string& value);

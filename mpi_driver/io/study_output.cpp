@@ -20,27 +20,69 @@ std::vector<T> column(const std::vector<SampleRecord>& records, Field field) {
   return values;
 }
 
-void write_samples(Hdf5Writer& file, const StudyConfig& config, std::vector<double>& alphas) {
+// Each sample's block alpha and intensity, which the fragility needs.
+struct SampleMeasures {
+  std::vector<double> alphas;
+  std::vector<double> ims;
+};
+
+SampleMeasures write_samples(Hdf5Writer& file, const StudyConfig& config) {
   const auto total = static_cast<std::size_t>(config.total_samples());
   std::vector<std::vector<double>> inputs(config.inputs.size(), std::vector<double>(total));
-  std::vector<std::int64_t> level(total);
-  std::vector<double> im(total);
-  alphas.resize(total);
+  std::vector<std::int64_t> level(total), record(total);
+  std::vector<double> scale(total), pga(total), pgv(total);
+  SampleMeasures measures{std::vector<double>(total), std::vector<double>(total)};
   StudySampler sampler(config);
   for (std::size_t i = 0; i < total; ++i) {
-    const StudySample sample = sampler.draw(static_cast<std::int64_t>(i));
+    const StudySample sample = sampler.draw(static_cast<std::int64_t>(i), true);
     for (std::size_t k = 0; k < inputs.size(); ++k) inputs[k][i] = sample.values[k];
     level[i] = sample.level;
-    im[i] = sample.im;
-    alphas[i] = block_alpha(sample.scene);
+    record[i] = sample.record;
+    scale[i] = sample.scale;
+    pga[i] = sample.pga_g;
+    pgv[i] = sample.pgv_m_s;
+    measures.ims[i] = sample.im;
+    measures.alphas[i] = block_alpha(sample.scene);
   }
   file.create_group("/samples");
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     file.write_column(std::string("/samples/") + input_key(config.inputs[k].input), inputs[k]);
   }
   file.write_column("/samples/level", level);
-  file.write_column("/samples/im", im);
-  file.set_attribute("/samples", "im_units", std::string(im_units));
+  file.write_column("/samples/im", measures.ims);
+  file.set_attribute("/samples/im", "units", std::string(im_unit(config.intensity.type)));
+  file.write_column("/samples/scale", scale);
+  file.write_column("/samples/pga_g", pga);
+  file.write_column("/samples/pgv_m_s", pgv);
+  if (config.suite) file.write_column("/samples/record", record);
+  return measures;
+}
+
+// The suite's records as recorded: what /samples/record indexes.
+void write_records(Hdf5Writer& file, const RecordSuite& suite, const IntensityMeasure& measure) {
+  std::vector<std::string> names, verticals;
+  std::vector<double> weight, pga, pgv, duration, sa;
+  for (const auto& record : suite.records) {
+    names.push_back(record.file);
+    verticals.push_back(record.vertical_file);
+    weight.push_back(record.weight);
+    pga.push_back(record.measures.pga_g);
+    pgv.push_back(record.measures.pgv);
+    duration.push_back(record.measures.significant_duration);
+    if (!record.measures.sa_g.empty()) sa.push_back(record.measures.sa_g.front());
+  }
+  file.create_group("/records");
+  file.write_column("/records/file", names);
+  file.write_column("/records/vertical", verticals);
+  file.write_column("/records/weight", weight);
+  file.write_column("/records/pga_g", pga);
+  file.write_column("/records/pgv_m_s", pgv);
+  file.write_column("/records/duration_s", duration);
+  if (measure.type == ImType::sa) {
+    file.write_column("/records/sa_g", sa);
+    file.set_attribute("/records/sa_g", "period_s", measure.period);
+    file.set_attribute("/records/sa_g", "damping", measure.damping);
+  }
 }
 
 void write_results(Hdf5Writer& file, const std::vector<SampleRecord>& records) {
@@ -68,15 +110,26 @@ void write_results(Hdf5Writer& file, const std::vector<SampleRecord>& records) {
 }
 
 void write_fragility(Hdf5Writer& file, const StudyConfig& config,
-                     const std::vector<SampleRecord>& records, const std::vector<double>& alphas) {
+                     const std::vector<SampleRecord>& records, const SampleMeasures& measures) {
+  const IntensityMeasure& measure = config.intensity;
   file.create_group("/fragility");
-  file.set_attribute("/fragility", "im_name", std::string(im_name));
-  file.set_attribute("/fragility", "im_units", std::string(im_units));
+  file.set_attribute("/fragility", "im_name", std::string(im_type_name(measure.type)));
+  file.set_attribute("/fragility", "im_units", std::string(im_unit(measure.type)));
+  file.set_attribute("/fragility", "im_label", im_label(measure));
+  if (measure.type == ImType::sa) {
+    file.set_attribute("/fragility", "im_period_s", measure.period);
+    file.set_attribute("/fragility", "im_damping", measure.damping);
+  }
+  file.set_attribute("/fragility", "scaling",
+                     std::string(measure.cloud ? "none (a cloud: each sample's own intensity; "
+                                                 "points are display bins, the fit is per sample)"
+                                               : "stripes"));
   file.set_attribute(
       "/fragility", "trials_exclude",
       std::string("samples whose status is not 0 (failed or rejected) are not trials"));
   for (const auto& state : config.limit_states) {
-    const FragilityCurve curve = fragility_curve(config, state, records, alphas);
+    const FragilityCurve curve =
+        fragility_curve(config, state, records, measures.alphas, measures.ims);
     const std::string group = "/fragility/" + state.name;
     file.create_group(group);
     file.write_column(group + "/im", curve.im);
@@ -112,10 +165,10 @@ void write_study_output(const std::filesystem::path& path, const StudyConfig& co
     file.set_attribute(
         "/", "design",
         std::string(config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"));
-    std::vector<double> alphas;
-    write_samples(file, config, alphas);
+    const SampleMeasures measures = write_samples(file, config);
+    if (config.suite) write_records(file, *config.suite, config.intensity);
     write_results(file, records);
-    write_fragility(file, config, records, alphas);
+    write_fragility(file, config, records, measures);
     file.close();
   });
 }

@@ -13,10 +13,10 @@
 //   /results/overturned, impacts, steps, rhs_evaluations           int64[total]
 //   /results/max_abs_theta, final_theta, final_slide, max_abs_slide float64[total] (rad, m)
 //   /results/overturn_time                                          float64[total], NaN when none
-//   /results/settled                                                int64[total]: 1 the fate is final
-//   /results/settle_time                                            float64[total], NaN when not settled
-//   /fragility        attributes: im_name, im_units, trials_exclude
-//   /fragility/<name> datasets im, trials, exceedances, probability, ci_low, ci_high (one entry per
+//   /results/settled                                                int64[total]: 1 the fate is
+//   final /results/settle_time                                            float64[total], NaN when
+//   not settled /fragility        attributes: im_name, im_units, trials_exclude /fragility/<name>
+//   datasets im, trials, exceedances, probability, ci_low, ci_high (one entry per
 //                     level); attributes type, threshold, interval, median, beta, log_likelihood
 //                     (NaN when the fit does not exist), fit_status ("ok" or why there is no fit),
 //                     median_low/median_high (where the data place the median)

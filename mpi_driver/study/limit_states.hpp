@@ -15,9 +15,12 @@ namespace blockfrag {
 // An overturned block exceeds every rotation limit (its rotation reached pi/2 and beyond).
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha);
 
-// records[i] and alphas[i] belong to sample i (all samples of the study).
+// records[i], alphas[i] and ims[i] belong to sample i (all samples of the study). Stripes count
+// trials and exceedances per level; a cloud fits each sample at its own intensity
+// (postproc/fragility/cloud_fragility.hpp).
 FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& state,
                                const std::vector<SampleRecord>& records,
-                               const std::vector<double>& alphas);
+                               const std::vector<double>& alphas,
+                               const std::vector<double>& ims = {});
 
 }  // namespace blockfrag

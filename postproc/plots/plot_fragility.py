@@ -63,6 +63,7 @@ def read_study(path):
         group = file["fragility"]
         im_name = text(group.attrs["im_name"]) if "im_name" in group.attrs else ""
         im_units = text(group.attrs["im_units"]) if "im_units" in group.attrs else ""
+        im_label = text(group.attrs["im_label"]) if "im_label" in group.attrs else ""
         states = []
         for name, state in group.items():
             if not isinstance(state, h5py.Group):
@@ -90,7 +91,7 @@ def read_study(path):
             })
     if not states:
         raise InputError(f"{path}: /fragility holds no limit state")
-    return {"im_name": im_name, "im_units": im_units, "states": states}
+    return {"im_name": im_name, "im_units": im_units, "im_label": im_label, "states": states}
 
 
 def has_fit(state):
@@ -110,8 +111,9 @@ def describe(state):
 
 
 def axis_label(study):
-    name = study["im_name"].replace("_", " ") if study["im_name"] else "intensity"
-    return f"{name} [{study['im_units']}]" if study["im_units"] else name
+    name = study["im_label"] or (study["im_name"].replace("_", " ") if study["im_name"] else "intensity")
+    units = study["im_units"]
+    return f"{name} [{units}]" if units and units != "1" else name
 
 
 def lognormal_cdf(x, median, beta):

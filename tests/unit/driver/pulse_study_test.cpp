@@ -1,5 +1,5 @@
 // A study scales a Mavroeidis-Papageorgiou pulse, which is given by its ground velocity, so that
-// its peak |lambda| (its PGA in g) is the intensity level.
+// its peak |lambda| (its PGA in g) is the intensity level, with the sign of the direction input.
 #include <algorithm>
 #include <cmath>
 #include <variant>
@@ -21,18 +21,44 @@ double scanned_peak(const GroundMotionPieces& motion, double end) {
   return peak;
 }
 
+// A study of a Mavroeidis-Papageorgiou pulse (g = 9.7) at PGA levels, in either direction.
+StudyConfig mavroeidis_study(double direction) {
+  const nlohmann::json document = {
+      {"scene",
+       {{"block", {{"half_width", 0.5}, {"half_height", 1.0}}},
+        {"contact", {{"friction", 0.6}, {"restitution", 0.6}}},
+        {"ground_motion",
+         {{"type", "mavroeidis_papageorgiou"},
+          {"velocity_amplitude", -0.5},
+          {"period", 0.8},
+          {"gamma", 2.5},
+          {"phase", 0.4}}},
+        {"g", 9.7},
+        {"duration", 2.0}}},
+      {"inputs", {{"direction", {{"distribution", "fixed"}, {"value", direction}}}}},
+      {"intensity_measure", {{"type", "pga"}, {"levels", {0.3, 0.45}}}},
+      {"samples_per_level", 1},
+      {"limit_states", {{{"name", "overturn"}, {"type", "overturning"}}}},
+      {"seed", 1}};
+  return parse_study_config(document, "study.json");
+}
+
 TEST(PulseStudy, MavroeidisPapageorgiouIsScaledToItsPeakAcceleration) {
-  StudyConfig config;
-  config.base_scene.g = 9.7;
-  config.base_scene.ground_motion = MavroeidisPapageorgiouPulse{-0.5, 0.8, 2.5, 0.4, {}};
-  for (const double im : {0.3, -0.45}) {  // a negative level is the "direction" input's flip
-    const Scene scene = apply_sample(config, {}, im);
-    const auto& pulse = std::get<MavroeidisPapageorgiouPulse>(scene.ground_motion);
-    EXPECT_EQ(pulse.velocity_amplitude > 0, im > 0);  // the level's sign, not the base's
-    EXPECT_EQ(pulse.gamma, 2.5);
-    const GroundMotionPieces motion(scene.ground_motion, scene.g);
-    EXPECT_NEAR(scanned_peak(motion, 2.0), std::abs(im), 1e-7 * std::abs(im));
-    EXPECT_NEAR(motion.peak_abs_lambda(), std::abs(im), 1e-14);
+  for (const double direction : {1.0, -1.0}) {
+    const StudyConfig config = mavroeidis_study(direction);
+    StudySampler sampler(config);
+    for (const std::int64_t index : {0, 1}) {
+      const StudySample sample = sampler.draw(index);
+      const double level = config.intensity.levels[static_cast<std::size_t>(index)];
+      EXPECT_EQ(sample.im, level);
+      const auto& pulse = std::get<MavroeidisPapageorgiouPulse>(sample.scene.ground_motion);
+      EXPECT_EQ(pulse.velocity_amplitude > 0,
+                direction > 0);  // the direction's sign, not the base's
+      EXPECT_EQ(pulse.gamma, 2.5);
+      const GroundMotionPieces motion(sample.scene.ground_motion, sample.scene.g);
+      EXPECT_NEAR(scanned_peak(motion, 2.0), level, 1e-7 * level);
+      EXPECT_NEAR(motion.peak_abs_lambda(), level, 1e-14);
+    }
   }
 }
 

@@ -1,0 +1,141 @@
+#include "mpi_driver/config/intensity_measure.hpp"
+
+#include <cstdio>
+
+#include "engine/scene/parameter_domains.hpp"
+
+namespace blockfrag {
+namespace {
+
+// Intensity levels a study may have: a fine grid for a smooth curve is a few hundred; a grid of
+// single amplitudes (one sample each) a few tens of thousands.
+constexpr double kMaxLevels = 1'000'000;
+
+// The levels' domain in the measure's unit: far past any earthquake, finite.
+Range level_range(ImType type) {
+  if (type == ImType::pgv) return Range::left_open(0.0, 100.0);  // m/s
+  return Range::of(domain::intensity_g);                         // g, or dimensionless
+}
+
+std::vector<double> read_levels(ObjectReader& reader, ImType type) {
+  std::vector<double> levels;
+  const Range range = level_range(type);
+  if (reader.has("levels")) {
+    if (reader.has("from") || reader.has("to") || reader.has("count")) {
+      reader.add_error("levels", "give either levels or from/to/count, not both");
+      for (const char* key : {"from", "to", "count"}) reader.raw(key);  // known: reported above
+    }
+    ArrayReader array = reader.required_array("levels");
+    if (array.valid() && array.size() == 0) reader.add_error("levels", "must not be empty");
+    if (static_cast<double>(array.size()) > kMaxLevels) {
+      reader.add_error("levels", "has " + std::to_string(array.size()) + " levels, more than " +
+                                     format_number(kMaxLevels));
+      return levels;
+    }
+    for (std::size_t k = 0; k < array.size(); ++k) {
+      const auto value = array.number(k, range);
+      if (!value) continue;
+      if (!levels.empty() && *value <= levels.back()) {
+        reader.errors().add(array.path_of(k),
+                            "must be greater than the level before it (levels increase)");
+      }
+      levels.push_back(*value);
+    }
+    return levels;
+  }
+  const auto from = reader.required_number("from", range);
+  const auto to = reader.required_number("to", range);
+  const auto count = reader.required_integer("count", Range::closed(2, kMaxLevels));
+  if (from && to && *to <= *from) {
+    reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
+  }
+  if (from && to && count && *to > *from) {
+    for (long k = 0; k < *count; ++k) {
+      levels.push_back(k == *count - 1 ? *to
+                                       : *from + (*to - *from) * static_cast<double>(k) /
+                                                     static_cast<double>(*count - 1));
+    }
+  }
+  return levels;
+}
+
+}  // namespace
+
+const char* im_type_name(ImType type) {
+  switch (type) {
+    case ImType::pulse_amplitude: return "pulse_amplitude";
+    case ImType::pga: return "pga";
+    case ImType::pgv: return "pgv";
+    case ImType::sa: return "sa";
+    case ImType::pga_over_g_tan_alpha: return "pga_over_g_tan_alpha";
+  }
+  return "";
+}
+
+const char* im_unit(ImType type) {
+  switch (type) {
+    case ImType::pgv: return "m/s";
+    case ImType::pga_over_g_tan_alpha: return "1";
+    default: return "g";
+  }
+}
+
+std::string im_label(const IntensityMeasure& measure) {
+  switch (measure.type) {
+    case ImType::pulse_amplitude: return "pulse amplitude";
+    case ImType::pga: return "PGA";
+    case ImType::pgv: return "PGV";
+    case ImType::pga_over_g_tan_alpha: return "PGA/(g tan alpha)";
+    case ImType::sa: {
+      char text[64];
+      std::snprintf(text, sizeof text, "Sa(%g s, %g %%)", measure.period, 100 * measure.damping);
+      return text;
+    }
+  }
+  return "";
+}
+
+IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type) {
+  IntensityMeasure measure;
+  measure.type = default_type;
+  if (const auto type =
+          reader.choice("type", {"pulse_amplitude", "pga", "pgv", "sa", "pga_over_g_tan_alpha"})) {
+    for (const ImType candidate : {ImType::pulse_amplitude, ImType::pga, ImType::pgv, ImType::sa,
+                                   ImType::pga_over_g_tan_alpha}) {
+      if (*type == im_type_name(candidate)) measure.type = candidate;
+    }
+  }
+  if (measure.type == ImType::sa) {
+    measure.period = reader.required_number("period", Range::left_open(0.0, 10.0)).value_or(1.0);
+    measure.damping = reader.number_or("damping", 0.05, Range::of(domain::dam_damping));
+  }
+  const auto scaling = reader.choice("scaling", {"stripes", "none"});
+  measure.cloud = scaling == "none";
+  if (measure.cloud) {
+    measure.scale = reader.number_or("scale", 1.0, Range::left_open(0.0, 1e3));
+    for (const char* key : {"levels", "from", "to", "count"}) {
+      if (reader.has(key)) reader.add_error(key, "a cloud (\"scaling\": \"none\") has no levels");
+    }
+  } else {
+    measure.levels = read_levels(reader, measure.type);
+  }
+  reader.finish(measure.type == ImType::sa ? "for type \"sa\"" : std::string{});
+  return measure;
+}
+
+nlohmann::json intensity_measure_to_json(const IntensityMeasure& measure) {
+  nlohmann::json out = {{"type", im_type_name(measure.type)},
+                        {"scaling", measure.cloud ? "none" : "stripes"}};
+  if (measure.type == ImType::sa) {
+    out["period"] = measure.period;
+    out["damping"] = measure.damping;
+  }
+  if (measure.cloud) {
+    out["scale"] = measure.scale;
+  } else {
+    out["levels"] = measure.levels;
+  }
+  return out;
+}
+
+}  // namespace blockfrag
