@@ -2,6 +2,8 @@
 // its peak |lambda| (its PGA in g) is the intensity level, with the sign of the direction input.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numbers>
 #include <variant>
 
 #include <gtest/gtest.h>
@@ -59,6 +61,35 @@ TEST(PulseStudy, MavroeidisPapageorgiouIsScaledToItsPeakAcceleration) {
       EXPECT_NEAR(scanned_peak(motion, 2.0), level, 1e-7 * level);
       EXPECT_NEAR(motion.peak_abs_lambda(), level, 1e-14);
     }
+  }
+}
+
+// One cycle of lambda = A cos(2 pi t / T) moves the ground at most A g T / (2 pi)
+// (docs/references.md: the velocity is A g T / (2 pi) sin(2 pi t / T)): at PGV stripes the
+// amplitude is the level times 2 pi / (g T), for each sample's own period.
+TEST(PulseStudy, PgvStripesScaleEachPulseByItsOwnPeriod) {
+  const nlohmann::json document = {
+      {"scene",
+       {{"block", {{"half_width", 0.5}, {"half_height", 1.0}}},
+        {"contact", {{"friction", 0.6}, {"restitution", 0.6}}},
+        {"ground_motion", {{"type", "cosine_pulse"}, {"amplitude_g", 1.0}, {"period", 1.0}}}}},
+      {"inputs",
+       {{"period", {{"distribution", "uniform"}, {"min", 0.5}, {"max", 2.0}}},
+        {"direction", {{"distribution", "random_sign"}}}}},
+      {"intensity_measure", {{"type", "pgv"}, {"levels", {0.1, 0.4}}}},
+      {"samples_per_level", 5},
+      {"limit_states", {{{"name", "overturn"}, {"type", "overturning"}}}},
+      {"seed", 3}};
+  const StudyConfig config = parse_study_config(document, "study.json");
+  StudySampler sampler(config);
+  for (std::int64_t i = 0; i < config.total_samples(); ++i) {
+    const StudySample sample = sampler.draw(i, true);
+    const auto& pulse = std::get<CosinePulse>(sample.scene.ground_motion);
+    const double expected = sample.im * 2 * std::numbers::pi / (9.81 * pulse.period);
+    EXPECT_NEAR(std::abs(pulse.amplitude_g), expected, 1e-12 * expected) << i;
+    EXPECT_EQ(pulse.amplitude_g > 0, sample.values[1] > 0);  // direction
+    EXPECT_NEAR(sample.pgv_m_s, sample.im, 1e-12 * sample.im);
+    EXPECT_NEAR(sample.pga_g, std::abs(pulse.amplitude_g), 1e-14);
   }
 }
 
