@@ -159,10 +159,18 @@ double GroundMotionPieces::peak_abs_lambda() const {
 }
 
 const MotionPiece& GroundMotionPieces::piece_at(double t) const {
+  // A simulation asks in time order, mostly for the piece it asked for last or the next one: look
+  // there before searching (a record has tens of thousands of pieces).
+  const auto holds = [&](std::size_t k) {
+    return t < pieces_[k].end() && (k == 0 || !(t < pieces_[k - 1].end()));
+  };
+  if (holds(last_)) return pieces_[last_];
+  if (last_ + 1 < pieces_.size() && holds(last_ + 1)) return pieces_[++last_];
   const auto it =
       std::upper_bound(pieces_.begin(), pieces_.end(), t,
                        [](double x, const MotionPiece& piece) { return x < piece.end(); });
-  return it == pieces_.end() ? pieces_.back() : *it;
+  last_ = it == pieces_.end() ? pieces_.size() - 1 : static_cast<std::size_t>(it - pieces_.begin());
+  return pieces_[last_];
 }
 
 }  // namespace blockfrag

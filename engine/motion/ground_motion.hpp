@@ -106,6 +106,7 @@ class GroundMotionPieces {
   void close();  // appends the zero piece that lasts forever
 
   std::vector<MotionPiece> pieces_;
+  mutable std::size_t last_ = 0;  // the piece piece_at found last: where it looks first
 };
 
 }  // namespace blockfrag
