@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <type_traits>
 
@@ -308,6 +309,13 @@ void read_scene(const json& value, const std::string& source, ConfigErrors& erro
   }
 }
 
+// A number for a message, to three significant digits.
+std::string three_digits(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
 // The largest tan(alpha) a sample's block can have: the base block's, or the extreme of the
 // sampled geometry's supports (alpha, or a / b from half_width and half_height).
 double largest_tan_alpha(const StudyConfig& config) {
@@ -334,8 +342,13 @@ void measure_suite(StudyConfig& config, ConfigErrors& errors, bool single_record
     SuiteRecord& record = config.suite->records[k];
     const JsonPointer where = single_record ? JsonPointer("/scene/ground_motion/file")
                                             : JsonPointer("/scene/ground_motion/records") / k;
-    record.measures =
-        intensity_measures(*record.record, periods, measure.damping, config.base_scene.g);
+    try {
+      record.measures =
+          intensity_measures(*record.record, periods, measure.damping, config.base_scene.g);
+    } catch (const InvalidInput& refused) {  // an Sa period the record cannot be stepped at
+      errors.add(JsonPointer("/intensity_measure/period"), record.file + ": " + refused.what());
+      return;
+    }
     double unit = record.measures.pga_g;
     if (measure.type == ImType::pgv) unit = record.measures.pgv;
     if (measure.type == ImType::sa) unit = record.measures.sa_g.front();
@@ -349,7 +362,7 @@ void measure_suite(StudyConfig& config, ConfigErrors& errors, bool single_record
     if (!measure.cloud && top / unit > kMaxRecordScale) {
       errors.add(where, record.file + ": reaching the level " + format_number(top) + " " +
                             im_unit(measure.type) + " needs a scale of " +
-                            format_number(top / unit) + ", more than " +
+                            three_digits(top / unit) + ", more than " +
                             format_number(kMaxRecordScale) + " (its " + im_label(measure) + " is " +
                             format_number(unit) + " " + im_unit(measure.type) + ")");
     }
@@ -365,6 +378,9 @@ json canonical_json(const StudyConfig& config) {
   json scene = scene_to_json(config.base_scene);
   if (config.suite && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
     scene["ground_motion"] = record_suite_to_json(*config.suite);
+  } else if (config.suite) {  // one record: its content enters the study's identity too
+    scene["ground_motion"]["content_hash"] =
+        hash_to_hex(config.suite->records.front().content_hash);
   }
   return {{"scene", scene},
           {"inputs", inputs},
@@ -421,8 +437,18 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
     read_inputs(root.required_object("inputs"), config.base_scene, scene_valid, config);
 
   const bool pulse = !config.suite;
-  config.intensity = read_intensity_measure(root.required_object("intensity_measure"),
-                                            pulse ? ImType::pulse_amplitude : ImType::pga);
+  // A pulse's level is its amplitude in g, but the Mavroeidis-Papageorgiou pulse is given by its
+  // velocity: its levels are of its PGA, or of another measure when asked.
+  const bool velocity_pulse =
+      std::holds_alternative<MavroeidisPapageorgiouPulse>(config.base_scene.ground_motion);
+  config.intensity =
+      read_intensity_measure(root.required_object("intensity_measure"),
+                             pulse && !velocity_pulse ? ImType::pulse_amplitude : ImType::pga);
+  if (velocity_pulse && config.intensity.type == ImType::pulse_amplitude) {
+    root.errors().add(JsonPointer("/intensity_measure/type"),
+                      "a Mavroeidis-Papageorgiou pulse has no amplitude in g: use \"pga\" (the "
+                      "default), \"pgv\", \"sa\" or \"pga_over_g_tan_alpha\"");
+  }
   if (scene_valid && pulse && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
     root.add_error("intensity_measure",
                    "scales the ground motion, but /scene/ground_motion has type \"none\"");

@@ -64,6 +64,36 @@ TEST(PulseStudy, MavroeidisPapageorgiouIsScaledToItsPeakAcceleration) {
   }
 }
 
+// Given by its velocity, the Mavroeidis-Papageorgiou pulse has no amplitude in g: its levels are
+// of its PGA unless the study names another measure, and "pulse_amplitude" is refused.
+TEST(PulseStudy, MavroeidisPapageorgiouLevelsAreOfItsPgaByDefault) {
+  nlohmann::json document = {{"scene",
+                              {{"block", {{"half_width", 0.5}, {"half_height", 1.0}}},
+                               {"contact", {{"friction", 0.6}, {"restitution", 0.6}}},
+                               {"ground_motion",
+                                {{"type", "mavroeidis_papageorgiou"},
+                                 {"velocity_amplitude", 0.5},
+                                 {"period", 0.8},
+                                 {"gamma", 2.5}}},
+                               {"duration", 2.0}}},
+                             {"intensity_measure", {{"levels", {0.3}}}},
+                             {"samples_per_level", 1},
+                             {"limit_states", {{{"name", "overturn"}, {"type", "overturning"}}}},
+                             {"seed", 1}};
+  EXPECT_EQ(parse_study_config(document, "study.json").intensity.type, ImType::pga);
+  document["intensity_measure"]["type"] = "pulse_amplitude";
+  try {
+    parse_study_config(document, "study.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const ConfigError& error) {
+    ASSERT_EQ(error.messages().size(), 1u);
+    EXPECT_EQ(error.messages()[0].rfind(
+                  "study.json: /intensity_measure/type: a Mavroeidis-Papageorgiou", 0),
+              0u)
+        << error.messages()[0];
+  }
+}
+
 // One cycle of lambda = A cos(2 pi t / T) moves the ground at most A g T / (2 pi)
 // (docs/references.md: the velocity is A g T / (2 pi) sin(2 pi t / T)): at PGV stripes the
 // amplitude is the level times 2 pi / (g T), for each sample's own period.

@@ -193,6 +193,13 @@ TEST(RecordSuiteStudy, BadSuitesAndMeasuresAreRefusedAtTheirPaths) {
                   "/intensity_measure/levels: a cloud (\"scaling\": \"none\") has no levels")));
 }
 
+TEST(RecordSuiteStudy, AnSaPeriodTooShortToStepIsRefusedAtItsPath) {
+  EXPECT_THAT(
+      errors_of(
+          suite_study(three_records, {{"type", "sa"}, {"period", 1e-7}, {"levels", {0.2}}}, 2)),
+      ::testing::Contains(HasSubstr("study.json: /intensity_measure/period: decaying_sine.AT2: ")));
+}
+
 TEST(RecordSuiteStudy, ARecordOfZerosCannotBeScaled) {
   const std::filesystem::path folder =
       std::filesystem::temp_directory_path() / "blockfrag_zero_record";
@@ -220,12 +227,16 @@ TEST(RecordSuiteStudy, TheConfigHashFollowsWhatTheRecordsHold) {
     std::ofstream out(folder / "r.txt");
     out << "0 0\n0.01 " << value << "\n0.02 0\n";
   };
-  const json study = suite_study({"r.txt"}, {{"type", "pga"}, {"levels", {0.2}}}, 2);
+  const json suite = suite_study({"r.txt"}, {{"type", "pga"}, {"levels", {0.2}}}, 2);
+  json single = suite;  // the same record as the scene's one "record"
+  single["scene"]["ground_motion"] = {{"type", "record"}, {"file", "r.txt"}};
+  const std::string source = (folder / "study.json").string();
   write(0.1);
-  const auto first = parse_study_config(study, (folder / "study.json").string()).hash;
+  const auto suite_first = parse_study_config(suite, source).hash;
+  const auto single_first = parse_study_config(single, source).hash;
   write(0.2);
-  const auto second = parse_study_config(study, (folder / "study.json").string()).hash;
-  EXPECT_NE(first, second);
+  EXPECT_NE(parse_study_config(suite, source).hash, suite_first);
+  EXPECT_NE(parse_study_config(single, source).hash, single_first);
   std::filesystem::remove_all(folder);
 }
 
