@@ -114,11 +114,12 @@ int exit_code_for(const std::exception& error) {
 // Rank 0, once every sample is done: the output, the failures' summary, the exit code.
 int finish_study(const StudyConfig& config, const RunSettings& settings, const RunResult& result,
                  const SceneEvaluator& engine) {
-  write_study_output(config.output, config, result.records);
+  const StudyFragility fragility = write_study_output(config.output, config, result.records);
   std::filesystem::remove(settings.checkpoint);
   std::cerr << "wrote " << config.output.string() << " (" << result.computed
             << " samples computed in this run, " << result.checkpoints << " checkpoints taking "
             << result.checkpoint_seconds << " s)\n";
+  print_fragility_summary(std::cerr, config, fragility);
   const FailureReport failures = report_failures(config, result.records, engine);
   if (failures.total() > 0) {
     std::cerr << failures.failed << " failed and " << failures.rejected << " rejected of "

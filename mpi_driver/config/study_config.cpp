@@ -252,6 +252,9 @@ void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& confi
       state.kind = LimitStateKind::residual_slide;
       state.threshold = reader.required_number("threshold_m", positive).value_or(0.0);
     }
+    if (type != "overturning") {
+      state.overturned_exceeds = reader.boolean_or("overturned_exceeds", true);
+    }
     reader.finish(type ? "for type \"" + *type + "\"" : std::string{});
     if (name) {
       state.name = *name;
@@ -264,6 +267,8 @@ json limit_state_to_json(const LimitState& state) {
   json out = {{"name", state.name}, {"type", limit_state_kind_name(state.kind)}};
   if (state.kind == LimitStateKind::max_rotation) out["theta_over_alpha"] = state.threshold;
   if (state.kind == LimitStateKind::residual_slide) out["threshold_m"] = state.threshold;
+  if (state.kind != LimitStateKind::overturning)
+    out["overturned_exceeds"] = state.overturned_exceeds;
   return out;
 }
 
@@ -391,7 +396,8 @@ json canonical_json(const StudyConfig& config) {
           {"seed", config.seed},
           {"output", config.output.string()},
           {"checkpoint_interval_s", config.checkpoint_interval_s},
-          {"allowed_failed_fraction", config.allowed_failed_fraction}};
+          {"allowed_failed_fraction", config.allowed_failed_fraction},
+          {"bootstrap_resamples", config.bootstrap_resamples}};
 }
 
 }  // namespace
@@ -504,6 +510,8 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
       "checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
   config.allowed_failed_fraction = root.number_or(
       "allowed_failed_fraction", config.allowed_failed_fraction, Range::closed(0.0, 1.0));
+  config.bootstrap_resamples = static_cast<int>(root.integer_or(
+      "bootstrap_resamples", config.bootstrap_resamples, Range::closed(0, 100'000)));
   root.finish();
   if (errors.empty() && config.total_samples() > kMaxTotalSamples) {
     errors.add(JsonPointer("/samples_per_level"),

@@ -72,6 +72,9 @@ struct LimitState {
   std::string name;
   LimitStateKind kind = LimitStateKind::overturning;
   double threshold = 0.0;  // unused for overturning
+  // A block on its side has exceeded every rotation and slide limit: limit states nest, and their
+  // curves can be damage states of one component. False counts only the raw measure.
+  bool overturned_exceeds = true;
 };
 
 const char* limit_state_kind_name(LimitStateKind kind);
@@ -92,6 +95,8 @@ struct StudyConfig {
   double checkpoint_interval_s = 60.0;
   // The fraction of samples that may fail or be rejected before the run's exit code says so (3).
   double allowed_failed_fraction = 0.0;
+  // Resamples of the fit's bootstrap (0: none).
+  int bootstrap_resamples = 1000;
 
   nlohmann::json canonical;  // defaults filled, keys sorted
   // Of canonical without "output", "checkpoint_interval_s" and "allowed_failed_fraction": what

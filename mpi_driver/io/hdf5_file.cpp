@@ -136,6 +136,18 @@ void Hdf5Writer::set_attribute(const std::string& object, const std::string& nam
   write_attribute(file_, object, name, H5T_NATIVE_INT64, &value);
 }
 
+void Hdf5Writer::set_attribute(const std::string& object, const std::string& name,
+                               const std::vector<double>& values) {
+  const std::string what = "attribute " + name + " of " + object;
+  Handle target(H5Oopen(file_, object.c_str(), H5P_DEFAULT), H5Oclose, "open " + object);
+  const hsize_t size = values.size();
+  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose, "create a dataspace for " + what);
+  Handle attribute(
+      H5Acreate2(target.get(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Aclose, "create " + what);
+  check(H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, values.data()), "write " + what);
+}
+
 std::string read_root_string_attribute(const std::filesystem::path& path, const std::string& name) {
   silence_hdf5_error_printing();
   const std::string what = "attribute " + name + " of " + path.string();

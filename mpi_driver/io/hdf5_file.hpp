@@ -37,6 +37,9 @@ class Hdf5Writer {
   void set_attribute(const std::string& object, const std::string& name, const std::string& value);
   void set_attribute(const std::string& object, const std::string& name, double value);
   void set_attribute(const std::string& object, const std::string& name, std::int64_t value);
+  // A 1-D array attribute (h5py reads it as a numpy array).
+  void set_attribute(const std::string& object, const std::string& name,
+                     const std::vector<double>& values);
 
   // Flushes and closes; the destructor closes too but cannot report a failure.
   void close();

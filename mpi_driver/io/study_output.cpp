@@ -1,12 +1,13 @@
 #include "mpi_driver/io/study_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/scene/block_geometry.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
-#include "mpi_driver/study/limit_states.hpp"
+#include "mpi_driver/study/fragility_summary.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
 namespace blockfrag {
@@ -109,9 +110,57 @@ void write_results(Hdf5Writer& file, const std::vector<SampleRecord>& records) {
   file.write_column("/results/settle_time", column<double>(records, &SampleRecord::settle_time));
 }
 
-void write_fragility(Hdf5Writer& file, const StudyConfig& config,
-                     const std::vector<SampleRecord>& records, const SampleMeasures& measures) {
+std::string joined_names(const StudyConfig& config, const std::vector<std::size_t>& indices) {
+  std::string names;
+  for (const std::size_t k : indices) {
+    if (!names.empty()) names += ',';
+    names += config.limit_states[k].name;
+  }
+  return names;
+}
+
+void write_curve(Hdf5Writer& file, const std::string& group, const LimitState& state,
+                 const FragilityCurve& curve) {
+  file.create_group(group);
+  file.write_column(group + "/im", curve.im);
+  file.write_column(group + "/trials", curve.trials);
+  file.write_column(group + "/exceedances", curve.exceedances);
+  file.write_column(group + "/probability", curve.probability);
+  file.write_column(group + "/ci_low", curve.ci_low);
+  file.write_column(group + "/ci_high", curve.ci_high);
+  file.set_attribute(group, "type", std::string(limit_state_kind_name(state.kind)));
+  file.set_attribute(group, "threshold", state.threshold);
+  file.set_attribute(group, "overturned_exceeds",
+                     static_cast<std::int64_t>(state.overturned_exceeds ? 1 : 0));
+  file.set_attribute(group, "median", curve.median);
+  file.set_attribute(group, "beta", curve.beta);
+  file.set_attribute(group, "log_likelihood", curve.log_likelihood);
+  file.set_attribute(group, "fit_status", curve.fit_status);
+  file.set_attribute(group, "median_low", curve.median_low);
+  file.set_attribute(group, "median_high", curve.median_high);
+  file.set_attribute(group, "interval", std::string("Wilson score, 95 %"));
+  file.set_attribute(group, "median_se", curve.median_se);
+  file.set_attribute(group, "beta_se", curve.beta_se);
+  file.set_attribute(group, "deviance", curve.deviance);
+  file.set_attribute(group, "gof_dof", static_cast<std::int64_t>(curve.gof_dof));
+  file.set_attribute(group, "gof_p_value", curve.gof_p_value);
+  file.set_attribute(group, "max_misfit", curve.max_misfit);
+  const BootstrapResult& boot = curve.bootstrap;
+  file.set_attribute(group, "bootstrap_resamples", static_cast<std::int64_t>(boot.resamples));
+  file.set_attribute(group, "bootstrap_fitted", static_cast<std::int64_t>(boot.fitted));
+  if (boot.fitted == 0) return;
+  file.set_attribute(group, "median_ci", std::vector<double>{boot.median_low, boot.median_high});
+  file.set_attribute(group, "beta_ci", std::vector<double>{boot.beta_low, boot.beta_high});
+  file.write_column(group + "/band_im", boot.band_im);
+  file.write_column(group + "/band_low", boot.band_low);
+  file.write_column(group + "/band_high", boot.band_high);
+}
+
+StudyFragility write_fragility(Hdf5Writer& file, const StudyConfig& config,
+                               const std::vector<SampleRecord>& records,
+                               const SampleMeasures& measures) {
   const IntensityMeasure& measure = config.intensity;
+  StudyFragility fragility = study_fragility(config, records, measures.alphas, measures.ims);
   file.create_group("/fragility");
   file.set_attribute("/fragility", "im_name", std::string(im_type_name(measure.type)));
   file.set_attribute("/fragility", "im_units", std::string(im_unit(measure.type)));
@@ -127,33 +176,30 @@ void write_fragility(Hdf5Writer& file, const StudyConfig& config,
   file.set_attribute(
       "/fragility", "trials_exclude",
       std::string("samples whose status is not 0 (failed or rejected) are not trials"));
-  for (const auto& state : config.limit_states) {
-    const FragilityCurve curve =
-        fragility_curve(config, state, records, measures.alphas, measures.ims);
-    const std::string group = "/fragility/" + state.name;
-    file.create_group(group);
-    file.write_column(group + "/im", curve.im);
-    file.write_column(group + "/trials", curve.trials);
-    file.write_column(group + "/exceedances", curve.exceedances);
-    file.write_column(group + "/probability", curve.probability);
-    file.write_column(group + "/ci_low", curve.ci_low);
-    file.write_column(group + "/ci_high", curve.ci_high);
-    file.set_attribute(group, "type", std::string(limit_state_kind_name(state.kind)));
-    file.set_attribute(group, "threshold", state.threshold);
-    file.set_attribute(group, "median", curve.median);
-    file.set_attribute(group, "beta", curve.beta);
-    file.set_attribute(group, "log_likelihood", curve.log_likelihood);
-    file.set_attribute(group, "fit_status", curve.fit_status);
-    file.set_attribute(group, "median_low", curve.median_low);
-    file.set_attribute(group, "median_high", curve.median_high);
-    file.set_attribute(group, "interval", std::string("Wilson score, 95 %"));
+  file.set_attribute("/fragility", "severity_order", joined_names(config, fragility.severity));
+  std::string crossings;
+  for (const auto& [i, j] : fragility.crossings) {
+    if (!crossings.empty()) crossings += ';';
+    crossings += config.limit_states[i].name + ',' + config.limit_states[j].name;
   }
+  file.set_attribute("/fragility", "crossing_pairs", crossings);
+  file.set_attribute("/fragility", "bootstrap_resamples",
+                     static_cast<std::int64_t>(config.bootstrap_resamples));
+  for (std::size_t k = 0; k < config.limit_states.size(); ++k) {
+    const std::string group = "/fragility/" + config.limit_states[k].name;
+    write_curve(file, group, config.limit_states[k], fragility.curves[k]);
+    const auto rank = std::find(fragility.severity.begin(), fragility.severity.end(), k) -
+                      fragility.severity.begin();
+    file.set_attribute(group, "severity_rank", static_cast<std::int64_t>(rank));
+  }
+  return fragility;
 }
 
 }  // namespace
 
-void write_study_output(const std::filesystem::path& path, const StudyConfig& config,
-                        const std::vector<SampleRecord>& records) {
+StudyFragility write_study_output(const std::filesystem::path& path, const StudyConfig& config,
+                                  const std::vector<SampleRecord>& records) {
+  StudyFragility fragility;
   replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
     Hdf5Writer file(temporary);
     file.set_attribute("/", "config", canonical_text(config.canonical));
@@ -168,9 +214,10 @@ void write_study_output(const std::filesystem::path& path, const StudyConfig& co
     const SampleMeasures measures = write_samples(file, config);
     if (config.suite) write_records(file, *config.suite, config.intensity);
     write_results(file, records);
-    write_fragility(file, config, records, measures);
+    fragility = write_fragility(file, config, records, measures);
     file.close();
   });
+  return fragility;
 }
 
 std::string output_config_hash(const std::filesystem::path& path) {

@@ -1,39 +1,35 @@
 // The study's HDF5 output, written by rank 0 once every sample is done, through a fresh temporary
 // file, fsync, rename and fsync of the folder (atomic_file.hpp: a finished file is never modified
-// in place). Layout:
+// in place). docs/studies.md documents every group, dataset and attribute; in short:
 //
-//   /                 attributes: config (canonical JSON), config_hash (16 hex digits, FNV-1a 64
-//                     of the canonical config without output, checkpoint_interval_s and
-//                     allowed_failed_fraction),
-//                     blockfrag_version, total_samples, samples_per_level, design
-//   /samples/<input>  float64[total]: one column per input of the config (direction as +1/-1)
-//   /samples/level    int64[total]: intensity level index, i / samples_per_level
-//   /samples/im       float64[total]: the level's pulse amplitude (g, positive)
-//   /results/status   int64[total]: 0 ok, 1 failed (engine budget), 2 rejected (invalid scene)
-//   /results/overturned, impacts, steps, rhs_evaluations           int64[total]
-//   /results/max_abs_theta, final_theta, final_slide, max_abs_slide float64[total] (rad, m)
-//   /results/overturn_time                                          float64[total], NaN when none
-//   /results/settled                                                int64[total]: 1 the fate is
-//   final /results/settle_time                                            float64[total], NaN when
-//   not settled /fragility        attributes: im_name, im_units, trials_exclude /fragility/<name>
-//   datasets im, trials, exceedances, probability, ci_low, ci_high (one entry per
-//                     level); attributes type, threshold, interval, median, beta, log_likelihood
-//                     (NaN when the fit does not exist), fit_status ("ok" or why there is no fit),
-//                     median_low/median_high (where the data place the median)
-// Everything in /samples, /results and /fragility depends only on the config.
+//   /            attributes config (canonical JSON), config_hash, blockfrag_version,
+//                total_samples, samples_per_level, design
+//   /samples     one float64 column per input, and level, im, scale, pga_g, pgv_m_s (record when
+//                the motion is a record suite): what each sample was
+//   /records     a record suite's records: file, vertical, weight, pga_g, pgv_m_s, duration_s
+//                (sa_g with an Sa measure)
+//   /results     status, overturned, impacts, steps, rhs_evaluations, max_abs_theta, final_theta,
+//                final_slide, max_abs_slide, overturn_time, settled, settle_time: what it did
+//   /fragility   attributes of the measure, severity_order and crossing_pairs; one group per
+//                limit state with its points (im, trials, exceedances, probability, ci_low,
+//                ci_high), its fit and the fit's diagnostics as attributes, and the bootstrap's
+//                band (band_im, band_low, band_high)
+//
+// Everything in /samples, /records, /results and /fragility depends only on the config.
 #pragma once
 
 #include <filesystem>
 #include <vector>
 
 #include "mpi_driver/config/study_config.hpp"
+#include "mpi_driver/study/fragility_summary.hpp"
 #include "mpi_driver/study/study_record.hpp"
 
 namespace blockfrag {
 
-// records[i] is sample i's record, for every sample.
-void write_study_output(const std::filesystem::path& path, const StudyConfig& config,
-                        const std::vector<SampleRecord>& records);
+// records[i] is sample i's record, for every sample. Returns the fragility it wrote.
+StudyFragility write_study_output(const std::filesystem::path& path, const StudyConfig& config,
+                                  const std::vector<SampleRecord>& records);
 
 // The config_hash attribute of an existing output, or an empty string when path is not a readable
 // blockfrag output.

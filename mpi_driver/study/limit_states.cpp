@@ -1,22 +1,41 @@
 #include "mpi_driver/study/limit_states.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include "engine/errors.hpp"
 #include "postproc/fragility/cloud_fragility.hpp"
+#include "sampling/philox_stream.hpp"
 
 namespace blockfrag {
 
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha) {
+  if (record.overturned != 0 && state.overturned_exceeds) return true;
   switch (state.kind) {
     case LimitStateKind::overturning: return record.overturned != 0;
-    case LimitStateKind::max_rotation:
-      return record.overturned != 0 || record.max_abs_theta / alpha > state.threshold;
+    case LimitStateKind::max_rotation: return record.max_abs_theta / alpha > state.threshold;
     case LimitStateKind::residual_slide: return std::abs(record.final_slide) > state.threshold;
   }
   return false;
 }
+
+namespace {
+
+// A cloud's bootstrap resamples every sample: at most this many draws in all (about a minute).
+constexpr double kMaxCloudBootstrapDraws = 2e8;
+
+// The bootstrap's uniforms: a Philox stream of the study's seed named after the limit state, so
+// the intervals are a pure function of the config, whatever ran the study.
+UniformDraw bootstrap_uniforms(const StudyConfig& config, const LimitState& state) {
+  const std::uint32_t stream = stream_id("bootstrap/" + state.name);
+  const std::uint64_t seed = config.seed;
+  return [seed, stream](std::uint64_t resample, std::uint64_t draw) {
+    return uniform_open01(seed, stream, resample, static_cast<std::uint32_t>(draw));
+  };
+}
+
+}  // namespace
 
 FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& state,
                                const std::vector<SampleRecord>& records,
@@ -31,7 +50,15 @@ FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& stat
       im.push_back(ims[i]);
       exceeded.push_back(exceeds(state, records[i], alphas[i]));
     }
-    return fragility_from_samples(im, exceeded);
+    FragilityCurve curve = fragility_from_samples(im, exceeded);
+    const double affordable =
+        kMaxCloudBootstrapDraws / std::max<double>(1.0, static_cast<double>(im.size()));
+    const int resamples =
+        static_cast<int>(std::min<double>(config.bootstrap_resamples, affordable));
+    if (curve.fit_status == "ok" && resamples > 0) {
+      curve.bootstrap = bootstrap_cloud(im, exceeded, resamples, bootstrap_uniforms(config, state));
+    }
+    return curve;
   }
   const std::size_t levels = config.intensity.levels.size();
   std::vector<std::int64_t> trials(levels, 0), exceedances(levels, 0);
@@ -42,7 +69,14 @@ FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& stat
     ++trials[level];
     if (exceeds(state, record, alphas[i])) ++exceedances[level];
   }
-  return fragility_from_counts(config.intensity.levels, std::move(trials), std::move(exceedances));
+  FragilityCurve curve =
+      fragility_from_counts(config.intensity.levels, std::move(trials), std::move(exceedances));
+  if (curve.fit_status == "ok" && config.bootstrap_resamples > 0) {
+    curve.bootstrap =
+        bootstrap_stripes(curve.im, curve.trials, curve.exceedances, config.bootstrap_resamples,
+                          bootstrap_uniforms(config, state));
+  }
+  return curve;
 }
 
 }  // namespace blockfrag

@@ -11,8 +11,10 @@
 
 namespace blockfrag {
 
-// Whether one successful sample exceeds the limit state; alpha = atan(a / b) of its block.
-// An overturned block exceeds every rotation limit (its rotation reached pi/2 and beyond).
+// Whether one successful sample exceeds the limit state; alpha = atan(a / b) of its block. An
+// overturned block exceeds every limit state (it lies on its side: past any rotation, and its
+// slide is no longer a sliding block's), unless the state counts only its raw measure
+// (overturned_exceeds false).
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha);
 
 // records[i], alphas[i] and ims[i] belong to sample i (all samples of the study). Stripes count

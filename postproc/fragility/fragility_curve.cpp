@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "postproc/fragility/binomial_interval.hpp"
+#include "postproc/fragility/fit_diagnostics.hpp"
 #include "postproc/fragility/lognormal_fit.hpp"
 
 namespace blockfrag {
@@ -11,18 +12,11 @@ namespace blockfrag {
 FragilityCurve fragility_from_counts(std::vector<double> im, std::vector<std::int64_t> trials,
                                      std::vector<std::int64_t> exceedances) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  FragilityCurve curve{std::move(im),
-                       std::move(trials),
-                       std::move(exceedances),
-                       {},
-                       {},
-                       {},
-                       nan,
-                       nan,
-                       nan,
-                       {},
-                       nan,
-                       nan};
+  FragilityCurve curve;
+  curve.im = std::move(im);
+  curve.trials = std::move(trials);
+  curve.exceedances = std::move(exceedances);
+  curve.median = curve.beta = curve.log_likelihood = nan;
   for (std::size_t k = 0; k < curve.im.size(); ++k) {
     const auto n = curve.trials[k], z = curve.exceedances[k];
     curve.probability.push_back(n > 0 ? static_cast<double>(z) / static_cast<double>(n) : nan);
@@ -38,6 +32,16 @@ FragilityCurve fragility_from_counts(std::vector<double> im, std::vector<std::in
     curve.median = fit.median;
     curve.beta = fit.beta;
     curve.log_likelihood = fit.log_likelihood;
+    const StandardErrors errors =
+        fit_standard_errors(curve.im, curve.trials, curve.exceedances, fit);
+    curve.median_se = errors.median;
+    curve.beta_se = errors.beta;
+    const GoodnessOfFit gof =
+        goodness_of_fit(curve.im, curve.trials, curve.exceedances, fit.median, fit.beta);
+    curve.deviance = gof.deviance;
+    curve.gof_dof = gof.dof;
+    curve.gof_p_value = gof.p_value;
+    curve.max_misfit = gof.max_misfit;
   }
   return curve;
 }

@@ -3,8 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
+
+#include "postproc/fragility/bootstrap.hpp"
 
 namespace blockfrag {
 
@@ -21,6 +24,17 @@ struct FragilityCurve {
   std::string fit_status;  // FitStatus's name: "ok", "no_exceedances", "separated", ...
   double median_low;       // where the data place the median when the fit does not exist
   double median_high;
+  // With a fit: its standard errors from the observed information, and its goodness of fit
+  // (postproc/fragility/fit_diagnostics.hpp); NaN (dof 0) without one.
+  double median_se = std::numeric_limits<double>::quiet_NaN();
+  double beta_se = std::numeric_limits<double>::quiet_NaN();
+  double deviance = std::numeric_limits<double>::quiet_NaN();
+  int gof_dof = 0;
+  double gof_p_value = std::numeric_limits<double>::quiet_NaN();
+  double max_misfit = std::numeric_limits<double>::quiet_NaN();
+  // The bootstrap's intervals and band (postproc/fragility/bootstrap.hpp); resamples 0 when not
+  // run.
+  BootstrapResult bootstrap;
 };
 
 // im[k] is level k's intensity, trials[k] its samples, exceedances[k] those past the limit state.

@@ -133,6 +133,8 @@ TEST(StudyConfig, HashIgnoresOutputIntervalAndSpellingButNotTheScience) {
                                                  {"/inputs/friction/max", 0.91},
                                                  {"/scene/duration", 2.5},
                                                  {"/limit_states/1/theta_over_alpha", 0.6},
+                                                 {"/limit_states/2/overturned_exceeds", false},
+                                                 {"/bootstrap_resamples", 200},
                                                  {"/intensity_measure/levels/2", 1.0}}) {
     json changed = small_study();
     changed[JsonPointer(pointer)] = value;
@@ -153,6 +155,23 @@ TEST(StudyConfig, ReportsEveryErrorAtOnceWithItsPath) {
   EXPECT_THAT(all, HasSubstr("study.json: /inputs/restitution: every value must be in [0, 1]"));
   EXPECT_THAT(all, HasSubstr("study.json: /seed: must be >= 0"));
   EXPECT_THAT(all, HasSubstr("study.json: /limit_states/0/nmae: unknown key"));
+}
+
+TEST(StudyConfig, LimitStatesNestUnlessToldAndTheBootstrapDefaultsToAThousand) {
+  json document = small_study();
+  document["limit_states"][2]["overturned_exceeds"] = false;
+  const StudyConfig config = parse_study_config(document, "study.json");
+  EXPECT_TRUE(config.limit_states[1].overturned_exceeds);
+  EXPECT_FALSE(config.limit_states[2].overturned_exceeds);
+  EXPECT_EQ(config.canonical["limit_states"][1]["overturned_exceeds"], true);
+  EXPECT_EQ(config.bootstrap_resamples, 1000);
+
+  // Overturning is its own limit state: the option means nothing there.
+  document["limit_states"][0]["overturned_exceeds"] = false;
+  document["bootstrap_resamples"] = 100'001;
+  const std::string all = ::testing::PrintToString(messages_of(document));
+  EXPECT_THAT(all, HasSubstr("study.json: /limit_states/0/overturned_exceeds: unknown key"));
+  EXPECT_THAT(all, HasSubstr("study.json: /bootstrap_resamples: must be"));
 }
 
 TEST(StudyConfig, TruncationMakesAnUnboundedLawAcceptable) {
@@ -281,9 +300,8 @@ TEST(StudyFragility, CountsPerLevelExcludeFailedSamples) {
       record(1, false, 0.6 * alpha, -0.06),  // rocks past 0.5 alpha, slides 6 cm the other way
       record(2, true, 1.6, 0.01, SampleStatus::failed),  // excluded whatever it says
       record(3, false, 0.4 * alpha, 0.04),
-      record(4, true, std::numbers::pi / 2,
-             0.3),  // an overturned block exceeds every rotation limit
-      record(5, true, std::numbers::pi / 2, 0.0),
+      record(4, true, std::numbers::pi / 2, 0.3),
+      record(5, true, std::numbers::pi / 2, 0.0),  // on its side: past every limit, slid or not
       record(6, false, 0.0, 0.0, SampleStatus::rejected),
       record(7, false, 0.55 * alpha, 0.05),  // exactly at the slide threshold: not above it
   };
@@ -294,10 +312,16 @@ TEST(StudyFragility, CountsPerLevelExcludeFailedSamples) {
   EXPECT_EQ(overturn.trials, (std::vector<std::int64_t>{3, 3}));
   EXPECT_EQ(overturn.exceedances, (std::vector<std::int64_t>{0, 2}));
   EXPECT_EQ(rock.exceedances, (std::vector<std::int64_t>{1, 3}));
-  EXPECT_EQ(slide.exceedances, (std::vector<std::int64_t>{1, 1}));
+  EXPECT_EQ(slide.exceedances, (std::vector<std::int64_t>{1, 2}));
   EXPECT_EQ(overturn.im, (std::vector<double>{0.5, 1.0}));
   EXPECT_DOUBLE_EQ(rock.probability[0], 1.0 / 3.0);
   EXPECT_EQ(rock.probability[1], 1.0);
+
+  // The raw measures: an overturned block counts only by its own rotation and slide.
+  LimitState raw_slide = config.limit_states[2];
+  raw_slide.overturned_exceeds = false;
+  EXPECT_EQ(fragility_curve(config, raw_slide, records, alphas).exceedances,
+            (std::vector<std::int64_t>{1, 1}));
 }
 
 TEST(StudyFragility, WilsonIntervalAndFitMatchTheReferenceData) {
