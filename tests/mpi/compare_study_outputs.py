@@ -3,7 +3,10 @@ and dtypes, NaN equal to NaN by bit pattern), the fragility attributes, and the 
 
 usage: compare_study_outputs.py REFERENCE.h5 OTHER.h5 [OTHER.h5 ...]
 Also checks that each file's sample columns cover every sample exactly once (the level column is
-i // samples_per_level for i = 0..total-1), so a missing or duplicated sample cannot pass.
+i // samples_per_level for i = 0..total-1), so a missing or duplicated sample cannot pass, and that
+the limit states nest: at every level of a stripe study, each limit state an overturned block
+exceeds (overturned_exceeds 1) counts at least the level's overturned samples, so P(any limit
+state) >= P(overturning); a residual slide's counts are recounted from /results.
 """
 import sys
 
@@ -42,7 +45,28 @@ def check_complete(path, f):
         ok = int(np.sum(f["results/status"][()] == 0))
         if int(trials.sum()) != ok:
             sys.exit(f"{path}: /fragility/{name}: {trials.sum()} trials for {ok} successful samples")
+    check_nested(path, f)
 
+
+def check_nested(path, f):
+    if f["fragility"].attrs["scaling"] != "stripes":
+        return
+    ok = f["results/status"][()] == 0
+    overturned = ok & (f["results/overturned"][()] != 0)
+    levels = f["samples/level"][()]
+    count = lambda mask: np.bincount(levels[mask], minlength=int(levels.max()) + 1)
+    for name in f["fragility"]:
+        group = f["fragility"][name]
+        nested = group.attrs["type"] != "overturning" and group.attrs["overturned_exceeds"]
+        exceedances = group["exceedances"][()]
+        if nested and np.any(exceedances < count(overturned)):
+            sys.exit(f"{path}: /fragility/{name}: fewer exceedances than overturned samples at a "
+                     "level: the limit states do not nest")
+        if group.attrs["type"] == "residual_slide":
+            slid = ok & (np.abs(f["results/final_slide"][()]) > group.attrs["threshold"])
+            if not np.array_equal(exceedances, count(slid | overturned if nested else slid)):
+                sys.exit(f"{path}: /fragility/{name}: exceedances are not the samples whose "
+                         "|final_slide| exceeds the threshold" + (" or that overturned" if nested else ""))
 
 def main():
     reference_path, others = sys.argv[1], sys.argv[2:]
