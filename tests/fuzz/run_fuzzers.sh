@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Builds the fuzz targets (tests/fuzz/*_fuzzer.cpp) with clang, libFuzzer, ASan and UBSan in
+# build-fuzz, then runs each for SECONDS from a copy of the seed corpus (tests/data, configs), so the
+# repository is not modified. Fails if any target finds a crash, a sanitizer report, an exception
+# other than InvalidInput, a hang (-timeout=10) or a huge allocation (-rss_limit_mb=2048).
+#   tests/fuzz/run_fuzzers.sh SECONDS [TARGET...]     e.g. 30, or 600 scene_json_fuzzer
+# Environment: BUILD_DIR (default build-fuzz); JOBS, targets run at once (default 1; each uses one
+# core); FUZZ_WORK, a folder for the corpora, logs and crash inputs (default a temporary folder,
+# removed unless a target failed); FUZZ_ARGS, more libFuzzer options.
+# The corpus a run grows is FUZZ_WORK/corpus/TARGET; a crash input is FUZZ_WORK/artifacts/TARGET/.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+seconds=${1:?usage: tests/fuzz/run_fuzzers.sh SECONDS [TARGET...]}
+shift
+build=${BUILD_DIR:-build-fuzz}
+jobs=${JOBS:-1}
+
+# The fuzz build: only the config library (engine, sampling, JSON) and the fuzz targets, at -O1.
+CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O1 \
+  -DBLOCKFRAG_BUILD_FUZZERS=ON -DBLOCKFRAG_BUILD_TESTS=OFF -DBLOCKFRAG_BUILD_DRIVER=OFF -DBLOCKFRAG_WERROR=ON >/dev/null
+cmake --build "$build" --target blockfrag_fuzzers -j "$(nproc)"
+
+targets=("$@")
+if ((${#targets[@]} == 0)); then
+  for source in tests/fuzz/*_fuzzer.cpp; do targets+=("$(basename "$source" .cpp)"); done
+fi
+
+keep_work=${FUZZ_WORK:+yes}
+work=${FUZZ_WORK:-$(mktemp -d)}
+mkdir -p "$work"
+work=$(cd "$work" && pwd)
+
+# The seeds of a target, by what it reads.
+seeds() {
+  case "$1" in
+    at2_record_fuzzer)
+      find tests/data/records tests/data/bad_records -maxdepth 1 -type f -iname '*.at2' ;;
+    two_column_record_fuzzer)
+      find tests/data/records tests/data/bad_records -maxdepth 1 -type f \
+        ! -iname '*.at2' ! -name '*.json' ! -name '*.py' ;;
+    *)
+      ls tests/data/bad_scenes/*.json tests/data/bad_studies/*.json tests/data/pulse_scenes/*.json \
+        tests/data/records/*.json configs/*.json ;;
+  esac
+}
+dictionary() {
+  case "$1" in
+    *_record_fuzzer) echo tests/fuzz/records.dict ;;
+    *) echo tests/fuzz/json.dict ;;
+  esac
+}
+
+# Runs one target; its log is $work/TARGET.log, its exit code $work/TARGET.rc.
+run_target() {
+  local target=$1 corpus="$work/corpus/$1" artifacts="$work/artifacts/$1/" tmp="$work/tmp/$1"
+  mkdir -p "$corpus" "$artifacts" "$tmp"
+  seeds "$target" | while read -r seed; do cp "$seed" "$corpus/seed-$(basename "$seed")"; done
+  local rc=0
+  # TMPDIR: each target's private record folder (tests/fuzz/fuzz_support.hpp) is made in there.
+  TMPDIR="$tmp" UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -dict="$(dictionary "$target")" -artifact_prefix="$artifacts" -print_final_stats=1 \
+    ${FUZZ_ARGS:-} "$corpus" >"$work/$target.log" 2>&1 || rc=$?
+  echo "$rc" >"$work/$target.rc"
+}
+
+echo "== fuzzing ${targets[*]} for ${seconds} s each, $jobs at a time, in $work"
+start=$(date +%s)
+running=0
+for target in "${targets[@]}"; do
+  if [ ! -x "$build/tests/fuzz/$target" ]; then
+    echo "no fuzz target $target (tests/fuzz/$target.cpp)" >&2
+    exit 2
+  fi
+  run_target "$target" &
+  running=$((running + 1))
+  if ((running >= jobs)); then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait
+
+passed=0 failed=0
+for target in "${targets[@]}"; do
+  rc=$(cat "$work/$target.rc")
+  stat() { sed -n "s/^stat::$1: *//p" "$work/$target.log" | tail -1; }
+  coverage=$(grep -oE 'cov: [0-9]+ ft: [0-9]+ corp: [0-9]+' "$work/$target.log" | tail -1 || true)
+  if [ "$rc" = 0 ]; then
+    passed=$((passed + 1))
+    echo "PASS $target: $(stat number_of_executed_units) runs, $(stat average_exec_per_sec) exec/s, $coverage"
+  else
+    failed=$((failed + 1))
+    keep_work=yes
+    echo "FAIL $target (exit $rc): the input is in $work/artifacts/$target/; the end of its log:"
+    tail -n 80 "$work/$target.log"
+  fi
+done
+echo "== fuzzing took $(($(date +%s) - start)) s"
+[ -n "$keep_work" ] || rm -rf "$work"
+echo "fuzz: $passed passed, $failed failed"
+((failed == 0))
