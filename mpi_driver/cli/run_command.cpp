@@ -14,12 +14,14 @@
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/io/study_output.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/parallel/progress.hpp"
 #include "mpi_driver/parallel/signals.hpp"
 #include "mpi_driver/parallel/study_lock.hpp"
 #include "mpi_driver/study/failure_report.hpp"
+#include "mpi_driver/study/fragility_summary.hpp"
 
 namespace blockfrag {
 namespace {
@@ -114,13 +116,19 @@ int exit_code_for(const std::exception& error) {
 // Rank 0, once every sample is done: the output, the failures' summary, the exit code.
 int finish_study(const StudyConfig& config, const RunSettings& settings, const RunResult& result,
                  const SceneEvaluator& engine) {
-  const StudyFragility fragility = write_study_output(config.output, config, result.records);
+  StudyTallies tallies;
+  {
+    const RecordSpool spool(settings.records, config.hash, config.total_samples(),
+                            RecordSpool::Mode::resume);
+    tallies = write_study_output(config.output, config, spool);
+  }
   std::filesystem::remove(settings.checkpoint);
+  std::filesystem::remove(settings.records);
   std::cerr << "wrote " << config.output.string() << " (" << result.computed
             << " samples computed in this run, " << result.checkpoints << " checkpoints taking "
             << result.checkpoint_seconds << " s)\n";
-  print_fragility_summary(std::cerr, config, fragility);
-  const FailureReport failures = report_failures(config, result.records, engine);
+  print_fragility_summary(std::cerr, config, tallies.fragility);
+  const FailureReport failures = tallies.failures.report(config, engine);
   if (failures.total() > 0) {
     std::cerr << failures.failed << " failed and " << failures.rejected << " rejected of "
               << config.total_samples()
@@ -157,6 +165,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
 
   RunSettings settings;
   settings.checkpoint = checkpoint_path_for(config.output);
+  settings.records = record_spool_path_for(config.output);
   settings.checkpoint_interval_s = config.checkpoint_interval_s;
   settings.checkpoint_hooks.pause_before_rename_s = checkpoint_pause_from_environment();
   settings.log = rank == 0 ? &std::cerr : nullptr;

@@ -513,13 +513,19 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   config.bootstrap_resamples = static_cast<int>(root.integer_or(
       "bootstrap_resamples", config.bootstrap_resamples, Range::closed(0, 100'000)));
   root.finish();
-  if (errors.empty() && config.total_samples() > kMaxTotalSamples) {
+  if (errors.empty() && config.design == Design::latin_hypercube &&
+      config.samples_per_level > kMaxLatinHypercubeLevel) {
     errors.add(JsonPointer("/samples_per_level"),
-               "the study has " + std::to_string(config.intensity.level_count()) + " levels x " +
-                   std::to_string(config.samples_per_level) +
-                   " samples = " + std::to_string(config.total_samples()) + ", more than the " +
-                   std::to_string(kMaxTotalSamples) +
-                   " rank 0 can hold; split it into several studies");
+               "a Latin hypercube level of " + std::to_string(config.samples_per_level) +
+                   " samples, more than the " + std::to_string(kMaxLatinHypercubeLevel) +
+                   " whose permutations every rank holds; use \"design\": \"monte_carlo\" (as "
+                   "good at this size) or fewer samples per level");
+  }
+  if (errors.empty() && config.intensity.cloud && config.total_samples() > kMaxCloudSamples) {
+    errors.add(JsonPointer("/samples_per_level"),
+               "a cloud of " + std::to_string(config.total_samples()) + " samples, more than the " +
+                   std::to_string(kMaxCloudSamples) +
+                   " whose per-sample fit rank 0 can hold; split it into several studies");
   }
   errors.throw_if_any();
 

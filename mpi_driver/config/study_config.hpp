@@ -108,9 +108,12 @@ struct StudyConfig {
   }
 };
 
-// A study rank 0 can hold in memory: it keeps every sample's record (88 bytes) until the output is
-// written.
-inline constexpr std::int64_t kMaxTotalSamples = 20'000'000;
+// The largest cloud: its per-sample fit keeps each sample's intensity and verdicts in memory (about
+// 9 bytes a sample; a study of stripes streams its records and has no such limit).
+inline constexpr std::int64_t kMaxCloudSamples = 100'000'000;
+// The largest level of a Latin hypercube: every rank holds the level's permutation of each input
+// (4 bytes a sample and input). Monte Carlo draws need no memory and have no such limit.
+inline constexpr std::int64_t kMaxLatinHypercubeLevel = 20'000'000;
 
 // The command line's options that replace config values (before canonicalisation and hashing).
 struct StudyOverrides {

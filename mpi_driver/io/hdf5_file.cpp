@@ -54,6 +54,22 @@ void write_typed_column(hid_t file, const std::string& path, const std::vector<T
 }
 
 template <typename T>
+void write_typed_part(hid_t file, const std::string& path, std::int64_t offset,
+                      std::span<const T> values, hid_t memory_type) {
+  if (values.empty()) return;
+  Handle dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose, "open dataset " + path);
+  Handle file_space(H5Dget_space(dataset.get()), H5Sclose, "get the dataspace of " + path);
+  const hsize_t start = static_cast<hsize_t>(offset), count = values.size();
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &start, nullptr, &count, nullptr),
+        "select a part of " + path);
+  Handle memory_space(H5Screate_simple(1, &count, nullptr), H5Sclose,
+                      "create a dataspace for a part of " + path);
+  check(H5Dwrite(dataset.get(), memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT,
+                 values.data()),
+        "write a part of " + path);
+}
+
+template <typename T>
 void write_attribute(hid_t file, const std::string& object, const std::string& name, hid_t type,
                      const T* value) {
   const std::string what = "attribute " + name + " of " + object;
@@ -110,6 +126,26 @@ void Hdf5Writer::write_column(const std::string& path, const std::vector<double>
 
 void Hdf5Writer::write_column(const std::string& path, const std::vector<std::int64_t>& values) {
   write_typed_column(file_, path, values, H5T_STD_I64LE, H5T_NATIVE_INT64);
+}
+
+void Hdf5Writer::create_column(const std::string& path, std::int64_t size, ColumnType type) {
+  const hsize_t length = static_cast<hsize_t>(size);
+  Handle space(H5Screate_simple(1, &length, nullptr), H5Sclose, "create a dataspace for " + path);
+  const auto properties = creation_properties(H5P_DATASET_CREATE, path);
+  Handle dataset(
+      H5Dcreate2(file_, path.c_str(), type == ColumnType::float64 ? H5T_IEEE_F64LE : H5T_STD_I64LE,
+                 space.get(), H5P_DEFAULT, properties.get(), H5P_DEFAULT),
+      H5Dclose, "create dataset " + path);
+}
+
+void Hdf5Writer::write_part(const std::string& path, std::int64_t offset,
+                            std::span<const double> values) {
+  write_typed_part(file_, path, offset, values, H5T_NATIVE_DOUBLE);
+}
+
+void Hdf5Writer::write_part(const std::string& path, std::int64_t offset,
+                            std::span<const std::int64_t> values) {
+  write_typed_part(file_, path, offset, values, H5T_NATIVE_INT64);
 }
 
 void Hdf5Writer::write_column(const std::string& path, const std::vector<std::string>& values) {

@@ -1,11 +1,12 @@
-// A small writer over the HDF5 C API for what the study output needs: groups, 1-D columns and
-// scalar attributes. Handles are closed by RAII; every failed call throws Hdf5Error naming the
-// object. Object modification times are not recorded, so the file's content depends only on what
-// is written.
+// A small writer over the HDF5 C API for what the study output needs: groups, 1-D columns (whole,
+// or in parts for columns longer than memory) and attributes. Handles are closed by RAII; every
+// failed call throws Hdf5Error naming the object. Object modification times are not recorded, so
+// the file's content depends only on what is written.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@ class Hdf5Error : public FileFailure {
 
 class Hdf5Writer {
  public:
+  enum class ColumnType { float64, int64 };
+
   // Creates the file, which must not exist yet (exclusive: a link or file there is an error).
   explicit Hdf5Writer(const std::filesystem::path& path);
   ~Hdf5Writer();
@@ -30,6 +33,11 @@ class Hdf5Writer {
   void create_group(const std::string& path);
   void write_column(const std::string& path, const std::vector<double>& values);
   void write_column(const std::string& path, const std::vector<std::int64_t>& values);
+  // A column of `size` entries too long to hold at once: created empty, then filled in parts.
+  void create_column(const std::string& path, std::int64_t size, ColumnType type);
+  void write_part(const std::string& path, std::int64_t offset, std::span<const double> values);
+  void write_part(const std::string& path, std::int64_t offset,
+                  std::span<const std::int64_t> values);
   // Variable-length UTF-8 strings (h5py reads them as bytes, .asstr() as str).
   void write_column(const std::string& path, const std::vector<std::string>& values);
 

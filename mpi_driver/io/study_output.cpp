@@ -7,57 +7,111 @@
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
-#include "mpi_driver/study/fragility_summary.hpp"
+#include "mpi_driver/study/fragility_tally.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
 namespace blockfrag {
 namespace {
 
-template <typename T, typename Field>
-std::vector<T> column(const std::vector<SampleRecord>& records, Field field) {
-  std::vector<T> values;
-  values.reserve(records.size());
-  for (const auto& record : records) values.push_back(record.*field);
-  return values;
-}
+// Samples at a time in the streaming pass: 64k records and their columns, a few tens of MB.
+constexpr std::int64_t kBlock = 1 << 16;
 
-// Each sample's block alpha and intensity, which the fragility needs.
-struct SampleMeasures {
-  std::vector<double> alphas;
-  std::vector<double> ims;
+// The /samples and /results columns of one block of samples, written where they belong.
+class SampleColumns {
+ public:
+  explicit SampleColumns(const StudyConfig& config)
+      : config_(config), inputs_(config.inputs.size()) {}
+
+  // Creates every column, full length, empty.
+  void create(Hdf5Writer& file) const {
+    const std::int64_t total = config_.total_samples();
+    using Type = Hdf5Writer::ColumnType;
+    file.create_group("/samples");
+    for (const auto& input : config_.inputs) {
+      file.create_column(std::string("/samples/") + input_key(input.input), total, Type::float64);
+    }
+    file.create_column("/samples/level", total, Type::int64);
+    file.create_column("/samples/im", total, Type::float64);
+    file.set_attribute("/samples/im", "units", std::string(im_unit(config_.intensity.type)));
+    for (const char* name : {"/samples/scale", "/samples/pga_g", "/samples/pgv_m_s"}) {
+      file.create_column(name, total, Type::float64);
+    }
+    if (config_.suite) file.create_column("/samples/record", total, Type::int64);
+    file.create_group("/results");
+    for (const char* name :
+         {"status", "overturned", "impacts", "steps", "rhs_evaluations", "settled"}) {
+      file.create_column(std::string("/results/") + name, total, Type::int64);
+    }
+    for (const char* name : {"max_abs_theta", "final_theta", "final_slide", "max_abs_slide",
+                             "overturn_time", "settle_time"}) {
+      file.create_column(std::string("/results/") + name, total, Type::float64);
+    }
+    file.set_attribute(
+        "/results/status", "meaning",
+        std::string("0 ok, 1 failed (engine budget exceeded), 2 rejected (invalid scene)"));
+  }
+
+  void clear() {
+    for (auto& values : inputs_) values.clear();
+    level_.clear();
+    record_.clear();
+    im_.clear();
+    scale_.clear();
+    pga_.clear();
+    pgv_.clear();
+  }
+
+  void add(const StudySample& sample) {
+    for (std::size_t k = 0; k < inputs_.size(); ++k) inputs_[k].push_back(sample.values[k]);
+    level_.push_back(sample.level);
+    record_.push_back(sample.record);
+    im_.push_back(sample.im);
+    scale_.push_back(sample.scale);
+    pga_.push_back(sample.pga_g);
+    pgv_.push_back(sample.pgv_m_s);
+  }
+
+  void write(Hdf5Writer& file, std::int64_t first, const std::vector<SampleRecord>& records) const {
+    for (std::size_t k = 0; k < inputs_.size(); ++k) {
+      file.write_part(std::string("/samples/") + input_key(config_.inputs[k].input), first,
+                      std::span<const double>(inputs_[k]));
+    }
+    file.write_part("/samples/level", first, std::span<const std::int64_t>(level_));
+    file.write_part("/samples/im", first, std::span<const double>(im_));
+    file.write_part("/samples/scale", first, std::span<const double>(scale_));
+    file.write_part("/samples/pga_g", first, std::span<const double>(pga_));
+    file.write_part("/samples/pgv_m_s", first, std::span<const double>(pgv_));
+    if (config_.suite)
+      file.write_part("/samples/record", first, std::span<const std::int64_t>(record_));
+    write_field(file, "status", first, records, &SampleRecord::status);
+    write_field(file, "overturned", first, records, &SampleRecord::overturned);
+    write_field(file, "impacts", first, records, &SampleRecord::impacts);
+    write_field(file, "steps", first, records, &SampleRecord::steps);
+    write_field(file, "rhs_evaluations", first, records, &SampleRecord::rhs_evaluations);
+    write_field(file, "max_abs_theta", first, records, &SampleRecord::max_abs_theta);
+    write_field(file, "final_theta", first, records, &SampleRecord::final_theta);
+    write_field(file, "final_slide", first, records, &SampleRecord::final_slide);
+    write_field(file, "max_abs_slide", first, records, &SampleRecord::max_abs_slide);
+    write_field(file, "overturn_time", first, records, &SampleRecord::overturn_time);
+    write_field(file, "settled", first, records, &SampleRecord::settled);
+    write_field(file, "settle_time", first, records, &SampleRecord::settle_time);
+  }
+
+ private:
+  template <typename T>
+  static void write_field(Hdf5Writer& file, const char* name, std::int64_t first,
+                          const std::vector<SampleRecord>& records, T SampleRecord::*field) {
+    std::vector<T> values;
+    values.reserve(records.size());
+    for (const auto& record : records) values.push_back(record.*field);
+    file.write_part(std::string("/results/") + name, first, std::span<const T>(values));
+  }
+
+  const StudyConfig& config_;
+  std::vector<std::vector<double>> inputs_;
+  std::vector<std::int64_t> level_, record_;
+  std::vector<double> im_, scale_, pga_, pgv_;
 };
-
-SampleMeasures write_samples(Hdf5Writer& file, const StudyConfig& config) {
-  const auto total = static_cast<std::size_t>(config.total_samples());
-  std::vector<std::vector<double>> inputs(config.inputs.size(), std::vector<double>(total));
-  std::vector<std::int64_t> level(total), record(total);
-  std::vector<double> scale(total), pga(total), pgv(total);
-  SampleMeasures measures{std::vector<double>(total), std::vector<double>(total)};
-  StudySampler sampler(config);
-  for (std::size_t i = 0; i < total; ++i) {
-    const StudySample sample = sampler.draw(static_cast<std::int64_t>(i), true);
-    for (std::size_t k = 0; k < inputs.size(); ++k) inputs[k][i] = sample.values[k];
-    level[i] = sample.level;
-    record[i] = sample.record;
-    scale[i] = sample.scale;
-    pga[i] = sample.pga_g;
-    pgv[i] = sample.pgv_m_s;
-    measures.ims[i] = sample.im;
-    measures.alphas[i] = block_alpha(sample.scene);
-  }
-  file.create_group("/samples");
-  for (std::size_t k = 0; k < inputs.size(); ++k) {
-    file.write_column(std::string("/samples/") + input_key(config.inputs[k].input), inputs[k]);
-  }
-  file.write_column("/samples/level", level);
-  file.write_column("/samples/im", measures.ims);
-  file.set_attribute("/samples/im", "units", std::string(im_unit(config.intensity.type)));
-  file.write_column("/samples/scale", scale);
-  file.write_column("/samples/pga_g", pga);
-  file.write_column("/samples/pgv_m_s", pgv);
-  if (config.suite) file.write_column("/samples/record", record);
-  return measures;
-}
 
 // The suite's records as recorded: what /samples/record indexes.
 void write_records(Hdf5Writer& file, const RecordSuite& suite, const IntensityMeasure& measure) {
@@ -84,30 +138,6 @@ void write_records(Hdf5Writer& file, const RecordSuite& suite, const IntensityMe
     file.set_attribute("/records/sa_g", "period_s", measure.period);
     file.set_attribute("/records/sa_g", "damping", measure.damping);
   }
-}
-
-void write_results(Hdf5Writer& file, const std::vector<SampleRecord>& records) {
-  file.create_group("/results");
-  file.write_column("/results/status", column<std::int64_t>(records, &SampleRecord::status));
-  file.set_attribute(
-      "/results/status", "meaning",
-      std::string("0 ok, 1 failed (engine budget exceeded), 2 rejected (invalid scene)"));
-  file.write_column("/results/overturned",
-                    column<std::int64_t>(records, &SampleRecord::overturned));
-  file.write_column("/results/impacts", column<std::int64_t>(records, &SampleRecord::impacts));
-  file.write_column("/results/steps", column<std::int64_t>(records, &SampleRecord::steps));
-  file.write_column("/results/rhs_evaluations",
-                    column<std::int64_t>(records, &SampleRecord::rhs_evaluations));
-  file.write_column("/results/max_abs_theta",
-                    column<double>(records, &SampleRecord::max_abs_theta));
-  file.write_column("/results/final_theta", column<double>(records, &SampleRecord::final_theta));
-  file.write_column("/results/final_slide", column<double>(records, &SampleRecord::final_slide));
-  file.write_column("/results/max_abs_slide",
-                    column<double>(records, &SampleRecord::max_abs_slide));
-  file.write_column("/results/overturn_time",
-                    column<double>(records, &SampleRecord::overturn_time));
-  file.write_column("/results/settled", column<std::int64_t>(records, &SampleRecord::settled));
-  file.write_column("/results/settle_time", column<double>(records, &SampleRecord::settle_time));
 }
 
 std::string joined_names(const StudyConfig& config, const std::vector<std::size_t>& indices) {
@@ -156,11 +186,8 @@ void write_curve(Hdf5Writer& file, const std::string& group, const LimitState& s
   file.write_column(group + "/band_high", boot.band_high);
 }
 
-StudyFragility write_fragility(Hdf5Writer& file, const StudyConfig& config,
-                               const std::vector<SampleRecord>& records,
-                               const SampleMeasures& measures) {
+void write_fragility(Hdf5Writer& file, const StudyConfig& config, const StudyFragility& fragility) {
   const IntensityMeasure& measure = config.intensity;
-  StudyFragility fragility = study_fragility(config, records, measures.alphas, measures.ims);
   file.create_group("/fragility");
   file.set_attribute("/fragility", "im_name", std::string(im_type_name(measure.type)));
   file.set_attribute("/fragility", "im_units", std::string(im_unit(measure.type)));
@@ -192,14 +219,14 @@ StudyFragility write_fragility(Hdf5Writer& file, const StudyConfig& config,
                       fragility.severity.begin();
     file.set_attribute(group, "severity_rank", static_cast<std::int64_t>(rank));
   }
-  return fragility;
 }
 
 }  // namespace
 
-StudyFragility write_study_output(const std::filesystem::path& path, const StudyConfig& config,
-                                  const std::vector<SampleRecord>& records) {
-  StudyFragility fragility;
+StudyTallies write_study_output(const std::filesystem::path& path, const StudyConfig& config,
+                                const RecordSpool& spool) {
+  FragilityTally fragility(config);
+  StudyTallies tallies;
   replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
     Hdf5Writer file(temporary);
     file.set_attribute("/", "config", canonical_text(config.canonical));
@@ -211,13 +238,33 @@ StudyFragility write_study_output(const std::filesystem::path& path, const Study
     file.set_attribute(
         "/", "design",
         std::string(config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"));
-    const SampleMeasures measures = write_samples(file, config);
+    SampleColumns columns(config);
+    columns.create(file);
+    StudySampler sampler(config);
+    std::vector<SampleRecord> records;
+    const std::int64_t total = config.total_samples();
+    for (std::int64_t first = 0; first < total; first += kBlock) {
+      records.resize(static_cast<std::size_t>(std::min(kBlock, total - first)));
+      spool.read(first, records);
+      columns.clear();
+      for (const SampleRecord& record : records) {
+        if (record.index != first + (&record - records.data())) {
+          throw ContractViolation("the record spool lacks sample " +
+                                  std::to_string(first + (&record - records.data())));
+        }
+        const StudySample sample = sampler.draw(record.index, true);
+        columns.add(sample);
+        fragility.add(record, block_alpha(sample.scene), sample.im);
+        tallies.failures.add(record);
+      }
+      columns.write(file, first, records);
+    }
     if (config.suite) write_records(file, *config.suite, config.intensity);
-    write_results(file, records);
-    fragility = write_fragility(file, config, records, measures);
+    tallies.fragility = fragility.finish();
+    write_fragility(file, config, tallies.fragility);
     file.close();
   });
-  return fragility;
+  return tallies;
 }
 
 std::string output_config_hash(const std::filesystem::path& path) {

@@ -22,14 +22,22 @@
 #include <vector>
 
 #include "mpi_driver/config/study_config.hpp"
-#include "mpi_driver/study/fragility_summary.hpp"
-#include "mpi_driver/study/study_record.hpp"
+#include "mpi_driver/io/record_spool.hpp"
+#include "mpi_driver/study/failure_report.hpp"
+#include "mpi_driver/study/fragility_tally.hpp"
 
 namespace blockfrag {
 
-// records[i] is sample i's record, for every sample. Returns the fragility it wrote.
-StudyFragility write_study_output(const std::filesystem::path& path, const StudyConfig& config,
-                                  const std::vector<SampleRecord>& records);
+// What the output's pass over the records gathered on the way.
+struct StudyTallies {
+  StudyFragility fragility;
+  FailureTally failures;
+};
+
+// The spool holds every sample's record. One pass over it, a block of samples at a time: rank 0's
+// memory does not grow with the study's size (but for a cloud's fit: fragility_tally.hpp).
+StudyTallies write_study_output(const std::filesystem::path& path, const StudyConfig& config,
+                                const RecordSpool& spool);
 
 // The config_hash attribute of an existing output, or an empty string when path is not a readable
 // blockfrag output.

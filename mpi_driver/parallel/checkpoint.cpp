@@ -1,6 +1,5 @@
 #include "mpi_driver/parallel/checkpoint.hpp"
 
-#include <algorithm>
 #include <cstring>
 
 #include "mpi_driver/config/input_file.hpp"
@@ -9,7 +8,8 @@
 namespace blockfrag {
 namespace {
 
-constexpr std::string_view magic = "BFCKPT01";
+constexpr std::string_view magic = "BFCKPT02";
+constexpr std::string_view records_magic = "BFCKPT01";
 constexpr std::size_t header_size = magic.size() + 3 * 8;
 
 template <typename T>
@@ -30,12 +30,15 @@ T read_at(std::string_view bytes, std::size_t offset) {
 
 std::string encode_checkpoint(const CheckpointState& state) {
   std::string out;
-  out.reserve(header_size + state.done.size() * sizeof(SampleRecord) + 8);
+  out.reserve(header_size + state.done.size() * 16 + 8);
   out.append(magic);
   append(out, state.config_hash);
   append(out, state.total_samples);
   append(out, static_cast<std::int64_t>(state.done.size()));
-  for (const auto& record : state.done) append(out, record);
+  for (const auto& range : state.done) {
+    append(out, range.first);
+    append(out, range.count);
+  }
   append(out, fnv1a64(out));
   return out;
 }
@@ -45,6 +48,12 @@ CheckpointState decode_checkpoint(std::string_view bytes, const std::string& sou
     return CheckpointError(source + ": not a usable blockfrag checkpoint (" + why +
                            "); remove it to start the study over");
   };
+  if (bytes.substr(0, records_magic.size()) == records_magic) {
+    throw CheckpointError(source +
+                          ": a checkpoint of an older blockfrag (format BFCKPT01, records inside); "
+                          "finish the study with the version that started it, or remove the "
+                          "checkpoint to start over");
+  }
   if (bytes.size() < header_size + 8 || bytes.substr(0, magic.size()) != magic) {
     throw fail("wrong header");
   }
@@ -55,21 +64,19 @@ CheckpointState decode_checkpoint(std::string_view bytes, const std::string& sou
   state.config_hash = read_at<std::uint64_t>(bytes, magic.size());
   state.total_samples = read_at<std::int64_t>(bytes, magic.size() + 8);
   const auto count = read_at<std::int64_t>(bytes, magic.size() + 16);
-  if (count < 0 ||
-      bytes.size() != header_size + static_cast<std::size_t>(count) * sizeof(SampleRecord) + 8) {
+  if (count < 0 || count > kMaxCheckpointRanges ||
+      bytes.size() != header_size + static_cast<std::size_t>(count) * 16 + 8) {
     throw fail("wrong length");
   }
-  state.done.resize(static_cast<std::size_t>(count));
-  if (count > 0) {
-    std::memcpy(state.done.data(), bytes.data() + header_size,
-                static_cast<std::size_t>(count) * sizeof(SampleRecord));
-  }
-  std::vector<bool> seen(static_cast<std::size_t>(std::max<std::int64_t>(state.total_samples, 0)));
-  for (const auto& record : state.done) {
-    if (record.index < 0 || record.index >= state.total_samples)
-      throw fail("sample index out of range");
-    if (seen[static_cast<std::size_t>(record.index)]) throw fail("a sample recorded twice");
-    seen[static_cast<std::size_t>(record.index)] = true;
+  std::int64_t next = 0;
+  for (std::int64_t k = 0; k < count; ++k) {
+    const std::size_t at = header_size + static_cast<std::size_t>(k) * 16;
+    const IndexRange range{read_at<std::int64_t>(bytes, at), read_at<std::int64_t>(bytes, at + 8)};
+    if (range.first < next || range.count <= 0 || range.count > state.total_samples - range.first) {
+      throw fail("sample ranges out of order, overlapping or outside the study");
+    }
+    state.done.push_back(range);
+    next = range.end();
   }
   return state;
 }
@@ -79,13 +86,10 @@ void write_checkpoint(const std::filesystem::path& path, const CheckpointState& 
   write_file_atomically(path, encode_checkpoint(state), hooks);
 }
 
-std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path,
-                                               std::int64_t total_samples) {
+std::optional<CheckpointState> read_checkpoint(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return std::nullopt;
-  const std::size_t largest =
-      header_size +
-      static_cast<std::size_t>(std::max<std::int64_t>(total_samples, 0)) * sizeof(SampleRecord) + 8;
+  const std::size_t largest = header_size + static_cast<std::size_t>(kMaxCheckpointRanges) * 16 + 8;
   try {
     return decode_checkpoint(read_input_file(path, {largest, false}), path.string());
   } catch (const InputFileError& refused) {

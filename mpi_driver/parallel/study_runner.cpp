@@ -3,10 +3,13 @@
 #include <chrono>
 #include <cstring>
 #include <deque>
+#include <memory>
 #include <optional>
+#include <span>
 #include <thread>
 
 #include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/parallel/progress.hpp"
 #include "mpi_driver/parallel/signals.hpp"
@@ -112,22 +115,19 @@ void run_worker(MPI_Comm comm, StudySampler& sampler, const SceneEvaluator& eval
 class Coordinator {
  public:
   Coordinator(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
-              CheckpointState restored)
-      : comm_(comm), config_(config), settings_(settings) {
+              const CheckpointState& restored, RecordSpool& spool)
+      : comm_(comm), config_(config), settings_(settings), spool_(spool) {
     MPI_Comm_size(comm_, &ranks_);
-    const auto total = config.total_samples();
-    result_.records.resize(static_cast<std::size_t>(total));
-    done_.assign(static_cast<std::size_t>(total), false);
-    for (const auto& record : restored.done) store(record);
-    result_.restored = done_count_;
-    queue_.emplace(done_);
+    for (const auto& range : restored.done) done_.add(range);
+    result_.restored = done_.count();
+    queue_.emplace(done_.missing(config.total_samples()));
     active_workers_ = ranks_ - 1;
     finished_.assign(static_cast<std::size_t>(ranks_), false);
   }
 
   RunResult run(StudySampler& sampler, const SceneEvaluator& evaluate) {
     ProgressReporter progress(settings_.log ? *settings_.log : null_stream(),
-                              settings_.log_is_terminal, config_.total_samples(), done_count_,
+                              settings_.log_is_terminal, config_.total_samples(), done_.count(),
                               settings_.log_interval_s);
     if (settings_.log && result_.restored > 0) {
       *settings_.log << "resumed from " << settings_.checkpoint.string() << ": " << result_.restored
@@ -140,11 +140,12 @@ class Coordinator {
       if (!interrupted_) {
         const IndexRange own = queue_->next_chunk(ranks_, 1);
         if (!own.empty()) {
-          store(evaluate_sample(sampler, own.first, evaluate));
+          const SampleRecord record = evaluate_sample(sampler, own.first, evaluate);
+          store({&record, 1});
           ++result_.computed;
         }
       }
-      const bool all_done = done_count_ == config_.total_samples();
+      const bool all_done = done_.count() == config_.total_samples();
       if ((all_done || interrupted_) && active_workers_ == 0) break;
       if (interrupted_ || queue_->remaining() == 0)
         std::this_thread::sleep_for(std::chrono::microseconds(200));
@@ -152,9 +153,9 @@ class Coordinator {
         write_checkpoint_now();
         last_checkpoint = Clock::now();
       }
-      if (settings_.log) progress.update(done_count_);
+      if (settings_.log) progress.update(done_.count());
     }
-    if (settings_.log) progress.finish(done_count_);
+    if (settings_.log) progress.finish(done_.count());
     if (interrupted_) {
       write_checkpoint_now();
       result_.outcome = RunOutcome::interrupted;
@@ -168,12 +169,11 @@ class Coordinator {
     return stream;
   }
 
-  void store(const SampleRecord& record) {
-    const auto i = static_cast<std::size_t>(record.index);
-    if (done_.at(i)) return;  // never happens: each index is handed out once
-    done_[i] = true;
-    result_.records[i] = record;
-    ++done_count_;
+  // Consecutive records, each handed out once: written where they belong, and marked done.
+  void store(std::span<const SampleRecord> records) {
+    if (records.empty()) return;
+    spool_.write(records);
+    done_.add({records.front().index, static_cast<std::int64_t>(records.size())});
   }
 
   void interrupt() {
@@ -204,13 +204,12 @@ class Coordinator {
   void handle_report(int worker, const std::vector<char>& buffer) {
     ReportHeader header;
     std::memcpy(&header, buffer.data(), sizeof header);
-    for (std::int64_t k = 0; k < header.computed; ++k) {
-      SampleRecord record;
-      std::memcpy(&record,
-                  buffer.data() + sizeof header + static_cast<std::size_t>(k) * sizeof record,
-                  sizeof record);
-      store(record);
+    std::vector<SampleRecord> records(static_cast<std::size_t>(header.computed));
+    if (header.computed > 0) {
+      std::memcpy(records.data(), buffer.data() + sizeof header,
+                  records.size() * sizeof(SampleRecord));
     }
+    store(records);
     result_.computed += header.computed;
     queue_->give_back({header.chunk_first + header.computed, header.chunk_count - header.computed});
     if (header.flags & interrupted) interrupt();
@@ -227,13 +226,12 @@ class Coordinator {
 
   void write_checkpoint_now() {
     const auto start = Clock::now();
+    // The records first: a checkpoint must never call done a sample whose record is not on disk.
+    spool_.sync();
     CheckpointState state;
     state.config_hash = config_.hash;
     state.total_samples = config_.total_samples();
-    state.done.reserve(static_cast<std::size_t>(done_count_));
-    for (std::size_t i = 0; i < done_.size(); ++i) {
-      if (done_[i]) state.done.push_back(result_.records[i]);
-    }
+    state.done = done_.ranges();
     write_checkpoint(settings_.checkpoint, state, settings_.checkpoint_hooks);
     ++result_.checkpoints;
     result_.checkpoint_seconds += seconds_since(start);
@@ -243,42 +241,59 @@ class Coordinator {
   const StudyConfig& config_;
   const RunSettings& settings_;
   int ranks_ = 1;
+  RecordSpool& spool_;
   RunResult result_;
-  std::vector<bool> done_;
-  std::int64_t done_count_ = 0;
+  IndexSet done_;
   std::optional<WorkQueue> queue_;
   std::vector<bool> finished_;
   int active_workers_ = 0;
   bool interrupted_ = false;
 };
 
-// Rank 0 reads the checkpoint and checks it against the config; the verdict goes to every rank so
-// all of them stop together when it is refused.
-std::optional<CheckpointState> restore(MPI_Comm comm, const StudyConfig& config,
-                                       const RunSettings& settings) {
+// What a run starts from on rank 0: the checkpoint's progress and the record spool.
+struct Restored {
+  CheckpointState checkpoint;
+  std::unique_ptr<RecordSpool> spool;
+};
+
+// Rank 0 reads the checkpoint, checks it against the config and opens the record spool; the
+// verdict goes to every rank so all of them stop together when it is refused.
+Restored restore(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  std::optional<CheckpointState> restored;
+  Restored restored;
   std::string refusal;
+  int refused = 0;  // 1: the checkpoint or spool is not this study's; 2: a file cannot be used
   if (rank == 0) {
     try {
-      restored = read_checkpoint(settings.checkpoint, config.total_samples());
-    } catch (const std::exception& error) {
+      const std::optional<CheckpointState> checkpoint = read_checkpoint(settings.checkpoint);
+      if (checkpoint && checkpoint->config_hash != config.hash) {
+        throw StudyMismatchError(
+            "refusing to resume: the checkpoint " + settings.checkpoint.string() +
+            " belongs to a different study config (checkpoint config hash " +
+            hash_to_hex(checkpoint->config_hash) + ", this config " + hash_to_hex(config.hash) +
+            "); run the original config to finish it, or remove the checkpoint to start over");
+      }
+      if (checkpoint && checkpoint->total_samples != config.total_samples()) {
+        throw StudyMismatchError("refusing to resume: the checkpoint " +
+                                 settings.checkpoint.string() + " has " +
+                                 std::to_string(checkpoint->total_samples) +
+                                 " samples, this study " + std::to_string(config.total_samples()));
+      }
+      restored.spool = std::make_unique<RecordSpool>(
+          settings.records, config.hash, config.total_samples(),
+          checkpoint ? RecordSpool::Mode::resume : RecordSpool::Mode::fresh);
+      if (checkpoint) restored.checkpoint = *checkpoint;
+    } catch (const InvalidInput& error) {
       refusal = error.what();
-    }
-    if (restored && restored->config_hash != config.hash) {
-      refusal = "refusing to resume: the checkpoint " + settings.checkpoint.string() +
-                " belongs to a different study config (checkpoint config hash " +
-                hash_to_hex(restored->config_hash) + ", this config " + hash_to_hex(config.hash) +
-                "); run the original config to finish it, or remove the checkpoint to start over";
-    } else if (restored && restored->total_samples != config.total_samples()) {
-      refusal = "refusing to resume: the checkpoint " + settings.checkpoint.string() + " has " +
-                std::to_string(restored->total_samples) + " samples, this study " +
-                std::to_string(config.total_samples());
+      refused = 1;
+    } catch (const FileFailure& error) {
+      refusal = error.what();
+      refused = 2;
     }
   }
-  int refused = refusal.empty() ? 0 : 1;
   MPI_Bcast(&refused, 1, MPI_INT, 0, comm);
+  if (refused == 2) throw FileFailure(rank == 0 ? refusal : "cannot start (see rank 0)");
   if (refused) throw StudyMismatchError(rank == 0 ? refusal : "refusing to resume (see rank 0)");
   return restored;
 }
@@ -289,14 +304,13 @@ RunResult run_study_samples(MPI_Comm comm, const StudyConfig& config, const RunS
                             const SceneEvaluator& evaluate) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  auto restored = restore(comm, config, settings);
+  Restored restored = restore(comm, config, settings);
   StudySampler sampler(config);
   if (rank != 0) {
     run_worker(comm, sampler, evaluate);
     return {};
   }
-  Coordinator coordinator(comm, config, settings,
-                          restored ? std::move(*restored) : CheckpointState{});
+  Coordinator coordinator(comm, config, settings, restored.checkpoint, *restored.spool);
   return coordinator.run(sampler, evaluate);
 }
 

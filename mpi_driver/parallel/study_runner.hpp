@@ -3,9 +3,11 @@
 // Rank 0 keeps the queue of sample indices still to do and hands out contiguous chunks on demand
 // (workers ask for the next chunk before they need it, so they never wait on a busy rank 0); it
 // also computes samples itself, one at a time, and answers requests between two of them. Every
-// record is gathered on rank 0, which writes the checkpoint every checkpoint_interval_s and when
-// interrupted (SIGTERM, SIGINT on any rank). A sample's record depends only on (config, index):
-// the number of ranks, the chunks and the restarts change when it is computed, never its value.
+// record goes to rank 0, which writes it into the record spool (mpi_driver/io/record_spool.hpp) at
+// once and keeps only which samples are done, so its memory does not grow with the study; it
+// writes the checkpoint every checkpoint_interval_s and when interrupted (SIGTERM, SIGINT on any
+// rank). A sample's record depends only on (config, index): the number of ranks, the chunks and
+// the restarts change when it is computed, never its value.
 #pragma once
 
 #include <mpi.h>
@@ -35,6 +37,7 @@ class StudyMismatchError : public InvalidInput {
 
 struct RunSettings {
   std::filesystem::path checkpoint;
+  std::filesystem::path records;  // the record spool
   double checkpoint_interval_s = 60.0;
   AtomicWriteHooks checkpoint_hooks;
   std::ostream* log = nullptr;  // rank 0's progress lines; nullptr: silent
@@ -51,12 +54,11 @@ struct RunResult {
   std::int64_t computed = 0;        // records computed in this run (all ranks; rank 0's count)
   std::int64_t checkpoints = 0;     // checkpoints written in this run
   double checkpoint_seconds = 0.0;  // time rank 0 spent writing them
-  // Rank 0 only: every record, indexed by sample (complete when outcome is completed).
-  std::vector<SampleRecord> records;
 };
 
 // Collective over comm. Throws StudyMismatchError (on every rank) when the checkpoint belongs to
-// another study or is damaged (the message on rank 0 says which).
+// another study or is damaged, or the record spool is not the checkpoint's (the message on rank 0
+// says which). When the outcome is completed, settings.records holds every sample's record.
 RunResult run_study_samples(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
                             const SceneEvaluator& evaluate);
 

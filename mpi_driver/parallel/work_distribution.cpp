@@ -4,19 +4,8 @@
 
 namespace blockfrag {
 
-WorkQueue::WorkQueue(const std::vector<bool>& done) {
-  const auto total = static_cast<std::int64_t>(done.size());
-  for (std::int64_t i = 0; i < total;) {
-    if (done[static_cast<std::size_t>(i)]) {
-      ++i;
-      continue;
-    }
-    std::int64_t end = i;
-    while (end < total && !done[static_cast<std::size_t>(end)]) ++end;
-    ranges_.push_back({i, end - i});
-    remaining_ += end - i;
-    i = end;
-  }
+WorkQueue::WorkQueue(const std::vector<IndexRange>& pending) {
+  for (const IndexRange& range : pending) give_back(range);
 }
 
 IndexRange WorkQueue::next_chunk(int consumers, std::int64_t max_count) {

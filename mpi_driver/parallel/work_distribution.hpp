@@ -8,18 +8,14 @@
 #include <deque>
 #include <vector>
 
-namespace blockfrag {
+#include "mpi_driver/parallel/index_ranges.hpp"
 
-struct IndexRange {
-  std::int64_t first = 0;
-  std::int64_t count = 0;
-  bool empty() const { return count <= 0; }
-};
+namespace blockfrag {
 
 class WorkQueue {
  public:
-  // The indices in [0, total) whose done flag is false.
-  explicit WorkQueue(const std::vector<bool>& done);
+  // The indices of `pending`, in order.
+  explicit WorkQueue(const std::vector<IndexRange>& pending);
 
   // At most max_count indices, about remaining / (2 * consumers) and at least one; an empty
   // range when nothing is left.

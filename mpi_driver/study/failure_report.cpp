@@ -5,15 +5,27 @@
 
 namespace blockfrag {
 
-FailureReport report_failures(const StudyConfig& config, const std::vector<SampleRecord>& records,
-                              const SceneEvaluator& evaluate, std::size_t described) {
-  FailureReport report;
+namespace {
+
+// More than any report describes.
+constexpr std::size_t kKeptFailures = 16;
+
+}  // namespace
+
+void FailureTally::add(const SampleRecord& record) {
+  const auto status = static_cast<SampleStatus>(record.status);
+  if (status == SampleStatus::ok) return;
+  (status == SampleStatus::failed ? failed_ : rejected_) += 1;
+  if (first_.size() < kKeptFailures) first_.push_back(record);
+}
+
+FailureReport FailureTally::report(const StudyConfig& config, const SceneEvaluator& evaluate,
+                                   std::size_t described) const {
+  FailureReport report{failed_, rejected_, {}};
   StudySampler sampler(config);
-  for (const SampleRecord& record : records) {
+  for (const SampleRecord& record : first_) {
+    if (report.first_reasons.size() >= described) break;
     const auto status = static_cast<SampleStatus>(record.status);
-    if (status == SampleStatus::ok) continue;
-    (status == SampleStatus::failed ? report.failed : report.rejected) += 1;
-    if (report.first_reasons.size() >= described) continue;
     const StudySample sample = sampler.draw(record.index);
     std::string why;
     try {

@@ -22,9 +22,19 @@ struct FailureReport {
   std::int64_t total() const { return failed + rejected; }
 };
 
-// Counts the records' failures and describes the first `described` of them.
-FailureReport report_failures(const StudyConfig& config, const std::vector<SampleRecord>& records,
-                              const SceneEvaluator& evaluate, std::size_t described = 3);
+// The failures counted one record at a time (the output streams them from disk), in sample order.
+class FailureTally {
+ public:
+  void add(const SampleRecord& record);
+  // The counts, and the first `described` failures described by evaluating them again.
+  FailureReport report(const StudyConfig& config, const SceneEvaluator& evaluate,
+                       std::size_t described = 3) const;
+
+ private:
+  std::int64_t failed_ = 0;
+  std::int64_t rejected_ = 0;
+  std::vector<SampleRecord> first_;  // the first few failed or rejected records
+};
 
 // True when more samples failed or were rejected than the config allows.
 bool too_many_failures(const StudyConfig& config, const FailureReport& report);

@@ -5,7 +5,6 @@
 #include <iomanip>
 #include <sstream>
 
-#include "mpi_driver/study/limit_states.hpp"
 #include "postproc/fragility/curve_set.hpp"
 
 namespace blockfrag {
@@ -41,20 +40,6 @@ std::string interval_text(double low, double high) {
 }
 
 }  // namespace
-
-StudyFragility study_fragility(const StudyConfig& config, const std::vector<SampleRecord>& records,
-                               const std::vector<double>& alphas, const std::vector<double>& ims) {
-  StudyFragility fragility;
-  for (const auto& state : config.limit_states) {
-    fragility.curves.push_back(fragility_curve(config, state, records, alphas, ims));
-  }
-  fragility.severity = severity_order(fragility.curves);
-  if (!ims.empty()) {
-    const auto [low, high] = std::minmax_element(ims.begin(), ims.end());
-    fragility.crossings = crossing_pairs(fragility.curves, *low, *high);
-  }
-  return fragility;
-}
 
 void print_fragility_summary(std::ostream& out, const StudyConfig& config,
                              const StudyFragility& fragility) {

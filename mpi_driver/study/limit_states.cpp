@@ -37,6 +37,31 @@ UniformDraw bootstrap_uniforms(const StudyConfig& config, const LimitState& stat
 
 }  // namespace
 
+FragilityCurve stripe_curve(const StudyConfig& config, const LimitState& state,
+                            std::vector<std::int64_t> trials,
+                            std::vector<std::int64_t> exceedances) {
+  FragilityCurve curve =
+      fragility_from_counts(config.intensity.levels, std::move(trials), std::move(exceedances));
+  if (curve.fit_status == "ok" && config.bootstrap_resamples > 0) {
+    curve.bootstrap =
+        bootstrap_stripes(curve.im, curve.trials, curve.exceedances, config.bootstrap_resamples,
+                          bootstrap_uniforms(config, state));
+  }
+  return curve;
+}
+
+FragilityCurve cloud_curve(const StudyConfig& config, const LimitState& state,
+                           const std::vector<double>& im, const std::vector<bool>& exceeded) {
+  FragilityCurve curve = fragility_from_samples(im, exceeded);
+  const double affordable =
+      kMaxCloudBootstrapDraws / std::max<double>(1.0, static_cast<double>(im.size()));
+  const int resamples = static_cast<int>(std::min<double>(config.bootstrap_resamples, affordable));
+  if (curve.fit_status == "ok" && resamples > 0) {
+    curve.bootstrap = bootstrap_cloud(im, exceeded, resamples, bootstrap_uniforms(config, state));
+  }
+  return curve;
+}
+
 FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& state,
                                const std::vector<SampleRecord>& records,
                                const std::vector<double>& alphas, const std::vector<double>& ims) {
@@ -50,15 +75,7 @@ FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& stat
       im.push_back(ims[i]);
       exceeded.push_back(exceeds(state, records[i], alphas[i]));
     }
-    FragilityCurve curve = fragility_from_samples(im, exceeded);
-    const double affordable =
-        kMaxCloudBootstrapDraws / std::max<double>(1.0, static_cast<double>(im.size()));
-    const int resamples =
-        static_cast<int>(std::min<double>(config.bootstrap_resamples, affordable));
-    if (curve.fit_status == "ok" && resamples > 0) {
-      curve.bootstrap = bootstrap_cloud(im, exceeded, resamples, bootstrap_uniforms(config, state));
-    }
-    return curve;
+    return cloud_curve(config, state, im, exceeded);
   }
   const std::size_t levels = config.intensity.levels.size();
   std::vector<std::int64_t> trials(levels, 0), exceedances(levels, 0);
@@ -69,14 +86,7 @@ FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& stat
     ++trials[level];
     if (exceeds(state, record, alphas[i])) ++exceedances[level];
   }
-  FragilityCurve curve =
-      fragility_from_counts(config.intensity.levels, std::move(trials), std::move(exceedances));
-  if (curve.fit_status == "ok" && config.bootstrap_resamples > 0) {
-    curve.bootstrap =
-        bootstrap_stripes(curve.im, curve.trials, curve.exceedances, config.bootstrap_resamples,
-                          bootstrap_uniforms(config, state));
-  }
-  return curve;
+  return stripe_curve(config, state, std::move(trials), std::move(exceedances));
 }
 
 }  // namespace blockfrag

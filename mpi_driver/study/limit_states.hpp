@@ -17,6 +17,14 @@ namespace blockfrag {
 // (overturned_exceeds false).
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha);
 
+// The curve of per-level counts (stripes), with its bootstrap.
+FragilityCurve stripe_curve(const StudyConfig& config, const LimitState& state,
+                            std::vector<std::int64_t> trials,
+                            std::vector<std::int64_t> exceedances);
+// The curve of a cloud's successful samples, each at its own intensity, with its bootstrap.
+FragilityCurve cloud_curve(const StudyConfig& config, const LimitState& state,
+                           const std::vector<double>& im, const std::vector<bool>& exceeded);
+
 // records[i], alphas[i] and ims[i] belong to sample i (all samples of the study). Stripes count
 // trials and exceedances per level; a cloud fits each sample at its own intensity
 // (postproc/fragility/cloud_fragility.hpp).

@@ -103,10 +103,45 @@ study["output"] = "out.h5"
 print(json.dumps(study))
 PY
 }
-study_with '{"samples_per_level": 100000000}' >huge.json
-run_case study_1e8_per_level 2 "huge.json: /samples_per_level: the study has 10 levels x 100000000 samples" "$B" run huge.json
-study_with '{"samples_per_level": 2147483648}' >too_many.json
-run_case samples_per_level_2147483648 2 "too_many.json: /samples_per_level: the study has 10 levels x 2147483648 samples" "$B" run too_many.json
+study_with '{"samples_per_level": 2147483649}' >too_many.json
+run_case samples_per_level_2147483649 2 "too_many.json: /samples_per_level: must be in [1, 2147483648]" "$B" run too_many.json
+# A cloud's per-sample fit holds every sample: one beyond what rank 0 can hold is refused.
+"$PYTHON" - "$BLOCKFRAG_SOURCE_DIR/configs/record_suite_study.json" >huge_cloud.json <<'PY'
+import json, os, sys
+study = json.load(open(sys.argv[1]))
+folder = os.path.dirname(sys.argv[1])
+records = study["scene"]["ground_motion"]["records"]
+study["scene"]["ground_motion"]["records"] = [os.path.join(folder, r) for r in records]
+study["intensity_measure"] = {"type": "pga", "scaling": "none"}
+study["samples_per_level"] = 200000000
+study["design"] = "monte_carlo"
+study["output"] = "out.h5"
+print(json.dumps(study))
+PY
+run_case cloud_of_2e8 2 "huge_cloud.json: /samples_per_level: a cloud of 200000000 samples, more than the 100000000" "$B" run huge_cloud.json
+
+# A billion Monte Carlo samples of stripes start, run and checkpoint in bounded memory (records
+# stream to disk, the checkpoint lists ranges): SIGTERM after 5 s, under the same 4 GB
+# address-space limit.
+study_with '{"samples_per_level": 100000000, "design": "latin_hypercube"}' >huge_lhs.json
+run_case latin_hypercube_level_1e8 2 "huge_lhs.json: /samples_per_level: a Latin hypercube level of 100000000 samples" "$B" run huge_lhs.json
+study_with '{"samples_per_level": 100000000, "design": "monte_carlo", "checkpoint_interval_s": 1}' >billion.json
+(ulimit -v 4194304; exec "$B" run billion.json --output billion.h5) >billion.out 2>billion.err &
+billion_pid=$!
+sleep 5
+peak_kb=$(awk '/^VmHWM/ { print $2 }' "/proc/$billion_pid/status" 2>/dev/null || echo 0)
+kill -TERM "$billion_pid"
+wait "$billion_pid"
+billion_code=$?
+checkpoint_bytes=$(stat -c %s billion.h5.checkpoint 2>/dev/null || echo missing)
+[[ $table == 1 ]] && printf '| %s | %s | %s |\n' billion_samples_interrupted "$billion_code" "peak RSS ${peak_kb} kB"
+if [[ $billion_code -ne 4 || $peak_kb -le 0 || $peak_kb -gt 262144 || $checkpoint_bytes == missing ||
+      $checkpoint_bytes -gt 65536 || -e billion.h5 ]]; then
+  fail "billion_samples_interrupted: exit $billion_code (expected 4), peak RSS ${peak_kb} kB (at most 256 MB), checkpoint ${checkpoint_bytes} bytes: $(head -c 300 billion.err)"
+else
+  pass
+fi
+rm -f billion.h5.checkpoint billion.h5.records billion.h5.lock
 study_with '{"intensity_measure": {"from": 0.2, "to": 2.0, "count": 1000000000}}' >count.json
 run_case level_count_1e9 2 "count.json: /intensity_measure/count: must be in [2, 1e+06]" "$B" run count.json
 
@@ -218,6 +253,13 @@ mkfifo fifo.h5.checkpoint
 run_case checkpoint_fifo 2 "fifo.h5.checkpoint: is a FIFO, not a regular file" "$B" run small.json --output fifo.h5
 ln -s victim.txt linked.h5.checkpoint
 run_case checkpoint_link 2 "linked.h5.checkpoint: is a symbolic link" "$B" run small.json --output linked.h5
+echo "someone's notes" >notes.h5.records
+run_case foreign_records_file 2 "notes.h5.records: not blockfrag's records file" "$B" run small.json --output notes.h5
+[[ "$(cat notes.h5.records)" == "someone's notes" && ! -e notes.h5 ]] && pass ||
+  fail "the foreign notes.h5.records was changed or the study ran"
+ln -s victim.txt linked_records.h5.records
+run_case records_link 2 "linked_records.h5.records: a link" "$B" run small.json --output linked_records.h5
+[[ "$(cat victim.txt)" == data ]] && pass || fail "the records link was followed"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

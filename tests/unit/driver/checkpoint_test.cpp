@@ -1,6 +1,8 @@
-// Checkpoints: the file round-trips every record bit for bit, damage of any kind is refused, the
-// atomic write leaves no partial file behind; one run at a time holds the study lock; the work
-// queue hands out every pending index exactly once, also after give-backs. (The run loop itself,
+// Checkpoints: the file round-trips its ranges, damage of any kind is refused, the atomic write
+// leaves no partial file behind; the record spool keeps every record's bits where it belongs and
+// never overwrites a file that is not its own; index sets against a plain vector of flags; one run
+// at a time holds the study lock; the work queue hands out every pending index exactly once, also
+// after give-backs. (The run loop itself,
 // which needs MPI, is tested in tests/mpi/driver/study_runner_test.cpp.)
 #include "mpi_driver/parallel/checkpoint.hpp"
 
@@ -12,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <set>
 #include <string>
 
@@ -20,6 +23,7 @@
 
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/parallel/study_lock.hpp"
 #include "mpi_driver/parallel/work_distribution.hpp"
 
@@ -63,18 +67,22 @@ CheckpointState some_state() {
   CheckpointState state;
   state.config_hash = 0x0123456789abcdefULL;
   state.total_samples = 50;
-  for (const std::int64_t i : {7, 0, 49, 13, 22}) state.done.push_back(some_record(i));
+  state.done = {{0, 3}, {7, 1}, {13, 10}, {49, 1}};
   return state;
 }
 
-TEST(Checkpoint, RoundTripsEveryRecordBitForBit) {
+bool same_ranges(const std::vector<IndexRange>& a, const std::vector<IndexRange>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](IndexRange x, IndexRange y) {
+    return x.first == y.first && x.count == y.count;
+  });
+}
+
+TEST(Checkpoint, RoundTripsEveryRange) {
   const CheckpointState state = some_state();
   const CheckpointState back = decode_checkpoint(encode_checkpoint(state), "test");
   EXPECT_EQ(back.config_hash, state.config_hash);
   EXPECT_EQ(back.total_samples, 50);
-  ASSERT_EQ(back.done.size(), state.done.size());
-  for (std::size_t k = 0; k < state.done.size(); ++k)
-    EXPECT_TRUE(same_bits(back.done[k], state.done[k])) << k;
+  EXPECT_TRUE(same_ranges(back.done, state.done));
 }
 
 TEST(Checkpoint, EmptyStateRoundTrips) {
@@ -85,7 +93,7 @@ TEST(Checkpoint, EmptyStateRoundTrips) {
 
 TEST(Checkpoint, EveryDamageIsRefused) {
   const std::string bytes = encode_checkpoint(some_state());
-  for (std::size_t position = 0; position < bytes.size(); position += 13) {
+  for (std::size_t position = 0; position < bytes.size(); position += 3) {
     std::string damaged = bytes;
     damaged[position] = static_cast<char>(damaged[position] ^ 0x20);
     EXPECT_THROW(decode_checkpoint(damaged, "test"), CheckpointError) << "byte " << position;
@@ -97,13 +105,29 @@ TEST(Checkpoint, EveryDamageIsRefused) {
   }
 }
 
-TEST(Checkpoint, DuplicateOrOutOfRangeIndicesAreRefused) {
-  CheckpointState duplicate = some_state();
-  duplicate.done.push_back(some_record(13));
-  EXPECT_THROW(decode_checkpoint(encode_checkpoint(duplicate), "test"), CheckpointError);
-  CheckpointState outside = some_state();
-  outside.done.push_back(some_record(50));
-  EXPECT_THROW(decode_checkpoint(encode_checkpoint(outside), "test"), CheckpointError);
+TEST(Checkpoint, RangesOutOfOrderOverlappingEmptyOrOutsideTheStudyAreRefused) {
+  for (const auto& done : std::vector<std::vector<IndexRange>>{{{13, 10}, {0, 3}},
+                                                               {{0, 3}, {2, 5}},
+                                                               {{0, 3}, {7, 0}},
+                                                               {{-1, 2}},
+                                                               {{45, 6}},
+                                                               {{1, INT64_MAX}}}) {
+    CheckpointState state = some_state();
+    state.done = done;
+    EXPECT_THROW(decode_checkpoint(encode_checkpoint(state), "test"), CheckpointError)
+        << done.front().first << " " << done.front().count;
+  }
+}
+
+TEST(Checkpoint, AnOlderCheckpointWithTheRecordsInsideIsRefusedSayingSo) {
+  std::string older = "BFCKPT01";
+  older.append(40, '\0');
+  try {
+    decode_checkpoint(older, "study.h5.checkpoint");
+    FAIL() << "accepted";
+  } catch (const CheckpointError& error) {
+    EXPECT_NE(std::string(error.what()).find("older blockfrag"), std::string::npos) << error.what();
+  }
 }
 
 std::size_t files_in(const std::filesystem::path& folder) {
@@ -115,18 +139,18 @@ std::size_t files_in(const std::filesystem::path& folder) {
 TEST(Checkpoint, FileWriteIsAtomicAndLeavesNoTemporary) {
   TemporaryFolder folder;
   const auto path = folder.path() / "study.h5.checkpoint";
-  EXPECT_FALSE(read_checkpoint(path, 40).has_value());
+  EXPECT_FALSE(read_checkpoint(path).has_value());
   // A leftover temporary from a writer killed before its rename is neither read nor in the way,
   // and the study's start (holding the lock) clears it.
   std::ofstream(folder.path() / "study.h5.checkpoint.tmp.a1B2c3") << "half a checkpoint";
-  EXPECT_FALSE(read_checkpoint(path, 40).has_value());
+  EXPECT_FALSE(read_checkpoint(path).has_value());
   write_checkpoint(path, some_state());
   EXPECT_EQ(files_in(folder.path()), 2u);  // the checkpoint and the leftover
   EXPECT_EQ(remove_stale_temporaries(path), 1);
   EXPECT_EQ(files_in(folder.path()), 1u);
-  const auto back = read_checkpoint(path, 40);
+  const auto back = read_checkpoint(path);
   ASSERT_TRUE(back.has_value());
-  EXPECT_EQ(back->done.size(), 5u);
+  EXPECT_TRUE(same_ranges(back->done, some_state().done));
   EXPECT_EQ(checkpoint_path_for("out/study.h5"), "out/study.h5.checkpoint");
 }
 
@@ -137,14 +161,17 @@ TEST(Checkpoint, ReadsOnlyARegularFileOfAPlausibleSize) {
   const auto path = folder.path() / "study.h5.checkpoint";
   write_checkpoint(folder.path() / "other", some_state());
   std::filesystem::create_symlink(folder.path() / "other", path);
-  EXPECT_THROW(read_checkpoint(path, 40), CheckpointError);
+  EXPECT_THROW(read_checkpoint(path), CheckpointError);
   std::filesystem::remove(path);
   ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
-  EXPECT_THROW(read_checkpoint(path, 40), CheckpointError);
+  EXPECT_THROW(read_checkpoint(path), CheckpointError);
   std::filesystem::remove(path);
-  write_checkpoint(path, some_state());  // 5 records: too many for a study of 2 samples
-  EXPECT_THROW(read_checkpoint(path, 2), CheckpointError);
-  EXPECT_NO_THROW(read_checkpoint(path, 40));
+  // Larger than a checkpoint of kMaxCheckpointRanges ranges: refused before it is read.
+  std::filesystem::resize_file(folder.path() / "other", 16 * (kMaxCheckpointRanges + 4));
+  std::filesystem::rename(folder.path() / "other", path);
+  EXPECT_THROW(read_checkpoint(path), CheckpointError);
+  write_checkpoint(path, some_state());
+  EXPECT_NO_THROW(read_checkpoint(path));
 }
 
 // Nothing planted in the output's folder can redirect a write: the temporary file has a fresh
@@ -230,11 +257,107 @@ TEST(StudyLock, ALinkAtTheLocksNameIsRefusedAndNotFollowed) {
 // --- The work queue
 // ---------------------------------------------------------------------------------
 
+TEST(IndexSet, AgreesWithAVectorOfFlagsWhateverTheOrderOfTheRanges) {
+  std::mt19937_64 engine(7);
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::int64_t total = 200;
+    std::vector<bool> flags(total, false);
+    IndexSet set;
+    for (int k = 0; k < 30; ++k) {
+      const auto first = static_cast<std::int64_t>(engine() % total);
+      const auto count = static_cast<std::int64_t>(engine() % 12);
+      set.add({first, std::min(count, total - first)});
+      for (std::int64_t i = first; i < std::min(first + count, total); ++i)
+        flags[static_cast<std::size_t>(i)] = true;
+    }
+    const auto count = std::count(flags.begin(), flags.end(), true);
+    EXPECT_EQ(set.count(), count);
+    std::vector<bool> from_ranges(total, false), from_missing(total, true);
+    std::int64_t previous_end = -1;
+    for (const IndexRange range : set.ranges()) {
+      EXPECT_GT(range.first, previous_end) << "ranges must be disjoint and not adjacent";
+      previous_end = range.end();
+      for (std::int64_t i = range.first; i < range.end(); ++i)
+        from_ranges[static_cast<std::size_t>(i)] = true;
+    }
+    for (const IndexRange range : set.missing(total)) {
+      for (std::int64_t i = range.first; i < range.end(); ++i)
+        from_missing[static_cast<std::size_t>(i)] = false;
+    }
+    EXPECT_EQ(from_ranges, flags);
+    EXPECT_EQ(from_missing, flags);
+    for (std::int64_t i = 0; i < total; ++i)
+      EXPECT_EQ(set.contains(i), flags[static_cast<std::size_t>(i)]) << i;
+  }
+}
+
+TEST(RecordSpool, KeepsEachRecordsBitsAtItsIndexAndResumesOnlyItsOwnStudy) {
+  TemporaryFolder folder;
+  const auto path = record_spool_path_for(folder.path() / "study.h5");
+  EXPECT_EQ(path, folder.path() / "study.h5.records");
+  {
+    RecordSpool spool(path, 42, 1000, RecordSpool::Mode::fresh);
+    std::vector<SampleRecord> records;
+    for (std::int64_t i = 990; i < 1000; ++i) records.push_back(some_record(i));
+    spool.write(records);
+    const SampleRecord one = some_record(3);
+    spool.write({&one, 1});
+    spool.sync();
+    // Not consecutive, or outside the study: a bug in the caller.
+    std::vector<SampleRecord> gap = {some_record(5), some_record(7)};
+    EXPECT_THROW(spool.write(gap), ContractViolation);
+    const SampleRecord outside = some_record(1000);
+    EXPECT_THROW(spool.write({&outside, 1}), ContractViolation);
+  }
+  RecordSpool resumed(path, 42, 1000, RecordSpool::Mode::resume);
+  std::vector<SampleRecord> back(12);
+  resumed.read(988, back);
+  EXPECT_EQ(back[0].index, 0);  // never written: zeros
+  for (std::int64_t i = 990; i < 1000; ++i)
+    EXPECT_TRUE(same_bits(back[static_cast<std::size_t>(i - 988)], some_record(i))) << i;
+  std::vector<SampleRecord> three(1);
+  resumed.read(3, three);
+  EXPECT_TRUE(same_bits(three[0], some_record(3)));
+
+  EXPECT_THROW(RecordSpool(path, 43, 1000, RecordSpool::Mode::resume), RecordSpoolError);
+  EXPECT_THROW(RecordSpool(path, 42, 999, RecordSpool::Mode::resume), RecordSpoolError);
+  EXPECT_THROW(RecordSpool(folder.path() / "missing.records", 42, 1000, RecordSpool::Mode::resume),
+               RecordSpoolError);
+  // A fresh start reuses its own file, emptied.
+  RecordSpool fresh(path, 42, 1000, RecordSpool::Mode::fresh);
+  fresh.read(990, three);
+  EXPECT_EQ(three[0].index, 0);
+}
+
+TEST(RecordSpool, NeverWritesIntoAFileThatIsNotItsOwn) {
+  TemporaryFolder folder;
+  const auto path = folder.path() / "study.h5.records";
+  std::ofstream(path) << "someone's notes";
+  EXPECT_THROW(RecordSpool(path, 1, 10, RecordSpool::Mode::fresh), RecordSpoolError);
+  std::ifstream in(path);
+  std::string content;
+  std::getline(in, content);
+  EXPECT_EQ(content, "someone's notes");
+  std::filesystem::remove(path);
+  std::ofstream(folder.path() / "target") << "x";
+  std::filesystem::create_symlink(folder.path() / "target", path);
+  EXPECT_THROW(RecordSpool(path, 1, 10, RecordSpool::Mode::fresh), RecordSpoolError);
+  EXPECT_EQ(std::filesystem::file_size(folder.path() / "target"), 1u);
+  std::filesystem::remove(path);
+  std::filesystem::create_directory(path);
+  EXPECT_THROW(RecordSpool(path, 1, 10, RecordSpool::Mode::fresh), std::exception);
+}
+
 TEST(WorkQueue, HandsOutEveryPendingIndexExactlyOnce) {
   std::vector<bool> done(1000, false);
-  for (std::size_t i = 0; i < done.size(); i += 7) done[i] = true;
+  IndexSet done_set;
+  for (std::size_t i = 0; i < done.size(); i += 7) {
+    done[i] = true;
+    done_set.add({static_cast<std::int64_t>(i), 1});
+  }
   for (std::size_t i = 300; i < 400; ++i) done[i] = true;
-  WorkQueue queue(done);
+  done_set.add({300, 100});
+  WorkQueue queue(done_set.missing(1000));
   std::multiset<std::int64_t> handed;
   int chunks = 0;
   bool gave_back = false;
