@@ -44,8 +44,10 @@ BootstrapResult summarise(int resamples, const std::vector<LognormalFit>& fits, 
   result.median_high = quantile(medians, 0.975);
   result.beta_low = quantile(betas, 0.025);
   result.beta_high = quantile(betas, 0.975);
-  for (int k = 1; k <= kBandPoints; ++k) {
-    const double x = im_max * (1.1 * k / kBandPoints);
+  // Evenly spaced from im_max / 200 to 1.1 im_max, both included.
+  const double first = im_max / kBandPoints, last = 1.1 * im_max;
+  for (int k = 0; k < kBandPoints; ++k) {
+    const double x = first + (last - first) * k / (kBandPoints - 1);
     std::vector<double> probabilities;
     probabilities.reserve(medians.size());
     for (std::size_t b = 0; b < medians.size(); ++b) {
