@@ -5,7 +5,6 @@
 #include <limits>
 
 #include <gsl/gsl_cdf.h>
-#include <gsl/gsl_randist.h>
 
 #include "postproc/fragility/lognormal_fit.hpp"
 
@@ -63,32 +62,43 @@ BootstrapResult summarise(int resamples, const std::vector<LognormalFit>& fits, 
 }  // namespace
 
 std::int64_t binomial_quantile(double u, std::int64_t n, double p) {
-  if (n <= 0 || p <= 0.0) return 0;
-  if (p >= 1.0) return n;
+  if (n <= 0 || p <= 0.0 || !(u > 0.0)) return 0;
+  if (p >= 1.0 || u >= 1.0) return n;
+  // Whether P(X <= k) >= u, compared in the tail where u lies: P for u <= 1/2, and above it
+  // P(X > k) <= 1 - u (exact there), so that a u within 1e-12 of 0 or 1 is resolved.
+  const auto nu = static_cast<unsigned>(n);
+  const auto reaches = [&](std::int64_t k) {
+    if (k < 0) return false;
+    if (k >= n) return true;
+    const auto ku = static_cast<unsigned>(k);
+    return u <= 0.5 ? gsl_cdf_binomial_P(ku, p, nu) >= u : gsl_cdf_binomial_Q(ku, p, nu) <= 1.0 - u;
+  };
+  // Start at the Cornish-Fisher approximation (the normal quantile corrected for skewness),
+  // bracket the answer by steps that double, and bisect: P(lo) < u <= P(hi) throughout.
   const auto nd = static_cast<double>(n);
-  auto k = static_cast<std::int64_t>(std::floor((nd + 1) * p));
-  k = std::min(k, n);
-  const double ratio = p / (1.0 - p);
-  double cdf = gsl_cdf_binomial_P(static_cast<unsigned>(k), p, static_cast<unsigned>(n));
-  double pmf = gsl_ran_binomial_pdf(static_cast<unsigned>(k), p, static_cast<unsigned>(n));
-  if (u <= cdf) {
-    // Down: P(X <= k - 1) = P(X <= k) - pmf(k), pmf(k - 1) = pmf(k) k / ((n - k + 1) ratio).
-    while (k > 0) {
-      const double below = cdf - pmf;
-      if (u > below) break;
-      pmf *= static_cast<double>(k) / ((nd - static_cast<double>(k) + 1.0) * ratio);
-      cdf = below;
-      --k;
+  const double sigma = std::sqrt(nd * p * (1.0 - p)), z = gsl_cdf_ugaussian_Pinv(u);
+  const double guess =
+      std::floor(nd * p + sigma * (z + (1.0 - 2.0 * p) / sigma * (z * z - 1.0) / 6.0) + 0.5);
+  const auto start = static_cast<std::int64_t>(guess > 0.0 ? std::min(guess, nd) : 0.0);
+  std::int64_t lo = start - 1, hi = start;
+  if (reaches(start)) {
+    for (std::int64_t step = 1; reaches(lo); step *= 2) {
+      hi = lo;
+      lo = std::max<std::int64_t>(lo - step, -1);
     }
-    return k;
+  } else {
+    lo = start;
+    hi = start + 1;
+    for (std::int64_t step = 1; !reaches(hi); step *= 2) {
+      lo = hi;
+      hi = std::min(hi + step, n);
+    }
   }
-  // Up: pmf(k + 1) = pmf(k) (n - k) ratio / (k + 1).
-  while (k < n && u > cdf) {
-    pmf *= (nd - static_cast<double>(k)) * ratio / static_cast<double>(k + 1);
-    cdf += pmf;
-    ++k;
+  while (hi - lo > 1) {
+    const std::int64_t mid = lo + (hi - lo) / 2;
+    (reaches(mid) ? hi : lo) = mid;
   }
-  return k;
+  return hi;
 }
 
 BootstrapResult bootstrap_stripes(const std::vector<double>& im,

@@ -35,8 +35,9 @@ BootstrapResult bootstrap_stripes(const std::vector<double>& im,
 BootstrapResult bootstrap_cloud(const std::vector<double>& im, const std::vector<bool>& exceeded,
                                 int resamples, const UniformDraw& uniform);
 
-// The k with P(X <= k - 1) < u <= P(X <= k) for X ~ Binomial(n, p): the inverse CDF, walked from
-// the mode with the pmf's recurrence (about sqrt(n p (1 - p)) steps).
+// The k with P(X <= k - 1) < u <= P(X <= k) for X ~ Binomial(n, p): the inverse CDF, by GSL's CDF
+// in the tail where u lies (a few evaluations from the Cornish-Fisher approximation), right to the
+// CDF's accuracy for u however close to 0 or 1.
 std::int64_t binomial_quantile(double u, std::int64_t n, double p);
 
 }  // namespace blockfrag
