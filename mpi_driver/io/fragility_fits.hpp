@@ -1,0 +1,51 @@
+// A study output's lognormal fragility fits, read back from its HDF5 file (study_output.hpp writes
+// it) for `blockfrag export`. What is read:
+//   /                  attributes config, config_hash (their presence marks a blockfrag output)
+//   /fragility         attributes im_name, im_units, im_label; im_period_s and im_damping (sa);
+//                      severity_order: the limit-state names, comma-separated, least severe first
+//   /fragility/<name>  attributes type, threshold, median, beta, fit_status; optionally
+//                      median_ci, beta_ci (2 values), deviance, gof_p_value; dataset im (levels)
+// A file without severity_order has its groups ordered by fitted median (unfitted ones last, by
+// name); groups that severity_order does not name follow the ones it names.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace blockfrag {
+
+struct FragilityFit {
+  std::string name;
+  std::string type;               // "overturning", "max_rotation", "residual_slide"
+  double threshold = 0.0;         // theta/alpha for max_rotation, m for residual_slide
+  double median = 0.0;            // in the measure's unit; NaN without a fit
+  double beta = 0.0;              // the logarithmic standard deviation; NaN without a fit
+  std::string fit_status;         // "ok" when the fit exists, otherwise why not
+  std::vector<double> median_ci;  // 95 % bootstrap interval (2 values), or empty
+  std::vector<double> beta_ci;
+  std::optional<double> deviance;
+  std::optional<double> gof_p_value;
+  std::vector<double> im;  // the levels
+
+  bool fitted() const { return fit_status == "ok"; }
+};
+
+struct FragilityFits {
+  std::string source;  // the file, for messages
+  std::string config_hash;
+  std::string im_name;   // "pga", "pgv", "sa", "pga_over_g_tan_alpha", "pulse_amplitude"
+  std::string im_units;  // "g", "m/s", "1"
+  std::string im_label;  // "PGA", "Sa(1 s, 5 %)", ...
+  std::optional<double> im_period_s;
+  std::optional<double> im_damping;
+  std::vector<FragilityFit> states;  // least severe first
+};
+
+// Throws InvalidInput naming the file when it is missing, not a regular file, not HDF5, not a
+// blockfrag study output, has no /fragility, or breaks the layout above (a fit with status "ok"
+// must have a finite median > 0 and beta > 0); Hdf5Error when HDF5 cannot open it.
+FragilityFits read_fragility_fits(const std::filesystem::path& path);
+
+}  // namespace blockfrag
