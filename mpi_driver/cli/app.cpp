@@ -10,6 +10,7 @@
 #include "mpi_driver/cli/accuracy_command.hpp"
 #include "mpi_driver/cli/bench_command.hpp"
 #include "mpi_driver/cli/exit_codes.hpp"
+#include "mpi_driver/cli/export_command.hpp"
 #include "mpi_driver/cli/run_command.hpp"
 #include "mpi_driver/cli/simulate_command.hpp"
 
@@ -25,6 +26,7 @@ int run_command_line(int argc, char** argv) {
   add_run_command(app, command);
   add_accuracy_command(app, command);
   add_bench_command(app, command);
+  add_export_command(app, command);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,118 @@
+#include "mpi_driver/cli/export_command.hpp"
+
+#include <iostream>
+#include <memory>
+#include <system_error>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "engine/errors.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/io/fragility_export.hpp"
+#include "mpi_driver/io/fragility_fits.hpp"
+
+namespace blockfrag {
+namespace {
+
+// A file the export may write: its folder usable, not a folder itself, not the study's output.
+void check_target(const std::filesystem::path& target, const std::filesystem::path& results) {
+  std::error_code error;
+  if (std::filesystem::is_directory(target, error)) {
+    throw InvalidInput(target.string() + ": is a folder, not a file the export can write");
+  }
+  if (std::filesystem::equivalent(target, results, error)) {
+    throw InvalidInput(target.string() + ": is the study output " + results.string() +
+                       " itself; choose another --output");
+  }
+  if (const auto problem = folder_write_problem(target)) {
+    throw InvalidInput(target.string() + ": " + *problem);
+  }
+}
+
+// The pelicun folder: created if missing (its parent must exist), refused if something else.
+void prepare_folder(const std::filesystem::path& folder) {
+  std::error_code error;
+  const auto status = std::filesystem::status(folder, error);
+  if (std::filesystem::is_directory(status)) return;
+  if (std::filesystem::exists(status)) {
+    throw InvalidInput(folder.string() +
+                       ": is not a folder; --output names the folder pelicun's files go in");
+  }
+  const auto parent =
+      folder.parent_path().empty() ? std::filesystem::path(".") : folder.parent_path();
+  if (!std::filesystem::is_directory(parent, error)) {
+    throw InvalidInput(folder.string() + ": its folder " + parent.string() +
+                       " does not exist (export creates the output folder, not its parents)");
+  }
+  if (!std::filesystem::create_directory(folder, error) && error) {
+    throw InvalidInput(folder.string() + ": cannot be created (" + error.message() + ")");
+  }
+}
+
+}  // namespace
+
+int run_export(const ExportOptions& options, std::ostream& log) {
+  const FragilityFits all = read_fragility_fits(options.results);
+  std::vector<std::string> left_out;
+  const FragilityFits fits = exportable_fits(all, options.fitted_only, left_out);
+  const std::string id = options.id ? *options.id : default_export_id(fits);
+  check_export_id(id);
+  // Every text is made, and so every refusal made, before anything is written.
+  if (options.format == ExportFormat::pelicun) {
+    const PelicunDamageModel model = pelicun_damage_model(fits, id);
+    prepare_folder(options.output);
+    const auto csv = options.output / "fragility.csv";
+    const auto json = options.output / "fragility.json";
+    check_target(csv, options.results);
+    check_target(json, options.results);
+    write_file_atomically(csv, model.csv);
+    write_file_atomically(json, model.json);
+    log << "wrote " << csv.string() << " and " << json.string();
+  } else {
+    const std::string model = openquake_fragility_model(fits, id);
+    check_target(options.output, options.results);
+    write_file_atomically(options.output, model);
+    log << "wrote " << options.output.string();
+  }
+  log << " (" << id << ": " << fits.states.size() << " limit state"
+      << (fits.states.size() == 1 ? "" : "s") << ", least severe first)\n";
+  if (!left_out.empty()) {
+    log << "left out, without a fit:";
+    for (const auto& name : left_out) log << ' ' << name;
+    log << '\n';
+  }
+  log.flush();
+  return 0;
+}
+
+void add_export_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* export_ = app.add_subcommand(
+      "export", "Write a study's fragility fits as a pelicun damage model or an OpenQuake model");
+  export_->add_option("results", options->results, "The study's HDF5 output")->required();
+  auto format = std::make_shared<std::string>();
+  export_
+      ->add_option("--format", *format,
+                   "pelicun: fragility.csv and fragility.json in --output; openquake: an NRML "
+                   "0.5 fragility model in --output")
+      ->required()
+      ->check(CLI::IsMember({"pelicun", "openquake"}));
+  export_
+      ->add_option("--output", options->output,
+                   "pelicun: the folder (created if missing); openquake: the XML file")
+      ->required()
+      ->type_name("PATH");
+  export_->add_option("--id", options->id,
+                      "The component (pelicun) and taxonomy (OpenQuake) ID; default "
+                      "BF.BLOCK.<config hash>");
+  export_->add_flag("--fitted-only", options->fitted_only,
+                    "Export the limit states that have a fit and name the others, instead of "
+                    "refusing a limit state without a fit");
+  export_->callback([options, format, &command] {
+    options->format = *format == "openquake" ? ExportFormat::openquake : ExportFormat::pelicun;
+    command = [options] { return run_export(*options, std::cerr); };
+  });
+}
+
+}  // namespace blockfrag
