@@ -1,5 +1,6 @@
 #include "mpi_driver/cli/export_command.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <system_error>
@@ -77,6 +78,17 @@ int run_export(const ExportOptions& options, std::ostream& log) {
   }
   log << " (" << id << ": " << fits.states.size() << " limit state"
       << (fits.states.size() == 1 ? "" : "s") << ", least severe first)\n";
+  const auto exported = [&](const std::string& name) {
+    return std::any_of(fits.states.begin(), fits.states.end(),
+                       [&](const FragilityFit& state) { return state.name == name; });
+  };
+  for (const auto& [first, second] : fits.crossing_pairs) {
+    if (exported(first) && exported(second)) {
+      log << "note: the fits of " << first << " and " << second
+          << " cross within the study's levels; both tools take the limit states as nested, "
+             "least severe first\n";
+    }
+  }
   if (!left_out.empty()) {
     log << "left out, without a fit:";
     for (const auto& name : left_out) log << ' ' << name;

@@ -176,11 +176,10 @@ LognormalMoments lognormal_moments(double median, double beta) {
 
 std::string limit_state_description(const FragilityFit& fit) {
   if (fit.type == "overturning") return "overturned";
-  if (fit.type == "max_rotation") {
-    return "max |theta| > " + exact_number(fit.threshold) + " alpha, or overturned";
-  }
-  if (fit.type == "residual_slide") return "residual slide > " + exact_number(fit.threshold) + " m";
-  return fit.type;
+  std::string text = fit.type;
+  if (fit.type == "max_rotation") text = "max |theta| > " + exact_number(fit.threshold) + " alpha";
+  if (fit.type == "residual_slide") text = "residual slide > " + exact_number(fit.threshold) + " m";
+  return fit.overturned_exceeds ? text + ", or overturned" : text;
 }
 
 FragilityFits exportable_fits(const FragilityFits& fits, bool fitted_only,

@@ -40,7 +40,7 @@ FragilityFits exportable_fits(const FragilityFits& fits, bool fitted_only,
 std::string default_export_id(const FragilityFits& fits);
 void check_export_id(const std::string& id);
 
-// What the limit state means, for a human: "residual slide > 0.05 m".
+// What the limit state means, for a human: "residual slide > 0.05 m, or overturned".
 std::string limit_state_description(const FragilityFit& fit);
 
 struct LognormalMoments {

@@ -121,6 +121,8 @@ FragilityFit read_fit(const FitsReader& reader, const std::string& name) {
   fit.beta_ci = reader.optional_interval(group, "beta_ci");
   fit.deviance = reader.optional_number(group, "deviance");
   fit.gof_p_value = reader.optional_number(group, "gof_p_value");
+  const auto overturned = reader.optional_number(group, "overturned_exceeds");
+  fit.overturned_exceeds = overturned ? *overturned != 0.0 : fit.type != "residual_slide";
   fit.im = reader.dataset(group + "/im");
   if (fit.fitted()) {
     const bool usable =
@@ -134,11 +136,11 @@ FragilityFit read_fit(const FitsReader& reader, const std::string& name) {
   return fit;
 }
 
-std::vector<std::string> split_names(const std::string& text) {
+std::vector<std::string> split_names(const std::string& text, char separator = ',') {
   std::vector<std::string> names;
   std::size_t start = 0;
   while (start <= text.size()) {
-    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::size_t end = std::min(text.find(separator, start), text.size());
     std::string name = text.substr(start, end - start);
     const auto first = name.find_first_not_of(" \t");
     const auto last = name.find_last_not_of(" \t");
@@ -209,6 +211,15 @@ FragilityFits read_fragility_fits(const std::filesystem::path& path) {
   fits.im_period_s = reader.optional_number("/fragility", "im_period_s");
   fits.im_damping = reader.optional_number("/fragility", "im_damping");
   fits.states = read_states(file, reader);
+  if (file.has_attribute("/fragility", "crossing_pairs")) {
+    for (const auto& pair : split_names(reader.text("/fragility", "crossing_pairs"), ';')) {
+      const auto names = split_names(pair);
+      if (names.size() != 2) {
+        throw reader.malformed("crossing_pairs holds \"" + pair + "\", not two names");
+      }
+      fits.crossing_pairs.emplace_back(names[0], names[1]);
+    }
+  }
   return fits;
 }
 

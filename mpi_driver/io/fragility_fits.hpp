@@ -3,8 +3,10 @@
 //   /                  attributes config, config_hash (their presence marks a blockfrag output)
 //   /fragility         attributes im_name, im_units, im_label; im_period_s and im_damping (sa);
 //                      severity_order: the limit-state names, comma-separated, least severe first
+//                      optionally crossing_pairs ("a,b;c,d": limit states whose fits cross)
 //   /fragility/<name>  attributes type, threshold, median, beta, fit_status; optionally
-//                      median_ci, beta_ci (2 values), deviance, gof_p_value; dataset im (levels)
+//                      median_ci, beta_ci (2 values), deviance, gof_p_value, overturned_exceeds
+//                      (0 or 1); dataset im (levels)
 // A file without severity_order has its groups ordered by fitted median (unfitted ones last, by
 // name); groups that severity_order does not name follow the ones it names.
 #pragma once
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace blockfrag {
@@ -27,6 +30,9 @@ struct FragilityFit {
   std::vector<double> beta_ci;
   std::optional<double> deviance;
   std::optional<double> gof_p_value;
+  // Whether an overturned block exceeds this limit state whatever its measure; without the
+  // attribute (older outputs), what blockfrag then did: max_rotation yes, residual_slide no.
+  bool overturned_exceeds = true;
   std::vector<double> im;  // the levels
 
   bool fitted() const { return fit_status == "ok"; }
@@ -41,6 +47,8 @@ struct FragilityFits {
   std::optional<double> im_period_s;
   std::optional<double> im_damping;
   std::vector<FragilityFit> states;  // least severe first
+  // Pairs of limit states whose fitted curves cross in the levels' range.
+  std::vector<std::pair<std::string, std::string>> crossing_pairs;
 };
 
 // Throws InvalidInput naming the file when it is missing, not a regular file, not HDF5, not a

@@ -50,7 +50,8 @@ def run(*args):
 
 
 def write_output(path, im_name="pga", im_units="g", im_label="PGA", states=None, levels=None,
-                 period=None, damping=None, severity=True, fragility=True, marked=True):
+                 period=None, damping=None, severity=True, fragility=True, marked=True,
+                 crossing_pairs=None):
     states = STATES if states is None else states
     levels = LEVELS if levels is None else levels
     with h5py.File(path, "w") as f:
@@ -69,6 +70,8 @@ def write_output(path, im_name="pga", im_units="g", im_label="PGA", states=None,
             g.attrs["im_damping"] = damping
         if severity:
             g.attrs["severity_order"] = ",".join(s["name"] for s in states)
+        if crossing_pairs is not None:
+            g.attrs["crossing_pairs"] = crossing_pairs
         for s in states:
             h = g.create_group(s["name"])
             fitted = s.get("fit_status", "ok") == "ok"
@@ -81,6 +84,8 @@ def write_output(path, im_name="pga", im_units="g", im_label="PGA", states=None,
             h.attrs["beta_ci"] = np.array([0.8, 1.25]) * (s["beta"] if fitted else math.nan)
             h.attrs["deviance"] = 4.5
             h.attrs["gof_p_value"] = 0.61
+            if "overturned_exceeds" in s:
+                h.attrs["overturned_exceeds"] = np.int64(s["overturned_exceeds"])
             h.create_dataset("im", data=np.array(levels, dtype=float))
             h.create_dataset("probability", data=np.linspace(0.0, 1.0, len(levels)))
 
@@ -230,6 +235,26 @@ def test_without_severity_order_by_median(work):
     write_output(work / "s.h5", states=list(reversed(STATES)), severity=False)
     assert_ok(run(work / "s.h5", "--format", "pelicun", "--output", work / "dl"))
     check_pelicun_row(read_pelicun(work / "dl")[0], "Peak Ground Acceleration", "g")
+
+
+def test_overturned_blocks_and_crossing_fits(work):
+    """overturned_exceeds (the study's newer outputs) decides whether a state's meaning says
+    "or overturned"; crossing fits of two exported states are noted on stderr."""
+    states = [dict(STATES[0], overturned_exceeds=1), dict(STATES[1], overturned_exceeds=0),
+              dict(STATES[2], overturned_exceeds=1)]
+    write_output(work / "s.h5", states=states, crossing_pairs="slide_2cm,rock.half")
+    result = run(work / "s.h5", "--format", "pelicun", "--output", work / "dl")
+    assert_ok(result)
+    assert "slide_2cm and rock.half cross" in result.stderr, result.stderr
+    entry = read_pelicun(work / "dl")[1]["BF.BLOCK." + HASH]
+    assert entry["LimitStates"]["LS1"]["DS1"]["Description"] == \
+        "slide_2cm: residual slide > 0.02 m, or overturned", entry
+    assert entry["LimitStates"]["LS2"]["DS2"]["Description"] == \
+        "rock.half: max |theta| > 0.5 alpha", entry
+    write_output(work / "t.h5", crossing_pairs="")
+    result = run(work / "t.h5", "--format", "openquake", "--output", work / "m.xml")
+    assert_ok(result)
+    assert "cross" not in result.stderr, result.stderr
 
 
 def test_dimensionless_measure_is_refused(work):

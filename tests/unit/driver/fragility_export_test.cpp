@@ -77,6 +77,7 @@ void write_fits_file(const std::filesystem::path& path, const std::vector<StateS
     if (!severity_order.empty()) {
       file.set_attribute("/fragility", "severity_order", severity_order);
     }
+    file.set_attribute("/fragility", "crossing_pairs", std::string("overturn,rock_half"));
     for (const auto& state : states) {
       const std::string group = "/fragility/" + state.name;
       file.create_group(group);
@@ -86,6 +87,9 @@ void write_fits_file(const std::filesystem::path& path, const std::vector<StateS
       file.set_attribute(group, "beta", state.beta);
       file.set_attribute(group, "fit_status", state.status);
       file.set_attribute(group, "deviance", 2.5);
+      if (state.type == "residual_slide") {
+        file.set_attribute(group, "overturned_exceeds", std::int64_t{0});
+      }
       file.write_column(group + "/im", std::vector<double>{0.25, 0.5, 0.75, 1.0});
     }
   }
@@ -170,6 +174,11 @@ TEST(FragilityFits, ReadsTheStatesInSeverityOrder) {
   EXPECT_EQ(slide.deviance, 2.5);
   EXPECT_FALSE(slide.gof_p_value);
   EXPECT_TRUE(slide.median_ci.empty());
+  EXPECT_FALSE(slide.overturned_exceeds);
+  EXPECT_TRUE(fits.states[1].overturned_exceeds);
+  ASSERT_EQ(fits.crossing_pairs.size(), 1u);
+  EXPECT_EQ(fits.crossing_pairs[0].first, "overturn");
+  EXPECT_EQ(fits.crossing_pairs[0].second, "rock_half");
   EXPECT_EQ(slide.im, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
 }
 
@@ -244,7 +253,8 @@ TEST(FragilityExport, PelicunCsvToTheCharacter) {
                             "\"overturn: overturned\""),
             std::string::npos)
       << model.json;
-  EXPECT_NE(model.json.find("\"slide_2cm: residual slide > 0.02 m\""), std::string::npos);
+  EXPECT_NE(model.json.find("\"slide_2cm: residual slide > 0.02 m, or overturned\""),
+            std::string::npos);
 }
 
 TEST(FragilityExport, MeasuresAsEachToolNamesThem) {
@@ -362,7 +372,11 @@ TEST(FragilityExport, IdsAndDescriptions) {
   EXPECT_EQ(limit_state_description(fit), "max |theta| > 0.5 alpha, or overturned");
   fit.type = "residual_slide";
   fit.threshold = 0.05;
+  EXPECT_EQ(limit_state_description(fit), "residual slide > 0.05 m, or overturned");
+  fit.overturned_exceeds = false;
   EXPECT_EQ(limit_state_description(fit), "residual slide > 0.05 m");
+  fit.type = "max_rotation";
+  EXPECT_EQ(limit_state_description(fit), "max |theta| > 0.05 alpha");
   fit.type = "overturning";
   EXPECT_EQ(limit_state_description(fit), "overturned");
 }
