@@ -37,6 +37,8 @@ std::string period_text(double period) {
   char buffer[64];
   const auto result =
       std::to_chars(buffer, buffer + sizeof buffer, period, std::chars_format::fixed);
+  // Too long in fixed notation (no study's period is): the shortest notation then.
+  if (result.ec != std::errc()) return exact_number(period);
   std::string text(buffer, result.ptr);
   if (text.find('.') == std::string::npos) text += ".0";
   return text;
