@@ -40,8 +40,10 @@ void prepare_folder(const std::filesystem::path& folder) {
     throw InvalidInput(folder.string() +
                        ": is not a folder; --output names the folder pelicun's files go in");
   }
+  // "dl/" names the folder dl, whose parent is ".".
+  const auto named = folder.has_filename() ? folder : folder.parent_path();
   const auto parent =
-      folder.parent_path().empty() ? std::filesystem::path(".") : folder.parent_path();
+      named.parent_path().empty() ? std::filesystem::path(".") : named.parent_path();
   if (!std::filesystem::is_directory(parent, error)) {
     throw InvalidInput(folder.string() + ": its folder " + parent.string() +
                        " does not exist (export creates the output folder, not its parents)");

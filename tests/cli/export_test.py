@@ -317,6 +317,8 @@ def test_bad_options_and_outputs(work):
     assert_refused(run(work / "s.h5", "--format", "csv", "--output", work / "dl"), "--format")
     assert_refused(run(work / "s.h5", "--format", "pelicun", "--output", work / "no" / "dl"),
                    "does not exist")
+    assert_ok(run(work / "s.h5", "--format", "pelicun", "--output", str(work / "slash") + "/"))
+    assert (work / "slash" / "fragility.csv").is_file()
     assert_refused(run(work / "s.h5", "--format", "openquake", "--output", work / "no" / "m.xml"),
                    "does not exist")
     assert_refused(run(work / "s.h5", "--format", "openquake", "--output", work / "s.h5"),
