@@ -3,8 +3,17 @@
 plot_history.py: a PNG of plausible size whose background shows the colours of the modes present
 and not of the modes absent; one-line errors (no traceback, non-zero exit) for a missing file, a
 missing column and an unknown mode. plot_fragility.py: a PNG showing each limit state's colour,
-a --summary table with the file's numbers, one-line errors for a missing file, a file that is not
-HDF5 and one without /fragility. Prints "N passed, M failed" last; exits non-zero on any failure.
+the bootstrap band's light colour when the file has the band and not when it has none, a legend
+and a --summary with the goodness of fit (deviance, p-value, the rejection and the largest
+|observed - fitted|, recomputed here) and the limit states by severity, a --summary table with the
+file's numbers, one-line errors for a missing file, a file that is not HDF5, one without
+/fragility and a band without its upper edge. plot_cloud.py: a PNG with the three verdict
+colours, the verdict counts that alpha = atan(a/b) (sampled or the config's; a polygon's easier
+corner) gives, one colour pair with --limit-state, panels by record, one-line errors.
+plot_motion.py: a PNG showing the colours of the modes present and not of the absent one, an
+animated GIF of several distinct frames, a polygon given in another frame drawn like the
+rectangle, a one-line error for a scene that is not the history's. Prints "N passed, M failed"
+last; exits non-zero on any failure.
 """
 
 import math
@@ -16,18 +25,61 @@ import tempfile
 import traceback
 from pathlib import Path
 
+import contextlib
+import importlib.util
+import io
+import json
+
 import h5py
 import matplotlib.image
 import numpy as np
+from PIL import Image
 
 SOURCE = Path(os.environ.get("BLOCKFRAG_SOURCE_DIR", Path(__file__).resolve().parents[2]))
 PLOT_HISTORY = SOURCE / "postproc" / "plots" / "plot_history.py"
 PLOT_FRAGILITY = SOURCE / "postproc" / "plots" / "plot_fragility.py"
+PLOT_CLOUD = SOURCE / "postproc" / "plots" / "plot_cloud.py"
+PLOT_MOTION = SOURCE / "postproc" / "plots" / "plot_motion.py"
 
 # Colours the scripts promise: the mode shading of plot_history.py and the first two limit-state
 # colours of plot_fragility.py.
 ROCK, FLIGHT, SLIDE, SLIDE_ROCK = "#fde3c8", "#d5ecd4", "#cfe2f3", "#e4d3ef"
 FIRST_STATE, SECOND_STATE = "#0072B2", "#D55E00"
+# plot_cloud.py's verdicts; plot_motion.py's outline edges of a rocking block.
+OVERTURNED, EXCEEDED, BELOW = "#D55E00", "#E69F00", "#0072B2"
+ROCK_EDGE = "#c4661b"
+
+
+def blend(hex_colour, alpha):
+    """The colour a fill of this opacity takes over white."""
+    rgb = [int(hex_colour[i:i + 2], 16) for i in (1, 3, 5)]
+    return "#" + "".join(f"{round(255 - alpha * (255 - c)):02x}" for c in rgb)
+
+
+# plot_fragility.py's bootstrap band: the curve's colour at opacity 0.2 over white.
+SECOND_BAND = blend(SECOND_STATE, 0.2)
+
+
+MODULES = {}
+
+
+def load(script):
+    """A plot script as a module (loaded once), to check what it computes without drawing."""
+    if script not in MODULES:
+        spec = importlib.util.spec_from_file_location(script.stem, script)
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        MODULES[script] = module
+    return MODULES[script]
+
+
+def call(script, *args):
+    """The script's main() in this process, like run() but without starting Python and importing
+    matplotlib again (most of a run's time): for the runs that should succeed."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = load(script).main([str(a) for a in args])
+    return subprocess.CompletedProcess(args, code, out.getvalue(), err.getvalue())
 
 
 def run(*args):
@@ -47,9 +99,9 @@ def colour_pixels(pixels, hex_colour, tolerance=2.0 / 255.0):
     return int(np.sum(np.all(np.abs(pixels[..., :3] - rgb) <= tolerance, axis=-1)))
 
 
-def check_plausible_png(path):
+def check_plausible_png(path, min_height=600):
     width, height = png_size(path)
-    assert 800 <= width <= 4000 and 600 <= height <= 4000, f"odd size {width} x {height}"
+    assert 800 <= width <= 4000 and min_height <= height <= 4000, f"odd size {width} x {height}"
     pixels = matplotlib.image.imread(path)
     ink = np.mean(pixels[..., :3] @ np.array([0.299, 0.587, 0.114]) < 0.6)
     # Axes, labels and curves darken a few percent of a figure (the pale mode shading does not
@@ -84,7 +136,16 @@ def write_history(path, modes=None, drop=None):
             out.write(",".join(str(row[c]) for c in columns) + "\n")
 
 
-def write_study(path, with_fragility=True, with_names=True):
+BAKER_IM = [0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2]
+BAKER_TRIALS = [40, 40, 40, 40, 40, 40, 40, 40, 0]
+BAKER_EXCEED = [0, 0, 3, 4, 6, 13, 12, 16, 0]
+BAKER_MEDIAN, BAKER_BETA = 1.076116, 0.429237
+
+
+def write_study(path, with_fragility=True, with_names=True, diagnostics=False, band=True):
+    """Baker's check data with its fit, and separated data; with diagnostics the attributes of the
+    bootstrap and the goodness of fit, the limit states ranked by severity, and (with band) the
+    overturning curve's bootstrap band."""
     with h5py.File(path, "w") as f:
         f.attrs["config_hash"] = "synthetic"
         if not with_fragility:
@@ -95,12 +156,10 @@ def write_study(path, with_fragility=True, with_names=True):
             group.attrs["im_name"] = "pulse_amplitude"
             group.attrs["im_units"] = "g"
         # Baker's check data with its fit, plus a level without trials.
-        im = [0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2]
-        trials = [40, 40, 40, 40, 40, 40, 40, 40, 0]
-        exceed = [0, 0, 3, 4, 6, 13, 12, 16, 0]
+        im, trials = BAKER_IM, BAKER_TRIALS
         state = group.create_group("overturn")
-        fill(state, im, trials, exceed)
-        state.attrs.update({"median": 1.076116, "beta": 0.429237, "log_likelihood": -10.797705,
+        fill(state, im, trials, BAKER_EXCEED)
+        state.attrs.update({"median": BAKER_MEDIAN, "beta": BAKER_BETA, "log_likelihood": -10.797705,
                             "fit_status": "ok", "type": "overturning", "threshold": 0.0,
                             "interval": "Wilson score, 95 %"})
         # Separated data: no fit, NaN attributes, the median bracketed.
@@ -109,6 +168,23 @@ def write_study(path, with_fragility=True, with_names=True):
         state.attrs.update({"median": math.nan, "beta": math.nan, "log_likelihood": 0.0,
                             "fit_status": "separated", "median_low": 0.6, "median_high": 0.7,
                             "type": "residual_slide", "threshold": 0.05, "interval": "Wilson score, 95 %"})
+        if diagnostics:
+            group.attrs.update({"severity_order": "slide_5cm,overturn", "scaling": "stripes",
+                                "im_label": "pulse amplitude"})
+            state = group["overturn"]
+            state.attrs.update({"median_ci": np.array([0.93, 1.31]), "beta_ci": np.array([0.31, 0.58]),
+                                "deviance": 15.2, "gof_p_value": 0.0188, "gof_dof": np.int64(6),
+                                "severity_rank": np.int64(2), "crosses": "slide_5cm"})
+            if band:
+                x = np.linspace(0.006, 1.32, 200)
+                state.create_dataset("band_im", data=x)
+                state.create_dataset("band_low", data=[lognormal(v, 1.2, 0.5) for v in x])
+                state.create_dataset("band_high", data=[lognormal(v, 0.95, 0.38) for v in x])
+            group["slide_5cm"].attrs.update({"severity_rank": np.int64(1), "crosses": "overturn"})
+
+
+def lognormal(x, median, beta):
+    return 0.5 * math.erfc(-math.log(x / median) / (beta * math.sqrt(2.0)))
 
 
 def fill(group, im, trials, exceed):
@@ -208,6 +284,233 @@ def test_fragility_plot_needs_something_to_do(work):
     write_study(work / "s.h5")
     result = run(PLOT_FRAGILITY, work / "s.h5")
     assert result.returncode == 2 and "nothing to do" in result.stderr, result.stderr
+
+
+def test_fragility_plot_shades_the_bootstrap_band_when_the_file_has_it(work):
+    write_study(work / "band.h5", diagnostics=True)
+    write_study(work / "none.h5", diagnostics=True, band=False)
+    for name in ("band", "none"):
+        result = call(PLOT_FRAGILITY, work / f"{name}.h5", "-o", work / f"{name}.png")
+        assert result.returncode == 0, result.stderr
+    with_band = colour_pixels(check_plausible_png(work / "band.png"), SECOND_BAND)
+    without = colour_pixels(check_plausible_png(work / "none.png"), SECOND_BAND)
+    # Ranked by severity, overturning is second and takes the second colour; its band is a broad
+    # area, while without one its light shade is only in the anti-aliased edges of its line.
+    assert with_band > 5000, f"the band is not drawn: {with_band} pixels of {SECOND_BAND}"
+    assert without < with_band / 20, f"{without} pixels of {SECOND_BAND} without a band ({with_band} with)"
+
+
+def test_fragility_legend_and_summary_give_the_goodness_of_fit(work):
+    write_study(work / "s.h5", diagnostics=True)
+    fitted = [lognormal(x, BAKER_MEDIAN, BAKER_BETA) for x in BAKER_IM[:8]]
+    misfit = max(abs(z / n - p) for z, n, p in zip(BAKER_EXCEED, BAKER_TRIALS, fitted))
+    result = call(PLOT_FRAGILITY, work / "s.h5", "--summary")
+    assert result.returncode == 0, result.stderr
+    out = result.stdout
+    assert "severity order (least to most severe): slide_5cm, overturn" in out, out
+    assert out.index("limit state slide_5cm") < out.index("limit state overturn"), out
+    assert (f"goodness of fit: deviance = 15.2 on 6 dof, p = 0.019: lognormal rejected at 5 %; "
+            f"largest |observed - fitted| = {misfit:.4f}") in out, out
+    assert "95 % bootstrap intervals: median in [0.93, 1.31] g, beta in [0.31, 0.58]" in out, out
+    assert "crosses, inside the levels: slide_5cm" in out, out
+    assert out.count("severity: 2 of 2 (1 = least severe)") == 1, out
+
+    plot = load(PLOT_FRAGILITY)
+    study = plot.read_study(str(work / "s.h5"))
+    assert [s["name"] for s in study["states"]] == ["slide_5cm", "overturn"]
+    label = plot.legend_label(study["states"][1], "g")
+    assert "median 1.08 g (0.93–1.31), β = 0.43 (0.31–0.58)" in label, label
+    assert "deviance 15.2, p = 0.019" in label, label
+    assert f"lognormal rejected at 5 %: points up to {misfit:.2f} off it" in label, label
+    assert "crosses: slide_5cm" in label, label
+    study["states"][1]["gof_p_value"] = 0.4
+    label = plot.legend_label(study["states"][1], "g")
+    assert "p = 0.4" in label and "rejected" not in label, label
+    # The crossings given as /fragility's pairs instead.
+    with h5py.File(work / "s.h5", "r+") as f:
+        for name in ("overturn", "slide_5cm"):
+            del f[f"fragility/{name}"].attrs["crosses"]
+        f["fragility"].attrs["crossing_pairs"] = "overturn,slide_5cm"
+    study = plot.read_study(str(work / "s.h5"))
+    assert "crosses: slide_5cm" in plot.legend_label(study["states"][1], "g")
+    assert "crosses: overturn" in plot.legend_label(study["states"][0], "g")
+    # A file without the diagnostics: neither line.
+    write_study(work / "old.h5")
+    old = plot.read_study(str(work / "old.h5"))
+    assert not old["by_severity"] and "deviance" not in plot.legend_label(old["states"][0], "g")
+    assert "goodness of fit" not in plot.summary(old)
+
+
+def test_fragility_plot_refuses_half_a_band(work):
+    write_study(work / "s.h5", diagnostics=True)
+    with h5py.File(work / "s.h5", "r+") as f:
+        del f["fragility/overturn/band_high"]
+    assert_clean_error(run(PLOT_FRAGILITY, work / "s.h5", "-o", work / "f.png"), "band_high")
+
+
+# --- plot_cloud.py ------------------------------------------------------------------------------------
+
+CLOUD_ALPHA = math.atan(0.5 / 1.0)
+
+
+def write_samples(path, records=0, sampled_width=False, polygon=None):
+    """Three stripes of 40 samples of a 1 m x 2 m block: at each level 10 overturned, 10 with
+    max |theta|/alpha = 0.55 (above the rotation limit 0.5), 20 at 0.45; a quarter of each slid
+    10 cm. With sampled_width each sample's half-width is 0.5 (the base scene's is 0.8)."""
+    levels, per_level = [0.3, 0.6, 1.2], 40
+    im = np.repeat(levels, per_level)
+    pattern = np.array(["over"] * 10 + ["above"] * 10 + ["below"] * 20)
+    verdict = np.tile(pattern, len(levels))
+    ratio = np.where(verdict == "above", 0.55, 0.45)
+    alpha = CLOUD_ALPHA if polygon is None else polygon
+    theta = np.where(verdict == "over", math.pi / 2, ratio * alpha)
+    slide = np.tile(np.where(np.arange(per_level) % 4 == 0, 0.1, 0.0), len(levels))
+    block = {"half_width": 0.8 if sampled_width else 0.5, "half_height": 1.0}
+    if polygon is not None:
+        block = {"polygon": [[0, 0], [12.55, 0], [10, 3.4], [10, 16.7], [0, 16.7]]}
+    config = {"scene": {"block": block}, "limit_states": [
+        {"name": "overturn", "type": "overturning"},
+        {"name": "rocking_half", "type": "max_rotation", "theta_over_alpha": 0.5},
+        {"name": "slide_5cm", "type": "residual_slide", "threshold_m": 0.05}]}
+    with h5py.File(path, "w") as f:
+        f.attrs["config"] = json.dumps(config)
+        f.create_dataset("samples/im", data=im).attrs["units"] = "g"
+        if sampled_width:
+            f.create_dataset("samples/half_width", data=np.full(len(im), 0.5))
+        f.create_dataset("results/max_abs_theta", data=theta)
+        f.create_dataset("results/overturned", data=(verdict == "over").astype(np.int64))
+        f.create_dataset("results/final_slide", data=slide)
+        f.create_dataset("results/status", data=np.zeros(len(im), dtype=np.int64))
+        group = f.create_group("fragility")
+        group.attrs.update({"im_label": "PGA", "im_units": "g", "scaling": "stripes"})
+        for state in config["limit_states"]:
+            threshold = state.get("theta_over_alpha", state.get("threshold_m", 0.0))
+            group.create_group(state["name"]).attrs.update({"type": state["type"], "threshold": threshold})
+        if records:
+            f.create_dataset("samples/record", data=np.arange(len(im), dtype=np.int64) % records)
+            f.create_dataset("records/file", data=[f"records/Quake_{k}.csv".encode() for k in range(records)])
+
+
+def test_cloud_plot_shows_the_three_verdicts(work):
+    write_samples(work / "s.h5")
+    result = call(PLOT_CLOUD, work / "s.h5", "-o", work / "c.png")
+    assert result.returncode == 0, result.stderr
+    pixels = check_plausible_png(work / "c.png")
+    for colour, name in ((OVERTURNED, "overturned"), (EXCEEDED, "above the limit"), (BELOW, "below")):
+        assert colour_pixels(pixels, colour) > 300, f"no {name} samples drawn"
+
+
+def test_cloud_verdicts_follow_alpha(work):
+    cloud = load(PLOT_CLOUD)
+    for name, options in (("rectangle", {}), ("sampled", {"sampled_width": True}),
+                          ("polygon", {"polygon": 0.56241})):
+        write_samples(work / f"{name}.h5", **options)
+        data = cloud.read_samples(str(work / f"{name}.h5"))
+        # The dam block's easier corner, as blockfrag simulate reports it (0.56241 rad).
+        expected_alpha = 0.56241 if name == "polygon" else CLOUD_ALPHA
+        assert np.allclose(data["alpha"], expected_alpha, atol=5e-6), (name, data["alpha"][:3])
+        categories, index = cloud.verdicts(data, None)
+        assert [label.split(" ")[0] for label, _ in categories] == ["overturned", "above", "below"]
+        assert np.bincount(index).tolist() == [30, 30, 60], (name, np.bincount(index))
+    states = {s[0]: s for s in data["limit_states"]}
+    _, index = cloud.verdicts(data, states["slide_5cm"])
+    assert int(np.sum(index == 0)) == 30, "slid 10 cm: a quarter of the samples"
+    _, index = cloud.verdicts(data, states["rocking_half"])
+    assert int(np.sum(index == 0)) == 60, "above 0.5 alpha or overturned: half"
+
+
+def test_cloud_plot_by_limit_state_and_by_record(work):
+    write_samples(work / "s.h5", records=3)
+    result = call(PLOT_CLOUD, work / "s.h5", "-o", work / "slide.png", "--limit-state", "slide_5cm")
+    assert result.returncode == 0, result.stderr
+    pixels = check_plausible_png(work / "slide.png")
+    assert colour_pixels(pixels, OVERTURNED) > 300 and colour_pixels(pixels, BELOW) > 300
+    assert colour_pixels(pixels, EXCEEDED) == 0, "a rotation verdict's colour when colouring by a slide"
+    result = call(PLOT_CLOUD, work / "s.h5", "-o", work / "records.png", "--by-record")
+    assert result.returncode == 0, result.stderr
+    check_plausible_png(work / "records.png", min_height=400)
+    assert png_size(work / "records.png")[0] > png_size(work / "slide.png")[0], "three panels side by side"
+
+
+def test_cloud_plot_errors_are_one_line(work):
+    write_samples(work / "s.h5")
+    assert_clean_error(run(PLOT_CLOUD, work / "s.h5", "-o", work / "x.png", "--by-record"), "--by-record")
+    result = call(PLOT_CLOUD, work / "s.h5", "-o", work / "x.png", "--limit-state", "nope")
+    assert result.returncode == 1 and "nope" in result.stderr and "rocking_half" in result.stderr, result.stderr
+    write_study(work / "f.h5")
+    assert_clean_error(run(PLOT_CLOUD, work / "f.h5", "-o", work / "x.png"), "/samples/im")
+    assert not (work / "x.png").exists()
+
+
+# --- plot_motion.py -----------------------------------------------------------------------------------
+
+A, B = 0.5, 1.0
+RECTANGLE = {"block": {"half_width": A, "half_height": B}}
+# The same block as a polygon, counter-clockwise, in another frame: its centroid is (10.5, 6).
+SHIFTED = {"block": {"polygon": [[10, 5], [11, 5], [11, 7], [10, 7]]}}
+
+
+def write_motion(path):
+    """A 1 m x 2 m block that slides 1 m, rocks on its right corner, flies a little way and rests."""
+    rows = []
+    for t in np.linspace(0.0, 3.0, 151):
+        if t < 1.0:
+            mode, x, y, theta = "slide", 0.5 * t * t, B, 0.0
+        elif t < 2.0:
+            theta = -0.25 * math.sin(math.pi * (t - 1.0))
+            mode = "rock"
+            x = 0.5 + A - A * math.cos(theta) - B * math.sin(theta)
+            y = B * math.cos(theta) - A * math.sin(theta)
+        elif t < 2.3:
+            mode, x, y, theta = "flight", 0.5 + 0.5 * (t - 2.0), B + 2.0 * (t - 2.0) * (2.3 - t), 0.0
+        else:
+            mode, x, y, theta = "rest", 0.65, B, 0.0
+        rows.append((t, x, y, theta, 0, 0, 0, mode, 0, 0 if mode == "flight" else 1))
+    with open(path, "w") as out:
+        out.write("t,x,y,theta,vx,vy,omega,mode,friction_per_weight,normal_per_weight\n")
+        out.writelines(",".join(str(v) for v in row) + "\n" for row in rows)
+
+
+def test_motion_plot_and_gif(work):
+    write_motion(work / "h.csv")
+    (work / "scene.json").write_text(json.dumps(RECTANGLE))
+    result = call(PLOT_MOTION, work / "h.csv", work / "scene.json", "-o", work / "m.png", "--gif", work / "m.gif",
+                 "--fps", "4")
+    assert result.returncode == 0, result.stderr
+    pixels = check_plausible_png(work / "m.png")
+    for colour, name in ((SLIDE, "slide"), (ROCK, "rock"), (FLIGHT, "flight")):
+        assert colour_pixels(pixels, colour) > 2000, f"no {name} colour"
+    assert colour_pixels(pixels, SLIDE_ROCK) == 0, "slide-rock colour without any"
+    assert colour_pixels(pixels, ROCK_EDGE, 3.0 / 255.0) > 400, "no rocking outline"
+    with Image.open(work / "m.gif") as gif:
+        assert gif.format == "GIF" and gif.n_frames >= 10, f"{gif.format}, {gif.n_frames} frames"
+        gif.seek(0)
+        first = np.asarray(gif.convert("RGB"))
+        gif.seek(gif.n_frames // 2)
+        middle = np.asarray(gif.convert("RGB"))
+    assert np.mean(np.any(first != middle, axis=-1)) > 0.005, "the block does not move"
+
+
+def test_motion_plot_takes_a_polygon_about_its_centroid(work):
+    write_motion(work / "h.csv")
+    (work / "polygon.json").write_text(json.dumps(SHIFTED))
+    result = call(PLOT_MOTION, work / "h.csv", work / "polygon.json", "-o", work / "p.png")
+    assert result.returncode == 0, result.stderr
+    check_plausible_png(work / "p.png")
+    motion = load(PLOT_MOTION)
+    shape = motion.read_shape(str(work / "polygon.json"))
+    assert np.allclose(shape, [[-A, -B], [A, -B], [A, B], [-A, B]]), shape
+    assert np.allclose(motion.outline(shape, 1.0, B, math.pi / 2)[0], [1.0 + B, B - A]), "turned the wrong way"
+
+
+def test_motion_plot_refuses_another_scene(work):
+    write_motion(work / "h.csv")
+    (work / "tall.json").write_text(json.dumps({"block": {"half_width": 0.5, "half_height": 3.0}}))
+    assert_clean_error(run(PLOT_MOTION, work / "h.csv", work / "tall.json", "-o", work / "x.png"),
+                       "tall.json", "scene of that history")
+    result = call(PLOT_MOTION, work / "h.csv", work / "absent.json", "-o", work / "x.png")
+    assert result.returncode == 1 and "absent.json" in result.stderr, result.stderr
+    assert not (work / "x.png").exists()
 
 
 def main():
