@@ -4,33 +4,15 @@
 
 #include <type_traits>
 
+#include "mpi_driver/io/hdf5_handle.hpp"
+
 namespace blockfrag {
 namespace {
 
 static_assert(std::is_same_v<hid_t, std::int64_t>, "hid_t is stored as std::int64_t in the header");
 
-// Owns one HDF5 identifier and closes it with the matching H5*close.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw Hdf5Error("HDF5: cannot " + what);
-  }
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw Hdf5Error("HDF5: cannot " + what);
-}
+using hdf5::check;
+using hdf5::Handle;
 
 Handle creation_properties(hid_t property_class, const std::string& what) {
   Handle properties(H5Pcreate(property_class), H5Pclose, "create properties for " + what);
@@ -81,9 +63,6 @@ void write_attribute(hid_t file, const std::string& object, const std::string& n
   check(H5Awrite(attribute.get(), type, value), "write " + what);
 }
 
-// Errors are reported by exceptions; HDF5's own printing of its error stack would only add noise.
-void silence_hdf5_error_printing() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
-
 Handle utf8_string_type() {
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "copy the string type");
   check(H5Tset_size(type.get(), H5T_VARIABLE), "make a variable-length string type");
@@ -94,7 +73,7 @@ Handle utf8_string_type() {
 }  // namespace
 
 Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : name_(path.string()) {
-  silence_hdf5_error_printing();
+  hdf5::silence_error_printing();
   const auto properties = creation_properties(H5P_FILE_CREATE, name_);
   // Exclusive: the file must not exist (atomic_file.hpp gives a fresh name), so nothing planted
   // there, a link included, is ever opened.
@@ -185,7 +164,7 @@ void Hdf5Writer::set_attribute(const std::string& object, const std::string& nam
 }
 
 std::string read_root_string_attribute(const std::filesystem::path& path, const std::string& name) {
-  silence_hdf5_error_printing();
+  hdf5::silence_error_printing();
   const std::string what = "attribute " + name + " of " + path.string();
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
               "open " + path.string());

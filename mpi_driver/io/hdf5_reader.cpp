@@ -4,35 +4,15 @@
 
 #include <type_traits>
 
+#include "mpi_driver/io/hdf5_handle.hpp"
+
 namespace blockfrag {
 namespace {
 
 static_assert(std::is_same_v<hid_t, std::int64_t>, "hid_t is stored as std::int64_t in the header");
 
-// Owns one HDF5 identifier and closes it with the matching H5*close.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw Hdf5Error("HDF5: cannot " + what);
-  }
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw Hdf5Error("HDF5: cannot " + what);
-}
-
-// Errors are reported by exceptions; HDF5's own printing of its error stack would only add noise.
-void silence_hdf5_error_printing() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+using hdf5::check;
+using hdf5::Handle;
 
 // The number of elements of a scalar or 1-D dataspace; throws for anything of higher rank.
 std::size_t element_count(hid_t space, const std::string& what) {
@@ -52,7 +32,7 @@ bool numeric(hid_t type) {
 }  // namespace
 
 Hdf5Reader::Hdf5Reader(const std::filesystem::path& path) : name_(path.string()) {
-  silence_hdf5_error_printing();
+  hdf5::silence_error_printing();
   file_ = H5Fopen(name_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file_ < 0) throw Hdf5Error("HDF5: cannot open " + name_);
 }
@@ -62,7 +42,7 @@ Hdf5Reader::~Hdf5Reader() {
 }
 
 bool Hdf5Reader::is_hdf5(const std::filesystem::path& path) {
-  silence_hdf5_error_printing();
+  hdf5::silence_error_printing();
   return H5Fis_hdf5(path.c_str()) > 0;
 }
 
