@@ -58,7 +58,7 @@ void send_chunk(MPI_Comm comm, int worker, IndexRange chunk) {
   MPI_Send(message, 2, MPI_INT64_T, worker, tag_chunk, comm);
 }
 
-void run_worker(MPI_Comm comm, StudySampler& sampler, const SceneEvaluator& evaluate) {
+void run_worker(MPI_Comm comm, const SampleJob& job) {
   int outstanding = 0;
   bool no_more_work = false;
   bool stopped = false;
@@ -94,7 +94,7 @@ void run_worker(MPI_Comm comm, StudySampler& sampler, const SceneEvaluator& eval
     for (std::int64_t i = chunk.first; i < chunk.first + chunk.count; ++i) {
       check_stop();
       if (stopped) break;
-      records.push_back(evaluate_sample(sampler, i, evaluate));
+      records.push_back(job.evaluate(i));
     }
     const bool more = !no_more_work && !stopped;
     const std::int64_t flags = (more ? wants_more : 0) | (stopped ? interrupted : 0);
@@ -114,24 +114,24 @@ void run_worker(MPI_Comm comm, StudySampler& sampler, const SceneEvaluator& eval
 // Rank 0's state: what is done, what is left, who is still working.
 class Coordinator {
  public:
-  Coordinator(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
+  Coordinator(MPI_Comm comm, const SampleJob& job, const RunSettings& settings,
               const CheckpointState& restored, RecordSpool& spool)
-      : comm_(comm), config_(config), settings_(settings), spool_(spool) {
+      : comm_(comm), job_(job), settings_(settings), spool_(spool) {
     MPI_Comm_size(comm_, &ranks_);
     for (const auto& range : restored.done) done_.add(range);
     result_.restored = done_.count();
-    queue_.emplace(done_.missing(config.total_samples()));
+    queue_.emplace(done_.missing(job.total));
     active_workers_ = ranks_ - 1;
     finished_.assign(static_cast<std::size_t>(ranks_), false);
   }
 
-  RunResult run(StudySampler& sampler, const SceneEvaluator& evaluate) {
+  RunResult run() {
     ProgressReporter progress(settings_.log ? *settings_.log : null_stream(),
-                              settings_.log_is_terminal, config_.total_samples(), done_.count(),
+                              settings_.log_is_terminal, job_.total, done_.count(),
                               settings_.log_interval_s);
     if (settings_.log && result_.restored > 0) {
       *settings_.log << "resumed from " << settings_.checkpoint.string() << ": " << result_.restored
-                     << " of " << config_.total_samples() << " samples already done\n";
+                     << " of " << job_.total << " samples already done\n";
     }
     auto last_checkpoint = Clock::now();
     for (;;) {
@@ -140,12 +140,12 @@ class Coordinator {
       if (!interrupted_) {
         const IndexRange own = queue_->next_chunk(ranks_, 1);
         if (!own.empty()) {
-          const SampleRecord record = evaluate_sample(sampler, own.first, evaluate);
+          const SampleRecord record = job_.evaluate(own.first);
           store({&record, 1});
           ++result_.computed;
         }
       }
-      const bool all_done = done_.count() == config_.total_samples();
+      const bool all_done = done_.count() == job_.total;
       if ((all_done || interrupted_) && active_workers_ == 0) break;
       if (interrupted_ || queue_->remaining() == 0)
         std::this_thread::sleep_for(std::chrono::microseconds(200));
@@ -229,8 +229,8 @@ class Coordinator {
     // The records first: a checkpoint must never call done a sample whose record is not on disk.
     spool_.sync();
     CheckpointState state;
-    state.config_hash = config_.hash;
-    state.total_samples = config_.total_samples();
+    state.config_hash = job_.hash;
+    state.total_samples = job_.total;
     state.done = done_.ranges();
     write_checkpoint(settings_.checkpoint, state, settings_.checkpoint_hooks);
     ++result_.checkpoints;
@@ -238,7 +238,7 @@ class Coordinator {
   }
 
   MPI_Comm comm_;
-  const StudyConfig& config_;
+  const SampleJob& job_;
   const RunSettings& settings_;
   int ranks_ = 1;
   RecordSpool& spool_;
@@ -258,7 +258,7 @@ struct Restored {
 
 // Rank 0 reads the checkpoint, checks it against the config and opens the record spool; the
 // verdict goes to every rank so all of them stop together when it is refused.
-Restored restore(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings) {
+Restored restore(MPI_Comm comm, const SampleJob& job, const RunSettings& settings) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   Restored restored;
@@ -267,21 +267,21 @@ Restored restore(MPI_Comm comm, const StudyConfig& config, const RunSettings& se
   if (rank == 0) {
     try {
       const std::optional<CheckpointState> checkpoint = read_checkpoint(settings.checkpoint);
-      if (checkpoint && checkpoint->config_hash != config.hash) {
+      if (checkpoint && checkpoint->config_hash != job.hash) {
         throw StudyMismatchError(
             "refusing to resume: the checkpoint " + settings.checkpoint.string() +
             " belongs to a different study config (checkpoint config hash " +
-            hash_to_hex(checkpoint->config_hash) + ", this config " + hash_to_hex(config.hash) +
+            hash_to_hex(checkpoint->config_hash) + ", this config " + hash_to_hex(job.hash) +
             "); run the original config to finish it, or remove the checkpoint to start over");
       }
-      if (checkpoint && checkpoint->total_samples != config.total_samples()) {
+      if (checkpoint && checkpoint->total_samples != job.total) {
         throw StudyMismatchError("refusing to resume: the checkpoint " +
                                  settings.checkpoint.string() + " has " +
                                  std::to_string(checkpoint->total_samples) +
-                                 " samples, this study " + std::to_string(config.total_samples()));
+                                 " samples, this study " + std::to_string(job.total));
       }
       restored.spool = std::make_unique<RecordSpool>(
-          settings.records, config.hash, config.total_samples(),
+          settings.records, job.hash, job.total,
           checkpoint ? RecordSpool::Mode::resume : RecordSpool::Mode::fresh);
       if (checkpoint) restored.checkpoint = *checkpoint;
     } catch (const InvalidInput& error) {
@@ -300,18 +300,25 @@ Restored restore(MPI_Comm comm, const StudyConfig& config, const RunSettings& se
 
 }  // namespace
 
-RunResult run_study_samples(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
-                            const SceneEvaluator& evaluate) {
+RunResult run_samples(MPI_Comm comm, const SampleJob& job, const RunSettings& settings) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  Restored restored = restore(comm, config, settings);
-  StudySampler sampler(config);
+  Restored restored = restore(comm, job, settings);
   if (rank != 0) {
-    run_worker(comm, sampler, evaluate);
+    run_worker(comm, job);
     return {};
   }
-  Coordinator coordinator(comm, config, settings, restored.checkpoint, *restored.spool);
-  return coordinator.run(sampler, evaluate);
+  Coordinator coordinator(comm, job, settings, restored.checkpoint, *restored.spool);
+  return coordinator.run();
+}
+
+RunResult run_study_samples(MPI_Comm comm, const StudyConfig& config, const RunSettings& settings,
+                            const SceneEvaluator& evaluate) {
+  StudySampler sampler(config);
+  const SampleJob job{config.hash, config.total_samples(), [&](std::int64_t index) {
+                        return evaluate_sample(sampler, index, evaluate);
+                      }};
+  return run_samples(comm, job, settings);
 }
 
 }  // namespace blockfrag

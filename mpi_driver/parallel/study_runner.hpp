@@ -56,6 +56,20 @@ struct RunResult {
   double checkpoint_seconds = 0.0;  // time rank 0 spent writing them
 };
 
+// Any set of samples the runner can run: `total` samples, each a pure function of its index, tied
+// to its checkpoint and record spool by `hash`. Each rank has its own (evaluate may keep state,
+// such as a sampler's cached permutations).
+struct SampleJob {
+  std::uint64_t hash = 0;
+  std::int64_t total = 0;
+  std::function<SampleRecord(std::int64_t index)> evaluate;
+};
+
+// Collective over comm: runs the job's samples as described above, resuming from the checkpoint.
+// Throws as run_study_samples does.
+RunResult run_samples(MPI_Comm comm, const SampleJob& job, const RunSettings& settings);
+
+// A study's samples: its sample i evaluated by `evaluate` (mpi_driver/study/sample_evaluation.hpp).
 // Collective over comm. Throws StudyMismatchError (on every rank) when the checkpoint belongs to
 // another study or is damaged, or the record spool is not the checkpoint's (the message on rank 0
 // says which). When the outcome is completed, settings.records holds every sample's record.
