@@ -125,8 +125,8 @@ int finish_study(const StudyConfig& config, const RunSettings& settings, const R
   std::filesystem::remove(settings.checkpoint);
   std::filesystem::remove(settings.records);
   std::cerr << "wrote " << config.output.string() << " (" << result.computed
-            << " samples computed in this run, " << result.checkpoints << " checkpoints taking "
-            << result.checkpoint_seconds << " s)\n";
+            << " samples computed in this run, " << result.chunks << " chunks handed out, "
+            << result.checkpoints << " checkpoints taking " << result.checkpoint_seconds << " s)\n";
   print_fragility_summary(std::cerr, config, tallies.fragility);
   const FailureReport failures = tallies.failures.report(config, engine);
   if (failures.total() > 0) {
@@ -167,6 +167,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   settings.checkpoint = checkpoint_path_for(config.output);
   settings.records = record_spool_path_for(config.output);
   settings.checkpoint_interval_s = config.checkpoint_interval_s;
+  settings.max_chunk = options.max_chunk;
   settings.checkpoint_hooks.pause_before_rename_s = checkpoint_pause_from_environment();
   settings.log = rank == 0 ? &std::cerr : nullptr;
   settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
@@ -258,6 +259,10 @@ void add_run_command(CLI::App& app, std::function<int()>& command) {
   run->add_option("--samples-per-level", options->samples_per_level,
                   "Samples per intensity level (replaces the config's \"samples_per_level\")")
       ->check(CLI::PositiveNumber);
+  run->add_option("--max-chunk", options->max_chunk,
+                  "Largest number of samples a worker gets per request (default: adapted to the "
+                  "measured speed; results never depend on it)")
+      ->check(CLI::Range(1, 1 << 20));
   run->callback(
       [options, &command] { command = [options] { return run_study_command(*options); }; });
 }

@@ -14,6 +14,7 @@
 // inside a checkpoint write.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -32,6 +33,7 @@ struct RunOptions {
   std::filesystem::path study_path;
   std::optional<std::filesystem::path> output;
   std::optional<long> samples_per_level;
+  std::int64_t max_chunk = 0;  // 0: adapted (RunSettings::max_chunk)
 };
 
 // Initialises and finalises MPI; runs the study with `evaluate` (blockfrag::simulate by default)

@@ -1,6 +1,8 @@
 #include "mpi_driver/parallel/study_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <deque>
 #include <memory>
@@ -38,6 +40,15 @@ struct ReportHeader {
 
 // Two chunks in hand or on the way: the next one is already there when the current one ends.
 constexpr int prefetch_depth = 2;
+
+// Chunks last about this long at the measured speed, so each worker asks rank 0 about 5 times a
+// second: 1,000 ranks send 5,000 requests/s, a fraction of what rank 0 serves (docs/performance.md).
+// The guided rule still shrinks the last chunks, so the ranks finish together.
+constexpr double kChunkSeconds = 0.2;
+// Chunks start at this size, before any speed is measured, and stay within these bounds: a chunk
+// of 4096 records is a 430 kB message.
+constexpr std::int64_t kSmallestChunkLimit = 64;
+constexpr std::int64_t kLargestChunk = 4096;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -176,6 +187,17 @@ class Coordinator {
     done_.add({records.front().index, static_cast<std::int64_t>(records.size())});
   }
 
+  // The largest chunk to hand out: fixed by the settings, or kChunkSeconds of one rank's measured
+  // speed. Which samples a chunk holds never changes their records, only when they are computed.
+  std::int64_t chunk_limit() const {
+    if (settings_.max_chunk > 0) return settings_.max_chunk;
+    const double seconds = seconds_since(start_);
+    if (result_.computed == 0 || seconds <= 0) return kSmallestChunkLimit;
+    const double per_rank = static_cast<double>(result_.computed) / seconds / ranks_;
+    return std::clamp(static_cast<std::int64_t>(std::ceil(per_rank * kChunkSeconds)),
+                      kSmallestChunkLimit, kLargestChunk);
+  }
+
   void interrupt() {
     if (interrupted_) return;
     interrupted_ = true;
@@ -214,8 +236,10 @@ class Coordinator {
     queue_->give_back({header.chunk_first + header.computed, header.chunk_count - header.computed});
     if (header.flags & interrupted) interrupt();
     if (header.flags & wants_more) {
-      send_chunk(comm_, worker,
-                 interrupted_ ? IndexRange{} : queue_->next_chunk(ranks_, settings_.max_chunk));
+      const IndexRange chunk =
+          interrupted_ ? IndexRange{} : queue_->next_chunk(ranks_, chunk_limit());
+      if (!chunk.empty()) ++result_.chunks;
+      send_chunk(comm_, worker, chunk);
     }
     if (header.flags & finished) {
       finished_[static_cast<std::size_t>(worker)] = true;
@@ -238,6 +262,7 @@ class Coordinator {
   }
 
   MPI_Comm comm_;
+  Clock::time_point start_ = Clock::now();
   const SampleJob& job_;
   const RunSettings& settings_;
   int ranks_ = 1;

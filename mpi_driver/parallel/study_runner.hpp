@@ -43,7 +43,8 @@ struct RunSettings {
   std::ostream* log = nullptr;  // rank 0's progress lines; nullptr: silent
   bool log_is_terminal = false;
   double log_interval_s = 30.0;
-  std::int64_t max_chunk = 64;
+  // The largest chunk handed to a worker; 0: adapted to the measured speed (study_runner.cpp).
+  std::int64_t max_chunk = 0;
 };
 
 enum class RunOutcome { completed, interrupted };
@@ -52,6 +53,7 @@ struct RunResult {
   RunOutcome outcome = RunOutcome::completed;
   std::int64_t restored = 0;        // records read from the checkpoint
   std::int64_t computed = 0;        // records computed in this run (all ranks; rank 0's count)
+  std::int64_t chunks = 0;          // chunks handed to workers in this run
   std::int64_t checkpoints = 0;     // checkpoints written in this run
   double checkpoint_seconds = 0.0;  // time rank 0 spent writing them
 };
