@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `blockfrag run` gives bitwise identical /samples, /results and /fragility with 1 rank (no mpirun),
-# 2 and 3 ranks (oversubscribed), for a Latin hypercube and a Monte Carlo study; every sample is
+# 2 and 3 ranks (oversubscribed; 3 with chunks of one sample, so the chunking differs as much as
+# it can), for a Latin hypercube and a Monte Carlo study; every sample is
 # present exactly once; running a finished study again reports it complete and leaves the file alone.
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
@@ -47,13 +48,17 @@ for design in latin_hypercube monte_carlo; do
   code=$?
   [[ $code -eq 0 ]] && pass || fail "$design, 1 rank: exit code $code: $(cat "$design-1.err")"
   for ranks in 2 3; do
+    chunk=()
+    [[ $ranks == 3 ]] && chunk=(--max-chunk 1)
     mpirun -n "$ranks" --oversubscribe "$BLOCKFRAG" run "$design.json" --output "$design-$ranks.h5" \
-      2>"$design-$ranks.err"
+      "${chunk[@]}" 2>"$design-$ranks.err"
     code=$?
     [[ $code -eq 0 ]] && pass || fail "$design, $ranks ranks: exit code $code: $(cat "$design-$ranks.err")"
   done
   if "$PYTHON" "$COMPARE" "$design-1.h5" "$design-2.h5" "$design-3.h5"; then
     pass
+    grep -q "[1-9][0-9] chunks handed out" "$design-3.err" && pass ||
+      fail "$design, 3 ranks: --max-chunk 1 did not give one chunk per sample: $(grep wrote "$design-3.err")"
   else
     fail "$design: outputs differ between rank counts"
   fi
