@@ -42,8 +42,9 @@ struct ReportHeader {
 constexpr int prefetch_depth = 2;
 
 // Chunks last about this long at the measured speed, so each worker asks rank 0 about 5 times a
-// second: 1,000 ranks send 5,000 requests/s, a fraction of what rank 0 serves (docs/performance.md).
-// The guided rule still shrinks the last chunks, so the ranks finish together.
+// second: 1,000 ranks send 5,000 requests/s, a fraction of what rank 0 serves
+// (docs/performance.md). The guided rule still shrinks the last chunks, so the ranks finish
+// together.
 constexpr double kChunkSeconds = 0.2;
 // Chunks start at this size, before any speed is measured, and stay within these bounds: a chunk
 // of 4096 records is a 430 kB message.
