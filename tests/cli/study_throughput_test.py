@@ -3,8 +3,8 @@
 Against $BLOCKFRAG as its own baseline on 2 ranks: exit 0, a table with a row per case, the quick
 sizes in its scenes column, a number in every cell (medians, rates, memory, ratios), nothing left in
 its temporary folder. Against a baseline that refuses every study: "refused" in the old build's
-cells with the reason below, and still exit 0. An unknown case is refused up front. Prints
-"N passed, M failed" last; exits non-zero on any failure.
+cells with the reason below, and still exit 0; as the build under test, exit 1. An unknown case is
+refused up front. Prints "N passed, M failed" last; exits non-zero on any failure.
 """
 
 import os
@@ -109,6 +109,16 @@ def main():
             assert "- grid, old: refused (exit code 2: study.json: /scene/duration: is required)" in refused.stdout
 
         check("a refusing baseline shows refused", refused_cells)
+
+        refused_new = subprocess.run([sys.executable, str(SCRIPT), "--blockfrag", str(refuser), "--quick", "--cases",
+                                      "grid"], capture_output=True, text=True, timeout=60)
+
+        def refusing_build_under_test():
+            assert refused_new.returncode == 1, (refused_new.returncode, refused_new.stderr[-2000:])
+            (row,) = table_rows(refused_new.stdout)
+            assert row["new wall s"] == "refused", row
+
+        check("a refusing build under test exits 1", refusing_build_under_test)
 
         unknown = run(work, "--cases", "grid,nonsense")
 
