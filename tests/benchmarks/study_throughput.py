@@ -84,6 +84,7 @@ class Cell:
         self.problem = None  # "refused" or "failed", with the first line of its message in reason
         self.reason = ""
         self.exit3 = False
+        self.checkpoints = []  # as each run reports them: "N in S s"
 
 
 def make_cases(args, scratch):
@@ -126,7 +127,8 @@ def read_rss(times, ranks):
 
 
 def run_once(executable, case, scratch):
-    """One run of case with executable: (exit code, wall seconds, per-rank RSS, what went wrong)."""
+    """One run of case with executable: (exit code, wall seconds, per-rank RSS, what went wrong,
+    the checkpoints the run reports and the seconds it took to write them)."""
     folder = Path(tempfile.mkdtemp(prefix="run-", dir=scratch))
     try:
         times = folder / "time"
@@ -139,13 +141,15 @@ def run_once(executable, case, scratch):
                                   text=True, errors="replace")
         wall = time.perf_counter() - start
         if finished.returncode not in (0, 3):
-            return finished.returncode, wall, [], first_error_line(finished.stderr)
+            return finished.returncode, wall, [], first_error_line(finished.stderr), ""
         # A run that computed fewer samples than the study has (say, one that found an output to
         # resume) would look fast: it counts as failed. An older build may word its summary otherwise.
         computed = re.search(r"\((\d+) samples computed in this run", finished.stderr)
         if computed is not None and int(computed.group(1)) != case.scenes:
-            return None, wall, [], f"computed {computed.group(1)} of {case.scenes} samples"
-        return finished.returncode, wall, read_rss(times, case.ranks), ""
+            return None, wall, [], f"computed {computed.group(1)} of {case.scenes} samples", ""
+        checkpoints = re.search(r"(\d+) checkpoints taking ([0-9.e+-]+) s", finished.stderr)
+        checkpoints = f"{checkpoints.group(1)} in {float(checkpoints.group(2)):.2f} s" if checkpoints else "?"
+        return finished.returncode, wall, read_rss(times, case.ranks), "", checkpoints
     finally:
         shutil.rmtree(folder, ignore_errors=True)
 
@@ -166,12 +170,13 @@ def measure(builds, cases, repeats, scratch):
                 cell = cells[(case.name, label)]
                 if cell.problem:
                     continue
-                code, wall, rss, error = run_once(executable, case, scratch)
+                code, wall, rss, error, checkpoints = run_once(executable, case, scratch)
                 if code in (0, 3):
                     cell.walls.append(wall)
                     cell.rss_rank0.append(rss[0])
                     cell.rss_max.append(max(rss))
                     cell.exit3 = cell.exit3 or code == 3
+                    cell.checkpoints.append(checkpoints)
                     note = f"{wall:.2f} s, peak RSS of each rank " + ", ".join(f"{r:.1f}" for r in rss) + " MiB"
                 else:
                     cell.problem = "refused" if code == 2 else "failed"
@@ -282,7 +287,8 @@ def main():
                 print(f"- {case.name}, {label}: {cell.problem} ({cell.reason})")
             else:
                 walls = ", ".join(f"{wall:.2f}" for wall in cell.walls)
-                print(f"- {case.name}, {label}: wall s of each run {walls}"
+                print(f"- {case.name}, {label}: wall s of each run {walls}; checkpoints "
+                      + ", ".join(cell.checkpoints)
                       + ("; exit code 3 (more failed samples than allowed)" if cell.exit3 else ""))
     # The build under test must run every case; a baseline may refuse what it does not know.
     return 1 if any(cells[(case.name, "new")].problem for case in cases) else 0
