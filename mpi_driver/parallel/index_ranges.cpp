@@ -27,6 +27,15 @@ bool IndexSet::contains(std::int64_t index) const {
   return std::prev(it)->second > index;
 }
 
+std::int64_t IndexSet::count_below(std::int64_t end) const {
+  std::int64_t count = 0;
+  for (const auto& [first, range_end] : ends_) {
+    if (first >= end) break;
+    count += std::min(range_end, end) - first;
+  }
+  return count;
+}
+
 std::vector<IndexRange> IndexSet::ranges() const {
   std::vector<IndexRange> out;
   out.reserve(ends_.size());

@@ -22,6 +22,8 @@ class IndexSet {
   void add(IndexRange range);
   bool contains(std::int64_t index) const;
   std::int64_t count() const { return count_; }
+  // How many of the indices below `end` the set holds.
+  std::int64_t count_below(std::int64_t end) const;
   // Sorted, disjoint, none adjacent to the next.
   std::vector<IndexRange> ranges() const;
   // The indices of [0, total) not in the set, sorted.

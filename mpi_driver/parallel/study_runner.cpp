@@ -131,19 +131,19 @@ class Coordinator {
       : comm_(comm), job_(job), settings_(settings), spool_(spool) {
     MPI_Comm_size(comm_, &ranks_);
     for (const auto& range : restored.done) done_.add(range);
-    result_.restored = done_.count();
-    queue_.emplace(done_.missing(job.total));
+    result_.restored = done_.count_below(job.end());
+    queue_.emplace(done_.missing(job.end()));
     active_workers_ = ranks_ - 1;
     finished_.assign(static_cast<std::size_t>(ranks_), false);
   }
 
   RunResult run() {
     ProgressReporter progress(settings_.log ? *settings_.log : null_stream(),
-                              settings_.log_is_terminal, job_.total, done_.count(),
+                              settings_.log_is_terminal, job_.end(), done_.count_below(job_.end()),
                               settings_.log_interval_s);
-    if (settings_.log && result_.restored > 0) {
+    if (settings_.log && settings_.announce_resume && result_.restored > 0) {
       *settings_.log << "resumed from " << settings_.checkpoint.string() << ": " << result_.restored
-                     << " of " << job_.total << " samples already done\n";
+                     << " of " << job_.end() << " samples already done\n";
     }
     auto last_checkpoint = Clock::now();
     for (;;) {
@@ -157,7 +157,7 @@ class Coordinator {
           ++result_.computed;
         }
       }
-      const bool all_done = done_.count() == job_.total;
+      const bool all_done = done_.count_below(job_.end()) == job_.end();
       if ((all_done || interrupted_) && active_workers_ == 0) break;
       if (interrupted_ || queue_->remaining() == 0)
         std::this_thread::sleep_for(std::chrono::microseconds(200));
@@ -165,12 +165,14 @@ class Coordinator {
         write_checkpoint_now();
         last_checkpoint = Clock::now();
       }
-      if (settings_.log) progress.update(done_.count());
+      if (settings_.log) progress.update(done_.count_below(job_.end()));
     }
-    if (settings_.log) progress.finish(done_.count());
+    if (settings_.log) progress.finish(done_.count_below(job_.end()));
     if (interrupted_) {
       write_checkpoint_now();
       result_.outcome = RunOutcome::interrupted;
+    } else if (job_.run_until > 0 && job_.run_until < job_.total) {
+      write_checkpoint_now();  // a finished batch of a growing study: its next batch starts here
     }
     return std::move(result_);
   }

@@ -45,6 +45,9 @@ struct RunSettings {
   double log_interval_s = 30.0;
   // The largest chunk handed to a worker; 0: adapted to the measured speed (study_runner.cpp).
   std::int64_t max_chunk = 0;
+  // Say "resumed from" when the checkpoint holds samples: false for a growing study's later
+  // batches, which always continue the one before.
+  bool announce_resume = true;
 };
 
 enum class RunOutcome { completed, interrupted };
@@ -65,6 +68,11 @@ struct SampleJob {
   std::uint64_t hash = 0;
   std::int64_t total = 0;
   std::function<SampleRecord(std::int64_t index)> evaluate;
+  // This run computes samples [0, run_until) only (0: all): a study that grows in batches runs
+  // one prefix after another against one checkpoint and spool of `total` samples.
+  std::int64_t run_until = 0;
+
+  std::int64_t end() const { return run_until > 0 ? run_until : total; }
 };
 
 // Collective over comm: runs the job's samples as described above, resuming from the checkpoint.
