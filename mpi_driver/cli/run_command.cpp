@@ -16,6 +16,7 @@
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/io/study_output.hpp"
+#include "mpi_driver/parallel/adaptive_study.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/parallel/progress.hpp"
 #include "mpi_driver/parallel/signals.hpp"
@@ -113,14 +114,16 @@ int exit_code_for(const std::exception& error) {
   std::abort();
 }
 
-// Rank 0, once every sample is done: the output, the failures' summary, the exit code.
+// Rank 0, once every sample is done: the output, the failures' summary, the exit code. For an
+// adaptive study, `config` is the grown one and `adaptive` its batches.
 int finish_study(const StudyConfig& config, const RunSettings& settings, const RunResult& result,
-                 const SceneEvaluator& engine) {
+                 const SceneEvaluator& engine, const AdaptiveRun* adaptive) {
   StudyTallies tallies;
   {
-    const RecordSpool spool(settings.records, config.hash, config.total_samples(),
-                            RecordSpool::Mode::resume);
-    tallies = write_study_output(config.output, config, spool);
+    const std::int64_t capacity = adaptive ? adaptive_capacity(config) : config.total_samples();
+    const RecordSpool spool(settings.records, config.hash, capacity, RecordSpool::Mode::resume);
+    tallies =
+        write_study_output(config.output, config, spool, adaptive ? &adaptive->history : nullptr);
   }
   std::filesystem::remove(settings.checkpoint);
   std::filesystem::remove(settings.records);
@@ -213,8 +216,14 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
               << ", config hash " << hash_to_hex(config.hash) << '\n';
   }
   RunResult result;
+  std::optional<AdaptiveRun> adaptive;
   try {
-    result = run_study_samples(comm, config, settings, engine);
+    if (config.adaptive) {
+      adaptive = run_adaptive_study(comm, config, settings, engine);
+      result = adaptive->result;
+    } else {
+      result = run_study_samples(comm, config, settings, engine);
+    }
   } catch (const StudyMismatchError& error) {
     if (rank == 0) throw ConfigError({error.what()});
     return exit_code_bad_input;
@@ -237,7 +246,8 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   std::exception_ptr failure;
   if (rank == 0) {
     try {
-      exit_code = finish_study(config, settings, result, engine);
+      exit_code = finish_study(adaptive ? adaptive->grown : config, settings, result, engine,
+                               adaptive ? &*adaptive : nullptr);
     } catch (const std::exception& error) {
       failure = std::current_exception();
       exit_code = exit_code_for(error);

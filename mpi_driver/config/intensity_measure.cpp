@@ -13,9 +13,15 @@ constexpr double kMaxLevels = 1'000'000;
 
 // The levels' domain in the measure's unit: far past any earthquake, finite.
 Range level_range(ImType type) {
-  if (type == ImType::pgv) return Range::left_open(0.0, 100.0);  // m/s
-  return Range::of(domain::intensity_g);                         // g, or dimensionless
+  if (type == ImType::pgv) return Range::left_open(0.0, largest_level(type));  // m/s
+  return Range::of(domain::intensity_g);  // g, or dimensionless
 }
+
+}  // namespace
+
+double largest_level(ImType type) { return type == ImType::pgv ? 100.0 : domain::intensity_g.high; }
+
+namespace {
 
 std::vector<double> read_levels(ObjectReader& reader, ImType type) {
   std::vector<double> levels;

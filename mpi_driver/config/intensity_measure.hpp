@@ -39,6 +39,9 @@ const char* im_unit(ImType type);
 // The name a plot or a message gives it: "PGA", "Sa(1 s, 5 %)", "PGA/(g tan alpha)", ...
 std::string im_label(const IntensityMeasure& measure);
 
+// The largest level a study may have in the measure's unit (far past any earthquake).
+double largest_level(ImType type);
+
 // Reads the measure; `default_type` is the one a study's motion takes without a "type".
 IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type);
 nlohmann::json intensity_measure_to_json(const IntensityMeasure& measure);

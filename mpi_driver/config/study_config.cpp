@@ -1,5 +1,6 @@
 #include "mpi_driver/config/study_config.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -374,6 +375,41 @@ void measure_suite(StudyConfig& config, ConfigErrors& errors, bool single_record
   }
 }
 
+// An adaptive study narrows one limit state's stripes fit: a limit state it has, of stripes, with a
+// budget that holds its first batch.
+void check_adaptive(ObjectReader& root, StudyConfig& config) {
+  AdaptiveDesign& adaptive = *config.adaptive;
+  const JsonPointer path = root.path_of("design") / "adaptive";
+  if (adaptive.limit_state.empty() && !config.limit_states.empty()) {
+    adaptive.limit_state = config.limit_states.front().name;
+  }
+  const bool known =
+      std::any_of(config.limit_states.begin(), config.limit_states.end(),
+                  [&](const LimitState& s) { return s.name == adaptive.limit_state; });
+  if (!known && !config.limit_states.empty()) {
+    std::string message = printable_excerpt(adaptive.limit_state);
+    message.insert(message.begin(), '"');
+    message += "\" is not a limit state";
+    root.errors().add(path / "limit_state", message);
+  }
+  if (config.intensity.cloud) {
+    root.errors().add(path, "places stripes: a cloud (\"scaling\": \"none\") has none to place");
+  }
+  const auto first_batch = static_cast<std::int64_t>(config.intensity.levels.size()) *
+                           static_cast<std::int64_t>(config.samples_per_level);
+  const std::int64_t batch = 2 * static_cast<std::int64_t>(config.samples_per_level);
+  if (adaptive.max_samples > 0 && adaptive.max_samples < first_batch) {
+    root.errors().add(path / "max_samples", "must hold the first batch, the intensity levels' " +
+                                                std::to_string(first_batch) + " samples");
+  } else if ((adaptive.max_samples - first_batch) / batch > kMaxAdaptiveBatches) {
+    root.errors().add(path / "max_samples",
+                      "allows " + std::to_string((adaptive.max_samples - first_batch) / batch) +
+                          " batches of 2 levels x samples_per_level; at most " +
+                          std::to_string(kMaxAdaptiveBatches) +
+                          ": raise samples_per_level or lower max_samples");
+  }
+}
+
 json canonical_json(const StudyConfig& config) {
   json inputs = json::object();
   for (const auto& spec : config.inputs)
@@ -391,7 +427,10 @@ json canonical_json(const StudyConfig& config) {
           {"inputs", inputs},
           {"intensity_measure", intensity_measure_to_json(config.intensity)},
           {"samples_per_level", config.samples_per_level},
-          {"design", config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube"},
+          {"design",
+           config.adaptive
+               ? adaptive_design_to_json(*config.adaptive)
+               : json(config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube")},
           {"limit_states", limit_states},
           {"seed", config.seed},
           {"output", config.output.string()},
@@ -484,11 +523,19 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   } else if (samples) {
     config.samples_per_level = static_cast<std::uint32_t>(*samples);
   }
-  const auto design = root.has("design")
+  if (const json* design = root.raw("design"); design && design->is_object()) {
+    ObjectReader object(*design, root.path_of("design"), errors);
+    config.adaptive = read_adaptive_design(object.required_object("adaptive"));
+    object.finish();
+    config.design = config.adaptive->base;
+  } else {
+    const auto name = root.has("design")
                           ? root.required_choice("design", {"monte_carlo", "latin_hypercube"})
                           : std::optional<std::string>("monte_carlo");
-  config.design = design == "latin_hypercube" ? Design::latin_hypercube : Design::monte_carlo;
+    config.design = name == "latin_hypercube" ? Design::latin_hypercube : Design::monte_carlo;
+  }
   read_limit_states(root.required_array("limit_states"), root, config);
+  if (config.adaptive) check_adaptive(root, config);
   config.seed =
       static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
   const auto output = root.string("output");

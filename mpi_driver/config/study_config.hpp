@@ -32,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/scene/scene.hpp"
+#include "mpi_driver/config/adaptive_design.hpp"
 #include "mpi_driver/config/intensity_measure.hpp"
 #include "mpi_driver/config/record_suite.hpp"
 #include "sampling/designs.hpp"
@@ -88,7 +89,9 @@ struct StudyConfig {
   std::vector<StudyInputSpec> inputs;  // in StudyInput order: the /samples columns
   IntensityMeasure intensity;
   std::uint32_t samples_per_level = 1;
-  Design design = Design::monte_carlo;
+  Design design = Design::monte_carlo;  // within a level (an adaptive study's base design)
+  // Adaptive stripes (adaptive_design.hpp): the levels above are the first batch.
+  std::optional<AdaptiveDesign> adaptive;
   std::vector<LimitState> limit_states;
   std::uint64_t seed = 0;
   std::filesystem::path output;

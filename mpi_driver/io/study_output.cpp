@@ -221,10 +221,26 @@ void write_fragility(Hdf5Writer& file, const StudyConfig& config, const StudyFra
   }
 }
 
+// An adaptive study's batches (docs/studies.md, "The HDF5 output").
+void write_adaptive(Hdf5Writer& file, const StudyConfig& config, const AdaptiveHistory& history) {
+  file.create_group("/adaptive");
+  file.write_column("/adaptive/level_batch", history.level_batch);
+  file.write_column("/adaptive/level_im", config.intensity.levels);
+  file.write_column("/adaptive/batch_samples", history.samples);
+  file.write_column("/adaptive/batch_median", history.median);
+  file.write_column("/adaptive/batch_beta", history.beta);
+  file.write_column("/adaptive/batch_relative_width", history.relative_width);
+  file.set_attribute("/adaptive", "limit_state", config.adaptive->limit_state);
+  file.set_attribute("/adaptive", "target_relative_width", config.adaptive->target_relative_width);
+  file.set_attribute("/adaptive", "pair_probability", config.adaptive->pair_probability);
+  file.set_attribute("/adaptive", "max_samples", config.adaptive->max_samples);
+  file.set_attribute("/adaptive", "stop_reason", history.stop_reason);
+}
+
 }  // namespace
 
 StudyTallies write_study_output(const std::filesystem::path& path, const StudyConfig& config,
-                                const RecordSpool& spool) {
+                                const RecordSpool& spool, const AdaptiveHistory* adaptive) {
   FragilityTally fragility(config);
   StudyTallies tallies;
   replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
@@ -260,6 +276,7 @@ StudyTallies write_study_output(const std::filesystem::path& path, const StudyCo
       columns.write(file, first, records);
     }
     if (config.suite) write_records(file, *config.suite, config.intensity);
+    if (adaptive) write_adaptive(file, config, *adaptive);
     tallies.fragility = fragility.finish();
     write_fragility(file, config, tallies.fragility);
     file.close();

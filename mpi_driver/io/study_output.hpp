@@ -23,6 +23,7 @@
 
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/io/record_spool.hpp"
+#include "mpi_driver/study/adaptive_levels.hpp"
 #include "mpi_driver/study/failure_report.hpp"
 #include "mpi_driver/study/fragility_tally.hpp"
 
@@ -36,8 +37,10 @@ struct StudyTallies {
 
 // The spool holds every sample's record. One pass over it, a block of samples at a time: rank 0's
 // memory does not grow with the study's size (but for a cloud's fit: fragility_tally.hpp).
+// An adaptive study also writes its batches (`adaptive`, /adaptive).
 StudyTallies write_study_output(const std::filesystem::path& path, const StudyConfig& config,
-                                const RecordSpool& spool);
+                                const RecordSpool& spool,
+                                const AdaptiveHistory* adaptive = nullptr);
 
 // The config_hash attribute of an existing output, or an empty string when path is not a readable
 // blockfrag output.

@@ -1,5 +1,6 @@
-"""Compares study outputs bitwise: every dataset under /samples, /results and /fragility (values
-and dtypes, NaN equal to NaN by bit pattern), the fragility attributes, and the config hash.
+"""Compares study outputs bitwise: every dataset under /samples, /results, /fragility and (of an
+adaptive study) /adaptive (values and dtypes, NaN equal to NaN by bit pattern), the fragility
+attributes, and the config hash.
 
 usage: compare_study_outputs.py REFERENCE.h5 OTHER.h5 [OTHER.h5 ...]
 Also checks that each file's sample columns cover every sample exactly once (the level column is
@@ -16,7 +17,9 @@ import numpy as np
 
 def datasets(f):
     found = {}
-    for group in ("samples", "results", "fragility"):
+    for group in ("samples", "results", "fragility", "adaptive"):
+        if group not in f:
+            continue
         f[group].visititems(lambda name, obj: found.__setitem__(f"{group}/{name}", obj[()])
                             if isinstance(obj, h5py.Dataset) else None)
     return found

@@ -174,6 +174,42 @@ TEST(StudyConfig, LimitStatesNestUnlessToldAndTheBootstrapDefaultsToAThousand) {
   EXPECT_THAT(all, HasSubstr("study.json: /bootstrap_resamples: must be"));
 }
 
+TEST(StudyConfig, AnAdaptiveDesignNamesItsLimitStateAndBudget) {
+  json document = small_study();
+  document["design"] = {{"adaptive", {{"base", "monte_carlo"}, {"max_samples", 240}}}};
+  const StudyConfig config = parse_study_config(document, "study.json");
+  ASSERT_TRUE(config.adaptive.has_value());
+  EXPECT_EQ(config.design, Design::monte_carlo);
+  EXPECT_EQ(config.adaptive->limit_state, "overturn");  // the first, by default
+  EXPECT_EQ(config.adaptive->target_relative_width, 0.05);
+  EXPECT_EQ(config.adaptive->max_samples, 240);
+  EXPECT_NE(config.hash, parse_study_config(small_study(), "study.json").hash);
+  json narrower = document;
+  narrower["design"]["adaptive"]["target_relative_width"] = 0.02;
+  EXPECT_NE(parse_study_config(narrower, "study.json").hash, config.hash);
+
+  document["design"]["adaptive"]["limit_state"] = "slid";
+  document["design"]["adaptive"]["max_samples"] = 23;  // the first batch is 3 levels of 8
+  document["design"]["adaptive"]["target_relative_width"] = 0.0;
+  const auto messages = messages_of(document);
+  ASSERT_EQ(messages.size(), 3u) << ::testing::PrintToString(messages);
+  const std::string all = ::testing::PrintToString(messages);
+  EXPECT_THAT(messages,
+              ::testing::Contains(
+                  "study.json: /design/adaptive/limit_state: \"slid\" is not a limit state"));
+  EXPECT_THAT(all,
+              HasSubstr("study.json: /design/adaptive/max_samples: must hold the first batch"));
+  EXPECT_THAT(all, HasSubstr("study.json: /design/adaptive/target_relative_width: must be in"));
+
+  // Each batch costs a round of messages and a fit: a budget of millions of tiny batches is
+  // refused.
+  document = small_study();
+  document["samples_per_level"] = 1;
+  document["design"] = {{"adaptive", {{"max_samples", 1'000'000}}}};
+  EXPECT_THAT(::testing::PrintToString(messages_of(document)),
+              HasSubstr("study.json: /design/adaptive/max_samples: allows 499998 batches"));
+}
+
 TEST(StudyConfig, TruncationMakesAnUnboundedLawAcceptable) {
   json document = small_study();
   document["inputs"]["restitution"] = {
