@@ -11,6 +11,7 @@
 #include "engine/scene/block_geometry.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/input_file.hpp"
+#include "mpi_driver/config/output_name.hpp"
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "sampling/validation.hpp"
@@ -204,18 +205,6 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
 
 // An HDF5 group name of its own: starts with a letter, digit or '_' ("." and ".." name the group
 // itself and its parent), then letters, digits, '_', '-' and '.'.
-// A file name blockfrag can write: not empty, no NUL byte (it would cut the name short), not a
-// folder.
-std::optional<std::string> output_name_problem(const std::string& name) {
-  if (name.empty()) return "must not be empty";
-  if (name.find('\0') != std::string::npos) return "must not contain a NUL byte";
-  const std::filesystem::path path(name);
-  const std::string file = path.filename().string();
-  if (file.empty() || file == "." || file == "..")
-    return "must name a file, not a folder (got \"" + printable_excerpt(name) + "\")";
-  return std::nullopt;
-}
-
 bool valid_group_name(const std::string& name) {
   if (name.empty() || !(std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_'))
     return false;

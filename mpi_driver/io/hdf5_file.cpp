@@ -20,11 +20,12 @@ Handle creation_properties(hid_t property_class, const std::string& what) {
   return properties;
 }
 
+// A dataset of the given shape (1-D: one size), written whole.
 template <typename T>
-void write_typed_column(hid_t file, const std::string& path, const std::vector<T>& values,
-                        hid_t file_type, hid_t memory_type) {
-  const hsize_t size = values.size();
-  Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose, "create a dataspace for " + path);
+void write_typed_dataset(hid_t file, const std::string& path, const std::vector<hsize_t>& shape,
+                         const std::vector<T>& values, hid_t file_type, hid_t memory_type) {
+  Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose,
+               "create a dataspace for " + path);
   const auto properties = creation_properties(H5P_DATASET_CREATE, path);
   Handle dataset(H5Dcreate2(file, path.c_str(), file_type, space.get(), H5P_DEFAULT,
                             properties.get(), H5P_DEFAULT),
@@ -33,6 +34,22 @@ void write_typed_column(hid_t file, const std::string& path, const std::vector<T
     check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
           "write dataset " + path);
   }
+}
+
+template <typename T>
+void write_typed_column(hid_t file, const std::string& path, const std::vector<T>& values,
+                        hid_t file_type, hid_t memory_type) {
+  write_typed_dataset(file, path, {values.size()}, values, file_type, memory_type);
+}
+
+template <typename T>
+void write_typed_matrix(hid_t file, const std::string& path, std::int64_t rows,
+                        std::int64_t columns, const std::vector<T>& values, hid_t file_type,
+                        hid_t memory_type) {
+  if (rows < 0 || columns < 0 || static_cast<std::size_t>(rows * columns) != values.size())
+    throw ContractViolation("write_matrix: " + path + " needs rows x columns values");
+  write_typed_dataset(file, path, {static_cast<hsize_t>(rows), static_cast<hsize_t>(columns)},
+                      values, file_type, memory_type);
 }
 
 template <typename T>
@@ -105,6 +122,16 @@ void Hdf5Writer::write_column(const std::string& path, const std::vector<double>
 
 void Hdf5Writer::write_column(const std::string& path, const std::vector<std::int64_t>& values) {
   write_typed_column(file_, path, values, H5T_STD_I64LE, H5T_NATIVE_INT64);
+}
+
+void Hdf5Writer::write_matrix(const std::string& path, std::int64_t rows, std::int64_t columns,
+                              const std::vector<double>& values) {
+  write_typed_matrix(file_, path, rows, columns, values, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE);
+}
+
+void Hdf5Writer::write_matrix(const std::string& path, std::int64_t rows, std::int64_t columns,
+                              const std::vector<std::int64_t>& values) {
+  write_typed_matrix(file_, path, rows, columns, values, H5T_STD_I64LE, H5T_NATIVE_INT64);
 }
 
 void Hdf5Writer::create_column(const std::string& path, std::int64_t size, ColumnType type) {

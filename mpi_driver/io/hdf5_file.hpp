@@ -1,7 +1,7 @@
-// A small writer over the HDF5 C API for what the study output needs: groups, 1-D columns (whole,
-// or in parts for columns longer than memory) and attributes. Handles are closed by RAII; every
-// failed call throws Hdf5Error naming the object. Object modification times are not recorded, so
-// the file's content depends only on what is written.
+// A small writer over the HDF5 C API for what the outputs need: groups, 1-D columns (whole, or in
+// parts for columns longer than memory), 2-D matrices and attributes. Handles are closed by RAII;
+// every failed call throws Hdf5Error naming the object. Object modification times are not recorded,
+// so the file's content depends only on what is written.
 #pragma once
 
 #include <cstdint>
@@ -38,6 +38,11 @@ class Hdf5Writer {
   void write_part(const std::string& path, std::int64_t offset, std::span<const double> values);
   void write_part(const std::string& path, std::int64_t offset,
                   std::span<const std::int64_t> values);
+  // A 2-D dataset of rows x columns, the values row by row (h5py reads it as that shape).
+  void write_matrix(const std::string& path, std::int64_t rows, std::int64_t columns,
+                    const std::vector<double>& values);
+  void write_matrix(const std::string& path, std::int64_t rows, std::int64_t columns,
+                    const std::vector<std::int64_t>& values);
   // Variable-length UTF-8 strings (h5py reads them as bytes, .asstr() as str).
   void write_column(const std::string& path, const std::vector<std::string>& values);
 

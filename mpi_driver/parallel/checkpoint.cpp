@@ -1,9 +1,8 @@
 #include "mpi_driver/parallel/checkpoint.hpp"
 
-#include <cstring>
-
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/parallel/byte_fields.hpp"
 
 namespace blockfrag {
 namespace {
@@ -12,19 +11,8 @@ constexpr std::string_view magic = "BFCKPT02";
 constexpr std::string_view records_magic = "BFCKPT01";
 constexpr std::size_t header_size = magic.size() + 3 * 8;
 
-template <typename T>
-void append(std::string& out, const T& value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-
-template <typename T>
-T read_at(std::string_view bytes, std::size_t offset) {
-  T value;
-  std::memcpy(&value, bytes.data() + offset, sizeof(T));
-  return value;
-}
+using bytes::append;
+using bytes::read_at;
 
 }  // namespace
 

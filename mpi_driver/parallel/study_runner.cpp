@@ -328,6 +328,12 @@ Restored restore(MPI_Comm comm, const SampleJob& job, const RunSettings& setting
 
 }  // namespace
 
+bool interrupted_on_rank0(MPI_Comm comm, RunOutcome outcome) {
+  int code = static_cast<int>(outcome);
+  MPI_Bcast(&code, 1, MPI_INT, 0, comm);
+  return code == static_cast<int>(RunOutcome::interrupted);
+}
+
 RunResult run_samples(MPI_Comm comm, const SampleJob& job, const RunSettings& settings) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

@@ -61,6 +61,10 @@ struct RunResult {
   double checkpoint_seconds = 0.0;  // time rank 0 spent writing them
 };
 
+// Collective: rank 0's outcome to every rank (run_samples returns a default one on the others);
+// true when the run was interrupted.
+bool interrupted_on_rank0(MPI_Comm comm, RunOutcome outcome);
+
 // Any set of samples the runner can run: `total` samples, each a pure function of its index, tied
 // to its checkpoint and record spool by `hash`. Each rank has its own (evaluate may keep state,
 // such as a sampler's cached permutations).

@@ -15,6 +15,12 @@ namespace blockfrag {
 // The evaluation of one scene: blockfrag::simulate in production, a stand-in in tests.
 using SceneEvaluator = std::function<Summary(const Scene&)>;
 
+// The record of `scene` under this index: evaluated, or a rejected record when the engine refuses
+// the scene (InvalidInput). A simulation failure is the record's status "failed"; a broken
+// contract (ContractViolation) propagates.
+SampleRecord evaluate_scene_record(std::int64_t index, const Scene& scene,
+                                   const SceneEvaluator& evaluate);
+
 // The record of sample `index` (pure): its scene evaluated, or a rejected record when the engine
 // refuses the scene (InvalidInput). A simulation failure is the record's status "failed"; a broken
 // contract (ContractViolation) propagates: it is a bug, and the study stops.
