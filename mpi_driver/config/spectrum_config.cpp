@@ -1,0 +1,377 @@
+#include "mpi_driver/config/spectrum_config.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "engine/motion/ground_motion.hpp"
+#include "engine/scene/scene_validation.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/output_name.hpp"
+#include "mpi_driver/config/scene_json.hpp"
+#include "mpi_driver/config/study_hash.hpp"
+
+namespace blockfrag {
+namespace {
+
+using nlohmann::json;
+
+// The keys a spectrum shares with a scene: read by the scene reader, at the same JSON paths.
+constexpr const char* kSceneKeys[] = {"block", "contact", "effects", "g", "solver"};
+
+// One axis of the grid, its values and where its smallest and largest value were given (for the
+// messages of the rules the grid must keep).
+struct Axis {
+  std::vector<double> values;
+  json canonical;
+  JsonPointer first_path, last_path;
+};
+
+// {"values": [...]} (increasing) or {"from": A, "to": B, "count": N, "spacing": "linear"|"log"}.
+Axis read_axis(ObjectReader reader, std::size_t min_count) {
+  Axis axis;
+  if (!reader.valid()) return axis;
+  const Range positive = Range::greater_than(0.0);
+  const double max_count = static_cast<double>(kMaxSpectrumAxis);
+  if (reader.has("values")) {
+    for (const char* key : {"from", "to", "count", "spacing"}) {
+      if (reader.has(key)) reader.add_error(key, "give either values or from/to/count, not both");
+    }
+    ArrayReader array = reader.required_array("values");
+    if (array.valid() && (array.size() < min_count || array.size() > kMaxSpectrumAxis)) {
+      reader.add_error("values", "must have " + std::to_string(min_count) + " to " +
+                                     std::to_string(kMaxSpectrumAxis) + " values (got " +
+                                     std::to_string(array.size()) + ")");
+    } else {
+      for (std::size_t k = 0; k < array.size(); ++k) {
+        const auto value = array.number(k, positive);
+        if (!value) continue;
+        if (!axis.values.empty() && *value <= axis.values.back()) {
+          reader.errors().add(array.path_of(k), "must be greater than the value before it");
+        }
+        axis.values.push_back(*value);
+      }
+      axis.first_path = array.path_of(0);
+      axis.last_path = array.path_of(array.size() == 0 ? 0 : array.size() - 1);
+      axis.canonical = {{"values", axis.values}};
+    }
+    reader.finish();
+    return axis;
+  }
+  const auto from = reader.required_number("from", positive);
+  const auto to = reader.required_number("to", positive);
+  const auto count = reader.required_integer(
+      "count", Range::closed(static_cast<double>(std::max<std::size_t>(min_count, 2)), max_count));
+  const std::string spacing = reader.choice("spacing", {"linear", "log"}).value_or("linear");
+  reader.finish();
+  if (!from || !to || !count) return axis;
+  if (*to <= *from) {
+    reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
+    return axis;
+  }
+  const double n = static_cast<double>(*count - 1);
+  for (long k = 0; k < *count; ++k) {
+    const double x = static_cast<double>(k) / n;
+    double value = spacing == "log" ? std::exp(std::log(*from) + x * std::log(*to / *from))
+                                    : *from + x * (*to - *from);
+    if (k == 0) value = *from;
+    if (k == *count - 1) value = *to;
+    if (!axis.values.empty() && value <= axis.values.back()) {
+      reader.add_error("count", "is too large for the range: its values do not increase");
+      axis.values.clear();
+      return axis;
+    }
+    axis.values.push_back(value);
+  }
+  axis.first_path = reader.path_of("from");
+  axis.last_path = reader.path_of("to");
+  axis.canonical = {{"from", *from}, {"to", *to}, {"count", *count}, {"spacing", spacing}};
+  return axis;
+}
+
+// The block as a scene reads it: half_width/half_height (or a polygon, refused later) as given,
+// or alpha and R turned into them.
+std::optional<json> read_block(const json& document, ConfigErrors& errors) {
+  if (!document.is_object() || !document.contains("block")) return std::nullopt;
+  const json& block = document["block"];
+  if (!block.is_object() || !(block.contains("alpha") || block.contains("R"))) return block;
+  ObjectReader reader(block, JsonPointer("/block"), errors);
+  for (const char* key : {"half_width", "half_height", "polygon"}) {
+    if (reader.has(key)) {
+      reader.add_error(key,
+                       "give the block as alpha and R, or as half_width and half_height, "
+                       "not both");
+    }
+  }
+  const auto alpha = reader.required_number("alpha", Range::of(domain::alpha));
+  const auto R = reader.required_number("R", Range::of(domain::block_length));
+  const double mass = reader.number_or("mass", 1.0, Range::of(domain::mass));
+  reader.finish();
+  if (!alpha || !R) return std::nullopt;
+  const double a = *R * std::sin(*alpha), b = *R * std::cos(*alpha);
+  for (const auto& [name, value] : {std::pair{"half_width", a}, std::pair{"half_height", b}}) {
+    if (!domain::block_length.contains(value)) {
+      reader.add_error("R", std::string("with this alpha gives the ") + name + " " +
+                                format_number(value) + " m, which " + domain::block_length.rule() +
+                                " m");
+    }
+  }
+  return json{{"half_width", a}, {"half_height", b}, {"mass", mass}};
+}
+
+struct PulseFamily {
+  SpectrumPulse pulse = SpectrumPulse::cosine;
+  double cycles = 1.0;
+  int n = 1;
+  json canonical;
+};
+
+std::optional<PulseFamily> read_pulse(ObjectReader reader) {
+  if (!reader.valid()) return std::nullopt;
+  const auto type =
+      reader.required_choice("type", {"cosine_pulse", "sine_pulse", "rectangular_pulse", "makris_a",
+                                      "makris_b", "makris_c", "ricker"});
+  for (const char* key : {"amplitude_g", "period", "duration", "t0"}) {
+    if (reader.has(key)) {
+      reader.add_error(key,
+                       "is set at each point of the grid (amplitude_ratio, frequency_ratio): "
+                       "leave it out");
+    }
+  }
+  PulseFamily family;
+  if (type == "cosine_pulse" || type == "sine_pulse") {
+    family.pulse = type == "cosine_pulse" ? SpectrumPulse::cosine : SpectrumPulse::sine;
+    family.cycles = reader.number_or("cycles", 1.0, Range::of(domain::pulse_cycles));
+  } else if (type == "rectangular_pulse") {
+    family.pulse = SpectrumPulse::rectangular;
+  } else if (type == "makris_a") {
+    family.pulse = SpectrumPulse::makris_a;
+  } else if (type == "makris_b") {
+    family.pulse = SpectrumPulse::makris_b;
+  } else if (type == "makris_c") {
+    family.pulse = SpectrumPulse::makris_c;
+    family.n = static_cast<int>(reader.integer_or("n", 1, Range::closed(1, 1000)));
+  } else if (type == "ricker") {
+    family.pulse = SpectrumPulse::ricker;
+  }
+  reader.finish(type ? "for type \"" + *type + "\"" : std::string{});
+  if (!type) return std::nullopt;
+  family.canonical = {{"type", *type}};
+  if (family.pulse == SpectrumPulse::cosine || family.pulse == SpectrumPulse::sine)
+    family.canonical["cycles"] = family.cycles;
+  if (family.pulse == SpectrumPulse::makris_c) family.canonical["n"] = family.n;
+  return family;
+}
+
+// The grid's extreme points must give scenes inside the scene domains: the shortest and longest
+// pulse, the largest amplitude, the longest run.
+void check_grid(const SpectrumConfig& config, const Axis& frequency, const Axis& amplitude,
+                ConfigErrors& errors) {
+  if (config.map_points() > kMaxSpectrumPoints) {
+    errors.add(JsonPointer("/amplitude_ratio"),
+               "the grid has " + std::to_string(config.map_points()) + " points (" +
+                   std::to_string(frequency.values.size()) + " x " +
+                   std::to_string(amplitude.values.size()) + "), more than " +
+                   std::to_string(kMaxSpectrumPoints));
+  }
+  const bool rectangular = config.pulse == SpectrumPulse::rectangular;
+  const Domain& time_domain = rectangular ? domain::pulse_duration : domain::pulse_period;
+  const std::string time_name = rectangular ? "a pulse length" : "a pulse period";
+  const std::string block_note = " for this block (p = " + format_number(config.p()) + " rad/s)";
+  const double longest = spectrum_pulse_time(config, config.frequency_ratio.front());
+  const double shortest = spectrum_pulse_time(config, config.frequency_ratio.back());
+  if (!time_domain.contains(longest)) {
+    errors.add(frequency.first_path, "gives " + time_name + " of " + format_number(longest) + " s" +
+                                         block_note + ", but it " + time_domain.rule() + " s");
+  }
+  if (!time_domain.contains(shortest)) {
+    errors.add(frequency.last_path, "gives " + time_name + " of " + format_number(shortest) + " s" +
+                                        block_note + ", but it " + time_domain.rule() + " s");
+  }
+  const double top_g = config.amplitude_ratio.back() * config.tan_alpha();
+  if (!domain::amplitude_g.contains(top_g)) {
+    errors.add(amplitude.last_path, "gives an amplitude of " + format_number(top_g) +
+                                        " g (tan alpha = " + format_number(config.tan_alpha()) +
+                                        "), but it " + domain::amplitude_g.rule() + " g");
+  }
+  if (!errors.empty()) return;
+  const Scene longest_run = spectrum_scene(config, config.frequency_ratio.front(), 1.0);
+  if (!domain::duration.contains(*longest_run.max_duration)) {
+    errors.add(frequency.first_path, "with settle_allowance_tau, the longest run would last " +
+                                         format_number(*longest_run.max_duration) + " s" +
+                                         block_note + ", but it " + domain::duration.rule() + " s");
+    return;
+  }
+  // What the engine itself checks (a fixed RK4 step over the longest run, say), at the corners.
+  for (const double f : {config.frequency_ratio.front(), config.frequency_ratio.back()}) {
+    for (const double a : {config.amplitude_ratio.front(), config.amplitude_ratio.back()}) {
+      try {
+        validate_scene(spectrum_scene(config, f, a));
+      } catch (const InvalidInput& error) {
+        errors.add(JsonPointer(""), "the scene at frequency ratio " + format_number(f) +
+                                        " and amplitude ratio " + format_number(a) +
+                                        " is invalid: " + error.what());
+        return;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+const char* spectrum_pulse_name(SpectrumPulse pulse) {
+  switch (pulse) {
+    case SpectrumPulse::cosine: return "cosine_pulse";
+    case SpectrumPulse::sine: return "sine_pulse";
+    case SpectrumPulse::rectangular: return "rectangular_pulse";
+    case SpectrumPulse::makris_a: return "makris_a";
+    case SpectrumPulse::makris_b: return "makris_b";
+    case SpectrumPulse::makris_c: return "makris_c";
+    case SpectrumPulse::ricker: return "ricker";
+  }
+  return "";
+}
+
+std::string spectrum_verdict_meaning() {
+  return "0 stands (at rest at the end, never overturned), 1 overturns with no impact, "
+         "2 overturns after one impact, 3 overturns after two or more impacts, 4 still moving "
+         "when the run stopped at its cap (not overturned), 5 failed (engine budget exceeded), "
+         "6 rejected (invalid scene)";
+}
+
+double SpectrumConfig::tan_alpha() const {
+  return base_scene.block.half_width / base_scene.block.half_height;
+}
+double SpectrumConfig::alpha() const {
+  return std::atan2(base_scene.block.half_width, base_scene.block.half_height);
+}
+double SpectrumConfig::R() const {
+  return std::hypot(base_scene.block.half_width, base_scene.block.half_height);
+}
+double SpectrumConfig::p() const { return std::sqrt(3.0 * base_scene.g / (4.0 * R())); }
+
+double spectrum_pulse_time(const SpectrumConfig& config, double frequency_ratio) {
+  const double omega = frequency_ratio * config.p();
+  return config.pulse == SpectrumPulse::rectangular ? std::numbers::pi / omega
+                                                    : 2.0 * std::numbers::pi / omega;
+}
+
+GroundMotion spectrum_pulse(const SpectrumConfig& config, double frequency_ratio,
+                            double amplitude_ratio) {
+  const double amplitude = amplitude_ratio * config.tan_alpha();
+  const double time = spectrum_pulse_time(config, frequency_ratio);
+  switch (config.pulse) {
+    case SpectrumPulse::cosine: return CosinePulse{amplitude, time, config.cycles};
+    case SpectrumPulse::sine: return SinePulse{amplitude, time, config.cycles};
+    case SpectrumPulse::rectangular: return RectangularPulse{amplitude, time};
+    case SpectrumPulse::makris_a: return MakrisPulseA{amplitude, time};
+    case SpectrumPulse::makris_b: return MakrisPulseB{amplitude, time};
+    case SpectrumPulse::makris_c: return MakrisPulseC{amplitude, time, config.makris_n};
+    case SpectrumPulse::ricker: return RickerWavelet{amplitude, time, std::nullopt};
+  }
+  throw ContractViolation("spectrum_pulse: unknown pulse family");
+}
+
+Scene spectrum_scene(const SpectrumConfig& config, double frequency_ratio, double amplitude_ratio) {
+  Scene scene = config.base_scene;
+  scene.ground_motion = spectrum_pulse(config, frequency_ratio, amplitude_ratio);
+  scene.duration.reset();
+  scene.max_duration = GroundMotionPieces(scene.ground_motion, scene.g).end_of_motion() +
+                       config.settle_allowance_tau / config.p();
+  return scene;
+}
+
+SpectrumConfig parse_spectrum_config(const json& document, const std::string& source,
+                                     const std::optional<std::filesystem::path>& output) {
+  ConfigErrors errors(source);
+  ObjectReader root(document, JsonPointer{}, errors);
+  SpectrumConfig config;
+
+  // The scene's keys go through the scene reader, so their rules and messages are a scene's.
+  json scene = json::object();
+  if (root.valid()) {
+    for (const char* key : kSceneKeys) {
+      if (const json* value = root.raw(key)) scene[key] = *value;
+    }
+  }
+  const std::size_t errors_before = errors.size();
+  if (const auto block = read_block(document, errors)) {
+    scene["block"] = *block;
+  } else if (scene.contains("block")) {
+    // alpha and R that cannot be used (reported): a stand-in lets the other keys be checked.
+    scene["block"] = {{"half_width", 0.5}, {"half_height", 1.0}};
+  }
+  scene["ground_motion"] = {{"type", "none"}};
+  bool scene_valid = false;
+  if (root.valid()) {
+    config.base_scene =
+        scene_from_json(scene, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
+    scene_valid = errors.size() == errors_before;
+  }
+  if (scene_valid && config.base_scene.polygon) {
+    root.add_error("block",
+                   "a spectrum is of a rectangular block (its alpha and p): give half_width and "
+                   "half_height, or alpha and R");
+    scene_valid = false;
+  }
+
+  const auto family = read_pulse(root.required_object("pulse"));
+  const Axis frequency = read_axis(root.required_object("frequency_ratio"), 1);
+  const Axis amplitude = read_axis(root.required_object("amplitude_ratio"), 2);
+  ObjectReader bisection = root.object("bisection");
+  config.bisection_tolerance =
+      bisection.number_or("tolerance", config.bisection_tolerance, Range::closed(1e-14, 0.1));
+  config.max_iterations = static_cast<int>(bisection.integer_or(
+      "max_iterations", config.max_iterations, Range::closed(1, kMaxBisectionIterations)));
+  bisection.finish();
+  config.settle_allowance_tau =
+      root.number_or("settle_allowance_tau", config.settle_allowance_tau, Range::closed(1, 1e6));
+  if (const auto name = root.string("output")) {
+    if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
+    config.output = *name;
+  } else {
+    config.output = std::filesystem::path(source).stem().string() + ".h5";
+  }
+  if (output) {
+    if (const auto problem = output_name_problem(output->string()))
+      errors.add_message(source + ": --output: " + *problem);
+    config.output = *output;
+  }
+  config.checkpoint_interval_s = root.number_or(
+      "checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
+  root.finish();
+
+  if (family) {
+    config.pulse = family->pulse;
+    config.cycles = family->cycles;
+    config.makris_n = family->n;
+  }
+  config.frequency_ratio = frequency.values;
+  config.amplitude_ratio = amplitude.values;
+  if (errors.empty() && scene_valid) check_grid(config, frequency, amplitude, errors);
+  errors.throw_if_any();
+
+  const json scene_form = scene_to_json(config.base_scene);
+  config.canonical = json::object();
+  for (const char* key : kSceneKeys) config.canonical[key] = scene_form[key];
+  config.canonical["pulse"] = family->canonical;
+  config.canonical["frequency_ratio"] = frequency.canonical;
+  config.canonical["amplitude_ratio"] = amplitude.canonical;
+  config.canonical["bisection"] = {{"tolerance", config.bisection_tolerance},
+                                   {"max_iterations", config.max_iterations}};
+  config.canonical["settle_allowance_tau"] = config.settle_allowance_tau;
+  config.canonical["output"] = config.output.string();
+  config.canonical["checkpoint_interval_s"] = config.checkpoint_interval_s;
+  json hashed = config.canonical;
+  hashed.erase("output");
+  hashed.erase("checkpoint_interval_s");
+  config.hash = fnv1a64("spectrum " + hashed.dump());
+  return config;
+}
+
+SpectrumConfig read_spectrum_config(const std::filesystem::path& path,
+                                    const std::optional<std::filesystem::path>& output) {
+  return parse_spectrum_config(read_json_file(path), path.string(), output);
+}
+
+}  // namespace blockfrag
