@@ -13,6 +13,7 @@
 #include "mpi_driver/cli/export_command.hpp"
 #include "mpi_driver/cli/run_command.hpp"
 #include "mpi_driver/cli/simulate_command.hpp"
+#include "mpi_driver/cli/spectrum_command.hpp"
 
 namespace blockfrag {
 
@@ -27,6 +28,7 @@ int run_command_line(int argc, char** argv) {
   add_accuracy_command(app, command);
   add_bench_command(app, command);
   add_export_command(app, command);
+  add_spectrum_command(app, command);
 
   try {
     app.parse(argc, argv);

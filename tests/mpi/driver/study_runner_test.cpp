@@ -17,18 +17,10 @@
 #include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/study/study_sample.hpp"
+#include "tests/support/mpi_environment.hpp"
 
 namespace blockfrag {
 namespace {
-
-// MPI for the whole executable (a singleton: no mpirun needed).
-class MpiEnvironment : public ::testing::Environment {
- public:
-  void SetUp() override { MPI_Init(nullptr, nullptr); }
-  void TearDown() override { MPI_Finalize(); }
-};
-[[maybe_unused]] auto* const mpi_environment =
-    ::testing::AddGlobalTestEnvironment(new MpiEnvironment);
 
 class TemporaryFolder {
  public:

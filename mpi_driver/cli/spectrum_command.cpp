@@ -1,0 +1,139 @@
+#include "mpi_driver/cli/spectrum_command.hpp"
+
+#include <unistd.h>
+
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "engine/simulate.hpp"
+#include "mpi_driver/cli/distributed_run.hpp"
+#include "mpi_driver/cli/exit_codes.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/io/spectrum_output.hpp"
+#include "mpi_driver/parallel/checkpoint.hpp"
+#include "mpi_driver/parallel/signals.hpp"
+#include "mpi_driver/parallel/spectrum_runner.hpp"
+
+namespace blockfrag {
+namespace {
+
+// Rank 0, once the map and the bisections are done: the output, then the run's own files go.
+int finish_spectrum(const SpectrumConfig& config, const RunSettings& settings,
+                    const SpectrumFiles& files, const SpectrumRunResult& result) {
+  SpectrumTally tally;
+  {
+    const RecordSpool spool(settings.records, config.hash, config.map_points(),
+                            RecordSpool::Mode::resume);
+    tally = write_spectrum_output(config.output, config, spool, result.brackets);
+  }
+  for (const auto& file : {settings.checkpoint, settings.records, files.bisection,
+                           files.round_checkpoint, files.round_records}) {
+    std::filesystem::remove(file);
+  }
+  std::cerr << "wrote " << config.output.string() << " (" << result.map.computed
+            << " map points and " << result.midpoints
+            << " bisection midpoints computed in this run, " << result.rounds
+            << " bisection rounds)\n"
+            << "  map: " << tally.points << " points, " << tally.overturned << " overturned, "
+            << tally.failed << " failed\n"
+            << "  boundary: " << tally.onsets << " onsets of overturning and " << tally.island_edges
+            << " ends of an overturning band (safe island edges); " << tally.converged << " of "
+            << tally.onsets + tally.island_edges << " bisected to the tolerance "
+            << config.bisection_tolerance << '\n';
+  if (tally.failed > 0 || tally.converged < tally.onsets + tally.island_edges) {
+    std::cerr << "some points gave no verdict or some crossings were not bisected to the "
+                 "tolerance (/map/verdict 5 or 6, /boundary/state 2 or 3): exit code "
+              << exit_code_simulation_failed << '\n';
+    return exit_code_simulation_failed;
+  }
+  return exit_code_success;
+}
+
+}  // namespace
+
+int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& evaluate) {
+  install_interrupt_handlers();
+  MpiSession session;
+  const MPI_Comm comm = MPI_COMM_WORLD;
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+
+  SpectrumConfig config;
+  try {
+    config = read_spectrum_config(options.spectrum_path, options.output);
+  } catch (const InvalidInput&) {
+    if (rank == 0) throw;
+    return exit_code_bad_input;
+  }
+
+  RunSettings settings;
+  settings.checkpoint = checkpoint_path_for(config.output);
+  settings.records = record_spool_path_for(config.output);
+  settings.checkpoint_interval_s = config.checkpoint_interval_s;
+  settings.checkpoint_hooks.pause_before_rename_s = checkpoint_pause_from_environment();
+  settings.log = rank == 0 ? &std::cerr : nullptr;
+  settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
+  const SpectrumFiles files = SpectrumFiles::for_output(config.output);
+
+  const OutputClaim claim =
+      claim_output(comm, config.output, config.hash, "spectrum",
+                   {settings.checkpoint, files.bisection, files.round_checkpoint});
+  if (claim.verdict == OutputVerdict::already_complete) {
+    if (rank == 0) std::cerr << claim.message << '\n';
+    return exit_code_success;
+  }
+  if (claim.verdict == OutputVerdict::refused) {
+    if (rank == 0) throw ConfigError({claim.message});
+    return exit_code_bad_input;
+  }
+
+  const SceneEvaluator engine =
+      evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
+  if (rank == 0) {
+    std::cerr << "spectrum " << options.spectrum_path.string() << ": "
+              << spectrum_pulse_name(config.pulse) << ", " << config.map_points() << " map points ("
+              << config.frequency_ratio.size() << " frequency ratios x "
+              << config.amplitude_ratio.size() << " amplitude ratios), alpha = " << config.alpha()
+              << " rad, p = " << config.p() << " rad/s, on " << ranks
+              << (ranks == 1 ? " rank" : " ranks") << ", config hash " << hash_to_hex(config.hash)
+              << '\n';
+  }
+  SpectrumRunResult result;
+  try {
+    result = run_spectrum(comm, config, settings, files, engine);
+  } catch (const StudyMismatchError& error) {
+    if (rank == 0) throw ConfigError({error.what()});
+    return exit_code_bad_input;
+  } catch (const std::exception& error) {
+    abort_run(comm, rank, error);
+  }
+  if (result.outcome == RunOutcome::interrupted) {
+    if (rank == 0) {
+      std::cerr << "interrupted: checkpoint written next to " << config.output.string()
+                << "; resume with the same command\n";
+    }
+    return exit_code_interrupted;
+  }
+  return finish_on_rank0(comm, [&] { return finish_spectrum(config, settings, files, result); });
+}
+
+void add_spectrum_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<SpectrumOptions>();
+  CLI::App* spectrum =
+      app.add_subcommand("spectrum",
+                         "Map an overturning spectrum and bisect its boundaries (under mpirun for "
+                         "several ranks)");
+  spectrum->add_option("spectrum", options->spectrum_path, "Spectrum config (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  spectrum->add_option("--output", options->output,
+                       "Output HDF5 file (replaces the config's \"output\")");
+  spectrum->callback(
+      [options, &command] { command = [options] { return run_spectrum_command(*options); }; });
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,37 @@
+// `mpirun -n N blockfrag spectrum SPEC.json [--output FILE.h5]`: an overturning spectrum over N
+// ranks (N = 1 works without mpirun): the map over the grid, then the boundaries by bisection
+// (mpi_driver/parallel/spectrum_runner.hpp), into FILE.h5 (mpi_driver/io/spectrum_output.hpp).
+// Running the same command again after a kill resumes from the checkpoint (the map's, or the
+// bisection's); after a completed run it reports the spectrum complete and does nothing.
+//
+// Exit codes as `run`'s: 0 done (or already complete); 1 an I/O error; 2 a bad config or a refused
+// run (a file of another spectrum at the output, its checkpoint or bisection state, or another run
+// in progress); 4 interrupted by SIGTERM or SIGINT after writing a checkpoint.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+#include "mpi_driver/study/sample_evaluation.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
+
+namespace blockfrag {
+
+struct SpectrumOptions {
+  std::filesystem::path spectrum_path;
+  std::optional<std::filesystem::path> output;
+};
+
+// Initialises and finalises MPI; runs the spectrum with `evaluate` (blockfrag::simulate by
+// default) and returns the exit code. On rank 0, a bad config or a refused run throws ConfigError
+// (after MPI is finalised); the other ranks return 2 quietly, so the message is printed once.
+int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& evaluate = {});
+
+// Declares the `spectrum` subcommand on `app`; once it has been parsed, `command` runs it.
+void add_spectrum_command(CLI::App& app, std::function<int()>& command);
+
+}  // namespace blockfrag

@@ -1,0 +1,37 @@
+// An overturning spectrum's HDF5 output, written by rank 0 once the map and every bisection are
+// done, through a fresh temporary file, fsync, rename and fsync of the folder (atomic_file.hpp).
+// docs/spectra.md documents every dataset and attribute; in short:
+//
+//   /            attributes config (canonical JSON), config_hash, blockfrag_version, pulse, alpha,
+//                tan_alpha, R, p, g, the definitions of the two ratios, units
+//   /map         frequency_ratio[nf], amplitude_ratio[na], pulse_time_s[nf], amplitude_g[na];
+//                verdict, impacts, max_abs_theta, overturn_time [nf][na]
+//   /boundary    one entry per crossing: frequency_index, frequency_ratio, amplitude_ratio,
+//                amplitude_low, amplitude_high, direction, verdict_low, verdict_high, iterations,
+//                state
+//
+// Everything but the root's blockfrag_version depends only on the config.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "mpi_driver/config/spectrum_config.hpp"
+#include "mpi_driver/io/record_spool.hpp"
+#include "mpi_driver/study/spectrum_bisection.hpp"
+
+namespace blockfrag {
+
+// What the output holds, in numbers, for the run's last message.
+struct SpectrumTally {
+  std::int64_t points = 0, overturned = 0, failed = 0;
+  std::int64_t onsets = 0, island_edges = 0;  // crossings by direction
+  std::int64_t converged = 0;                 // crossings bisected to the tolerance
+};
+
+// The spool holds every map point's record; brackets are the final crossings.
+SpectrumTally write_spectrum_output(const std::filesystem::path& path, const SpectrumConfig& config,
+                                    const RecordSpool& spool, const std::vector<Bracket>& brackets);
+
+}  // namespace blockfrag

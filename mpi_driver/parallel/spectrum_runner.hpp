@@ -1,0 +1,55 @@
+// Runs an overturning spectrum over the ranks of a communicator, with the study machinery's
+// checkpoints, signals and dynamic distribution (study_runner.hpp's run_samples):
+//
+// 1. The map: one job over every grid point, index i = (frequency index) * na + (amplitude index).
+//    Its records end in the map's record spool (OUTPUT.records), checkpointed in OUTPUT.checkpoint.
+// 2. The boundaries: rank 0 finds every bracket in the map's columns (spectrum_bisection.hpp) and
+//    then runs rounds: each round is one job of the midpoints of every open bracket, evaluated in
+//    parallel (its own spool and checkpoint, OUTPUT.round.records and OUTPUT.round.checkpoint),
+//    after which rank 0 narrows the brackets. The brackets at the start of each round are in
+//    OUTPUT.bisection, written before the round runs; a killed run resumes the round it was in
+//    (from its checkpoint) or the one before.
+//
+// A bracket's midpoints depend only on the config: the boundaries are the same on any number of
+// ranks, after any restart.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "mpi_driver/config/spectrum_config.hpp"
+#include "mpi_driver/parallel/study_runner.hpp"
+#include "mpi_driver/study/spectrum_bisection.hpp"
+
+namespace blockfrag {
+
+struct SpectrumFiles {
+  std::filesystem::path bisection;         // the brackets at the start of a round
+  std::filesystem::path round_checkpoint;  // the running round's checkpoint
+  std::filesystem::path round_records;     // and its records
+
+  // OUTPUT.bisection, OUTPUT.round.checkpoint and OUTPUT.round.records, next to the output.
+  static SpectrumFiles for_output(const std::filesystem::path& output);
+};
+
+struct SpectrumRunResult {
+  RunOutcome outcome = RunOutcome::completed;
+  RunResult map;                  // the map phase in this run
+  std::int64_t rounds = 0;        // bisection rounds run in this run
+  std::int64_t midpoints = 0;     // midpoints evaluated in this run
+  std::vector<Bracket> brackets;  // rank 0, when completed: every crossing, closed
+};
+
+// Collective over comm: the map (settings: its checkpoint, records, interval, log), then the
+// bisection rounds. When completed, settings.records holds every map point's record and rank 0's
+// result the final brackets. Throws StudyMismatchError (on every rank) when a checkpoint or the
+// bisection state belongs to another spectrum or is damaged, FileFailure when a file cannot be
+// written.
+SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
+                               const RunSettings& settings, const SpectrumFiles& files,
+                               const SceneEvaluator& evaluate);
+
+}  // namespace blockfrag

@@ -1,0 +1,179 @@
+// The spectrum runner on one rank (a singleton MPI process, no mpirun), with a stand-in evaluator
+// whose overturning region is known exactly (an onset, a safe island, a second onset per
+// frequency): every crossing is found and bisected to the tolerance on the right side; a rerun over
+// the finished files computes nothing; a run stopped by an error in the middle of the bisection
+// resumes from its files and ends with the same brackets, bit for bit, computing nothing twice; a
+// bisection state of another spectrum is refused. Labelled mpi: Open MPI's allocations at MPI_Init
+// would count as leaks under the sanitizer's leak check.
+#include "mpi_driver/parallel/spectrum_runner.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "mpi_driver/io/record_spool.hpp"
+#include "mpi_driver/parallel/bisection_state.hpp"
+#include "mpi_driver/parallel/checkpoint.hpp"
+#include "tests/support/mpi_environment.hpp"
+
+namespace blockfrag {
+namespace {
+
+class TemporaryFolder {
+ public:
+  TemporaryFolder() {
+    char pattern[] = "/tmp/blockfrag_spectrum_runner_test_XXXXXX";
+    path_ = ::mkdtemp(pattern);
+  }
+  ~TemporaryFolder() { std::filesystem::remove_all(path_); }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+SpectrumConfig small_spectrum(double restitution = 0.6) {
+  nlohmann::json document = nlohmann::json::parse(R"({
+    "block": {"half_width": 0.5, "half_height": 1.0},
+    "contact": {"friction": 0.6, "restitution": 0.6},
+    "pulse": {"type": "cosine_pulse"},
+    "frequency_ratio": {"from": 0.5, "to": 2, "count": 4},
+    "amplitude_ratio": {"from": 1, "to": 6, "count": 11},
+    "bisection": {"tolerance": 1e-9}})");
+  document["contact"]["restitution"] = restitution;
+  return parse_spectrum_config(document, "small.json");
+}
+
+// The stand-in's overturning region at frequency ratio f: [1 + f, 2 + f) and [2.5 + f, inf), with
+// no impact above 4 + f and three below; everything else stands.
+double onset(double f) { return 1.0 + f; }
+double island_start(double f) { return 2.0 + f; }
+double second_onset(double f) { return 2.5 + f; }
+
+SceneEvaluator stand_in(const SpectrumConfig& config, int* calls = nullptr, int fail_after = -1) {
+  return [&config, calls, fail_after](const Scene& scene) {
+    if (calls && fail_after >= 0 && *calls >= fail_after) throw std::runtime_error("stopped");
+    if (calls) ++*calls;
+    const auto& pulse = std::get<CosinePulse>(scene.ground_motion);
+    const double f = 2 * std::numbers::pi / (pulse.period * config.p());
+    const double a = pulse.amplitude_g / config.tan_alpha();
+    Summary summary;
+    summary.overturned = (a >= onset(f) && a < island_start(f)) || a >= second_onset(f);
+    summary.impacts = summary.overturned && a < 4 + f ? 3 : 0;
+    summary.settled = true;
+    return summary;
+  };
+}
+
+struct RunFiles {
+  RunSettings settings;
+  SpectrumFiles files;
+};
+
+RunFiles files_in(const TemporaryFolder& folder) {
+  RunFiles run;
+  const auto output = folder.path() / "small.h5";
+  run.settings.checkpoint = checkpoint_path_for(output);
+  run.settings.records = record_spool_path_for(output);
+  run.settings.checkpoint_interval_s = 0.0;  // a checkpoint after every sample
+  run.files = SpectrumFiles::for_output(output);
+  return run;
+}
+
+bool same_bits(const std::vector<Bracket>& a, const std::vector<Bracket>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Bracket)) == 0;
+}
+
+TEST(SpectrumRunner, FindsEveryCrossingToTheTolerance) {
+  TemporaryFolder folder;
+  const SpectrumConfig config = small_spectrum();
+  const RunFiles run = files_in(folder);
+  int calls = 0;
+  const SpectrumRunResult result =
+      run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files, stand_in(config, &calls));
+  EXPECT_EQ(result.outcome, RunOutcome::completed);
+  EXPECT_EQ(result.map.computed, 44);
+  EXPECT_EQ(calls, 44 + result.midpoints);
+  ASSERT_EQ(result.brackets.size(), 12u);  // three crossings at each of 4 frequencies
+  for (std::size_t k = 0; k < result.brackets.size(); ++k) {
+    const Bracket& b = result.brackets[k];
+    const double f = config.frequency_ratio[static_cast<std::size_t>(b.frequency_index)];
+    const double expected[] = {onset(f), island_start(f), second_onset(f)};
+    EXPECT_EQ(b.frequency_index, static_cast<std::int64_t>(k / 3));
+    EXPECT_EQ(b.direction(), k % 3 == 1 ? -1 : +1);
+    EXPECT_EQ(b.state, static_cast<std::int64_t>(BracketState::converged));
+    // The true crossing lies in the final bracket, which is within the tolerance.
+    EXPECT_LE(b.low, expected[k % 3] * (1 + 1e-15));
+    EXPECT_GE(b.high, expected[k % 3] * (1 - 1e-15));
+    EXPECT_LE(b.high - b.low, 1e-9 * b.high);
+  }
+  // The map's records are on disk, every point's; its checkpoint says all are done.
+  const auto checkpoint = read_checkpoint(run.settings.checkpoint);
+  ASSERT_TRUE(checkpoint.has_value());
+  EXPECT_EQ(checkpoint->done.size(), 1u);
+  EXPECT_EQ(checkpoint->done[0].count, 44);
+
+  // Over its finished files, a rerun computes nothing and ends with the same brackets.
+  int again = 0;
+  const SpectrumRunResult rerun =
+      run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files, stand_in(config, &again));
+  EXPECT_EQ(again, 0);
+  EXPECT_EQ(rerun.rounds, 0);
+  EXPECT_TRUE(same_bits(rerun.brackets, result.brackets));
+}
+
+TEST(SpectrumRunner, ResumesAStoppedBisectionWithTheSameBrackets) {
+  const SpectrumConfig config = small_spectrum();
+  std::vector<Bracket> straight;
+  int straight_calls = 0;
+  {
+    TemporaryFolder folder;
+    const RunFiles run = files_in(folder);
+    straight = run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files,
+                            stand_in(config, &straight_calls))
+                   .brackets;
+  }
+  for (const int stop_at : {30, 44 + 12 * 5 + 7, straight_calls - 3}) {
+    TemporaryFolder folder;
+    const RunFiles run = files_in(folder);
+    int calls = 0;
+    EXPECT_THROW(run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files,
+                              stand_in(config, &calls, stop_at)),
+                 std::runtime_error);
+    int resumed_calls = 0;
+    const SpectrumRunResult resumed = run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files,
+                                                   stand_in(config, &resumed_calls));
+    EXPECT_TRUE(same_bits(resumed.brackets, straight)) << "stopped after " << stop_at;
+    // With a checkpoint after every sample, nothing is lost or computed twice.
+    EXPECT_EQ(calls, stop_at);
+    EXPECT_EQ(calls + resumed_calls, straight_calls) << "stopped after " << stop_at;
+  }
+}
+
+TEST(SpectrumRunner, RefusesTheBisectionStateOfAnotherSpectrum) {
+  TemporaryFolder folder;
+  const RunFiles run = files_in(folder);
+  const SpectrumConfig other = small_spectrum(0.5);
+  run_spectrum(MPI_COMM_WORLD, other, run.settings, run.files, stand_in(other));
+  // The map's files go (as a finished run's command removes them); the bisection state stays.
+  std::filesystem::remove(run.settings.checkpoint);
+  std::filesystem::remove(run.settings.records);
+  const SpectrumConfig config = small_spectrum();
+  try {
+    run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files, stand_in(config));
+    FAIL() << "accepted another spectrum's bisection state";
+  } catch (const StudyMismatchError& error) {
+    EXPECT_NE(std::string(error.what()).find("belongs to a different spectrum config"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace blockfrag
