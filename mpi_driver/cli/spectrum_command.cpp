@@ -36,7 +36,7 @@ int finish_spectrum(const SpectrumConfig& config, const RunSettings& settings,
   std::cerr << "wrote " << config.output.string() << " (" << result.map.computed
             << " map points and " << result.midpoints
             << " bisection midpoints computed in this run, " << result.rounds
-            << " bisection rounds)\n"
+            << " bisection rounds, " << result.map.chunks << " map chunks handed out)\n"
             << "  map: " << tally.points << " points, " << tally.overturned << " overturned, "
             << tally.failed << " failed\n"
             << "  boundary: " << tally.onsets << " onsets of overturning and " << tally.island_edges
@@ -77,6 +77,7 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
   settings.checkpoint_hooks.pause_before_rename_s = checkpoint_pause_from_environment();
   settings.log = rank == 0 ? &std::cerr : nullptr;
   settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
+  settings.max_chunk = options.max_chunk;
   const SpectrumFiles files = SpectrumFiles::for_output(config.output);
 
   const OutputClaim claim =
@@ -132,6 +133,11 @@ void add_spectrum_command(CLI::App& app, std::function<int()>& command) {
       ->check(CLI::ExistingFile);
   spectrum->add_option("--output", options->output,
                        "Output HDF5 file (replaces the config's \"output\")");
+  spectrum
+      ->add_option("--max-chunk", options->max_chunk,
+                   "Largest number of points a worker gets per request (default: adapted to the "
+                   "measured speed; results never depend on it)")
+      ->check(CLI::Range(1, 1 << 20));
   spectrum->callback(
       [options, &command] { command = [options] { return run_spectrum_command(*options); }; });
 }

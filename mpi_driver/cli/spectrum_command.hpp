@@ -6,9 +6,11 @@
 //
 // Exit codes as `run`'s: 0 done (or already complete); 1 an I/O error; 2 a bad config or a refused
 // run (a file of another spectrum at the output, its checkpoint or bisection state, or another run
-// in progress); 4 interrupted by SIGTERM or SIGINT after writing a checkpoint.
+// in progress); 3 the output is written, but some points failed or some crossings stopped short of
+// the tolerance; 4 interrupted by SIGTERM or SIGINT after writing a checkpoint.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -24,6 +26,7 @@ namespace blockfrag {
 struct SpectrumOptions {
   std::filesystem::path spectrum_path;
   std::optional<std::filesystem::path> output;
+  std::int64_t max_chunk = 0;  // 0: adapted (RunSettings::max_chunk)
 };
 
 // Initialises and finalises MPI; runs the spectrum with `evaluate` (blockfrag::simulate by
