@@ -12,8 +12,11 @@ colours, the verdict counts that alpha = atan(a/b) (sampled or the config's; a p
 corner) gives, one colour pair with --limit-state, panels by record, one-line errors.
 plot_motion.py: a PNG showing the colours of the modes present and not of the absent one, an
 animated GIF of several distinct frames, a polygon given in another frame drawn like the
-rectangle, a one-line error for a scene that is not the history's. Prints "N passed, M failed"
-last; exits non-zero on any failure.
+rectangle, a one-line error for a scene that is not the history's. plot_spectrum.py: a PNG showing
+the colours of the verdicts present (a safe island's among them) and not of those absent, the
+islands found as connected cells above an overturning point, boundary lines that join neighbouring
+crossings and not distant ones, one-line errors for a missing file, a file that is not a spectrum
+and a bad --mark-point. Prints "N passed, M failed" last; exits non-zero on any failure.
 """
 
 import math
@@ -40,6 +43,7 @@ PLOT_HISTORY = SOURCE / "postproc" / "plots" / "plot_history.py"
 PLOT_FRAGILITY = SOURCE / "postproc" / "plots" / "plot_fragility.py"
 PLOT_CLOUD = SOURCE / "postproc" / "plots" / "plot_cloud.py"
 PLOT_MOTION = SOURCE / "postproc" / "plots" / "plot_motion.py"
+PLOT_SPECTRUM = SOURCE / "postproc" / "plots" / "plot_spectrum.py"
 
 # Colours the scripts promise: the mode shading of plot_history.py and the first two limit-state
 # colours of plot_fragility.py.
@@ -510,6 +514,117 @@ def test_motion_plot_refuses_another_scene(work):
                        "tall.json", "scene of that history")
     result = call(PLOT_MOTION, work / "h.csv", work / "absent.json", "-o", work / "x.png")
     assert result.returncode == 1 and "absent.json" in result.stderr, result.stderr
+    assert not (work / "x.png").exists()
+
+
+# --- plot_spectrum.py ---------------------------------------------------------------------------------
+
+# plot_spectrum.py's colours: stands, safe island, overturns with no impact, after more impacts,
+# still moving.
+STANDS, ISLAND, NO_IMPACT, MORE_IMPACTS, MOVING = "#F2F2F2", "#56B4E9", "#D55E00", "#CC79A7", "#F0E442"
+
+
+def synthetic_spectrum(f_ratio, a_ratio):
+    """A made-up verdict: overturns with no impact above 2 + f, after impacts from 1 + f / 2 to
+    there, except a safe band 1.4 + f / 2 <= a < 1.6 + f / 2 while f < 1.5."""
+    if a_ratio >= 2 + f_ratio:
+        return 1
+    if a_ratio >= 1 + f_ratio / 2 and not (f_ratio < 1.5 and 1.4 + f_ratio / 2 <= a_ratio < 1.6 + f_ratio / 2):
+        return 3
+    return 0
+
+
+def write_spectrum(path, frequency=np.geomspace(0.5, 3.0, 30), amplitude=np.linspace(0.9, 6.0, 50)):
+    """A spectrum output as blockfrag writes it, from synthetic_spectrum, its crossings taken at
+    the first cell of each change (the script draws them, it does not check the bisection)."""
+    verdict = np.array([[synthetic_spectrum(f, a) for a in amplitude] for f in frequency], dtype=np.int64)
+    index, crossing, direction = [], [], []
+    for i in range(len(frequency)):
+        over = (verdict[i] >= 1) & (verdict[i] <= 3)
+        for j in np.nonzero(over[1:] != over[:-1])[0]:
+            index.append(i)
+            crossing.append(0.5 * (amplitude[j] + amplitude[j + 1]))
+            direction.append(1 if over[j + 1] else -1)
+    config = {"block": {"half_width": 0.5, "half_height": 1.0}, "contact": {"friction": 0.6, "restitution": 0.6},
+              "effects": "auto", "pulse": {"type": "cosine_pulse", "cycles": 1.0},
+              "frequency_ratio": {"from": 0.5, "to": 3.0, "count": len(frequency), "spacing": "log"}}
+    with h5py.File(path, "w") as f:
+        f.attrs["config"] = json.dumps(config)
+        f.attrs["alpha"] = math.atan(0.5)
+        f.attrs["pulse"] = "cosine_pulse"
+        f["map/frequency_ratio"] = frequency
+        f["map/amplitude_ratio"] = amplitude
+        f["map/verdict"] = verdict
+        f["boundary/frequency_index"] = np.array(index, dtype=np.int64)
+        f["boundary/amplitude_ratio"] = np.array(crossing)
+        f["boundary/direction"] = np.array(direction, dtype=np.int64)
+    return verdict
+
+
+def spectrum_png(path):
+    """The pixels of a plausible spectrum figure: its map covers much of it in strong colours, so
+    check_plausible_png's share of dark pixels does not apply; the boundary lines' black does."""
+    width, height = png_size(path)
+    assert 800 <= width <= 4000 and 600 <= height <= 4000, f"odd size {width} x {height}"
+    pixels = matplotlib.image.imread(path)
+    assert colour_pixels(pixels, "#000000", 0.1) > 2000, "no black lines or text"
+    return pixels
+
+
+def test_spectrum_plot_shows_the_verdicts_and_the_island(work):
+    write_spectrum(work / "s.h5")
+    result = call(PLOT_SPECTRUM, work / "s.h5", "-o", work / "s.png", "--mark-point", "1,1.5")
+    assert result.returncode == 0, result.stderr
+    pixels = spectrum_png(work / "s.png")
+    for colour, name in ((ISLAND, "safe island"), (NO_IMPACT, "no impact"), (MORE_IMPACTS, "more impacts")):
+        assert colour_pixels(pixels, colour) > 2000, f"no {name} colour"
+    assert colour_pixels(pixels, MOVING) == 0, "the still-moving colour without any such point"
+
+
+def test_spectrum_plot_draws_a_map_and_its_zoom(work):
+    write_spectrum(work / "map.h5")
+    write_spectrum(work / "zoom.h5", np.geomspace(0.8, 1.4, 20), np.linspace(1.6, 2.5, 40))
+    result = call(PLOT_SPECTRUM, work / "map.h5", work / "zoom.h5", "-o", work / "z.png")
+    assert result.returncode == 0, result.stderr
+    width, height = png_size(work / "z.png")
+    assert width > 1.5 * height, f"two panels side by side: {width} x {height}"
+    assert colour_pixels(spectrum_png(work / "z.png"), ISLAND) > 4000, "no island in the zoom"
+
+
+def test_spectrum_islands_and_boundary_lines(work):
+    verdict = write_spectrum(work / "s.h5")
+    spectrum = load(PLOT_SPECTRUM)
+    data = spectrum.read_spectrum(str(work / "s.h5"))
+    classes = spectrum.drawn_classes(verdict)
+    # The safe band is one island: standing cells above overturning ones, and no others.
+    frequency, amplitude = data["frequency"], data["amplitude"]
+    expected = np.array([[f < 1.5 and 1.4 + f / 2 <= a < 1.6 + f / 2 for a in amplitude] for f in frequency])
+    assert np.array_equal(classes == spectrum.ISLAND, expected)
+    groups = spectrum.islands(classes)
+    assert len(groups) == 1 and len(groups[0]) == expected.sum(), [len(g) for g in groups]
+    # Lines: the lowest onset across every frequency; the island's two edges along the frequencies
+    # that have the island, each one line (the no-impact onset is no boundary: both sides overturn).
+    lines = spectrum.boundary_lines(data)
+    lowest = [line for line in lines if line[1]]
+    assert len(lowest) == 1 and not np.isnan(lowest[0][3]).any()
+    island_frequencies = int((frequency < 1.5).sum())
+    lengths = sorted(len(line[2]) for line in lines if not line[1])
+    assert lengths == [island_frequencies, island_frequencies], lengths
+    # Crossings far apart in amplitude at neighbouring frequencies are not joined.
+    data["boundary"] = {"frequency_index": np.array([0, 0, 1, 1]), "amplitude_ratio": np.array([1.0, 2.0, 1.0, 4.0]),
+                        "direction": np.array([1, -1, 1, -1])}
+    ends = sorted(len(line[2]) for line in spectrum.boundary_lines(data) if not line[1] and len(line[2]))
+    assert ends == [1, 1], ends
+
+
+def test_spectrum_plot_errors_are_one_line(work):
+    assert_clean_error(run(PLOT_SPECTRUM, work / "absent.h5", "-o", work / "x.png"), "absent.h5")
+    write_study(work / "study.h5")
+    assert_clean_error(run(PLOT_SPECTRUM, work / "study.h5", "-o", work / "x.png"), "not a blockfrag spectrum")
+    write_spectrum(work / "s.h5")
+    result = run(PLOT_SPECTRUM, work / "s.h5", "-o", work / "x.png", "--mark-point", "1")
+    assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
+    assert "--mark-point: expected FREQUENCY,AMPLITUDE, got '1'" in result.stderr, result.stderr
     assert not (work / "x.png").exists()
 
 
