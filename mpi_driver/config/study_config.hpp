@@ -1,26 +1,26 @@
-// A batch study: the base scene, its random inputs, the intensity levels, the limit states and how
-// the run is kept (seed, output, checkpoint interval). The form (configs/example_study.json):
-//   {"scene": {...a scene file's content...},
+// A batch study: the base scene, its random inputs, the intensity measure and its levels, the
+// limit states and how the run is kept (seed, output, checkpoint interval). The form
+// (configs/example_study.json; every key in docs/studies.md):
+//   {"scene": {...a scene file's content, or a record suite as its ground motion...},
 //    "inputs": {"friction": {"distribution": "uniform", "min": 0.55, "max": 0.9}, ...,
 //               "direction": {"distribution": "random_sign"}},
-//    "intensity_measure": {"levels": [...]} or {"from": 0.2, "to": 2.0, "count": 10},
-//    "samples_per_level": 40, "design": "monte_carlo" | "latin_hypercube",
+//    "intensity_measure": {"type": "pga", "from": 0.2, "to": 2.0, "count": 10},
+//    "samples_per_level": 40,
+//    "design": "monte_carlo" | "latin_hypercube" | {"adaptive": {...}},
 //    "limit_states": [{"name": "overturn", "type": "overturning"},
 //                     {"name": "...", "type": "max_rotation", "theta_over_alpha": 0.5},
 //                     {"name": "...", "type": "residual_slide", "threshold_m": 0.05}],
 //    "seed": 1, "output": "study.h5", "checkpoint_interval_s": 60}
-// Distributions: fixed (value), uniform (min, max), normal (mean, std_dev), lognormal (median,
-// beta), the last two with optional "lower"/"upper" truncation; each input's whole range must be
-// physical (friction >= 0, restitution in [0, 1], sizes and period > 0, alpha in (0, pi/2)).
-// The intensity measure is the pulse amplitude in g: it replaces the base pulse's amplitude_g, and
-// the direction input (default +1) gives its sign.
+// Each input's distribution must lie inside its parameter's domain (engine/scene/parameter_domains.hpp) or be
+// truncated to it; the direction input (default +1) gives the motion's sign.
 //
-// Every error points at its value (`study.json: /intensity_measure/levels/0: must be > 0 (got
-// -0.1)`), all are reported at once, and every cross-field rule is checked before any work starts.
+// Every error points at its value (`study.json: /intensity_measure/levels/0: must be in (0, 1000]
+// (got -0.1)`), all are reported at once, and every cross-field rule is checked before any work.
 //
 // The canonical config is the document with defaults filled and keys sorted; its hash ties
-// checkpoints and outputs to the study. The hash leaves out the two keys that do not change any
-// result ("output", "checkpoint_interval_s"), so a study may be resumed with another interval.
+// checkpoints and outputs to the study. The hash leaves out the keys that change no sample
+// ("output", "checkpoint_interval_s", "allowed_failed_fraction"), so a study may be resumed with
+// other values of them.
 #pragma once
 
 #include <cstdint>
