@@ -24,6 +24,15 @@ namespace {
 
 // A cloud's bootstrap resamples every sample: at most this many draws in all (about a minute).
 constexpr double kMaxCloudBootstrapDraws = 2e8;
+// A stripe study's resample draws every level's count and refits over every level: at most this
+// many levels times resamples (about 2 s), so a grid of thousands of levels is not held up by it.
+constexpr double kMaxStripeBootstrapLevelResamples = 1e6;
+
+// The resamples the config asks for, or fewer when each costs `per_resample` of a budget.
+int affordable_resamples(const StudyConfig& config, double budget, std::size_t per_resample) {
+  const double affordable = budget / std::max<double>(1.0, static_cast<double>(per_resample));
+  return static_cast<int>(std::min<double>(config.bootstrap_resamples, affordable));
+}
 
 // The bootstrap's uniforms: a Philox stream of the study's seed named after the limit state, so
 // the intervals are a pure function of the config, whatever ran the study.
@@ -42,10 +51,11 @@ FragilityCurve stripe_curve(const StudyConfig& config, const LimitState& state,
                             std::vector<std::int64_t> exceedances) {
   FragilityCurve curve =
       fragility_from_counts(config.intensity.levels, std::move(trials), std::move(exceedances));
-  if (curve.fit_status == "ok" && config.bootstrap_resamples > 0) {
-    curve.bootstrap =
-        bootstrap_stripes(curve.im, curve.trials, curve.exceedances, config.bootstrap_resamples,
-                          bootstrap_uniforms(config, state));
+  const int resamples =
+      affordable_resamples(config, kMaxStripeBootstrapLevelResamples, curve.im.size());
+  if (curve.fit_status == "ok" && resamples > 0) {
+    curve.bootstrap = bootstrap_stripes(curve.im, curve.trials, curve.exceedances, resamples,
+                                        bootstrap_uniforms(config, state));
   }
   return curve;
 }
@@ -53,9 +63,7 @@ FragilityCurve stripe_curve(const StudyConfig& config, const LimitState& state,
 FragilityCurve cloud_curve(const StudyConfig& config, const LimitState& state,
                            const std::vector<double>& im, const std::vector<bool>& exceeded) {
   FragilityCurve curve = fragility_from_samples(im, exceeded);
-  const double affordable =
-      kMaxCloudBootstrapDraws / std::max<double>(1.0, static_cast<double>(im.size()));
-  const int resamples = static_cast<int>(std::min<double>(config.bootstrap_resamples, affordable));
+  const int resamples = affordable_resamples(config, kMaxCloudBootstrapDraws, im.size());
   if (curve.fit_status == "ok" && resamples > 0) {
     curve.bootstrap = bootstrap_cloud(im, exceeded, resamples, bootstrap_uniforms(config, state));
   }

@@ -399,5 +399,22 @@ TEST(StudyFragility, NoFitWithoutExceedances) {
   EXPECT_EQ(curve.fit_status, "no_exceedances");
 }
 
+// A stripe study's bootstrap refits over every level: a grid of thousands of levels gets fewer
+// resamples (1e6 levels x resamples), a few levels the config's.
+TEST(StudyFragility, TheBootstrapOfManyLevelsIsCappedAtAMillionLevelResamples) {
+  json document = small_study();
+  document["bootstrap_resamples"] = 100;
+  for (const int count : {2, 20'000}) {
+    document["intensity_measure"] = {{"from", 0.3}, {"to", 1.5}, {"count", count}};
+    const StudyConfig config = parse_study_config(document, "study.json");
+    std::vector<std::int64_t> trials(static_cast<std::size_t>(count), 10), exceedances;
+    for (int k = 0; k < count; ++k) exceedances.push_back(k < count / 2 ? 3 : 7);
+    const FragilityCurve curve =
+        stripe_curve(config, config.limit_states[0], trials, std::move(exceedances));
+    ASSERT_EQ(curve.fit_status, "ok");
+    EXPECT_EQ(curve.bootstrap.resamples, count == 2 ? 100 : 50) << count;
+  }
+}
+
 }  // namespace
 }  // namespace blockfrag
