@@ -36,8 +36,9 @@ int finish_study(const StudyConfig& config, const RunSettings& settings, const R
   std::filesystem::remove(settings.checkpoint);
   std::filesystem::remove(settings.records);
   std::cerr << "wrote " << config.output.string() << " (" << result.computed
-            << " samples computed in this run, " << result.chunks << " chunks handed out, "
-            << result.checkpoints << " checkpoints taking " << result.checkpoint_seconds << " s)\n";
+            << " samples computed in this run, " << result.chunks << " chunks handed out ("
+            << result.chunk_samples << " samples), " << result.checkpoints << " checkpoints taking "
+            << result.checkpoint_seconds << " s)\n";
   print_fragility_summary(std::cerr, config, tallies.fragility);
   const FailureReport failures = tallies.failures.report(config, engine);
   if (failures.total() > 0) {

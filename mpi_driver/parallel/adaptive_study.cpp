@@ -79,6 +79,7 @@ AdaptiveRun run_adaptive_study(MPI_Comm comm, const StudyConfig& config,
     if (batch == 0) sum.restored = run.result.restored;
     sum.computed += run.result.computed;
     sum.chunks += run.result.chunks;
+    sum.chunk_samples += run.result.chunk_samples;
     sum.checkpoints += run.result.checkpoints;
     sum.checkpoint_seconds += run.result.checkpoint_seconds;
     int interrupted = run.result.outcome == RunOutcome::interrupted ? 1 : 0;

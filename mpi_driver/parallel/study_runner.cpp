@@ -241,7 +241,10 @@ class Coordinator {
     if (header.flags & wants_more) {
       const IndexRange chunk =
           interrupted_ ? IndexRange{} : queue_->next_chunk(ranks_, chunk_limit());
-      if (!chunk.empty()) ++result_.chunks;
+      if (!chunk.empty()) {
+        ++result_.chunks;
+        result_.chunk_samples += chunk.count;
+      }
       send_chunk(comm_, worker, chunk);
     }
     if (header.flags & finished) {

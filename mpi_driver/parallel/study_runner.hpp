@@ -57,6 +57,7 @@ struct RunResult {
   std::int64_t restored = 0;        // records read from the checkpoint
   std::int64_t computed = 0;        // records computed in this run (all ranks; rank 0's count)
   std::int64_t chunks = 0;          // chunks handed to workers in this run
+  std::int64_t chunk_samples = 0;   // the samples those chunks held
   std::int64_t checkpoints = 0;     // checkpoints written in this run
   double checkpoint_seconds = 0.0;  // time rank 0 spent writing them
 };
