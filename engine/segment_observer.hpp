@@ -28,10 +28,10 @@ class SegmentObserver {
   void observe_state(const BlockState& s) {
     summary_.max_abs_theta = std::max(summary_.max_abs_theta, std::abs(s.theta));
     summary_.max_abs_slide = std::max(summary_.max_abs_slide, std::abs(s.x - x0_));
-    const double c = std::cos(s.theta), sn = std::sin(s.theta);
+    const Rotation turn = geometry_.rotation(s.theta);
     double lowest = 0.0;
     for (int i = 0; i < geometry_.corner_count(); ++i) {
-      lowest = std::min(lowest, s.y + rotate(geometry_.corner(i), c, sn).y);
+      lowest = std::min(lowest, s.y + rotate(geometry_.corner(i), turn).y);
     }
     summary_.max_penetration = std::max(summary_.max_penetration, -lowest / geometry_.size());
   }

@@ -164,7 +164,7 @@ BlockState Simulation::initial_state() const {
   } else {
     // Released from rest on the corner that the tilt lowers.
     const Corner pivot = s.theta < 0 ? Corner::right : Corner::left;
-    const Vec2 r = rotate(geometry_.base_corner(pivot), std::cos(s.theta), std::sin(s.theta));
+    const Vec2 r = geometry_.base_corner_at(pivot, s.theta);
     s.y = -r.y;
   }
   return s;

@@ -186,20 +186,18 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
 
 bool ContactResolver::can_rock(const BlockState& s, Corner pivot, double lambda, double gravity,
                                bool from_flat) const {
-  const double c = std::cos(s.theta), sn = std::sin(s.theta);
-  const Vec2 r = rotate(geometry_.base_corner(pivot), c, sn);
+  const Vec2 r = geometry_.base_corner_at(pivot, s.theta);
   const CornerContact k =
       sticking_corner(r, s.omega, lambda, gravity, geometry_.inertia_per_mass());
   if (k.normal < 0 || std::abs(k.friction) > mu_ * k.normal) return false;
   if (!from_flat) return true;
-  const Vec2 r_other = rotate(geometry_.base_corner(other(pivot)), c, sn);
+  const Vec2 r_other = geometry_.base_corner_at(other(pivot), s.theta);
   return other_corner_lift_acceleration(r, r_other, s.omega, k.theta_dd) > 0;
 }
 
 bool ContactResolver::can_slide_rock(const BlockState& s, Corner pivot, int slip, double lambda,
                                      double gravity, bool from_flat) const {
-  const double c = std::cos(s.theta), sn = std::sin(s.theta);
-  const Vec2 r = rotate(geometry_.base_corner(pivot), c, sn);
+  const Vec2 r = geometry_.base_corner_at(pivot, s.theta);
   const double k2 = geometry_.inertia_per_mass();
   if (!slide_rock_well_posed(r, slip, mu_, k2)) return false;
   const CornerContact k = slipping_corner(r, s.omega, slip, lambda, gravity, mu_, k2);
@@ -208,7 +206,7 @@ bool ContactResolver::can_slide_rock(const BlockState& s, Corner pivot, int slip
   // Starting from stick, the corner must accelerate the way it is assumed to slip.
   if (std::abs(u_x) <= velocity_tol_ && slip * k.corner_dd <= 0) return false;
   if (!from_flat) return true;
-  const Vec2 r_other = rotate(geometry_.base_corner(other(pivot)), c, sn);
+  const Vec2 r_other = geometry_.base_corner_at(other(pivot), s.theta);
   return other_corner_lift_acceleration(r, r_other, s.omega, k.theta_dd) > 0;
 }
 
@@ -241,8 +239,7 @@ Mode ContactResolver::classify_flat(BlockState& s, double lambda, double gravity
 
 Mode ContactResolver::classify_one_corner(BlockState& s, Corner pivot, double lambda,
                                           double gravity, ContactOutcome& out) const {
-  const double c = std::cos(s.theta), sn = std::sin(s.theta);
-  const Vec2 r = rotate(geometry_.base_corner(pivot), c, sn);
+  const Vec2 r = geometry_.base_corner_at(pivot, s.theta);
   const double k2 = geometry_.inertia_per_mass();
   // Put the corner exactly on the ground with no normal velocity.
   s.y = -r.y;

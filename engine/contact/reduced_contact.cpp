@@ -20,7 +20,7 @@ HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_ener
       settle_velocity_(kSettleVelocity * std::sqrt(g * geometry.size())) {}
 
 ContactOutcome HousnerRules::rock_on(BlockState s, Corner pivot) const {
-  const Vec2 r = rotate(geometry_.base_corner(pivot), std::cos(s.theta), std::sin(s.theta));
+  const Vec2 r = geometry_.base_corner_at(pivot, s.theta);
   s.y = -r.y;
   s.vx = s.omega * r.y;
   s.vy = -s.omega * r.x;

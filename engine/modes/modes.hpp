@@ -79,17 +79,15 @@ struct SystemContext {
   }
   double length_scale() const { return geometry->size(); }
   // A base corner relative to the centre of mass, in the world frame.
-  Vec2 arm(double theta, Corner corner) const {
-    return rotate(geometry->base_corner(corner), std::cos(theta), std::sin(theta));
-  }
+  Vec2 arm(double theta, Corner corner) const { return geometry->base_corner_at(corner, theta); }
   // Both base corners at once (guards need both; one sine and cosine serve them).
   struct Arms {
     Vec2 pivot, other;
   };
   Arms arms(double theta, Corner pivot) const {
-    const double cos_theta = std::cos(theta), sin_theta = std::sin(theta);
-    return {rotate(geometry->base_corner(pivot), cos_theta, sin_theta),
-            rotate(geometry->base_corner(blockfrag::other(pivot)), cos_theta, sin_theta)};
+    const Rotation turn = geometry->rotation(theta);
+    return {rotate(geometry->base_corner(pivot), turn),
+            rotate(geometry->base_corner(blockfrag::other(pivot)), turn)};
   }
   double velocity_scale() const { return std::sqrt(g * geometry->size()); }
   // The guard that stops the run: the block lies on another face (|theta| = pi/2 for a rectangle).

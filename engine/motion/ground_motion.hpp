@@ -3,7 +3,9 @@
 // the formula of the piece it lies in (the left limit at the piece's end, not the next piece's).
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -42,8 +44,20 @@ class MotionPiece {
     return f_.shape == Shape::zero || (f_.amplitude == 0.0 && f_.slope == 0.0);
   }
 
-  // The piece's formula, also at its end point (the left limit there).
+  // The piece's formula, also at its end point (the left limit there). The last time's value is
+  // kept: a Runge-Kutta step's last two stages, the guards at its end and the contact forces
+  // there all ask for lambda at the same t. The time is compared bit for bit; a piece is not to
+  // be shared between threads.
   double lambda(double t) const {
+    const auto bits = std::bit_cast<std::uint64_t>(t);
+    if (bits != lambda_bits_) {
+      lambda_ = formula_value(t);
+      lambda_bits_ = bits;
+    }
+    return lambda_;
+  }
+  // lambda(t) from the formula, without the kept value.
+  double formula_value(double t) const {
     switch (f_.shape) {
       case Shape::zero: return 0.0;
       case Shape::constant: return f_.amplitude;
@@ -80,6 +94,9 @@ class MotionPiece {
  private:
   Formula f_;
   double start_, end_;
+  // The last lambda asked for; the bits of a NaN no time has, so the first call computes.
+  mutable std::uint64_t lambda_bits_ = 0x7ff8dead'beefcafeULL;
+  mutable double lambda_ = 0.0;
 };
 
 class GroundMotionPieces {

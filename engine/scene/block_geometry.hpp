@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "engine/scene/scene.hpp"
@@ -19,6 +21,12 @@ struct Vec2 {
 inline Vec2 rotate(Vec2 c, double cos_theta, double sin_theta) {
   return {c.x * cos_theta - c.y * sin_theta, c.x * sin_theta + c.y * cos_theta};
 }
+
+struct Rotation {
+  double cos, sin;
+};
+
+inline Vec2 rotate(Vec2 c, Rotation r) { return rotate(c, r.cos, r.sin); }
 
 enum class Corner { left = 0, right = 1 };
 
@@ -83,10 +91,33 @@ class BlockGeometry {
     return std::min(overturn_angle(Corner::left) - theta, overturn_angle(Corner::right) + theta);
   }
 
+  // cos(theta) and sin(theta), the same numbers as computing them. The last angle's are kept:
+  // the right-hand side at a step's end, the guards there, the contact forces, the observer and
+  // the contact resolution all turn the block by the same theta, and their sines and cosines were
+  // a third of a scene's time. The angle is compared bit for bit (-0 is not +0). A geometry is not
+  // to be shared between threads.
+  Rotation rotation(double theta) const {
+    const auto bits = std::bit_cast<std::uint64_t>(theta);
+    if (bits != rotation_bits_) {
+      rotation_ = {std::cos(theta), std::sin(theta)};
+      rotation_bits_ = bits;
+    }
+    return rotation_;
+  }
+  // Corner i relative to the centre of mass in the world frame, the block turned by theta.
+  Vec2 corner_at(int i, double theta) const { return rotate(corner(i), rotation(theta)); }
+  Vec2 base_corner_at(Corner c, double theta) const {
+    return corner_at(static_cast<int>(c), theta);
+  }
+
  private:
   std::vector<Vec2> corners_;
   double size_, inertia_per_mass_, rest_height_;
   std::array<double, 2> overturn_angle_;  // by Corner
+  // The last rotation asked for; the bits of NaN's payload no angle has, so the first call
+  // computes.
+  mutable std::uint64_t rotation_bits_ = 0x7ff8dead'beefcafeULL;
+  mutable Rotation rotation_{1.0, 0.0};
 };
 
 // The geometry of the scene's block: its polygon if it has one, else the rectangle.

@@ -22,7 +22,7 @@ struct CornerKinematics {
 // Corner i of the block's hull (BlockGeometry::corner).
 inline CornerKinematics corner_kinematics(const BlockGeometry& geometry, const BlockState& s,
                                           int corner) {
-  const Vec2 r = rotate(geometry.corner(corner), std::cos(s.theta), std::sin(s.theta));
+  const Vec2 r = geometry.corner_at(corner, s.theta);
   return {r, s.y + r.y, s.vx - s.omega * r.y, s.vy + s.omega * r.x};
 }
 
