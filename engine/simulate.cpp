@@ -19,6 +19,7 @@
 #include "engine/integrate/root_finding.hpp"
 #include "engine/modes/flight.hpp"
 #include "engine/modes/modes.hpp"
+#include "engine/motion/ground_drift.hpp"
 #include "engine/motion/scene_motion.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "engine/segment_observer.hpp"
@@ -124,7 +125,7 @@ class Simulation {
   ContactForces forces_now() const;
 
   void advance(const RestMode&, const MotionPiece& piece, double t_stop);
-  // Flight without vertical motion: theta and y in closed form, only x integrated.
+  // Flight without vertical motion: theta, y and x in closed form.
   void advance(const FlightMode&, const MotionPiece& piece, double t_stop);
   template <class System>
   void advance(const System& system, const MotionPiece& piece, double t_stop);
@@ -350,31 +351,29 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
     t_end = t_stop;
     overturns = false;
   }
-  // Only the horizontal drift feels the ground motion.
-  OdeState<2> q{state_.x, state_.vx};
-  const FlightDriftSystem drift{context(piece)};
-  const auto pose = [&](double t, const OdeState<2>& xq) {
+  // Only the horizontal drift feels the ground motion, and it has a closed form too.
+  const GroundDrift drift(piece, t0);
+  const double x0 = state_.x, vx0 = state_.vx;
+  const auto pose = [&](double t) {
     BlockState s = flight_pose(start, g, t - t0);
-    s.x = xq[0];
-    s.vx = xq[1];
+    const GroundDrift::Integrals ground = drift.at(t);
+    s.x = x0 + vx0 * (t - t0) + g * ground.second;
+    s.vx = vx0 + g * ground.first;
     return s;
   };
+  // The observer sees the flight in equal parts no longer than an integrator's step could be,
+  // so it finds where x turns inside the flight as it does in the other modes.
   const auto forces_at = [](double) { return ContactForces{0.0, 0.0}; };
-  const auto run = [&](auto& stepper) {
-    double t = t0;
-    while (!reached(t, t_end)) {
-      const double from = t;
-      stepper.step(drift, t, q, std::min(t_end - t, step_cap(piece)));
-      if (reached(t, t_end)) t = t_end;
-      observer_.observe_step(
-          from, t, [&](double x) { return pose(x, stepper.dense(x)); }, forces_at,
-          ModeKind::flight);
+  if (!reached(t0, t_end)) {
+    const double parts = std::ceil((t_end - t0) / step_cap(piece));
+    double from = t0;
+    for (double k = 1.0; k <= parts; k += 1.0) {
+      const double to = k == parts ? t_end : t0 + (t_end - t0) * (k / parts);
+      observer_.observe_step(from, to, pose, forces_at, ModeKind::flight);
+      from = to;
     }
-    summary_.steps += stepper.steps();
-    summary_.rhs_evaluations += stepper.rhs_evaluations();
-  };
-  with_stepper<2>(scene_.solver, drift.scale(), run);
-  const BlockState end = pose(t_end, q);
+  }
+  const BlockState end = pose(t_end);
   if (overturns) {
     overturn_at(t_end, end);
     return;

@@ -10,7 +10,8 @@ namespace blockfrag {
 
 namespace {
 
-// A corner's height above the ground and its rate, from one sine and cosine.
+// A corner's height above the ground, its rate and its arm's height above the centre of mass
+// (which gives the height's acceleration), from one sine and cosine.
 struct CornerHeight {
   const BlockGeometry& geometry;
   const FlightStart& f;
@@ -18,25 +19,46 @@ struct CornerHeight {
   int corner;
 
   struct Sample {
-    double height, rate;
+    double height, rate, arm_y;
   };
   Sample at(double tau) const {
     const CornerKinematics k = corner_kinematics(geometry, flight_pose(f, g, tau), corner);
-    return {k.height, k.u_y};
+    return {k.height, k.u_y, k.r.y};
   }
+  // The height's second derivative: the arm's y turns at omega.
+  double acceleration(const Sample& s) const { return -g - f.omega * f.omega * s.arm_y; }
 };
 
-// Newton on the height inside [lo, hi] (height(lo) > 0 >= height(hi)): the rate is its
-// derivative, so a step costs one evaluation and converges quadratically from either side. A step
-// that would leave the bracket bisects it; one kept half a tolerance inside it ends a search that
-// converges from above by landing just past the crossing. Returns a time at or below the ground
-// within the time tolerance of the crossing, or within the height's rounding noise of it.
+// The step d from a sample to where the parabola with the sample's height, rate and acceleration
+// reaches the ground, taking the root nearest the sample within (d_min, d_max); NaN if none.
+double parabola_step(const CornerHeight::Sample& s, double acceleration, double d_min,
+                     double d_max) {
+  const double half_a = 0.5 * acceleration;
+  const double discriminant = s.rate * s.rate - 4.0 * half_a * s.height;
+  double best = std::numeric_limits<double>::quiet_NaN();
+  if (!(discriminant >= 0)) return best;
+  // The two roots without cancellation: q / half_a and height / q.
+  const double q = -0.5 * (s.rate + std::copysign(std::sqrt(discriminant), s.rate));
+  for (const double d : {q / half_a, s.height / q}) {
+    if (d > d_min && d < d_max && !(std::abs(d) >= std::abs(best))) best = d;
+  }
+  return best;
+}
+
+// Inside [lo, hi] (height(lo) > 0 >= height(hi)), each step goes to where the parabola through the
+// last sample (its height, rate and acceleration -g - omega^2 r_y: all exact) reaches the
+// ground. Over a flight's short brackets the height is that parabola up to a cubic term, so the
+// search converges cubically from either side, and from the top of a corner's arc too (where
+// Newton's tangent is flat and a micro-bounce's bracket took it ten halvings). A step that would
+// leave the bracket bisects it; one kept half a tolerance inside it ends a search that converges
+// from above by landing just past the crossing. Returns a time at or below the ground within the
+// time tolerance of the crossing, or within the height's rounding noise of it.
 double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight::Sample s,
                       double time_tolerance, double height_noise) {
   double x = lo;
   for (int iteration = 0; iteration < 200 && hi - lo > time_tolerance; ++iteration) {
     const double inside = 0.5 * time_tolerance;
-    double next = s.rate != 0 ? x - s.height / s.rate : 0.5 * (lo + hi);
+    double next = x + parabola_step(s, h.acceleration(s), lo - x, hi - x);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     x = std::clamp(next, lo + inside, hi - inside);
     s = h.at(x);
@@ -51,9 +73,11 @@ double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight:
 }
 
 // The earliest time a point `depth` above a level, moving up at `rate`, can reach it when its
-// downward acceleration is at most `bound`.
+// downward acceleration is at most `bound` (>= 0); written so that neither a falling point nor a
+// small bound loses precision.
 double earliest_fall(double depth, double rate, double bound) {
-  return (rate + std::sqrt(rate * rate + 2.0 * bound * depth)) / bound;
+  const double root = std::sqrt(rate * rate + 2.0 * bound * depth);
+  return rate > 0 ? (rate + root) / bound : 2.0 * depth / (root - rate);
 }
 
 std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
@@ -79,6 +103,7 @@ std::optional<double> corner_landing(const CornerHeight& h, double bound, double
   }
   while (tau < tau_max) {
     const double safe = earliest_fall(now.height, now.rate, bound);
+    if (tau + safe > tau_max) return std::nullopt;  // it cannot reach the ground in time
     const double next = std::min(tau + std::max(safe, min_step), tau_max);
     const CornerHeight::Sample then = h.at(next);
     if (then.height <= 0.0) {
@@ -95,8 +120,15 @@ std::optional<double> corner_landing(const CornerHeight& h, double bound, double
 std::optional<double> first_landing(const BlockGeometry& geometry, const FlightStart& f, double g,
                                     double tau_max, double min_step) {
   const double bound = g + f.omega * f.omega * geometry.size();
+  // While theta stays within the overturning range only a base corner can be the lowest point of
+  // the block (BlockGeometry::overturn_angle), and where the block first touches the ground its
+  // lowest point does: only the base corners need searching. theta is linear in time, so the
+  // range holds throughout if it holds at both ends.
+  const bool base_only = geometry.overturn_margin(f.theta) >= 0 &&
+                         geometry.overturn_margin(f.theta + f.omega * tau_max) >= 0;
+  const int corners = base_only ? 2 : geometry.corner_count();
   std::optional<double> first;
-  for (int corner = 0; corner < geometry.corner_count(); ++corner) {
+  for (int corner = 0; corner < corners; ++corner) {
     const CornerHeight h{geometry, f, g, corner};
     const double limit = first ? *first : tau_max;
     const double tolerance = 4e-16 * (1.0 + limit);

@@ -280,16 +280,4 @@ struct FlightSystem {
   OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx, b.y, b.vy}; }
 };
 
-// Free flight: theta and y are closed-form; only x feels the ground (x'' = lambda g).  q = (x, vx).
-struct FlightDriftSystem {
-  static constexpr int N = 2;
-  SystemContext c;
-
-  OdeState<N> scale() const { return {c.length_scale(), c.velocity_scale()}; }
-  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
-    dq[0] = q[1];
-    dq[1] = c.piece->lambda(t) * c.g;
-  }
-};
-
 }  // namespace blockfrag
