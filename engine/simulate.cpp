@@ -422,7 +422,10 @@ void Simulation::integrate_with(const System& system, Stepper& stepper, const Mo
 
     const auto next = system.guards(t, q);
     const auto guards_at = [&](double x) { return system.guards(x, stepper.dense(x)); };
-    const auto crossing = watch.first_crossing(guards_at, t0, t, next);
+    const auto least_at_ends = [&] {
+      return system.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
+    };
+    const auto crossing = watch.first_crossing(guards_at, t0, t, next, least_at_ends);
     const int which = crossing.which;
     const double t_event = crossing.after;
     if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {

@@ -77,6 +77,19 @@ class DormandPrinceStepper {
     return y;
   }
 
+  // Whether component i of the dense output moves one way through the last step (a sufficient
+  // test: false may still be monotone).
+  bool moves_one_way(int i) const {
+    const double h = t1_ - t0_;
+    const auto& k = k_;
+    const double delta = q1_[i] - q0_[i];
+    const double b = h * k[0][i] - delta;
+    const double c = delta - h * k[6][i] - b;
+    const double d = h * (kD1 * k[0][i] + kD3 * k[2][i] + kD4 * k[3][i] + kD5 * k[4][i] +
+                          kD6 * k[5][i] + kD7 * k[6][i]);
+    return blockfrag::moves_one_way(delta, b, c, d);
+  }
+
   double step_start() const { return t0_; }
   double step_end() const { return t1_; }
 

@@ -71,6 +71,15 @@ class GslStepper {
     return q;
   }
 
+  // Whether component i of the dense output (the cubic Hermite interpolant) moves one way
+  // through the last step (a sufficient test: false may still be monotone).
+  bool moves_one_way(int i) const {
+    const double h = t1_ - t0_;
+    const double delta = q1_[i] - q0_[i];
+    const double b = h * f0_[i] - delta;
+    return blockfrag::moves_one_way(delta, b, delta - h * f1_[i] - b, 0.0);
+  }
+
   double step_start() const { return t0_; }
   double step_end() const { return t1_; }
   void reset() {

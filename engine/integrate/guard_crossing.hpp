@@ -38,10 +38,15 @@ class GuardWatch {
   };
 
   // The first crossing in the step [t0, t1] whose guards at t1 are `next`; guards_at(x) evaluates
-  // all guards on the step's dense output.
-  template <class GuardsAt>
+  // all guards on the step's dense output. least_at_ends() says which guards are known to be
+  // least at an end of this step (so no sample inside can find them lower); it is asked only when
+  // a guard near zero would be looked inside, and a guard clearly positive at both ends that it
+  // names is not: the samples were most of a rocking block's guard evaluations, and they find
+  // exactly what they found before.
+  template <class GuardsAt, class LeastAtEnds>
   Crossing first_crossing(const GuardsAt& guards_at, double t0, double t1,
-                          const std::array<double, G>& next) const {
+                          const std::array<double, G>& next,
+                          const LeastAtEnds& least_at_ends) const {
     const double time_tolerance = kEventTimeTolerance * (1.0 + t1);
     Crossing found;
     found.before = t1;
@@ -51,6 +56,8 @@ class GuardWatch {
     std::array<std::array<double, kInteriorSamples + 1>, G> seen{};
     std::array<int, G> seen_count{};
     bool any_sampled = false;
+    bool ends_known = false;
+    std::array<bool, G> least_at_end{};
     for (int i = 0; i < G; ++i) {
       offset[i] = armed_[i] ? 0.0 : unarmed_offset_[i];
       a[i] = t0;
@@ -59,6 +66,14 @@ class GuardWatch {
       fb[i] = next[i] + offset[i];
       // A guard close to zero may dip below it and come back inside one step: look inside.
       sampled[i] = !armed_[i] || std::min(fa[i], fb[i]) < kNearZero;
+      // Clearly positive: above the guards' rounding noise by far.
+      if (sampled[i] && std::min(fa[i], fb[i]) > 0.5 * kArmingMargin) {
+        if (!ends_known) {
+          least_at_end = least_at_ends();
+          ends_known = true;
+        }
+        sampled[i] = !least_at_end[i];
+      }
       looked_inside[i] = sampled[i];
       seen[i][0] = fa[i];
       seen_count[i] = 1;

@@ -90,6 +90,14 @@ struct SystemContext {
             rotate(geometry->base_corner(blockfrag::other(pivot)), turn)};
   }
   double velocity_scale() const { return std::sqrt(g * geometry->size()); }
+  // For guards whose least value over a step is at one of its ends when theta moves one way
+  // through it: the other base corner's height over R is +-W sin(theta) / R for a base of width W
+  // (its corners are level in the body), monotone while |theta| < pi/2. (The overturning margin,
+  // concave in theta, needs only theta moving one way.)
+  static bool upright(double theta0, double theta1) {
+    constexpr double kQuarterTurn = std::numbers::pi / 2;
+    return std::abs(theta0) < kQuarterTurn && std::abs(theta1) < kQuarterTurn;
+  }
   // The guard that stops the run: the block lies on another face (|theta| = pi/2 for a rectangle).
   double overturn_margin(double theta) const { return geometry->overturn_margin(theta); }
 };
@@ -125,6 +133,12 @@ struct SlideSystem {
     return {-s * c.mu * normal, normal};
   }
   OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx}; }
+  // The slip velocity's guard is the velocity itself.
+  template <class OneWay>
+  std::array<bool, kGuards> least_at_ends(const OdeState<N>&, const OdeState<N>&,
+                                          const OneWay& one_way) const {
+    return {one_way(1), false};
+  }
 };
 
 // Rocking about a sticking corner.  q = (theta, omega); the pivot stays at (pivot_x, 0).
@@ -168,6 +182,14 @@ struct RockSystem {
     return {k.friction, k.normal};
   }
   OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }
+  // Which guards' least value over a step from q0 to q1 is at one of its ends (so no sample inside
+  // can find it lower): one_way(i) says whether coordinate i of the dense output moves one way.
+  template <class OneWay>
+  std::array<bool, kGuards> least_at_ends(const OdeState<N>& q0, const OdeState<N>& q1,
+                                          const OneWay& one_way) const {
+    const bool turning_one_way = one_way(0);
+    return {false, false, turning_one_way && SystemContext::upright(q0[0], q1[0]), turning_one_way};
+  }
 };
 
 // Housner's rocking block: rocks on a corner that never slips or lifts (so no contact-force
@@ -189,6 +211,12 @@ struct HousnerRockSystem {
   BlockState full(double t, const OdeState<N>& q) const { return rock.full(t, q); }
   ContactForces forces(double t, const OdeState<N>& q) const { return rock.forces(t, q); }
   OdeState<N> coordinates(const BlockState& b) const { return rock.coordinates(b); }
+  template <class OneWay>
+  std::array<bool, kGuards> least_at_ends(const OdeState<N>& q0, const OdeState<N>& q1,
+                                          const OneWay& one_way) const {
+    const auto rock_ends = rock.least_at_ends(q0, q1, one_way);
+    return {rock_ends[RockSystem::other_corner_height], rock_ends[RockSystem::overturn_margin]};
+  }
 };
 
 // Rocking about a slipping corner.  q = (theta, omega, pivot x, pivot x velocity).
@@ -246,6 +274,13 @@ struct SlideRockSystem {
     const Vec2 r = arm(b.theta, pivot);
     return {b.theta, b.omega, b.x + r.x, b.vx - b.omega * r.y};
   }
+  template <class OneWay>
+  std::array<bool, kGuards> least_at_ends(const OdeState<N>& q0, const OdeState<N>& q1,
+                                          const OneWay& one_way) const {
+    const bool turning_one_way = one_way(0);
+    return {false, one_way(3), turning_one_way && SystemContext::upright(q0[0], q1[0]),
+            turning_one_way, false};
+  }
 };
 
 // Free flight under vertical ground motion: the height above the ground feels g (1 + lambda_v), so
@@ -278,6 +313,12 @@ struct FlightSystem {
   }
   ContactForces forces(double, const OdeState<N>&) const { return {0.0, 0.0}; }
   OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx, b.y, b.vy}; }
+  // theta is linear in time: the overturning margin, concave in it, is least at an end.
+  template <class OneWay>
+  std::array<bool, kGuards> least_at_ends(const OdeState<N>&, const OdeState<N>&,
+                                          const OneWay&) const {
+    return {false, true};
+  }
 };
 
 }  // namespace blockfrag

@@ -501,5 +501,22 @@ TEST(Steppers, DoNotAllocateWhileStepping) {
   EXPECT_TRUE(std::isfinite(sink));
 }
 
+// Whether the dense output moves one way: cos t falls all through (0.3, 0.8) and turns at pi, so a
+// step across pi does not move one way (a sufficient test may miss a step that does, never claim
+// one that turns).
+TEST(DenseOutput, MovesOneWayOnlyWhereTheComponentDoesNotTurn) {
+  const auto check = [](auto stepper, double t0) {
+    double t = t0;
+    OdeState<2> q = Oscillator::exact(t0);
+    stepper.step(Oscillator{}, t, q, 0.5);
+    const bool turns = t0 < std::numbers::pi && t > std::numbers::pi;
+    EXPECT_EQ(stepper.moves_one_way(0), !turns) << t0 << " to " << t;
+  };
+  for (const double t0 : {0.3, 2.9}) {
+    check(DormandPrinceStepper<2>(1e-8, {1.0, 1.0}), t0);
+    check(Rk4Stepper<2>(0.5), t0);
+  }
+}
+
 }  // namespace
 }  // namespace blockfrag
