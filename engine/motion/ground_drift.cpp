@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 
+#include "engine/sine_cosine.hpp"
+
 namespace blockfrag {
 
 namespace {
@@ -14,7 +16,8 @@ struct Advance {
 };
 
 Advance advance_of(double e) {
-  const double s = std::sin(e), c = std::cos(e);
+  const SineCosine turn = sine_cosine(e);
+  const double s = turn.sin, c = turn.cos;
   Advance a{s, c > 0 ? s * s / (1.0 + c) : 1.0 - c, e - s};
   if (std::abs(e) < 1.0) {
     // e - sin e = e^3/3! - e^5/5! + ...: nine terms leave under 1e-19 of it for |e| < 1.
@@ -35,8 +38,9 @@ GroundDrift::GroundDrift(const MotionPiece& piece, double t0)
   omega_ = f.angular_frequency;
   const auto add = [&](double weight, double multiple, double angle, bool is_cosine) {
     if (weight == 0.0) return;
-    sinusoids_[static_cast<std::size_t>(sinusoid_count_++)] = {weight, multiple, std::sin(angle),
-                                                               std::cos(angle), is_cosine};
+    const SineCosine start = sine_cosine(angle);
+    sinusoids_[static_cast<std::size_t>(sinusoid_count_++)] = {weight, multiple, start.sin,
+                                                               start.cos, is_cosine};
   };
   switch (shape_) {
     case Shape::zero: break;

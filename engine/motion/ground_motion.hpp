@@ -12,6 +12,7 @@
 
 #include "engine/motion/pulse_shapes.hpp"
 #include "engine/scene/scene.hpp"
+#include "engine/sine_cosine.hpp"
 
 namespace blockfrag {
 
@@ -62,8 +63,9 @@ class MotionPiece {
       case Shape::zero: return 0.0;
       case Shape::constant: return f_.amplitude;
       case Shape::linear: return f_.amplitude + f_.slope * (t - f_.origin);
-      case Shape::cosine: return f_.amplitude * std::cos(f_.angular_frequency * t + f_.phase);
-      case Shape::sine: return f_.amplitude * std::sin(f_.angular_frequency * t + f_.phase);
+      case Shape::cosine:
+        return f_.amplitude * sine_cosine(f_.angular_frequency * t + f_.phase).cos;
+      case Shape::sine: return f_.amplitude * sine_cosine(f_.angular_frequency * t + f_.phase).sin;
       case Shape::ricker:
         return f_.amplitude * pulse::ricker(f_.angular_frequency * (t - f_.origin));
       case Shape::mavroeidis_papageorgiou:

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/scene/scene.hpp"
+#include "engine/sine_cosine.hpp"
 
 namespace blockfrag {
 
@@ -91,7 +92,7 @@ class BlockGeometry {
     return std::min(overturn_angle(Corner::left) - theta, overturn_angle(Corner::right) + theta);
   }
 
-  // cos(theta) and sin(theta), the same numbers as computing them. The last angle's are kept:
+  // cos(theta) and sin(theta) (engine/sine_cosine.hpp). The last angle's are kept:
   // the right-hand side at a step's end, the guards there, the contact forces, the observer and
   // the contact resolution all turn the block by the same theta, and their sines and cosines were
   // a third of a scene's time. The angle is compared bit for bit (-0 is not +0). A geometry is not
@@ -99,7 +100,8 @@ class BlockGeometry {
   Rotation rotation(double theta) const {
     const auto bits = std::bit_cast<std::uint64_t>(theta);
     if (bits != rotation_bits_) {
-      rotation_ = {std::cos(theta), std::sin(theta)};
+      const SineCosine turn = sine_cosine(theta);
+      rotation_ = {turn.cos, turn.sin};
       rotation_bits_ = bits;
     }
     return rotation_;
