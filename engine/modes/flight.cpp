@@ -1,6 +1,7 @@
 #include "engine/modes/flight.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -80,11 +81,11 @@ double earliest_fall(double depth, double rate, double bound) {
   return rate > 0 ? (rate + root) / bound : 2.0 * depth / (root - rate);
 }
 
-std::optional<double> corner_landing(const CornerHeight& h, double bound, double tau_max,
-                                     double min_step, double time_tolerance, double height_noise,
-                                     double sink_allowance) {
+// One corner's first landing in (0, tau_max], from `now`, its sample at the start.
+std::optional<double> corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bound,
+                                     double tau_max, double min_step, double time_tolerance,
+                                     double height_noise, double sink_allowance) {
   double tau = 0.0;
-  CornerHeight::Sample now = h.at(0.0);
   if (now.height <= 0.0) {
     // Leaving the ground: start where it has risen (half the earliest possible return). A corner
     // that has not risen by then is watched until it has; one that turns down first never left
@@ -127,15 +128,25 @@ std::optional<double> first_landing(const BlockGeometry& geometry, const FlightS
   const bool base_only = geometry.overturn_margin(f.theta) >= 0 &&
                          geometry.overturn_margin(f.theta + f.omega * tau_max) >= 0;
   const int corners = base_only ? 2 : geometry.corner_count();
+  // The base corners at the start, one after the other (one rotation serves both), searched from
+  // the one that can land sooner: the search after it stops where it lands, most often at once.
+  const std::array<CornerHeight::Sample, 2> base = {CornerHeight{geometry, f, g, 0}.at(0.0),
+                                                    CornerHeight{geometry, f, g, 1}.at(0.0)};
+  const auto soonest_fall = [&](const CornerHeight::Sample& s) {
+    return s.height <= 0.0 ? 0.0 : earliest_fall(s.height, s.rate, bound);
+  };
+  const int sooner = soonest_fall(base[1]) < soonest_fall(base[0]) ? 1 : 0;
   std::optional<double> first;
-  for (int corner = 0; corner < corners; ++corner) {
+  for (int k = 0; k < corners; ++k) {
+    const int corner = k == 0 ? sooner : (k == 1 ? 1 - sooner : k);
     const CornerHeight h{geometry, f, g, corner};
+    const CornerHeight::Sample now = k < 2 ? base[static_cast<std::size_t>(corner)] : h.at(0.0);
     const double limit = first ? *first : tau_max;
     const double tolerance = 4e-16 * (1.0 + limit);
     // A corner's height is y plus an arm of size R: its rounding error is a few ulps of their sum.
     const double height_noise =
         4 * std::numeric_limits<double>::epsilon() * (std::abs(f.y) + geometry.size());
-    if (auto tau = corner_landing(h, bound, limit, min_step, tolerance, height_noise,
+    if (auto tau = corner_landing(h, now, bound, limit, min_step, tolerance, height_noise,
                                   kLandingSinkAllowance * geometry.size())) {
       if (!first || *tau < *first) first = tau;
     }
