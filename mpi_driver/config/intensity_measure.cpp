@@ -23,9 +23,8 @@ double largest_level(ImType type) { return type == ImType::pgv ? 100.0 : domain:
 
 namespace {
 
-std::vector<double> read_levels(ObjectReader& reader, ImType type) {
+std::vector<double> read_levels(ObjectReader& reader, const Range& range) {
   std::vector<double> levels;
-  const Range range = level_range(type);
   if (reader.has("levels")) {
     if (reader.has("from") || reader.has("to") || reader.has("count")) {
       reader.add_error("levels", "give either levels or from/to/count, not both");
@@ -63,6 +62,26 @@ std::vector<double> read_levels(ObjectReader& reader, ImType type) {
     }
   }
   return levels;
+}
+
+// {"type": "pulse_period", "levels": [...]} or from/to/count: the periods of a surface's grid.
+void read_second_axis(ObjectReader reader, IntensityMeasure& measure) {
+  if (!reader.valid()) return;
+  reader.required_choice("type", {"pulse_period"});
+  if (measure.cloud) {
+    reader.add_error("type", "makes a grid of stripes: a cloud (\"scaling\": \"none\") has none");
+    return;
+  }
+  measure.periods = read_levels(reader, Range::of(domain::pulse_period));
+  const std::size_t cells = measure.levels.size() * measure.periods.size();
+  if (cells > kMaxSurfaceCells) {
+    reader.add_error(reader.has("levels") ? "levels" : "count",
+                     "makes a grid of " + std::to_string(measure.levels.size()) + " x " +
+                         std::to_string(measure.periods.size()) + " = " + std::to_string(cells) +
+                         " cells, more than " + std::to_string(kMaxSurfaceCells) +
+                         " (the surface fit's separation check is cubic in them)");
+  }
+  reader.finish("for type \"pulse_period\"");
 }
 
 }  // namespace
@@ -123,8 +142,9 @@ IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type
       if (reader.has(key)) reader.add_error(key, "a cloud (\"scaling\": \"none\") has no levels");
     }
   } else {
-    measure.levels = read_levels(reader, measure.type);
+    measure.levels = read_levels(reader, level_range(measure.type));
   }
+  if (reader.has("second")) read_second_axis(reader.required_object("second"), measure);
   reader.finish(measure.type == ImType::sa ? "for type \"sa\"" : std::string{});
   return measure;
 }
@@ -141,6 +161,8 @@ nlohmann::json intensity_measure_to_json(const IntensityMeasure& measure) {
   } else {
     out["levels"] = measure.levels;
   }
+  // Only a surface has the key: the canonical config (and hash) of every other study is unchanged.
+  if (measure.surface()) out["second"] = {{"type", "pulse_period"}, {"levels", measure.periods}};
   return out;
 }
 

@@ -6,6 +6,9 @@
 //   {"type": "pulse_amplitude", ...}  the default for pulses: the pulse's amplitude_g (g)
 //   {"type": "pga", "scaling": "none", "scale": 1.0}  a cloud: every motion as recorded (times a
 //   fixed scale), each sample's own measure recorded.
+//   {"type": "pulse_amplitude", "levels": [...], "second": {"type": "pulse_period", "levels":
+//   [0.5, 1, 2]}}  a grid for a fragility surface: every level of the first measure at every
+//   period (s) of the pulse.
 // Stripes scale each sample's motion so that its measure equals the level; the direction input
 // gives the sign. The measures are of the foundation's horizontal motion as the sample ran it.
 #pragma once
@@ -28,9 +31,23 @@ struct IntensityMeasure {
   bool cloud = false;          // "scaling": "none"
   double scale = 1.0;          // cloud: the factor on every motion (its sign from direction)
   std::vector<double> levels;  // stripes: > 0, increasing, in the measure's unit; cloud: none
+  // A fragility surface's second axis: the pulse's period in s, increasing (the one second
+  // measure: a cosine pulse's PGV/PGA is proportional to it); empty for a study of one measure.
+  std::vector<double> periods;
 
-  std::size_t level_count() const { return cloud ? 1 : levels.size(); }
+  bool surface() const { return !periods.empty(); }
+  // The study's levels: its cells for a surface, cell c at (levels[c / n2], periods[c % n2]).
+  std::size_t level_count() const {
+    return cloud ? 1 : levels.size() * (surface() ? periods.size() : 1);
+  }
+  // The first measure's level of a cell (of a level, for a study of one measure).
+  std::size_t first_level(std::size_t cell) const {
+    return surface() ? cell / periods.size() : cell;
+  }
 };
+
+// The most cells a fragility surface's grid may have: its fit's separation check is cubic in them.
+inline constexpr std::size_t kMaxSurfaceCells = 1000;
 
 // "pga", "pgv", "sa", "pga_over_g_tan_alpha", "pulse_amplitude".
 const char* im_type_name(ImType type);

@@ -399,6 +399,35 @@ void check_adaptive(ObjectReader& root, StudyConfig& config) {
   }
 }
 
+// A surface's second axis sets each cell's pulse period: the scene needs a pulse that has one, and
+// nothing else may set it.
+void check_surface(ObjectReader& root, const StudyConfig& config, bool scene_valid) {
+  const JsonPointer path = JsonPointer("/intensity_measure/second");
+  const bool periodic = std::holds_alternative<CosinePulse>(config.base_scene.ground_motion) ||
+                        std::holds_alternative<SinePulse>(config.base_scene.ground_motion);
+  if (config.suite) {
+    root.errors().add(path,
+                      "sets the pulse's period, but /scene/ground_motion is a record (a "
+                      "record's periods are its own)");
+  } else if (scene_valid && !periodic) {
+    root.errors().add(path,
+                      "sets the pulse's period: it needs a cosine_pulse or sine_pulse in "
+                      "/scene/ground_motion");
+  }
+  for (const auto& spec : config.inputs) {
+    if (spec.input == StudyInput::period) {
+      root.errors().add(JsonPointer("/inputs/period"),
+                        "draws the pulse's period, which /intensity_measure/second sets for each "
+                        "cell of the grid: remove one of them");
+    }
+  }
+  if (config.adaptive) {
+    root.errors().add(root.path_of("design") / "adaptive",
+                      "places stripes of one measure: a surface's grid "
+                      "(/intensity_measure/second) is fixed");
+  }
+}
+
 json canonical_json(const StudyConfig& config) {
   json inputs = json::object();
   for (const auto& spec : config.inputs)
@@ -525,6 +554,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   }
   read_limit_states(root.required_array("limit_states"), root, config);
   if (config.adaptive) check_adaptive(root, config);
+  if (config.intensity.surface()) check_surface(root, config, scene_valid);
   config.seed =
       static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
   const auto output = root.string("output");

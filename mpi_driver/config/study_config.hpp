@@ -5,6 +5,7 @@
 //    "inputs": {"friction": {"distribution": "uniform", "min": 0.55, "max": 0.9}, ...,
 //               "direction": {"distribution": "random_sign"}},
 //    "intensity_measure": {"type": "pga", "from": 0.2, "to": 2.0, "count": 10},
+//      with an optional "second": {"type": "pulse_period", "levels": [...]} (a surface's grid),
 //    "samples_per_level": 40,
 //    "design": "monte_carlo" | "latin_hypercube" | {"adaptive": {...}},
 //    "limit_states": [{"name": "overturn", "type": "overturning"},

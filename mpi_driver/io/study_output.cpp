@@ -33,6 +33,10 @@ class SampleColumns {
     file.create_column("/samples/level", total, Type::int64);
     file.create_column("/samples/im", total, Type::float64);
     file.set_attribute("/samples/im", "units", std::string(im_unit(config_.intensity.type)));
+    if (config_.intensity.surface()) {
+      file.create_column("/samples/im2", total, Type::float64);
+      file.set_attribute("/samples/im2", "units", std::string("s"));
+    }
     for (const char* name : {"/samples/scale", "/samples/pga_g", "/samples/pgv_m_s"}) {
       file.create_column(name, total, Type::float64);
     }
@@ -56,6 +60,7 @@ class SampleColumns {
     level_.clear();
     record_.clear();
     im_.clear();
+    im2_.clear();
     scale_.clear();
     pga_.clear();
     pgv_.clear();
@@ -66,6 +71,7 @@ class SampleColumns {
     level_.push_back(sample.level);
     record_.push_back(sample.record);
     im_.push_back(sample.im);
+    im2_.push_back(sample.im2);
     scale_.push_back(sample.scale);
     pga_.push_back(sample.pga_g);
     pgv_.push_back(sample.pgv_m_s);
@@ -78,6 +84,8 @@ class SampleColumns {
     }
     file.write_part("/samples/level", first, std::span<const std::int64_t>(level_));
     file.write_part("/samples/im", first, std::span<const double>(im_));
+    if (config_.intensity.surface())
+      file.write_part("/samples/im2", first, std::span<const double>(im2_));
     file.write_part("/samples/scale", first, std::span<const double>(scale_));
     file.write_part("/samples/pga_g", first, std::span<const double>(pga_));
     file.write_part("/samples/pgv_m_s", first, std::span<const double>(pgv_));
@@ -110,7 +118,7 @@ class SampleColumns {
   const StudyConfig& config_;
   std::vector<std::vector<double>> inputs_;
   std::vector<std::int64_t> level_, record_;
-  std::vector<double> im_, scale_, pga_, pgv_;
+  std::vector<double> im_, im2_, scale_, pga_, pgv_;
 };
 
 // The suite's records as recorded: what /samples/record indexes.
@@ -210,6 +218,11 @@ void write_fragility(Hdf5Writer& file, const StudyConfig& config, const StudyFra
     crossings += config.limit_states[i].name + ',' + config.limit_states[j].name;
   }
   file.set_attribute("/fragility", "crossing_pairs", crossings);
+  if (measure.surface()) {
+    file.set_attribute("/fragility", "summed_over",
+                       std::string("pulse_period: each level's trials and exceedances are those of "
+                                   "its cells at every period of /fragility_surface"));
+  }
   file.set_attribute("/fragility", "bootstrap_resamples",
                      static_cast<std::int64_t>(config.bootstrap_resamples));
   for (std::size_t k = 0; k < config.limit_states.size(); ++k) {
@@ -218,6 +231,62 @@ void write_fragility(Hdf5Writer& file, const StudyConfig& config, const StudyFra
     const auto rank = std::find(fragility.severity.begin(), fragility.severity.end(), k) -
                       fragility.severity.begin();
     file.set_attribute(group, "severity_rank", static_cast<std::int64_t>(rank));
+  }
+}
+
+// A surface study's grids and fitted surfaces (docs/studies.md, "Fragility surfaces").
+void write_surfaces(Hdf5Writer& file, const StudyConfig& config, const StudyFragility& fragility) {
+  const IntensityMeasure& measure = config.intensity;
+  file.create_group("/fragility_surface");
+  file.set_attribute("/fragility_surface", "im1_name", std::string(im_type_name(measure.type)));
+  file.set_attribute("/fragility_surface", "im1_units", std::string(im_unit(measure.type)));
+  file.set_attribute("/fragility_surface", "im1_label", im_label(measure));
+  file.set_attribute("/fragility_surface", "im2_name", std::string("pulse_period"));
+  file.set_attribute("/fragility_surface", "im2_units", std::string("s"));
+  file.set_attribute("/fragility_surface", "im2_label", std::string("pulse period"));
+  file.set_attribute("/fragility_surface", "model",
+                     std::string("P = Phi(b0 + b1 ln im1 + b2 ln im2); for each im2 a lognormal "
+                                 "in im1 with ln median = -(b0 + b2 ln im2) / b1, beta = 1 / b1"));
+  const auto n1 = static_cast<std::int64_t>(measure.levels.size());
+  const auto n2 = static_cast<std::int64_t>(measure.periods.size());
+  for (std::size_t k = 0; k < config.limit_states.size(); ++k) {
+    const LimitState& state = config.limit_states[k];
+    const SurfaceGrid& grid = fragility.surfaces[k];
+    const SurfaceFit& fit = grid.fit;
+    const std::string group = "/fragility_surface/" + state.name;
+    file.create_group(group);
+    file.write_column(group + "/im1", grid.im1);
+    file.write_column(group + "/im2", grid.im2);
+    file.write_matrix(group + "/trials", n1, n2, grid.trials);
+    file.write_matrix(group + "/exceedances", n1, n2, grid.exceedances);
+    file.write_matrix(group + "/probability", n1, n2, grid.probability);
+    file.write_matrix(group + "/ci_low", n1, n2, grid.ci_low);
+    file.write_matrix(group + "/ci_high", n1, n2, grid.ci_high);
+    std::vector<double> covariance, median_im1;
+    for (const auto& row : fit.covariance)
+      covariance.insert(covariance.end(), row.begin(), row.end());
+    for (const double x2 : grid.im2) median_im1.push_back(fit.median_im1(x2));
+    file.write_matrix(group + "/covariance", 3, 3, covariance);
+    file.write_column(group + "/median_im1", median_im1);
+    file.set_attribute(group, "type", std::string(limit_state_kind_name(state.kind)));
+    file.set_attribute(group, "threshold", state.threshold);
+    file.set_attribute(group, "overturned_exceeds",
+                       static_cast<std::int64_t>(state.overturned_exceeds ? 1 : 0));
+    file.set_attribute(group, "interval", std::string("Wilson score, 95 %"));
+    file.set_attribute(group, "fit_status", std::string(surface_fit_status_name(fit.status)));
+    file.set_attribute(group, "coefficients",
+                       std::vector<double>(fit.coefficients.begin(), fit.coefficients.end()));
+    file.set_attribute(group, "standard_errors",
+                       std::vector<double>(fit.standard_errors.begin(), fit.standard_errors.end()));
+    file.set_attribute(group, "log_likelihood", fit.log_likelihood);
+    file.set_attribute(group, "iterations", static_cast<std::int64_t>(fit.iterations));
+    file.set_attribute(group, "newton_decrement", fit.newton_decrement);
+    file.set_attribute(group, "ln_median_intercept", fit.ln_median_intercept);
+    file.set_attribute(group, "ln_median_intercept_se", fit.ln_median_intercept_se);
+    file.set_attribute(group, "ln_median_slope", fit.ln_median_slope);
+    file.set_attribute(group, "ln_median_slope_se", fit.ln_median_slope_se);
+    file.set_attribute(group, "beta1", fit.beta1);
+    file.set_attribute(group, "beta1_se", fit.beta1_se);
   }
 }
 
@@ -279,6 +348,7 @@ StudyTallies write_study_output(const std::filesystem::path& path, const StudyCo
     if (adaptive) write_adaptive(file, config, *adaptive);
     tallies.fragility = fragility.finish();
     write_fragility(file, config, tallies.fragility);
+    if (config.intensity.surface()) write_surfaces(file, config, tallies.fragility);
     file.close();
   });
   return tallies;

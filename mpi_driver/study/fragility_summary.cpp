@@ -82,6 +82,23 @@ void print_fragility_summary(std::ostream& out, const StudyConfig& config,
           << boot.fitted << " others\n";
     }
   }
+  if (!fragility.surfaces.empty()) {
+    out << "fragility surfaces (each level's curve above sums its cells over every period): "
+           "median "
+        << im_label(config.intensity) << " = m (T / 1 s)^c, +- one standard error:\n";
+    for (const std::size_t k : fragility.severity) {
+      const SurfaceFit& fit = fragility.surfaces[k].fit;
+      out << "  " << std::left << std::setw(static_cast<int>(width)) << config.limit_states[k].name
+          << std::right << "  ";
+      if (fit.status != SurfaceFitStatus::ok) {
+        out << "no fit (" << surface_fit_status_name(fit.status) << ")\n";
+        continue;
+      }
+      out << "m " << three_digits(std::exp(fit.ln_median_intercept)) << ' ' << unit << "  c "
+          << three_digits(fit.ln_median_slope) << " +- " << three_digits(fit.ln_median_slope_se)
+          << "  beta " << three_digits(fit.beta1) << " +- " << three_digits(fit.beta1_se) << '\n';
+    }
+  }
   for (const auto& [i, j] : fragility.crossings) {
     const FragilityCurve& a = fragility.curves[i];
     const FragilityCurve& b = fragility.curves[j];

@@ -10,7 +10,8 @@
 namespace blockfrag {
 
 // One line per limit state: median and beta with their 95 % intervals, the goodness of fit; then a
-// warning for each rejected fit (p < 0.05) and each crossing pair.
+// warning for each rejected fit (p < 0.05); a surface study's fitted surfaces in their median
+// form; a warning for each crossing pair.
 void print_fragility_summary(std::ostream& out, const StudyConfig& config,
                              const StudyFragility& fragility);
 

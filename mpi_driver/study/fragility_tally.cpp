@@ -12,7 +12,7 @@ FragilityTally::FragilityTally(const StudyConfig& config)
     : config_(config),
       trials_(
           config.limit_states.size(),
-          std::vector<std::int64_t>(config.intensity.cloud ? 0 : config.intensity.levels.size())),
+          std::vector<std::int64_t>(config.intensity.cloud ? 0 : config.intensity.level_count())),
       exceedances_(trials_),
       cloud_exceeded_(config.limit_states.size()),
       im_low_(std::numeric_limits<double>::infinity()),
@@ -41,9 +41,18 @@ StudyFragility FragilityTally::finish() const {
   StudyFragility fragility;
   for (std::size_t k = 0; k < config_.limit_states.size(); ++k) {
     const LimitState& state = config_.limit_states[k];
-    fragility.curves.push_back(config_.intensity.cloud
-                                   ? cloud_curve(config_, state, cloud_im_, cloud_exceeded_[k])
-                                   : stripe_curve(config_, state, trials_[k], exceedances_[k]));
+    const IntensityMeasure& measure = config_.intensity;
+    if (measure.cloud) {
+      fragility.curves.push_back(cloud_curve(config_, state, cloud_im_, cloud_exceeded_[k]));
+    } else if (measure.surface()) {
+      const std::size_t n2 = measure.periods.size();
+      fragility.curves.push_back(stripe_curve(config_, state, summed_over_im2(trials_[k], n2),
+                                              summed_over_im2(exceedances_[k], n2)));
+      fragility.surfaces.push_back(
+          surface_from_counts(measure.levels, measure.periods, trials_[k], exceedances_[k]));
+    } else {
+      fragility.curves.push_back(stripe_curve(config_, state, trials_[k], exceedances_[k]));
+    }
   }
   fragility.severity = severity_order(fragility.curves);
   if (im_low_ <= im_high_)

@@ -1,5 +1,6 @@
 // A study's fragility gathered one sample at a time, as the output streams the records from disk:
-// stripes keep per-level counts only; a cloud keeps each successful sample's intensity and
+// stripes keep per-level counts only (per cell for a surface: its curves in the first measure sum
+// each level's cells over the second measure); a cloud keeps each successful sample's intensity and
 // verdicts (9 bytes per sample and limit state at most), which its per-sample fit needs.
 #pragma once
 
@@ -10,6 +11,7 @@
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/study/study_record.hpp"
 #include "postproc/fragility/fragility_curve.hpp"
+#include "postproc/fragility/surface_grid.hpp"
 
 namespace blockfrag {
 
@@ -19,6 +21,8 @@ struct StudyFragility {
   // Pairs (i < j) of limit states whose fitted curves cross between the smallest and the largest
   // intensity of the study: they cannot be damage states of one component.
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
+  // surfaces[k] is config.limit_states[k]'s; none unless the study has a second measure.
+  std::vector<SurfaceGrid> surfaces;
 };
 
 class FragilityTally {
@@ -31,7 +35,7 @@ class FragilityTally {
 
  private:
   const StudyConfig& config_;
-  std::vector<std::vector<std::int64_t>> trials_, exceedances_;  // [limit state][level]
+  std::vector<std::vector<std::int64_t>> trials_, exceedances_;  // [limit state][level or cell]
   std::vector<double> cloud_im_;
   std::vector<std::vector<bool>> cloud_exceeded_;  // [limit state][successful sample]
   double im_low_, im_high_;

@@ -90,7 +90,8 @@ FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& stat
   for (std::size_t i = 0; i < records.size(); ++i) {
     const auto& record = records[i];
     if (record.status != static_cast<std::int64_t>(SampleStatus::ok)) continue;
-    const auto level = static_cast<std::size_t>(record.index) / config.samples_per_level;
+    const auto level = config.intensity.first_level(static_cast<std::size_t>(record.index) /
+                                                    config.samples_per_level);
     ++trials[level];
     if (exceeds(state, record, alphas[i])) ++exceedances[level];
   }

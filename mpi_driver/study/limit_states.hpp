@@ -26,7 +26,8 @@ FragilityCurve cloud_curve(const StudyConfig& config, const LimitState& state,
                            const std::vector<double>& im, const std::vector<bool>& exceeded);
 
 // records[i], alphas[i] and ims[i] belong to sample i (all samples of the study). Stripes count
-// trials and exceedances per level; a cloud fits each sample at its own intensity
+// trials and exceedances per level (a surface per level of its first measure, over every
+// period); a cloud fits each sample at its own intensity
 // (postproc/fragility/cloud_fragility.hpp).
 FragilityCurve fragility_curve(const StudyConfig& config, const LimitState& state,
                                const std::vector<SampleRecord>& records,

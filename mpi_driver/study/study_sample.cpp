@@ -111,6 +111,10 @@ StudySample StudySampler::draw(std::int64_t index, bool with_measures) {
   }
   // The unit motion first: its measure gives the scale.
   sample.scene = apply_sample(config_, sample.values, 1.0);
+  if (measure.surface()) {  // the cell's period, before the motion is measured
+    sample.im2 = measure.periods[sample.level % measure.periods.size()];
+    set_pulse(sample.scene.ground_motion, 1.0, &sample.im2);
+  }
   const double alpha = block_alpha(sample.scene);
   double pga = nan, pgv = nan, sa = nan;
   const SuiteRecord* record = nullptr;
@@ -134,7 +138,7 @@ StudySample StudySampler::draw(std::int64_t index, bool with_measures) {
     sample.scale = measure.scale;
     sample.im = unit * measure.scale;
   } else {
-    sample.im = measure.levels.at(sample.level);
+    sample.im = measure.levels.at(measure.first_level(sample.level));
     sample.scale = sample.im / unit;
   }
   const double signed_scale = direction * sample.scale;

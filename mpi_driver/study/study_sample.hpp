@@ -1,5 +1,6 @@
 // From a sample index to its scene: a pure function of (config, index). Index i belongs to level
-// i / n and is member j = i % n of it (n = samples per level); its input values come from
+// i / n (a cell of a surface's grid: intensity_measure.hpp) and is member j = i % n of it (n =
+// samples per level); its input values come from
 // sampling/ (Philox streams named after the inputs, then inverse CDFs); with a record suite, its
 // record is the suite's record_of(j, n). The scene is the base scene with those values and the
 // motion scaled to the level's intensity (stripes), or by the fixed scale (a cloud). No rank,
@@ -23,6 +24,7 @@ struct StudySample {
   double scale = 1.0;          // the factor on its unit motion (> 0; direction gives the sign)
   // Its intensity, in the measure's unit: the level's for stripes, its own in a cloud.
   double im = 0.0;
+  double im2 = 0.0;  // a surface's second measure: its cell's pulse period (s); 0 otherwise
   // Its motion's peak ground acceleration (g) and velocity (m/s); NaN unless drawn with measures.
   double pga_g = 0.0;
   double pgv_m_s = 0.0;
