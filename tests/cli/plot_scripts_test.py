@@ -16,7 +16,11 @@ rectangle, a one-line error for a scene that is not the history's. plot_spectrum
 the colours of the verdicts present (a safe island's among them) and not of those absent, the
 islands found as connected cells above an overturning point, boundary lines that join neighbouring
 crossings and not distant ones, one-line errors for a missing file, a file that is not a spectrum
-and a bad --mark-point. Prints "N passed, M failed" last; exits non-zero on any failure.
+and a bad --mark-point. plot_fragility_surface.py: a PNG with one panel per limit state whose
+markers take the colour map's colours of the cells' probabilities, fitted contours through the
+points where the file's coefficients give P = 0.5, a --summary with the file's coefficients and
+median form, a panel for a limit state without a fit, one-line errors for a file without
+/fragility_surface, an unknown --limit-state and bad --contours. Prints "N passed, M failed" last; exits non-zero on any failure.
 """
 
 import math
@@ -44,6 +48,7 @@ PLOT_FRAGILITY = SOURCE / "postproc" / "plots" / "plot_fragility.py"
 PLOT_CLOUD = SOURCE / "postproc" / "plots" / "plot_cloud.py"
 PLOT_MOTION = SOURCE / "postproc" / "plots" / "plot_motion.py"
 PLOT_SPECTRUM = SOURCE / "postproc" / "plots" / "plot_spectrum.py"
+PLOT_SURFACE = SOURCE / "postproc" / "plots" / "plot_fragility_surface.py"
 
 # Colours the scripts promise: the mode shading of plot_history.py and the first two limit-state
 # colours of plot_fragility.py.
@@ -625,6 +630,84 @@ def test_spectrum_plot_errors_are_one_line(work):
     result = run(PLOT_SPECTRUM, work / "s.h5", "-o", work / "x.png", "--mark-point", "1")
     assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
     assert "--mark-point: expected FREQUENCY,AMPLITUDE, got '1'" in result.stderr, result.stderr
+    assert not (work / "x.png").exists()
+
+
+# --- plot_fragility_surface.py ---------------------------------------------------------------------
+
+
+def normal_cdf(x):
+    return 0.5 * math.erfc(-x / math.sqrt(2.0))
+
+
+def write_surface(path, b=(0.5, 2.5, 1.25), second_state_fitted=True):
+    """A surface study's /fragility_surface: 5 amplitudes x 4 periods, counts from Phi(b . x)."""
+    im1 = np.array([0.3, 0.5, 0.8, 1.3, 2.0])
+    im2 = np.array([0.5, 0.8, 1.3, 2.0])
+    with h5py.File(path, "w") as f:
+        root = f.create_group("fragility_surface")
+        for key, value in (("im1_label", "pulse amplitude"), ("im1_units", "g"),
+                           ("im2_label", "pulse period"), ("im2_units", "s")):
+            root.attrs[key] = value
+        for name, fitted in (("overturn", True), ("slide", second_state_fitted)):
+            group = root.create_group(name)
+            group["im1"], group["im2"] = im1, im2
+            p = np.array([[normal_cdf(b[0] + b[1] * math.log(x) + b[2] * math.log(y)) for y in im2] for x in im1])
+            group["trials"] = np.full(p.shape, 100, dtype=np.int64)
+            group["exceedances"] = np.round(100 * p).astype(np.int64)
+            group["probability"] = np.round(100 * p) / 100
+            nan = float("nan")
+            group.attrs["fit_status"] = "ok" if fitted else "separated"
+            group.attrs["coefficients"] = np.array(b if fitted else (nan, nan, nan))
+            group.attrs["standard_errors"] = np.array((0.02, 0.05, 0.04) if fitted else (nan, nan, nan))
+            group.attrs["log_likelihood"] = -42.0 if fitted else nan
+            median = (-b[0] / b[1], 0.01, -b[2] / b[1], 0.02, 1 / b[1], 0.008)
+            for key, value in zip(("ln_median_intercept", "ln_median_intercept_se", "ln_median_slope",
+                                   "ln_median_slope_se", "beta1", "beta1_se"), median):
+                group.attrs[key] = value if fitted else nan
+
+
+def test_surface_plot_colours_the_cells_and_draws_the_fit(work):
+    write_surface(work / "s.h5")
+    result = call(PLOT_SURFACE, work / "s.h5", "-o", work / "s.png", "--summary")
+    assert result.returncode == 0, result.stderr
+    pixels = check_plausible_png(work / "s.png", min_height=500)
+    # The markers are filled with the colour map's colour of their probability: the ends of
+    # viridis (P near 0 and near 1) are both present.
+    import matplotlib
+    for p in (0.0, 1.0):
+        colour = "#" + "".join(f"{round(255 * c):02x}" for c in matplotlib.colormaps["viridis"](p)[:3])
+        assert colour_pixels(pixels, colour, tolerance=0.03) > 20, f"no cell drawn in {colour}"
+    # The summary gives the file's coefficients and the median form.
+    assert "b1 = 2.5 +- 0.05" in result.stdout, result.stdout
+    assert "beta = 0.4 +- 0.008" in result.stdout, result.stdout
+    # The fitted contours as the script computes them pass through P = 0.5 on ln median1 =
+    # -(b0 + b2 ln x2) / b1.
+    module = load(PLOT_SURFACE)
+    x2 = 1.3
+    median = math.exp(-(0.5 + 1.25 * math.log(x2)) / 2.5)
+    assert abs(module.fitted_probability(np.array([0.5, 2.5, 1.25]), median, x2) - 0.5) < 1e-12
+
+
+def test_surface_plot_says_when_a_limit_state_has_no_fit(work):
+    write_surface(work / "s.h5", second_state_fitted=False)
+    result = call(PLOT_SURFACE, work / "s.h5", "-o", work / "s.png", "--summary")
+    assert result.returncode == 0, result.stderr
+    assert "slide: fit separated" in result.stdout, result.stdout
+    check_plausible_png(work / "s.png", min_height=500)
+    result = call(PLOT_SURFACE, work / "s.h5", "-o", work / "one.png", "--limit-state", "slide")
+    assert result.returncode == 0 and png_size(work / "one.png")[0] < png_size(work / "s.png")[0]
+
+
+def test_surface_plot_errors_are_one_line(work):
+    write_study(work / "study.h5")
+    assert_clean_error(run(PLOT_SURFACE, work / "study.h5", "-o", work / "x.png"), "no /fragility_surface")
+    assert_clean_error(run(PLOT_SURFACE, work / "absent.h5", "-o", work / "x.png"), "absent.h5: no such file")
+    write_surface(work / "s.h5")
+    assert_clean_error(run(PLOT_SURFACE, work / "s.h5", "-o", work / "x.png", "--limit-state", "nope"),
+                       "--limit-state nope", "overturn, slide")
+    result = run(PLOT_SURFACE, work / "s.h5", "-o", work / "x.png", "--contours", "0.5,1.5")
+    assert result.returncode == 2 and "every probability must be in (0, 1)" in result.stderr, result.stderr
     assert not (work / "x.png").exists()
 
 
