@@ -98,9 +98,15 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   const SceneEvaluator engine =
       evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
   if (rank == 0) {
+    const IntensityMeasure& measure = config.intensity;
     std::cerr << "study " << options.study_path.string() << ": " << config.total_samples()
-              << " samples (" << config.intensity.level_count() << " levels x "
-              << config.samples_per_level << ") on " << ranks << (ranks == 1 ? " rank" : " ranks")
+              << " samples (";
+    if (measure.surface()) {
+      std::cerr << measure.levels.size() << " x " << measure.periods.size() << " cells x ";
+    } else {
+      std::cerr << measure.level_count() << " levels x ";
+    }
+    std::cerr << config.samples_per_level << ") on " << ranks << (ranks == 1 ? " rank" : " ranks")
               << ", config hash " << hash_to_hex(config.hash) << '\n';
   }
   RunResult result;

@@ -43,6 +43,7 @@ JSON
 "$BLOCKFRAG" run surface.json --output one.h5 2>one.err
 code=$?
 [[ $code -eq 0 ]] && pass || fail "1 rank: exit code $code: $(cat one.err)"
+grep -q "144 samples (4 x 3 cells x 12)" one.err && pass || fail "the run does not name its grid: $(head -n 1 one.err)"
 mpirun -n 2 --oversubscribe "$BLOCKFRAG" run surface.json --output two.h5 2>two.err
 code=$?
 [[ $code -eq 0 ]] && pass || fail "2 ranks: exit code $code: $(cat two.err)"
