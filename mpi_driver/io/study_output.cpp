@@ -287,6 +287,10 @@ void write_surfaces(Hdf5Writer& file, const StudyConfig& config, const StudyFrag
     file.set_attribute(group, "ln_median_slope_se", fit.ln_median_slope_se);
     file.set_attribute(group, "beta1", fit.beta1);
     file.set_attribute(group, "beta1_se", fit.beta1_se);
+    file.set_attribute(group, "deviance", grid.gof.deviance);
+    file.set_attribute(group, "gof_dof", static_cast<std::int64_t>(grid.gof.dof));
+    file.set_attribute(group, "gof_p_value", grid.gof.p_value);
+    file.set_attribute(group, "max_misfit", grid.gof.max_misfit);
   }
 }
 

@@ -1,8 +1,11 @@
 #include "postproc/fragility/surface_grid.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <utility>
+
+#include <gsl/gsl_cdf.h>
 
 #include "engine/errors.hpp"
 #include "postproc/fragility/binomial_interval.hpp"
@@ -29,6 +32,20 @@ SurfaceGrid surface_from_counts(std::vector<double> im1, std::vector<double> im2
     cell_im2.push_back(im2[c % im2.size()]);
   }
   grid.fit = fit_fragility_surface(cell_im1, cell_im2, trials, exceedances);
+  grid.gof = {nan, 0, nan, nan};
+  if (grid.fit.status == SurfaceFitStatus::ok ||
+      grid.fit.status == SurfaceFitStatus::not_increasing) {
+    std::vector<double> expected;
+    for (std::size_t c = 0; c < cells; ++c) {
+      expected.push_back(static_cast<double>(trials[c]) *
+                         grid.fit.probability(cell_im1[c], cell_im2[c]));
+    }
+    // The curves' deviance with the surface's expected counts; a surface has three parameters,
+    // not two.
+    grid.gof = goodness_of_fit(cell_im1, trials, exceedances, 1.0, 1.0, expected);
+    grid.gof.dof = std::max(grid.gof.dof - 1, 0);
+    grid.gof.p_value = grid.gof.dof >= 1 ? gsl_cdf_chisq_Q(grid.gof.deviance, grid.gof.dof) : nan;
+  }
   grid.im1 = std::move(im1);
   grid.im2 = std::move(im2);
   grid.trials = std::move(trials);

@@ -1,11 +1,12 @@
 // A fragility surface's data on its grid of n1 x n2 cells (the first measure's levels by the
-// second's): per cell the trials, exceedances, observed probability and its Wilson interval, and
-// the probit surface fitted to them (fragility_surface.hpp).
+// second's): per cell the trials, exceedances, observed probability and its Wilson interval, the
+// probit surface fitted to them (fragility_surface.hpp) and how well it fits.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "postproc/fragility/fit_diagnostics.hpp"
 #include "postproc/fragility/fragility_surface.hpp"
 
 namespace blockfrag {
@@ -16,6 +17,10 @@ struct SurfaceGrid {
   std::vector<std::int64_t> trials, exceedances;
   std::vector<double> probability, ci_low, ci_high;  // NaN in cells without trials
   SurfaceFit fit;
+  // The deviance against the saturated model (each cell's own proportion) on cells with trials - 3
+  // degrees of freedom, its chi-square p-value and the largest |observed - fitted| over the cells;
+  // deviance and misfit NaN, dof 0 without coefficients.
+  GoodnessOfFit gof;
 };
 
 // trials and exceedances row by row, n1 x n2 = im1.size() x im2.size() of them (else

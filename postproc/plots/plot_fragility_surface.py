@@ -4,7 +4,8 @@
 Reads /fragility_surface of a surface study's HDF5 output (a study whose intensity_measure has a
 "second" axis, docs/studies.md): per limit state the grid axes im1 and im2, the observed
 probability at each cell (n1 x n2) and the fit's coefficients b0, b1, b2 of
-P = Phi(b0 + b1 ln im1 + b2 ln im2) with its fit_status. One panel per limit state: each cell a
+P = Phi(b0 + b1 ln im1 + b2 ln im2) with its fit_status and goodness of fit (deviance, gof_dof,
+gof_p_value). One panel per limit state: each cell a
 marker coloured by its observed probability (cells without trials hollow), the fitted surface's
 contours at --contours (default 0.1, 0.5, 0.9) labelled with their probability, both axes
 logarithmic and labelled with the measures and units (/fragility_surface's im1_label, im1_units,
@@ -73,6 +74,8 @@ def read_surfaces(path):
                         "ln_median_intercept", "ln_median_intercept_se", "ln_median_slope",
                         "ln_median_slope_se", "beta1", "beta1_se")],
                     "log_likelihood": float(group.attrs["log_likelihood"]),
+                    "gof": (float(group.attrs.get("deviance", math.nan)), int(group.attrs.get("gof_dof", 0)),
+                            float(group.attrs.get("gof_p_value", math.nan))),
                 })
         except KeyError as error:
             raise InputError(f"{path}: /fragility_surface lacks {error.args[0]}") from None
@@ -125,6 +128,9 @@ def draw_panel(ax, axes, state, contours, colours):
                      f"β = {beta:.3g} ± {beta_se:.2g}")
         else:
             note += "\nfalls with x: no median form"
+        deviance, dof, p_value = state["gof"]
+        if dof >= 1:
+            note += f"\ndeviance {deviance:.3g} on {dof} degrees of freedom, p = {p_value:.2g}"
     else:
         note = f"no fitted surface: {state['status'].replace('_', ' ')}"
     ax.set_title(f"{state['name']}\n{note}", fontsize=8.5)
@@ -168,6 +174,10 @@ def summary(axes, states):
               f"ln L = {state['log_likelihood']:.6g}")
         for k in range(3):
             print(f"  b{k} = {b[k]:.6g} +- {se[k]:.3g}")
+        deviance, dof, p_value = state["gof"]
+        if dof >= 1:
+            print(f"  deviance {deviance:.6g} on {dof} degrees of freedom, p = {p_value:.3g}"
+                  + (": the probit is rejected at 5 %" if p_value < 0.05 else ""))
         if state["status"] == "ok":
             c0, c0_se, c1, c1_se, beta, beta_se = state["median"]
             print(f"  ln median = {c0:.6g} (+- {c0_se:.3g}) + {c1:.6g} (+- {c1_se:.3g}) ln {axes['im2_label']}, "

@@ -661,6 +661,8 @@ def write_surface(path, b=(0.5, 2.5, 1.25), second_state_fitted=True):
             group.attrs["coefficients"] = np.array(b if fitted else (nan, nan, nan))
             group.attrs["standard_errors"] = np.array((0.02, 0.05, 0.04) if fitted else (nan, nan, nan))
             group.attrs["log_likelihood"] = -42.0 if fitted else nan
+            group.attrs["deviance"], group.attrs["gof_dof"] = (31.5, 17) if fitted else (nan, 0)
+            group.attrs["gof_p_value"] = 0.0174 if fitted else nan
             median = (-b[0] / b[1], 0.01, -b[2] / b[1], 0.02, 1 / b[1], 0.008)
             for key, value in zip(("ln_median_intercept", "ln_median_intercept_se", "ln_median_slope",
                                    "ln_median_slope_se", "beta1", "beta1_se"), median):
@@ -681,6 +683,7 @@ def test_surface_plot_colours_the_cells_and_draws_the_fit(work):
     # The summary gives the file's coefficients and the median form.
     assert "b1 = 2.5 +- 0.05" in result.stdout, result.stdout
     assert "beta = 0.4 +- 0.008" in result.stdout, result.stdout
+    assert "deviance 31.5 on 17 degrees of freedom, p = 0.0174: the probit is rejected" in result.stdout, result.stdout
     # The fitted contours as the script computes them pass through P = 0.5 on ln median1 =
     # -(b0 + b2 ln x2) / b1.
     module = load(PLOT_SURFACE)
