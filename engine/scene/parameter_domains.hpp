@@ -48,6 +48,9 @@ inline constexpr Domain polygon_coordinate{-1e5, 1e5, true, true, "m"};
 inline constexpr Domain mass{0.0, std::numeric_limits<double>::infinity(), false, false, "kg"};
 // Up to 10,000 vertices (a digitised outline).
 inline constexpr double kMaxPolygonVertices = 10'000;
+// A seat's points (engine/scene/seat.hpp), in the same frame and domain as a polygon's: up to
+// 1,000, so checking the fit (every block edge against every seat segment) stays in milliseconds.
+inline constexpr double kMaxSeatPoints = 1'000;
 // A rectangle's slenderness as a study samples it.
 inline constexpr Domain alpha{0.0, std::numbers::pi / 2, false, false, "rad", nullptr, "pi/2"};
 

@@ -35,6 +35,13 @@ struct Contact {
       0.6;  // e, Newton's coefficient on the normal velocity of the impacting corner
 };
 
+// The ground the block rests on when it is not one flat unbounded line (engine/scene/seat.hpp): a
+// polyline of points [x, y] from left to right, in the frame of the block's vertices (a
+// rectangle's: its centre); beyond its ends there is no ground.
+struct Seat {
+  std::vector<std::array<double, 2>> points;
+};
+
 // The ground's horizontal acceleration is -lambda(t) g; each pulse is zero outside its window.
 struct NoMotion {};
 struct CosinePulse {  // lambda = A cos(2 pi t / T) for 0 <= t < cycles T
@@ -118,6 +125,7 @@ struct Scene {
   RectangularBlock block;
   // When set, the block is this polygon and `block` above is not used.
   std::optional<PolygonBlock> polygon;
+  std::optional<Seat> seat;  // none: the flat ground, without ends
   Contact contact;
   GroundMotion ground_motion = NoMotion{};
   // The ground's upward acceleration is lambda_v(t) g: gravity in the ground's frame is

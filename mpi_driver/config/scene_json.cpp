@@ -8,12 +8,14 @@
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/polygon_properties.hpp"
+#include "engine/scene/seat.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/dam_json.hpp"
 #include "mpi_driver/config/effects_json.hpp"
 #include "mpi_driver/config/polygon_json.hpp"
 #include "mpi_driver/config/pulse_json.hpp"
 #include "mpi_driver/config/record_file.hpp"
+#include "mpi_driver/config/seat_json.hpp"
 #include "sampling/validation.hpp"  // format_number
 
 namespace blockfrag {
@@ -190,6 +192,22 @@ void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPoi
   }
 }
 
+// The seat (mpi_driver/config/seat_json.hpp) is checked in full, then refused: only the flat
+// ground is simulated so far.
+void read_scene_seat(ObjectReader& root, bool block_valid, const JsonPointer& path,
+                     ConfigErrors& errors, Scene& scene) {
+  const std::vector<Vertex> block = scene_block_vertices(scene);
+  const std::size_t before = errors.size();
+  scene.seat = Seat{
+      read_seat(*root.raw("seat"), root.path_of("seat"), errors, block_valid ? &block : nullptr)};
+  if (scene.initial.theta != 0.0) {
+    errors.add(path / "initial" / "theta", "must be 0 with a seat (the block rests on it)");
+  }
+  if (errors.size() == before) {
+    errors.add(path / "seat", "only the flat ground is simulated so far (leave seat out)");
+  }
+}
+
 InitialState read_initial(ObjectReader reader) {
   InitialState initial;
   initial.theta = reader.number_or("theta", initial.theta, Range::of(domain::initial_theta));
@@ -254,7 +272,9 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
   ObjectReader root(value, path, errors);
   Scene scene;
   scene.effects = read_effects(root.raw("effects"), root.path_of("effects"), errors);
+  const std::size_t errors_before_block = errors.size();
   read_block(root.required_object("block"), scene);
+  const bool block_valid = errors.size() == errors_before_block;
   scene.contact = read_contact(root.required_object("contact"));
   scene.ground_motion = read_ground_motion(root.required_object("ground_motion"), base_folder);
   if (root.has("vertical_motion")) {
@@ -278,6 +298,7 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
   scene.initial = read_initial(root.object("initial"));
   if (scene.polygon)
     check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);
+  if (root.has("seat")) read_scene_seat(root, block_valid, path, errors, scene);
   root.finish();
   return scene;
 }

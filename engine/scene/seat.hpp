@@ -1,0 +1,49 @@
+// The ground under the block when it is not one flat line: a seat, a polyline of segments from left
+// to right (the paper's type B dam block rests on a horizontal segment and an incline; a flat seat
+// is one segment, or several collinear ones). Beyond the seat's ends there is no ground. What a
+// seat must be for its block to rest on it, and where the block touches it at rest.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/scene/polygon_properties.hpp"
+#include "engine/scene/scene.hpp"
+
+namespace blockfrag {
+
+// Why a seat cannot carry its block; `point` is the offending seat point when one can be named,
+// else -1 (the seat as a whole, or its fit with the block).
+struct SeatDefect {
+  int point;
+  std::string rule;
+};
+
+// A contact of the block resting on its seat: the point (in the frame of the block's vertices) and
+// the unit normal of the seat's push on the block there.
+struct RestContact {
+  Vertex point, normal;
+};
+
+// The rules, in the frame of the block's vertices (block: counter-clockwise, without polygon
+// defects): at least 2 finite points with x strictly increasing (the ground is a height over x, so
+// "below the seat" means something), and the block fits the seat at rest: no block vertex below
+// it, no seat point inside the block, no block edge crossing a seat segment, and the weight
+// carried by the seat's normal pushes at the contacts alone. Friction is not counted on: a block
+// that needs friction to rest would start to slide with a smaller mu, so a scene's rest would
+// depend on its inputs. `tolerance` (m): how far a vertex may miss the seat and still touch it.
+std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
+                                      const std::vector<Vertex>& block, double tolerance);
+
+// The contacts of the block at rest: each block vertex within `tolerance` of a seat segment (with
+// that segment's upward normal; a vertex at a seat point gets both segments' normals) and each seat
+// point within `tolerance` of a block edge (with the edge's inward normal).
+std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
+                                       const std::vector<Vertex>& block, double tolerance);
+
+// The scene's block as vertices in its own frame: the polygon, or the rectangle's corners about
+// its centre, counter-clockwise from the base's left end.
+std::vector<Vertex> scene_block_vertices(const Scene& scene);
+
+}  // namespace blockfrag

@@ -1,0 +1,68 @@
+// The scene's "seat" from JSON: every rule refused at its path, and a seat that fits refused as
+// not simulated yet.
+#include "mpi_driver/config/seat_json.hpp"
+
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/support/scene_json_errors.hpp"
+
+namespace blockfrag {
+namespace {
+
+using nlohmann::json;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+json rectangle_on(const json& seat) {
+  json scene = json::parse(R"({
+    "block": {"half_width": 0.5, "half_height": 1.0},
+    "contact": {"friction": 0.6, "restitution": 0.6},
+    "ground_motion": {"type": "none"},
+    "duration": 1.0})");
+  scene["seat"] = seat;
+  return scene;
+}
+
+std::string errors_of(const json& document) { return testing::scene_errors(document); }
+
+TEST(SeatJson, AFittingSeatIsRefusedAsNotSimulatedYet) {
+  const std::string errors =
+      errors_of(rectangle_on(json::parse("[[-10, -1], [0.1, -1], [10, -1]]")));
+  EXPECT_THAT(errors, HasSubstr("/seat: only the flat ground is simulated so far"));
+  EXPECT_THAT(errors, Not(HasSubstr("/seat/")));
+}
+
+TEST(SeatJson, EveryRuleAtItsPath) {
+  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -1], [10, \"a\"]]"))),
+              HasSubstr("/seat/1/1:"));
+  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -1], [10, -1, 3]]"))),
+              HasSubstr("/seat/1: must be a point [x, y] (got 3 numbers)"));
+  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -1], [-10, -1]]"))),
+              HasSubstr("/seat/1: x must be greater than the previous point's"));
+  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -0.9], [10, -0.9]]"))),
+              HasSubstr("/seat: block vertex 0 lies"));
+  EXPECT_THAT(errors_of(rectangle_on(
+                  json::parse("[[-10, -1.5], [-0.5, -1], [0, -0.9], [0.5, -1], [10, -1.5]]"))),
+              HasSubstr("/seat/2: lies inside the block"));
+  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -2], [10, -2]]"))),
+              HasSubstr("/seat: does not touch the block"));
+  EXPECT_THAT(errors_of(rectangle_on(json::parse("{\"points\": []}"))), HasSubstr("/seat:"));
+  json tilted = rectangle_on(json::parse("[[-10, -1], [10, -1]]"));
+  tilted["initial"] = {{"theta", 0.1}};
+  EXPECT_THAT(errors_of(tilted), HasSubstr("/initial/theta: must be 0 with a seat"));
+}
+
+// A block with errors of its own is not fitted to the seat (its vertices mean nothing).
+TEST(SeatJson, NoFitForABlockWithErrors) {
+  json scene = rectangle_on(json::parse("[[-10, -5], [10, -5]]"));
+  scene["block"]["half_width"] = -1;
+  const std::string errors = errors_of(scene);
+  EXPECT_THAT(errors, HasSubstr("/block/half_width"));
+  EXPECT_THAT(errors, Not(HasSubstr("does not touch")));
+}
+
+}  // namespace
+}  // namespace blockfrag

@@ -1,0 +1,129 @@
+// Seats (engine/scene/seat.hpp): which polylines a block fits at rest, where it touches them, and
+// the engine's refusal to simulate one for now.
+#include "engine/scene/seat.hpp"
+
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "engine/errors.hpp"
+#include "engine/scene/scene_validation.hpp"
+
+namespace blockfrag {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr double kTolerance = 1e-9;
+
+// A 1 x 2 rectangle about its centre, as scene_block_vertices lists it.
+const std::vector<Vertex> kRectangle = {{-0.5, -1}, {0.5, -1}, {0.5, 1}, {-0.5, 1}};
+
+// The paper's type B dam block and its seat (docs/references.md).
+constexpr double kFoldX = 703.0 / 120.0;
+const std::vector<Vertex> kTypeB = {{0, 0},           {kFoldX, 0}, {12.525, 5},
+                                    {10, 251.0 / 30}, {10, 21.7},  {0, 21.7}};
+const std::vector<Vertex> kTypeBSeat = {{0, 0}, {kFoldX, 0}, {12.525, 5}};
+
+std::string defect_of(const std::vector<Vertex>& seat, const std::vector<Vertex>& block) {
+  const auto defect = seat_defect(seat, block, kTolerance);
+  return defect ? std::to_string(defect->point) + ": " + defect->rule : "";
+}
+
+TEST(Seat, FlatSeatsFit) {
+  EXPECT_EQ(defect_of({{-10, -1}, {10, -1}}, kRectangle), "");
+  // Two collinear segments meeting under the block, and a seat just as wide as the base.
+  EXPECT_EQ(defect_of({{-10, -1}, {0.1, -1}, {10, -1}}, kRectangle), "");
+  EXPECT_EQ(defect_of({{-0.5, -1}, {0.5, -1}}, kRectangle), "");
+}
+
+TEST(Seat, TypeBBlockFitsItsSeatAndTouchesAtHeelFoldAndToe) {
+  EXPECT_EQ(defect_of(kTypeBSeat, kTypeB), "");
+  const std::vector<RestContact> contacts = rest_contacts(kTypeBSeat, kTypeB, kTolerance);
+  // Block vertices on seat segments: heel and fold on the horizontal one, fold and toe on the
+  // incline; seat points on block edges: the heel (2 edges), the fold (2) and the toe (2).
+  int horizontal = 0, incline = 0;
+  for (const RestContact& c : contacts) {
+    if (c.normal[0] == 0.0 && c.normal[1] == 1.0) ++horizontal;
+    if (std::abs(c.normal[0] + 0.6) < 1e-15 && std::abs(c.normal[1] - 0.8) < 1e-15) ++incline;
+  }
+  EXPECT_EQ(contacts.size(), 10u);
+  EXPECT_EQ(horizontal, 4);  // heel, fold on the horizontal segment; seat heel, fold on the base
+  EXPECT_EQ(incline, 4);     // fold, toe on the incline; seat fold, toe on the crack's incline
+}
+
+TEST(Seat, PointsMustRunLeftToRight) {
+  EXPECT_THAT(defect_of({{-10, -1}}, kRectangle), HasSubstr("at least 2 points"));
+  EXPECT_THAT(defect_of({{-10, -1}, {0, -1}, {0, -1}, {10, -1}}, kRectangle),
+              HasSubstr("2: x must be greater than the previous point's"));
+  EXPECT_THAT(defect_of({{10, -1}, {-10, -1}}, kRectangle),
+              HasSubstr("1: x must be greater than the previous point's"));
+}
+
+TEST(Seat, TheBlockMustNotBeInTheSeat) {
+  // The ground 1 mm above the base: both base corners are below it.
+  EXPECT_THAT(defect_of({{-10, -0.999}, {10, -0.999}}, kRectangle),
+              HasSubstr("-1: block vertex 0 lies 0.001"));
+  // A ridge poking up into the base between its corners, which rest on the seat.
+  EXPECT_THAT(defect_of({{-10, -1.5}, {-0.5, -1}, {0, -0.9}, {0.5, -1}, {10, -1.5}}, kRectangle),
+              HasSubstr("2: lies inside the block"));
+}
+
+TEST(Seat, TheBlockMustRestOnIt) {
+  EXPECT_THAT(defect_of({{-10, -1.001}, {10, -1.001}}, kRectangle),
+              HasSubstr("does not touch the block"));
+  // Only the left corner touches: the centre of mass is not over the support.
+  EXPECT_THAT(defect_of({{-10, -1}, {-0.5, -1}, {10, -12}}, kRectangle),
+              HasSubstr("does not carry the block at rest"));
+  // On one incline the block would need friction (a square turned by 45 degrees, a face on it).
+  const std::vector<Vertex> diamond = {{0, 0}, {1, 1}, {0, 2}, {-1, 1}};
+  EXPECT_THAT(defect_of({{-10, -10}, {10, 10}}, diamond),
+              HasSubstr("does not carry the block at rest"));
+  // In a V of two inclines normal pushes alone carry it.
+  EXPECT_EQ(defect_of({{-10, 10}, {0, 0}, {10, 10}}, diamond), "");
+  // The type B block on the horizontal part alone is carried (its centre of mass is over it), but
+  // not when that part starts at x = 5.5, past its centre of mass (x = 5.07): the heel hangs over
+  // the reservoir.
+  EXPECT_EQ(defect_of({{0, 0}, {kFoldX, 0}}, kTypeB), "");
+  EXPECT_THAT(defect_of({{5.5, 0}, {kFoldX, 0}, {12.525, 5}}, kTypeB),
+              HasSubstr("does not carry the block at rest"));
+}
+
+TEST(Seat, SceneWithASeatIsCheckedThenRefused) {
+  Scene scene;
+  scene.seat = Seat{{{-10, -1}, {10, -1}}};
+  try {
+    validate_scene(scene);
+    FAIL() << "a scene with a seat ran";
+  } catch (const InvalidInput& error) {
+    EXPECT_THAT(error.what(), HasSubstr("only the flat ground is simulated so far"));
+  }
+  scene.seat = Seat{{{-10, -0.9}, {10, -0.9}}};
+  EXPECT_THROW(
+      {
+        try {
+          validate_scene(scene);
+        } catch (const InvalidInput& error) {
+          EXPECT_THAT(error.what(), HasSubstr("seat: block vertex 0 lies"));
+          throw;
+        }
+      },
+      InvalidInput);
+  scene.seat = Seat{{{-10, -1}, {10, -1}}};
+  scene.initial.theta = 0.1;
+  EXPECT_THROW(
+      {
+        try {
+          validate_scene(scene);
+        } catch (const InvalidInput& error) {
+          EXPECT_THAT(error.what(), HasSubstr("initial theta must be 0 on a seat"));
+          throw;
+        }
+      },
+      InvalidInput);
+}
+
+}  // namespace
+}  // namespace blockfrag
