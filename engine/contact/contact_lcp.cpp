@@ -1,0 +1,234 @@
+#include "engine/contact/contact_lcp.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+
+#include "engine/errors.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+// Consistent choices whose results differ by less than this many tolerances are the same motion
+// (a statically indeterminate set's force distributions, a tie at a friction cone's edge).
+constexpr double kSameResult = 1e3;
+// More contacts than this would make trying every choice (4^n) too slow to be exact.
+constexpr std::size_t kMaxContacts = 6;
+
+// A force direction in lambda = (lambda_n, lambda_t) of one contact: (1, +mu) and (1, -mu) span
+// the cone of a sticking contact, (1, -s mu) is a slip's.
+struct Column {
+  std::size_t contact;
+  double tangent;  // lambda_t per lambda_n
+};
+
+int slip_sign(ContactState s) {
+  return s == ContactState::slip_positive ? 1 : s == ContactState::slip_negative ? -1 : 0;
+}
+
+std::vector<ContactState> allowed_states(const LcpContact& c) {
+  if (c.forced_slip != 0) {
+    return {c.forced_slip > 0 ? ContactState::slip_positive : ContactState::slip_negative,
+            ContactState::off};
+  }
+  return {ContactState::stick, ContactState::slip_positive, ContactState::slip_negative,
+          ContactState::off};
+}
+
+// The preference order: fewest contacts not sticking, then fewest off, then the contacts' order.
+std::vector<std::vector<ContactState>> choices_in_order(const LcpProblem& p) {
+  std::vector<std::vector<ContactState>> choices{{}};
+  for (const LcpContact& c : p.contacts) {
+    std::vector<std::vector<ContactState>> longer;
+    for (const auto& prefix : choices) {
+      for (const ContactState s : allowed_states(c)) {
+        longer.push_back(prefix);
+        longer.back().push_back(s);
+      }
+    }
+    choices = std::move(longer);
+  }
+  const auto key = [](const std::vector<ContactState>& states) {
+    int not_sticking = 0, off = 0;
+    for (const ContactState s : states) {
+      not_sticking += s != ContactState::stick;
+      off += s == ContactState::off;
+    }
+    return std::pair{not_sticking, off};
+  };
+  std::stable_sort(choices.begin(), choices.end(),
+                   [&](const auto& a, const auto& b) { return key(a) < key(b); });
+  return choices;
+}
+
+class Choice {
+ public:
+  Choice(const LcpProblem& p, const std::vector<ContactState>& states) : p_(p), states_(states) {
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      const ContactState s = states[i];
+      if (s == ContactState::off) continue;
+      rows_.push_back({i, true});
+      if (s == ContactState::stick) {
+        rows_.push_back({i, false});
+        columns_.push_back({i, p.friction});
+        columns_.push_back({i, -p.friction});
+      } else {
+        columns_.push_back({i, -slip_sign(s) * p.friction});
+      }
+    }
+  }
+
+  // The contact forces of this choice, if it is consistent.
+  std::optional<LcpSolution> solve() const {
+    const auto k = static_cast<Eigen::Index>(rows_.size());
+    if (k == 0) return check(Eigen::VectorXd());
+    Eigen::MatrixXd a(k, static_cast<Eigen::Index>(columns_.size()));
+    Eigen::VectorXd d(k);
+    for (Eigen::Index r = 0; r < k; ++r) {
+      const Row& row = rows_[static_cast<std::size_t>(r)];
+      const LcpContact& c = p_.contacts[row.contact];
+      const Eigen::RowVector3d y_row =
+          (row.normal ? c.jn : c.jt).cwiseProduct(p_.inverse_mass.transpose());
+      for (std::size_t j = 0; j < columns_.size(); ++j) {
+        a(r, static_cast<Eigen::Index>(j)) = y_row.dot(generalized(columns_[j]));
+      }
+      d(r) = row.normal ? c.target_n - c.free_n : -c.free_t;
+    }
+    // Each stick brings two rows and two columns, each slip one of each: the system is square.
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
+    if (lu.isInvertible()) return check(lu.solve(d));
+    // Redundant rows (more fixed contact values than the body's three freedoms, as when three
+    // contacts hold a block at rest): first, the body must be able to reach those values at all.
+    Eigen::MatrixXd j(k, 3);
+    for (Eigen::Index r = 0; r < k; ++r) {
+      const Row& row = rows_[static_cast<std::size_t>(r)];
+      j.row(r) = row.normal ? p_.contacts[row.contact].jn : p_.contacts[row.contact].jt;
+    }
+    const Eigen::Vector3d reach = j.colPivHouseholderQr().solve(d);
+    if ((j * reach - d).cwiseAbs().maxCoeff() > p_.tolerance) return std::nullopt;
+    // Then a non-negative solution, if there is one, lies on rank(A) linearly independent columns
+    // (Caratheodory): try those subsets of the cone edges.
+    const std::size_t n = columns_.size();
+    const auto rank = static_cast<int>(lu.rank());
+    for (unsigned mask = 1; mask < (1u << n); ++mask) {
+      if (std::popcount(mask) != rank) continue;
+      Eigen::MatrixXd sub(k, rank);
+      std::vector<Eigen::Index> used;
+      for (std::size_t col = 0; col < n; ++col) {
+        if (mask & (1u << col)) {
+          sub.col(static_cast<Eigen::Index>(used.size())) = a.col(static_cast<Eigen::Index>(col));
+          used.push_back(static_cast<Eigen::Index>(col));
+        }
+      }
+      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(sub);
+      if (qr.rank() != rank) continue;
+      const Eigen::VectorXd part = qr.solve(d);
+      if ((sub * part - d).cwiseAbs().maxCoeff() > p_.tolerance) continue;
+      if (part.minCoeff() < -p_.tolerance) continue;
+      Eigen::VectorXd full = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+      for (std::size_t col = 0; col < used.size(); ++col) {
+        full(used[col]) = part(static_cast<Eigen::Index>(col));
+      }
+      if (auto solution = check(full)) return solution;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  struct Row {
+    std::size_t contact;
+    bool normal;
+  };
+
+  Eigen::Vector3d generalized(const Column& col) const {
+    const LcpContact& c = p_.contacts[col.contact];
+    return c.jn.transpose() + col.tangent * c.jt.transpose();
+  }
+
+  std::optional<LcpSolution> check(const Eigen::VectorXd& amounts) const {
+    const double tol = p_.tolerance;
+    LcpSolution out;
+    out.states = states_;
+    out.normal.assign(states_.size(), 0.0);
+    out.tangent.assign(states_.size(), 0.0);
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    for (std::size_t j = 0; j < columns_.size(); ++j) {
+      // A rounding below zero is zero, so every force lies inside its cone to the last bit.
+      if (amounts(static_cast<Eigen::Index>(j)) < -tol) return std::nullopt;
+      const double amount = std::max(amounts(static_cast<Eigen::Index>(j)), 0.0);
+      out.normal[columns_[j].contact] += amount;
+      out.tangent[columns_[j].contact] += amount * columns_[j].tangent;
+      force += amount * generalized(columns_[j]);
+    }
+    out.change = p_.inverse_mass.cwiseProduct(force);
+    for (std::size_t i = 0; i < states_.size(); ++i) {
+      const LcpContact& c = p_.contacts[i];
+      const double y_n = c.free_n + c.jn.dot(out.change);
+      const double y_t = c.free_t + c.jt.dot(out.change);
+      const int s = slip_sign(states_[i]);
+      switch (states_[i]) {
+        case ContactState::off:
+          if (y_n < c.target_n - tol) return std::nullopt;
+          break;
+        case ContactState::stick:
+          if (std::abs(y_n - c.target_n) > tol || std::abs(y_t) > tol) return std::nullopt;
+          break;
+        default:
+          if (std::abs(y_n - c.target_n) > tol) return std::nullopt;
+          if (c.forced_slip == 0 && (c.strict_slip_start ? s * y_t <= 0.0 : s * y_t < -tol)) {
+            return std::nullopt;
+          }
+      }
+    }
+    return out;
+  }
+
+  const LcpProblem& p_;
+  const std::vector<ContactState>& states_;
+  std::vector<Row> rows_;
+  std::vector<Column> columns_;
+};
+
+double difference(const LcpProblem& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::max({std::abs(a(0) - b(0)), std::abs(a(1) - b(1)), p.length * std::abs(a(2) - b(2))});
+}
+
+}  // namespace
+
+Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction) {
+  // u = (x' - theta' r_y, y' + theta' r_x): d . u = d_x x' + d_y y' + (r x d) theta'.
+  return {direction.x, direction.y, c.r.x * direction.y - c.r.y * direction.x};
+}
+
+LcpSolution solve_contact_lcp(const LcpProblem& p) {
+  if (p.contacts.size() > kMaxContacts) {
+    throw ContractViolation("contact problem: more than 6 contacts at once");
+  }
+  LcpSolution chosen;
+  chosen.states.assign(p.contacts.size(), ContactState::off);
+  chosen.normal.assign(p.contacts.size(), 0.0);
+  chosen.tangent.assign(p.contacts.size(), 0.0);
+  chosen.change.setZero();
+  int consistent = 0;
+  bool differ = false;
+  for (const auto& states : choices_in_order(p)) {
+    const auto solution = Choice(p, states).solve();
+    if (!solution) continue;
+    if (consistent == 0) {
+      chosen = *solution;
+    } else if (difference(p, solution->change, chosen.change) > kSameResult * p.tolerance) {
+      differ = true;
+    }
+    ++consistent;
+  }
+  chosen.consistent_choices = consistent;
+  chosen.determinacy = consistent == 0 ? Determinacy::inconsistent
+                       : differ        ? Determinacy::indeterminate
+                                       : Determinacy::unique;
+  return chosen;
+}
+
+}  // namespace blockfrag

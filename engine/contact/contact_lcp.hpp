@@ -1,0 +1,51 @@
+// The complementarity problem that both the contact forces (engine/contact/planar_contact.hpp)
+// and the simultaneous impacts (engine/contact/planar_impact.hpp) solve, in one form: contact
+// values y (accelerations or velocities, along each contact's n and t) affine in the contact
+// forces (or impulses) lambda, y = free + J Minv J^T lambda, with per contact either
+//   stick:  y_n = target_n, y_t = 0, |lambda_t| <= mu lambda_n
+//   slip s: y_n = target_n, lambda_t = -s mu lambda_n, s y_t >= 0 (> 0 when starting to slip)
+//   off:    lambda = 0, y_n >= target_n
+// with lambda_n >= 0. Solved by trying each choice of states: small sets of contacts (a block
+// touches a seat at a few points) make this exact and let every consistent choice be seen.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "engine/contact/planar_contact.hpp"
+
+namespace blockfrag {
+
+struct LcpContact {
+  Eigen::RowVector3d jn, jt;  // d(y_n)/d(q') and d(y_t)/d(q'), q = (x, y, theta)
+  double free_n, free_t;      // y without contact forces
+  double target_n;            // y_n of an active contact
+  // The contact slips with this sign and may not stick (forces on a slipping contact); 0: free.
+  int forced_slip = 0;
+  // A slip from stick must accelerate its way strictly (forces), or may end at rest (impacts).
+  bool strict_slip_start = true;
+};
+
+struct LcpProblem {
+  std::vector<LcpContact> contacts;
+  Eigen::Vector3d inverse_mass;  // (1, 1, 1 / (I/M))
+  double friction;
+  double tolerance;  // absolute, in y's units
+  double length;     // R: a theta component is compared through R times it
+};
+
+struct LcpSolution {
+  std::vector<ContactState> states;
+  std::vector<double> normal, tangent;  // lambda at each contact
+  Eigen::Vector3d change;               // Minv J^T lambda: the body's accelerations or jump
+  Determinacy determinacy = Determinacy::inconsistent;
+  int consistent_choices = 0;
+};
+
+LcpSolution solve_contact_lcp(const LcpProblem& problem);
+
+// y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
+Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction);
+
+}  // namespace blockfrag

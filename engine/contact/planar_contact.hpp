@@ -1,0 +1,86 @@
+// A rigid block touching a fixed seat (engine/scene/seat.hpp) at any number of points at once: the
+// contact forces as a linear complementarity problem, each contact unilateral with Coulomb
+// friction (docs/physics.md, "Contact on a seat"). Per unit mass, as the rest of the engine.
+#pragma once
+
+#include <vector>
+
+#include "engine/contact/impact.hpp"
+#include "engine/scene/block_geometry.hpp"
+
+namespace blockfrag {
+
+// Which body the contact's normal belongs to: a block vertex on a seat segment (the segment's
+// normal, fixed) or a seat point on a block edge (the edge's normal, turning with the block, which
+// adds the term -2 omega u_t to the normal acceleration).
+enum class ContactKind { block_vertex, seat_point };
+
+// One contact. The seat pushes the block along `normal` (a unit vector); the contact's tangent is
+// the normal turned clockwise, t = (n_y, -n_x): +x on flat ground.
+struct PlanarContact {
+  Vec2 r;       // the contact point minus the block's centre of mass, world frame, m
+  Vec2 normal;  // unit
+  ContactKind kind = ContactKind::block_vertex;
+};
+
+inline Vec2 contact_tangent(const PlanarContact& c) { return {c.normal.y, -c.normal.x}; }
+
+// The velocity of the block's material point at the contact, in the contact's (t, n) components.
+struct ContactVelocity {
+  double tangent, normal;
+};
+ContactVelocity contact_velocity(const PlanarContact& c, const RigidVelocity& v);
+
+// The block's accelerations: centre of mass (x'', y'') and theta''.
+struct BodyAcceleration {
+  double x_dd, y_dd, theta_dd;
+};
+
+// The contact's accelerations for given body accelerations: the normal one is the gap's second
+// derivative (> 0 opens it), the tangential one the material point's along t.
+struct ContactAcceleration {
+  double tangent, normal;
+};
+ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelocity& v,
+                                         const BodyAcceleration& a);
+
+// What a contact does: sticks, slips along +t or -t (friction -s mu V), or carries no force.
+enum class ContactState { stick, slip_positive, slip_negative, off };
+
+// unique: every consistent choice of contact states gives the same accelerations (or velocities);
+// indeterminate: consistent choices disagree (the Painleve family: the chosen one follows the
+// preference order below); inconsistent: no choice is consistent.
+enum class Determinacy { unique, indeterminate, inconsistent };
+
+struct PlanarForcesInput {
+  std::vector<PlanarContact> contacts;  // touching, normal velocity zero
+  RigidVelocity velocity;
+  double inertia_per_mass;  // I/M, m^2
+  Vec2 applied;             // force per unit mass at the centre of mass: (lambda g, -g) on a ground
+  double friction;          // mu
+  // A contact whose |u_t| exceeds this slips (its friction is -sign(u_t) mu V): m/s.
+  double slip_velocity;
+  double g;       // scales the tolerances (accelerations are compared to 1e-9 g)
+  double length;  // R, m: theta'' is compared through R theta''
+};
+
+struct PlanarForces {
+  std::vector<ContactState> states;
+  std::vector<double> normal, tangent;  // V/M and F/M at each contact, along n and t
+  BodyAcceleration acceleration;
+  Determinacy determinacy = Determinacy::unique;
+  int consistent_choices = 0;
+};
+
+// Every choice of contact states (stick, slip either way, off; a slipping contact slips its way
+// or is off) is tried: the forces that keep the active contacts' normal accelerations at 0 and
+// the sticking ones' tangential accelerations at 0, each force inside its Coulomb cone; an off
+// contact must not accelerate into the seat, a contact starting to slip must accelerate the way
+// it slips. Of the consistent choices the first in this order is taken: fewest contacts not
+// sticking, then fewest off (a corner sticks before it slips and slips before it lifts off, as
+// engine/contact/contact_resolution.hpp chooses for one corner), then by the contacts' order. A
+// statically indeterminate set (three contacts holding a block at rest) gets one of its force
+// distributions. Inconsistent: no forces (the free motion), reported, never silent.
+PlanarForces resolve_contact_forces(const PlanarForcesInput& in);
+
+}  // namespace blockfrag
