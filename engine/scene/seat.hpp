@@ -38,7 +38,10 @@ std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
 
 // The contacts of the block at rest: each block vertex within `tolerance` of a seat segment (with
 // that segment's upward normal; a vertex at a seat point gets both segments' normals) and each seat
-// point within `tolerance` of a block edge (with the edge's inward normal).
+// point within `tolerance` of a block edge (with the edge's inward normal). Where a block vertex
+// meets a seat point (the type B block's heel and fold) this lists the normals of all four edges
+// there, not all of which a contact law would use (the seat's end under the heel does not push
+// on the upstream face): for the weight check a permissive reading of such a contact.
 std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
                                        const std::vector<Vertex>& block, double tolerance);
 
