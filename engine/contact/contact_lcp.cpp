@@ -1,10 +1,12 @@
 #include "engine/contact/contact_lcp.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -53,18 +55,33 @@ std::vector<std::vector<ContactState>> choices_in_order(const LcpProblem& p) {
     }
     choices = std::move(longer);
   }
-  const auto key = [](const std::vector<ContactState>& states) {
+  // Sorted on (not sticking, off, position in the list): the position as the last key keeps the
+  // contacts' order among equals as stable_sort would, without its temporary buffer, whose
+  // allocation AddressSanitizer reports as mismatched with Debian 12's libstdc++.
+  const auto key = [&](std::size_t i) {
     int not_sticking = 0, off = 0;
-    for (const ContactState s : states) {
+    for (const ContactState s : choices[i]) {
       not_sticking += s != ContactState::stick;
       off += s == ContactState::off;
     }
-    return std::pair{not_sticking, off};
+    return std::tuple{not_sticking, off, i};
   };
-  std::stable_sort(choices.begin(), choices.end(),
-                   [&](const auto& a, const auto& b) { return key(a) < key(b); });
-  return choices;
+  std::vector<std::size_t> order(choices.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  std::vector<std::vector<ContactState>> sorted;
+  sorted.reserve(choices.size());
+  for (const std::size_t i : order) sorted.push_back(std::move(choices[i]));
+  return sorted;
 }
+
+// At most kMaxContacts contacts: two rows and two columns each. Matrices of this bounded size live
+// on the stack: trying every choice allocates nothing per choice.
+constexpr int kMaxSize = 2 * static_cast<int>(kMaxContacts);
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSize, kMaxSize>;
+using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSize, 1>;
+using Jacobian = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, kMaxSize, 3>;
 
 class Choice {
  public:
@@ -72,68 +89,65 @@ class Choice {
     for (std::size_t i = 0; i < states.size(); ++i) {
       const ContactState s = states[i];
       if (s == ContactState::off) continue;
-      rows_.push_back({i, true});
+      rows_[rows_count_++] = {i, true};
       if (s == ContactState::stick) {
-        rows_.push_back({i, false});
-        columns_.push_back({i, p.friction});
-        columns_.push_back({i, -p.friction});
+        rows_[rows_count_++] = {i, false};
+        columns_[columns_count_++] = {i, p.friction};
+        columns_[columns_count_++] = {i, -p.friction};
       } else {
-        columns_.push_back({i, -slip_sign(s) * p.friction});
+        columns_[columns_count_++] = {i, -slip_sign(s) * p.friction};
       }
     }
   }
 
   // The contact forces of this choice, if it is consistent.
   std::optional<LcpSolution> solve() const {
-    const auto k = static_cast<Eigen::Index>(rows_.size());
-    if (k == 0) return check(Eigen::VectorXd());
-    Eigen::MatrixXd a(k, static_cast<Eigen::Index>(columns_.size()));
-    Eigen::VectorXd d(k);
+    const Eigen::Index k = rows_count_, n = columns_count_;
+    if (k == 0) return check(Vector());
+    Matrix a(k, n);
+    Vector d(k);
+    Jacobian j(k, 3);
     for (Eigen::Index r = 0; r < k; ++r) {
       const Row& row = rows_[static_cast<std::size_t>(r)];
       const LcpContact& c = p_.contacts[row.contact];
-      const Eigen::RowVector3d y_row =
-          (row.normal ? c.jn : c.jt).cwiseProduct(p_.inverse_mass.transpose());
-      for (std::size_t j = 0; j < columns_.size(); ++j) {
-        a(r, static_cast<Eigen::Index>(j)) = y_row.dot(generalized(columns_[j]));
+      j.row(r) = row.normal ? c.jn : c.jt;
+      const Eigen::RowVector3d y_row = j.row(r).cwiseProduct(p_.inverse_mass.transpose());
+      for (Eigen::Index col = 0; col < n; ++col) {
+        a(r, col) = y_row.dot(generalized(columns_[static_cast<std::size_t>(col)]));
       }
       d(r) = row.normal ? c.target_n - c.free_n : -c.free_t;
     }
-    // Each stick brings two rows and two columns, each slip one of each: the system is square.
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
-    if (lu.isInvertible()) return check(lu.solve(d));
-    // Redundant rows (more fixed contact values than the body's three freedoms, as when three
-    // contacts hold a block at rest): first, the body must be able to reach those values at all.
-    Eigen::MatrixXd j(k, 3);
-    for (Eigen::Index r = 0; r < k; ++r) {
-      const Row& row = rows_[static_cast<std::size_t>(r)];
-      j.row(r) = row.normal ? p_.contacts[row.contact].jn : p_.contacts[row.contact].jt;
+    // More fixed contact values than the body's three freedoms (as when three contacts hold a
+    // block at rest): the body must be able to reach them at all. Checked first, as it rules out
+    // most such choices at the cost of one small least-squares solve.
+    if (k > 3) {
+      const Eigen::Vector3d reach = j.colPivHouseholderQr().solve(d);
+      if ((j * reach - d).cwiseAbs().maxCoeff() > p_.tolerance) return std::nullopt;
     }
-    const Eigen::Vector3d reach = j.colPivHouseholderQr().solve(d);
-    if ((j * reach - d).cwiseAbs().maxCoeff() > p_.tolerance) return std::nullopt;
-    // Then a non-negative solution, if there is one, lies on rank(A) linearly independent columns
-    // (Caratheodory): try those subsets of the cone edges.
-    const std::size_t n = columns_.size();
+    // Each stick brings two rows and two columns, each slip one of each: the system is square.
+    const Eigen::FullPivLU<Matrix> lu(a);
+    if (lu.isInvertible()) return check(lu.solve(d));
+    // Redundant rows: a non-negative solution, if there is one, lies on rank(A) linearly
+    // independent columns (Caratheodory): try those subsets of the cone edges.
     const auto rank = static_cast<int>(lu.rank());
     for (unsigned mask = 1; mask < (1u << n); ++mask) {
       if (std::popcount(mask) != rank) continue;
-      Eigen::MatrixXd sub(k, rank);
-      std::vector<Eigen::Index> used;
-      for (std::size_t col = 0; col < n; ++col) {
+      Matrix sub(k, rank);
+      std::array<Eigen::Index, kMaxSize> used{};
+      int count = 0;
+      for (Eigen::Index col = 0; col < n; ++col) {
         if (mask & (1u << col)) {
-          sub.col(static_cast<Eigen::Index>(used.size())) = a.col(static_cast<Eigen::Index>(col));
-          used.push_back(static_cast<Eigen::Index>(col));
+          sub.col(count) = a.col(col);
+          used[static_cast<std::size_t>(count++)] = col;
         }
       }
-      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(sub);
+      const Eigen::ColPivHouseholderQR<Matrix> qr(sub);
       if (qr.rank() != rank) continue;
-      const Eigen::VectorXd part = qr.solve(d);
+      const Vector part = qr.solve(d);
       if ((sub * part - d).cwiseAbs().maxCoeff() > p_.tolerance) continue;
       if (part.minCoeff() < -p_.tolerance) continue;
-      Eigen::VectorXd full = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-      for (std::size_t col = 0; col < used.size(); ++col) {
-        full(used[col]) = part(static_cast<Eigen::Index>(col));
-      }
+      Vector full = Vector::Zero(n);
+      for (int col = 0; col < count; ++col) full(used[static_cast<std::size_t>(col)]) = part(col);
       if (auto solution = check(full)) return solution;
     }
     return std::nullopt;
@@ -150,26 +164,18 @@ class Choice {
     return c.jn.transpose() + col.tangent * c.jt.transpose();
   }
 
-  std::optional<LcpSolution> check(const Eigen::VectorXd& amounts) const {
+  std::optional<LcpSolution> check(const Vector& amounts) const {
     const double tol = p_.tolerance;
-    LcpSolution out;
-    out.states = states_;
-    out.normal.assign(states_.size(), 0.0);
-    out.tangent.assign(states_.size(), 0.0);
     Eigen::Vector3d force = Eigen::Vector3d::Zero();
-    for (std::size_t j = 0; j < columns_.size(); ++j) {
-      // A rounding below zero is zero, so every force lies inside its cone to the last bit.
-      if (amounts(static_cast<Eigen::Index>(j)) < -tol) return std::nullopt;
-      const double amount = std::max(amounts(static_cast<Eigen::Index>(j)), 0.0);
-      out.normal[columns_[j].contact] += amount;
-      out.tangent[columns_[j].contact] += amount * columns_[j].tangent;
-      force += amount * generalized(columns_[j]);
+    for (int col = 0; col < columns_count_; ++col) {
+      if (amounts(col) < -tol) return std::nullopt;
+      force += std::max(amounts(col), 0.0) * generalized(columns_[static_cast<std::size_t>(col)]);
     }
-    out.change = p_.inverse_mass.cwiseProduct(force);
+    const Eigen::Vector3d change = p_.inverse_mass.cwiseProduct(force);
     for (std::size_t i = 0; i < states_.size(); ++i) {
       const LcpContact& c = p_.contacts[i];
-      const double y_n = c.free_n + c.jn.dot(out.change);
-      const double y_t = c.free_t + c.jt.dot(out.change);
+      const double y_n = c.free_n + c.jn.dot(change);
+      const double y_t = c.free_t + c.jt.dot(change);
       const int s = slip_sign(states_[i]);
       switch (states_[i]) {
         case ContactState::off:
@@ -185,13 +191,26 @@ class Choice {
           }
       }
     }
+    LcpSolution out;
+    out.states = states_;
+    out.normal.assign(states_.size(), 0.0);
+    out.tangent.assign(states_.size(), 0.0);
+    out.change = change;
+    for (int col = 0; col < columns_count_; ++col) {
+      // A rounding below zero is zero, so every force lies inside its cone to the last bit.
+      const double amount = std::max(amounts(col), 0.0);
+      const Column& column = columns_[static_cast<std::size_t>(col)];
+      out.normal[column.contact] += amount;
+      out.tangent[column.contact] += amount * column.tangent;
+    }
     return out;
   }
 
   const LcpProblem& p_;
   const std::vector<ContactState>& states_;
-  std::vector<Row> rows_;
-  std::vector<Column> columns_;
+  std::array<Row, kMaxSize> rows_{};
+  std::array<Column, kMaxSize> columns_{};
+  int rows_count_ = 0, columns_count_ = 0;
 };
 
 double difference(const LcpProblem& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {

@@ -12,7 +12,7 @@ namespace {
 
 // Relative to the fastest contact speed: velocities this close count as equal.
 constexpr double kImpactTolerance = 1e-9;
-constexpr int kRestitutionHalvings = 50;
+constexpr int kRestitutionHalvings = 30;
 
 double kinetic(const RigidVelocity& v, double k2) {
   return 0.5 * (v.vx * v.vx + v.vy * v.vy + k2 * v.omega * v.omega);

@@ -107,13 +107,13 @@ TEST(PlanarImpact, SimultaneousLawOnOneContactAgreesWithThePapersLaw) {
   EXPECT_GT(compared, 3000);
 }
 
-// Random impacts at 2 to 4 contacts at once: kinetic energy never grows, no contact leaves
-// approaching, every impulse is in its cone.
+// Random impacts at 2 to 4 contacts at once (4,000: about a second, 16 s under the sanitizers):
+// kinetic energy never grows, no contact leaves approaching, every impulse is in its cone.
 TEST(PlanarImpact, RandomMultiContactImpactsNeverCreateEnergy) {
   RandomImpact make;
   double largest_gain = -1.0;
   int capped = 0, impacts = 0, not_unique = 0;
-  for (int trial = 0; trial < 10000; ++trial) {
+  for (int trial = 0; trial < 4000; ++trial) {
     const int count = 2 + static_cast<int>(3 * make.unit(make.random));
     std::vector<PlanarContact> contacts;
     for (int i = 0; i < count; ++i) contacts.push_back(make.contact());
@@ -144,12 +144,13 @@ TEST(PlanarImpact, RandomMultiContactImpactsNeverCreateEnergy) {
       EXPECT_LE(std::abs(impact.tangent[i]), mu * impact.normal[i] * (1 + 1e-12) + 1e-12);
     }
   }
-  EXPECT_GT(impacts, 9000);
+  EXPECT_GT(impacts, 3600);
   // The cap is exercised, and so the test would see a law that creates energy.
   EXPECT_GT(capped, 10);
   char gain[32];
   std::snprintf(gain, sizeof gain, "%.3g", largest_gain);
   RecordProperty("largest_relative_gain", gain);
+  RecordProperty("impacts", impacts);
   RecordProperty("capped", capped);
   RecordProperty("not_unique", not_unique);
 }
