@@ -12,8 +12,9 @@
 //                     {"name": "...", "type": "max_rotation", "theta_over_alpha": 0.5},
 //                     {"name": "...", "type": "residual_slide", "threshold_m": 0.05}],
 //    "seed": 1, "output": "study.h5", "checkpoint_interval_s": 60}
-// Each input's distribution must lie inside its parameter's domain (engine/scene/parameter_domains.hpp) or be
-// truncated to it; the direction input (default +1) gives the motion's sign.
+// Each input's distribution must lie inside its parameter's domain
+// (engine/scene/parameter_domains.hpp) or be truncated to it; the direction input (default +1)
+// gives the motion's sign.
 //
 // Every error points at its value (`study.json: /intensity_measure/levels/0: must be in (0, 1000]
 // (got -0.1)`), all are reported at once, and every cross-field rule is checked before any work.

@@ -12,7 +12,8 @@ source "$(dirname "$0")/../support/script_test.sh"
 cd "$work" || exit 1
 
 # write_spectrum FILE: the paper's block under one-cycle cosine pulses around its own (T = 2 s is
-# omega_p / p = 1.2247), 24 x 40 points, bisected to 1e-6, a checkpoint every 0.02 s.
+# omega_p / p = 1.2247), 24 x 40 points, bisected to 1e-6, a checkpoint every 2 ms (so that even a
+# bisection round of a few milliseconds writes one, and a kill can land inside it).
 write_spectrum() {
   cat >"$1" <<JSON
 {
@@ -23,7 +24,7 @@ write_spectrum() {
   "amplitude_ratio": {"from": 1.0, "to": 3.0, "count": 40},
   "bisection": {"tolerance": 1e-6},
   "output": "s.h5",
-  "checkpoint_interval_s": 0.02
+  "checkpoint_interval_s": 0.002
 }
 JSON
 }
@@ -73,12 +74,12 @@ code=$?
   pass || fail "a finished spectrum run again: exit $code, $(cat r1/again.err)"
 
 # --- SIGKILL in each phase, then resume ------------------------------------------------------------
-# Each checkpoint write held 0.05 s (the test hook), so every phase lasts a while.
+# Each checkpoint write held 0.1 s (the test hook), so every phase lasts a while.
 mkdir killed
 write_spectrum killed/s.json
 cd killed || exit 1
 start_job() {
-  BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=0.05 mpirun -n 2 --oversubscribe "$BLOCKFRAG" spectrum s.json 2>>job.err &
+  BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=0.1 mpirun -n 2 --oversubscribe "$BLOCKFRAG" spectrum s.json 2>>job.err &
   job=$!
 }
 # wait_for FILE: until it exists or the job ends.
@@ -108,7 +109,6 @@ kill_job
 [[ $landed -eq 1 && -e s.h5.bisection && ! -e s.h5 ]] && pass || fail "the second kill missed the bisection"
 start_job
 wait_for s.h5.round.checkpoint
-sleep 0.3
 kill_job
 [[ $landed -eq 1 && ! -e s.h5 ]] && pass || fail "the third kill missed the bisection"
 start_job
