@@ -25,7 +25,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const nlohmann::json document = parse_json_text(text, source);
     if (!fuzz::files_stay_inside(document)) return -1;  // not kept in the corpus
     Scene scene = scene_from_json(document, source);
-    scene.duration = std::min(scene.duration, kMaxDuration);
+    // A scene without a duration runs until it settles: cap it like the others.
+    scene.duration = std::min(scene.duration.value_or(kMaxDuration), kMaxDuration);
     scene.solver.max_steps = std::min(scene.solver.max_steps, kMaxBudget);
     scene.solver.max_events = std::min(scene.solver.max_events, kMaxBudget);
     simulate(scene);
