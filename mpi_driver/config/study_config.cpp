@@ -267,9 +267,10 @@ json limit_state_to_json(const LimitState& state) {
 void read_scene(const json& value, const std::string& source, ConfigErrors& errors,
                 StudyConfig& config, bool& valid) {
   json scene = value;
-  const bool suite_given = value.is_object() && value.contains("ground_motion") &&
-                           value["ground_motion"].is_object() &&
-                           value["ground_motion"].value("type", "") == "record_suite";
+  // Any other type, a number included, is the scene reader's to judge.
+  const bool suite_given =
+      value.is_object() && value.contains("ground_motion") && value["ground_motion"].is_object() &&
+      value["ground_motion"].contains("type") && value["ground_motion"]["type"] == "record_suite";
   if (suite_given) {
     ObjectReader reader(value["ground_motion"], JsonPointer("/scene/ground_motion"), errors);
     reader.required_choice("type", {"record_suite"});
