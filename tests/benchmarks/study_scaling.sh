@@ -18,7 +18,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROO
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 study="$source_dir/configs/example_study.json"
-sed -e 's/"checkpoint_interval_s": [0-9.e+]*/"checkpoint_interval_s": 1e9/' "$study" >"$work/none.json"
+sed -e 's/"checkpoint_interval_s": [0-9.e+]*/"checkpoint_interval_s": 1e6/' "$study" >"$work/none.json"
 sed -e 's/"checkpoint_interval_s": [0-9.e+]*/"checkpoint_interval_s": 0.01/' "$study" >"$work/often.json"
 sed -e 's/"checkpoint_interval_s": [0-9.e+]*/"checkpoint_interval_s": 1/' "$study" >"$work/second.json"
 
