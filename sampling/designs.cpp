@@ -89,9 +89,11 @@ std::uint32_t LatinHypercubeLevel::stratum(std::size_t dimension, std::uint32_t 
 }
 
 double LatinHypercubeLevel::uniform(std::size_t dimension, std::uint32_t j) const {
-  return latin_hypercube_uniform_in_stratum(seed_, streams_[dimension],
-                                            level_ * samples_per_level_ + j, stratum(dimension, j),
-                                            samples_per_level_);
+  // stratum() checks dimension and j, so it runs before streams_ is indexed (the order in which a
+  // call's arguments are evaluated is the compiler's).
+  const std::uint32_t in_stratum = stratum(dimension, j);
+  return latin_hypercube_uniform_in_stratum(
+      seed_, streams_[dimension], level_ * samples_per_level_ + j, in_stratum, samples_per_level_);
 }
 
 }  // namespace blockfrag
