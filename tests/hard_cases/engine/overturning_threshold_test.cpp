@@ -22,7 +22,9 @@ struct Threshold {
 class RectangularPulseThreshold : public ::testing::TestWithParam<std::tuple<Threshold, Method>> {};
 
 TEST_P(RectangularPulseThreshold, VerdictFlipsOnceAtTheNonlinearThreshold) {
-  const auto [threshold, method] = GetParam();
+  // Copies, not structured bindings: clang 14 cannot capture those in the lambda below.
+  const Threshold threshold = std::get<0>(GetParam());
+  const Method method = std::get<1>(GetParam());
   const double a = 0.5, b = 1.0, beta = a / b, p = housner_p(a, b);
   const double t1 = threshold.p_t1 / p;
   // mu high enough for pure rocking at these amplitudes; a long run lets a late overturn show.
