@@ -4,7 +4,8 @@
 # repository is not modified. Fails if any target finds a crash, a sanitizer report, an exception
 # other than InvalidInput, a hang (-timeout=10) or a huge allocation (-rss_limit_mb=2048).
 #   tests/fuzz/run_fuzzers.sh SECONDS [TARGET...]     e.g. 30, or 600 scene_json_fuzzer
-# Environment: BUILD_DIR (default build-fuzz); JOBS, targets run at once (default 1; each uses one
+# Environment: BUILD_DIR (default build-fuzz; a folder configured with BLOCKFRAG_BUILD_FUZZERS is
+# built as it is configured); JOBS, targets run at once (default 1; each uses one
 # core); FUZZ_WORK, a folder for the corpora, logs and crash inputs (default a temporary folder,
 # removed unless a target failed); FUZZ_ARGS, more libFuzzer options.
 # The corpus a run grows is FUZZ_WORK/corpus/TARGET; a crash input is FUZZ_WORK/artifacts/TARGET/.
@@ -15,9 +16,13 @@ shift
 build=${BUILD_DIR:-build-fuzz}
 jobs=${JOBS:-1}
 
-# The fuzz build: only the config library (engine, sampling, JSON) and the fuzz targets, at -O1.
-CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O1 \
-  -DBLOCKFRAG_BUILD_FUZZERS=ON -DBLOCKFRAG_BUILD_TESTS=OFF -DBLOCKFRAG_BUILD_DRIVER=OFF -DBLOCKFRAG_WERROR=ON >/dev/null
+# A build folder configured with BLOCKFRAG_BUILD_FUZZERS (CI's sanitized build, which also builds
+# the tests) is used as it is; otherwise the fuzz build: only the config library (engine, sampling,
+# JSON) and the fuzz targets, at -O1.
+if ! grep -qs '^BLOCKFRAG_BUILD_FUZZERS:BOOL=ON$' "$build/CMakeCache.txt"; then
+  CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE=-O1 \
+    -DBLOCKFRAG_BUILD_FUZZERS=ON -DBLOCKFRAG_BUILD_TESTS=OFF -DBLOCKFRAG_BUILD_DRIVER=OFF -DBLOCKFRAG_WERROR=ON >/dev/null
+fi
 cmake --build "$build" --target blockfrag_fuzzers -j "$(nproc)"
 
 targets=("$@")
