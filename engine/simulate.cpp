@@ -65,6 +65,7 @@ class Simulation {
         motion_(scene_motion(scene)),
         vertical_(scene_vertical_motion(scene)),
         model_(choose_model(scene, motion_, geometry_)),
+        block_time_(std::sqrt(geometry_.size() / scene.g)),
         excitation_end_(std::max(motion_.end_of_motion(), vertical_.end_of_motion())),
         resolver_(geometry_, scene.contact, scene.g),
         housner_(geometry_, scene.effects.automatic || scene.effects.impact, scene.g),
@@ -138,6 +139,7 @@ class Simulation {
   GroundMotionPieces motion_;
   GroundMotionPieces vertical_;  // lambda_v; zero throughout when the scene has none
   Model model_;
+  double block_time_;  // s: sqrt(R/g), asked for at every step cap and flight
   double
       excitation_end_;  // s: the ground, the vertical motion and the dam crest are still after it
   ContactResolver resolver_;
@@ -243,8 +245,8 @@ void Simulation::check_budget() {
 }
 
 double Simulation::step_cap(const MotionPiece& piece) const {
-  const double block_time = std::sqrt(geometry_.size() / scene_.g);
-  return std::min({kMaxStepOverBlockTime * block_time, piece.time_scale() / kStepsPerPieceTimeScale,
+  return std::min({kMaxStepOverBlockTime * block_time_,
+                   piece.time_scale() / kStepsPerPieceTimeScale,
                    vertical_.piece_at(t_).time_scale() / kStepsPerPieceTimeScale});
 }
 
@@ -325,7 +327,7 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
   const double g = scene_.g;
   const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
   const double t0 = t_;
-  const double min_step = kFlightMinStep * std::sqrt(geometry_.size() / g);
+  const double min_step = kFlightMinStep * block_time_;
   // The flight ends where it lands or overturns. When this stretch ends the run, both are looked
   // for up to where the centre of mass would reach the ground in free fall (a corner lands before
   // that), not up to the run's end: where a run ends then cannot move a landing it reaches, and a

@@ -37,34 +37,75 @@ inline double kernel_cos(double x) {
   return v + (((1.0 - v) - half_z) + z * r);
 }
 
-}  // namespace sine_cosine_detail
+// x = n pi/2 + y with |y| <= pi/4, for pi/4 < |x| < 1e5. Adding and subtracting 1.5 * 2^52
+// rounds to the nearest integer (std::nearbyint is a library call without SSE4.1). pi/2's head has
+// 33 bits, so n times it is exact for |n| < 2^20; its tail leaves y within 1e-21 of the exact
+// reduction. quadrant is n mod 4.
+struct Reduced {
+  int quadrant;
+  double y;
+};
 
-inline SineCosine sine_cosine(double x) {
-  using sine_cosine_detail::kernel_cos;
-  using sine_cosine_detail::kernel_sin;
-  constexpr double kQuarterPi = 0.785398163397448279;
-  // Below 2^-27, sin x rounds to x and cos x to 1 (and -0 keeps its sign, which the
-  // polynomial's x + 0 would not).
-  if (std::abs(x) < 0x1p-27) return {x, 1.0};
-  if (std::abs(x) <= kQuarterPi) return {kernel_sin(x), kernel_cos(x)};  // a block's tilt
-  // Beyond this the two-part reduction below loses precision; the C library reduces exactly.
-  // Also NaN and infinities.
-  if (!(std::abs(x) < 1e5)) return {std::sin(x), std::cos(x)};
-  // x = n pi/2 + y with |y| <= pi/4. Adding and subtracting 1.5 * 2^52 rounds to the nearest
-  // integer (std::nearbyint is a library call without SSE4.1). pi/2's head has 33 bits, so
-  // n times it is exact for |n| < 2^20; its tail leaves y within 1e-21 of the exact reduction.
+inline Reduced reduce(double x) {
   constexpr double kTwoOverPi = 6.36619772367581382433e-01;
   constexpr double kRound = 6755399441055744.0;
   constexpr double kHalfPiHead = 1.57079632673412561417e+00;
   constexpr double kHalfPiTail = 6.07710050650619224932e-11;
   const double n = (x * kTwoOverPi + kRound) - kRound;
-  const double y = (x - n * kHalfPiHead) - n * kHalfPiTail;
-  const double s = kernel_sin(y), c = kernel_cos(y);
-  switch (static_cast<int>(n) & 3) {
+  return {static_cast<int>(n) & 3, (x - n * kHalfPiHead) - n * kHalfPiTail};
+}
+
+constexpr double kQuarterPi = 0.785398163397448279;
+// Below 2^-27, sin x rounds to x and cos x to 1 (and -0 keeps its sign, which the polynomial's
+// x + 0 would not).
+constexpr double kTiny = 0x1p-27;
+// Beyond this the two-part reduction loses precision; the C library reduces exactly.
+constexpr double kLargest = 1e5;
+
+}  // namespace sine_cosine_detail
+
+inline SineCosine sine_cosine(double x) {
+  using namespace sine_cosine_detail;
+  if (std::abs(x) < kTiny) return {x, 1.0};
+  if (std::abs(x) <= kQuarterPi) return {kernel_sin(x), kernel_cos(x)};  // a block's tilt
+  if (!(std::abs(x) < kLargest)) return {std::sin(x), std::cos(x)};      // also NaN and infinities
+  const Reduced r = reduce(x);
+  const double s = kernel_sin(r.y), c = kernel_cos(r.y);
+  switch (r.quadrant) {
     case 0: return {s, c};
     case 1: return {c, -s};
     case 2: return {-s, -c};
     default: return {-c, s};
+  }
+}
+
+// sine_cosine(x).cos and .sin to the bit, each alone: a sinusoidal pulse's lambda needs only one,
+// and each quadrant only one of the two kernels.
+inline double cosine(double x) {
+  using namespace sine_cosine_detail;
+  if (std::abs(x) < kTiny) return 1.0;
+  if (std::abs(x) <= kQuarterPi) return kernel_cos(x);
+  if (!(std::abs(x) < kLargest)) return std::cos(x);
+  const Reduced r = reduce(x);
+  switch (r.quadrant) {
+    case 0: return kernel_cos(r.y);
+    case 1: return -kernel_sin(r.y);
+    case 2: return -kernel_cos(r.y);
+    default: return kernel_sin(r.y);
+  }
+}
+
+inline double sine(double x) {
+  using namespace sine_cosine_detail;
+  if (std::abs(x) < kTiny) return x;
+  if (std::abs(x) <= kQuarterPi) return kernel_sin(x);
+  if (!(std::abs(x) < kLargest)) return std::sin(x);
+  const Reduced r = reduce(x);
+  switch (r.quadrant) {
+    case 0: return kernel_sin(r.y);
+    case 1: return kernel_cos(r.y);
+    case 2: return -kernel_sin(r.y);
+    default: return -kernel_cos(r.y);
   }
 }
 

@@ -127,6 +127,14 @@ void require(bool ok, const char* what, double value) {
 }
 
 void validate(const CornerImpactInput& in) {
+  // Every impact of a chattering block comes here: one test passes the valid inputs, and the
+  // checks that name the bad value run only when it fails (a sum of finite values may overflow,
+  // but then they all pass).
+  const double sum = in.mass + in.inertia + in.friction + in.r_x + in.r_y + in.u_x + in.u_y;
+  if (in.mass > 0.0 && in.inertia > 0.0 && in.friction >= 0.0 && in.restitution >= 0.0 &&
+      in.restitution <= 1.0 && std::isfinite(sum)) {
+    return;
+  }
   require(std::isfinite(in.mass) && in.mass > 0.0, "mass must be positive", in.mass);
   require(std::isfinite(in.inertia) && in.inertia > 0.0, "inertia must be positive", in.inertia);
   require(std::isfinite(in.friction) && in.friction >= 0.0, "friction must be >= 0", in.friction);
@@ -192,20 +200,6 @@ std::optional<CornerImpulse> painleve_stick_impulse(const CornerImpactInput& in)
       in.inertia / in.mass + in.r_x * in.r_x + s * in.friction * in.r_x * in.r_y;
   if (condition > 0.0) return std::nullopt;
   return stick_jump(Compliance(in), in.u_x);
-}
-
-CornerVelocity corner_velocity(const RigidVelocity& v, double r_x, double r_y) {
-  return {v.vx - v.omega * r_y, v.vy + v.omega * r_x};
-}
-
-RigidVelocity apply_impulse(const RigidVelocity& v, double mass, double inertia, double r_x,
-                            double r_y, const CornerImpulse& impulse) {
-  return {v.vx + impulse.p_x / mass, v.vy + impulse.p_y / mass,
-          v.omega + (r_x * impulse.p_y - r_y * impulse.p_x) / inertia};
-}
-
-double kinetic_energy(const RigidVelocity& v, double mass, double inertia) {
-  return 0.5 * mass * (v.vx * v.vx + v.vy * v.vy) + 0.5 * inertia * v.omega * v.omega;
 }
 
 }  // namespace blockfrag

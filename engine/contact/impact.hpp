@@ -52,9 +52,19 @@ struct CornerVelocity {
   double u_x, u_y;
 };
 
-CornerVelocity corner_velocity(const RigidVelocity& v, double r_x, double r_y);
-RigidVelocity apply_impulse(const RigidVelocity& v, double mass, double inertia, double r_x,
-                            double r_y, const CornerImpulse& impulse);
-double kinetic_energy(const RigidVelocity& v, double mass, double inertia);
+// Inline: the contact resolution calls these at every impact of a chattering block.
+inline CornerVelocity corner_velocity(const RigidVelocity& v, double r_x, double r_y) {
+  return {v.vx - v.omega * r_y, v.vy + v.omega * r_x};
+}
+
+inline RigidVelocity apply_impulse(const RigidVelocity& v, double mass, double inertia, double r_x,
+                                   double r_y, const CornerImpulse& impulse) {
+  return {v.vx + impulse.p_x / mass, v.vy + impulse.p_y / mass,
+          v.omega + (r_x * impulse.p_y - r_y * impulse.p_x) / inertia};
+}
+
+inline double kinetic_energy(const RigidVelocity& v, double mass, double inertia) {
+  return 0.5 * mass * (v.vx * v.vx + v.vy * v.vy) + 0.5 * inertia * v.omega * v.omega;
+}
 
 }  // namespace blockfrag

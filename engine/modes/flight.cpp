@@ -81,10 +81,15 @@ double earliest_fall(double depth, double rate, double bound) {
   return rate > 0 ? (rate + root) / bound : 2.0 * depth / (root - rate);
 }
 
-// One corner's first landing in (0, tau_max], from `now`, its sample at the start.
-std::optional<double> corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bound,
-                                     double tau_max, double min_step, double time_tolerance,
-                                     double height_noise, double sink_allowance) {
+// No landing: a plain double, not std::optional, keeps corner_landing's result in a register (the
+// optional's value and flag went through memory on every flight).
+constexpr double kNoLanding = std::numeric_limits<double>::infinity();
+
+// One corner's first landing in (0, tau_max], from `now`, its sample at the start; kNoLanding if
+// none.
+double corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bound, double tau_max,
+                      double min_step, double time_tolerance, double height_noise,
+                      double sink_allowance) {
   double tau = 0.0;
   if (now.height <= 0.0) {
     // Leaving the ground: start where it has risen (half the earliest possible return). A corner
@@ -98,13 +103,13 @@ std::optional<double> corner_landing(const CornerHeight& h, CornerHeight::Sample
     while (now.height <= 0.0) {
       if (now.rate <= 0.0) return tau;
       tau *= 2.0;
-      if (tau >= tau_max) return std::nullopt;
+      if (tau >= tau_max) return kNoLanding;
       now = h.at(tau);
     }
   }
   while (tau < tau_max) {
     const double safe = earliest_fall(now.height, now.rate, bound);
-    if (tau + safe > tau_max) return std::nullopt;  // it cannot reach the ground in time
+    if (tau + safe > tau_max) return kNoLanding;  // it cannot reach the ground in time
     const double next = std::min(tau + std::max(safe, min_step), tau_max);
     const CornerHeight::Sample then = h.at(next);
     if (then.height <= 0.0) {
@@ -113,7 +118,7 @@ std::optional<double> corner_landing(const CornerHeight& h, CornerHeight::Sample
     tau = next;
     now = then;
   }
-  return std::nullopt;
+  return kNoLanding;
 }
 
 }  // namespace
@@ -136,21 +141,20 @@ std::optional<double> first_landing(const BlockGeometry& geometry, const FlightS
     return s.height <= 0.0 ? 0.0 : earliest_fall(s.height, s.rate, bound);
   };
   const int sooner = soonest_fall(base[1]) < soonest_fall(base[0]) ? 1 : 0;
-  std::optional<double> first;
+  double first = kNoLanding;
   for (int k = 0; k < corners; ++k) {
     const int corner = k == 0 ? sooner : (k == 1 ? 1 - sooner : k);
     const CornerHeight h{geometry, f, g, corner};
     const CornerHeight::Sample now = k < 2 ? base[static_cast<std::size_t>(corner)] : h.at(0.0);
-    const double limit = first ? *first : tau_max;
+    const double limit = first < kNoLanding ? first : tau_max;
     const double tolerance = 4e-16 * (1.0 + limit);
     // A corner's height is y plus an arm of size R: its rounding error is a few ulps of their sum.
     const double height_noise =
         4 * std::numeric_limits<double>::epsilon() * (std::abs(f.y) + geometry.size());
-    if (auto tau = corner_landing(h, now, bound, limit, min_step, tolerance, height_noise,
-                                  kLandingSinkAllowance * geometry.size())) {
-      if (!first || *tau < *first) first = tau;
-    }
+    first = std::min(first, corner_landing(h, now, bound, limit, min_step, tolerance, height_noise,
+                                           kLandingSinkAllowance * geometry.size()));
   }
+  if (first == kNoLanding) return std::nullopt;
   return first;
 }
 

@@ -158,13 +158,12 @@ double GroundMotionPieces::peak_abs_lambda() const {
   return peak;
 }
 
-const MotionPiece& GroundMotionPieces::piece_at(double t) const {
-  // A simulation asks in time order, mostly for the piece it asked for last or the next one: look
-  // there before searching (a record has tens of thousands of pieces).
+const MotionPiece& GroundMotionPieces::search(double t) const {
+  // Next after the last piece, the one a simulation moves on to; then a search (a record has tens
+  // of thousands of pieces).
   const auto holds = [&](std::size_t k) {
     return t < pieces_[k].end() && (k == 0 || !(t < pieces_[k - 1].end()));
   };
-  if (holds(last_)) return pieces_[last_];
   if (last_ + 1 < pieces_.size() && holds(last_ + 1)) return pieces_[++last_];
   const auto it =
       std::upper_bound(pieces_.begin(), pieces_.end(), t,

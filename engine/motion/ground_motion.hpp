@@ -63,9 +63,8 @@ class MotionPiece {
       case Shape::zero: return 0.0;
       case Shape::constant: return f_.amplitude;
       case Shape::linear: return f_.amplitude + f_.slope * (t - f_.origin);
-      case Shape::cosine:
-        return f_.amplitude * sine_cosine(f_.angular_frequency * t + f_.phase).cos;
-      case Shape::sine: return f_.amplitude * sine_cosine(f_.angular_frequency * t + f_.phase).sin;
+      case Shape::cosine: return f_.amplitude * cosine(f_.angular_frequency * t + f_.phase);
+      case Shape::sine: return f_.amplitude * sine(f_.angular_frequency * t + f_.phase);
       case Shape::ricker:
         return f_.amplitude * pulse::ricker(f_.angular_frequency * (t - f_.origin));
       case Shape::mavroeidis_papageorgiou:
@@ -111,7 +110,14 @@ class GroundMotionPieces {
   // second starts the next.
   GroundMotionPieces(const std::vector<double>& times, const std::vector<double>& lambdas);
 
-  const MotionPiece& piece_at(double t) const;  // the first piece with t < end
+  // The first piece with t < end. A simulation asks in time order, mostly for the piece it asked
+  // for last: that one is looked at here, inline (every event asks), the others by search().
+  const MotionPiece& piece_at(double t) const {
+    if (t < pieces_[last_].end() && (last_ == 0 || !(t < pieces_[last_ - 1].end()))) {
+      return pieces_[last_];
+    }
+    return search(t);
+  }
   double lambda(double t) const { return piece_at(t).lambda(t); }
   const std::vector<MotionPiece>& pieces() const { return pieces_; }
   // The largest |lambda| (the peak ground acceleration in g): at the pieces' ends and extrema.
@@ -123,6 +129,8 @@ class GroundMotionPieces {
   void add(const MotionPiece::Formula& formula, double end);
   void add_tabulated(const std::vector<double>& times, const std::vector<double>& lambdas);
   void close();  // appends the zero piece that lasts forever
+  // piece_at for a t past the piece it found last.
+  const MotionPiece& search(double t) const;
 
   std::vector<MotionPiece> pieces_;
   mutable std::size_t last_ = 0;  // the piece piece_at found last: where it looks first
