@@ -1,0 +1,166 @@
+#include "engine/seat/seat_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "engine/sine_cosine.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+Vec2 minus(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+
+double distance_to_segment(Vec2 a, Vec2 b, Vec2 p) {
+  const Vec2 d = minus(b, a), ap = minus(p, a);
+  const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
+  return norm(minus(p, Vec2{a.x + t * d.x, a.y + t * d.y}));
+}
+
+// The segment from a to b: its unit direction, its left normal (up for a seat segment, inward
+// for a counter-clockwise block's edge) and its length.
+struct Segment {
+  Vec2 direction, normal;
+  double length;
+};
+
+Segment segment(Vec2 a, Vec2 b) {
+  const Vec2 d = minus(b, a);
+  const double length = norm(d);
+  const Vec2 u{d.x / length, d.y / length};
+  return {u, {-u.y, u.x}, length};
+}
+
+}  // namespace
+
+SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<Vertex>& seat) {
+  const Vertex c = polygon_properties(block).centroid;
+  centre_ = {c[0], c[1]};
+  for (const Vertex& v : block) body_.push_back({v[0] - c[0], v[1] - c[1]});
+  for (const Vertex& p : seat) seat_.push_back({p[0], p[1]});
+}
+
+Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
+  const SineCosine turn = sine_cosine(s.theta);
+  const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
+  return {s.x + r.x, s.y + r.y};
+}
+
+PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
+  const Vec2 centre{s.x, s.y};
+  if (pair.kind == ContactKind::block_vertex) {
+    const Vec2 a = seat_[static_cast<std::size_t>(pair.seat)];
+    const Segment seg = segment(a, seat_[static_cast<std::size_t>(pair.seat) + 1]);
+    const Vec2 p = vertex_at(pair.block, s);
+    const Vec2 ap = minus(p, a);
+    return {dot(seg.normal, ap), dot(seg.direction, ap), seg.length,
+            PlanarContact{minus(p, centre), seg.normal, ContactKind::block_vertex}};
+  }
+  const Vec2 a = vertex_at(pair.block, s);
+  const Vec2 b = vertex_at((pair.block + 1) % vertex_count(), s);
+  const Segment edge = segment(a, b);
+  const Vec2 p = seat_[static_cast<std::size_t>(pair.seat)];
+  const Vec2 ap = minus(p, a);
+  return {-dot(edge.normal, ap), dot(edge.direction, ap), edge.length,
+          PlanarContact{minus(p, centre), edge.normal, ContactKind::seat_point}};
+}
+
+std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double tolerance,
+                                             const std::optional<SeatPair>& left) const {
+  std::vector<SeatPair> found;
+  std::vector<bool> vertex_on_seat(body_.size(), false);
+  for (int i = 0; i < vertex_count(); ++i) {
+    for (int j = 0; j + 1 < point_count(); ++j) {
+      const SeatPair pair{ContactKind::block_vertex, i, j};
+      if (left && *left == pair) continue;
+      const PairPose p = pose(pair, s);
+      if (std::abs(p.gap) <= tolerance && p.along >= -tolerance &&
+          p.along <= p.length + tolerance) {
+        found.push_back(pair);
+        vertex_on_seat[static_cast<std::size_t>(i)] = true;
+      }
+    }
+  }
+  for (int k = 0; k < point_count(); ++k) {
+    // The seat's upward direction at the point: its segments' normals together.
+    Vec2 up{0.0, 0.0};
+    for (const int j : {k - 1, k}) {
+      if (j < 0 || j + 1 >= point_count()) continue;
+      const Vec2 n =
+          segment(seat_[static_cast<std::size_t>(j)], seat_[static_cast<std::size_t>(j) + 1])
+              .normal;
+      up = {up.x + n.x, up.y + n.y};
+    }
+    for (int m = 0; m < vertex_count(); ++m) {
+      const SeatPair pair{ContactKind::seat_point, m, k};
+      if (left && *left == pair) continue;
+      const PairPose p = pose(pair, s);
+      if (!(std::abs(p.gap) <= tolerance && p.along >= -tolerance &&
+            p.along <= p.length + tolerance)) {
+        continue;
+      }
+      const bool at_start = p.along <= tolerance, at_end = p.along >= p.length - tolerance;
+      if (at_start || at_end) {
+        // The point is at a block vertex: taken there only when that vertex is on no seat
+        // segment, and only on the one of the vertex's two edges whose normal is nearer the
+        // seat's upward direction (the heel's base, not its upstream face).
+        const int n = vertex_count();
+        const int vertex = at_start ? m : (m + 1) % n;
+        if (vertex_on_seat[static_cast<std::size_t>(vertex)]) continue;
+        const int other_edge = at_start ? (m + n - 1) % n : (m + 1) % n;
+        const Vec2 other_normal = pose({ContactKind::seat_point, other_edge, k}, s).contact.normal;
+        if (dot(p.contact.normal, up) < dot(other_normal, up)) continue;
+      }
+      found.push_back(pair);
+    }
+  }
+  return found;
+}
+
+double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
+  const Vec2 p = vertex_at(i, s);
+  const Vec2 first = seat_.front(), last = seat_.back();
+  if (p.x < first.x) return norm(minus(p, first));
+  if (p.x > last.x) return norm(minus(p, last));
+  const auto right = std::upper_bound(seat_.begin() + 1, seat_.end() - 1, p.x,
+                                      [](double x, const Vec2& v) { return x < v.x; });
+  const Vec2 a = *(right - 1), b = *right;
+  return p.y - (a.y + (b.y - a.y) * ((p.x - a.x) / (b.x - a.x)));
+}
+
+double SeatContacts::point_clearance(int k, const BlockState& s) const {
+  const Vec2 p = seat_[static_cast<std::size_t>(k)];
+  double distance = std::numeric_limits<double>::infinity();
+  bool inside = false;
+  const int n = vertex_count();
+  for (int i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = vertex_at(i, s), b = vertex_at(j, s);
+    distance = std::min(distance, distance_to_segment(a, b, p));
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
+      inside = !inside;
+    }
+  }
+  return inside ? -distance : distance;
+}
+
+double SeatContacts::penetration(const BlockState& s) const {
+  double deepest = 0.0;
+  for (int i = 0; i < vertex_count(); ++i) deepest = std::max(deepest, -vertex_clearance(i, s));
+  for (int k = 0; k < point_count(); ++k) deepest = std::max(deepest, -point_clearance(k, s));
+  return deepest;
+}
+
+double SeatContacts::height_over_fall(const BlockState& s, double depth) const {
+  const bool past_left = s.x<seat_.front().x, past_right = s.x> seat_.back().x;
+  if (!past_left && !past_right) return depth;
+  const double end = past_left ? seat_.front().y : seat_.back().y;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < vertex_count(); ++i) lowest = std::min(lowest, vertex_at(i, s).y);
+  return lowest - (end - depth);
+}
+
+}  // namespace blockfrag
