@@ -70,7 +70,8 @@ PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
 }
 
 std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double tolerance,
-                                             const std::optional<SeatPair>& left) const {
+                                             const std::optional<SeatPair>& left,
+                                             int arrived) const {
   std::vector<SeatPair> found;
   std::vector<bool> vertex_on_seat(body_.size(), false);
   for (int i = 0; i < vertex_count(); ++i) {
@@ -110,10 +111,16 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
         // seat's upward direction (the heel's base, not its upstream face).
         const int n = vertex_count();
         const int vertex = at_start ? m : (m + 1) % n;
-        if (vertex_on_seat[static_cast<std::size_t>(vertex)]) continue;
+        if (k != arrived && vertex_on_seat[static_cast<std::size_t>(vertex)]) continue;
         const int other_edge = at_start ? (m + n - 1) % n : (m + 1) % n;
-        const Vec2 other_normal = pose({ContactKind::seat_point, other_edge, k}, s).contact.normal;
-        if (dot(p.contact.normal, up) < dot(other_normal, up)) continue;
+        const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
+        if (k == arrived) {
+          // The point came in through the edge it approaches faster.
+          const RigidVelocity v{s.vx, s.vy, s.omega};
+          if (contact_velocity(p.contact, v).normal > contact_velocity(other, v).normal) continue;
+        } else if (dot(p.contact.normal, up) < dot(other.normal, up)) {
+          continue;
+        }
       }
       found.push_back(pair);
     }

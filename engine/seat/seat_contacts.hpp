@@ -52,8 +52,11 @@ class SeatContacts {
   // edges there only when that vertex is on no seat segment, and then on the edge whose normal is
   // nearer the seat's upward one: where a vertex meets a vertex, the seat pushes up (the heel's
   // seat point never pushes on the upstream face above it).
+  // A seat point that has just reached the block (`arrived`) is taken even at a vertex on the
+  // seat (that vertex is passing the seat's end or a bend, and the point carries the block from
+  // there), on the edge there that it approaches faster: the one it came in through.
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
-                                 const std::optional<SeatPair>& left) const;
+                                 const std::optional<SeatPair>& left, int arrived) const;
 
   // How far block vertex i is above the seat (its height over the seat for x within the seat's
   // ends, else its distance from the nearer end): <= 0 where it touches or is below.

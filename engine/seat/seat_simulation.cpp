@@ -141,6 +141,7 @@ class SeatSimulation {
     SeatEvent event;
   };
   std::optional<ForceEvent> force_event_;
+  int arrived_point_ = -1;  // the seat point that reached the block at the last event, if one did
   double rest_since_ = 0.0;
   double run_end_ = 0.0;
   int stalled_events_ = 0;
@@ -180,10 +181,12 @@ std::vector<SeatPair> SeatSimulation::touching(const BlockState& s) const {
   std::vector<SeatPair> out;
   std::optional<SeatPair> left;
   if (force_event_ && force_event_->event == SeatEvent::leaves_end) left = force_event_->pair;
-  for (const SeatPair& pair : contacts_.touching(s, kSeatContactDrift * R_, left)) {
+  for (const SeatPair& pair : contacts_.touching(s, kSeatContactDrift * R_, left, arrived_point_)) {
     const bool was_active = std::any_of(mode_.active.begin(), mode_.active.end(),
                                         [&](const ActiveContact& a) { return a.pair == pair; });
-    if (was_active || std::abs(contacts_.pose(pair, s).gap) <= tight) out.push_back(pair);
+    // Another pair touches when it is closer than a new contact's tolerance, or in the seat (a
+    // drifted contact can leave a vertex under the line of the segment it has just left).
+    if (was_active || contacts_.pose(pair, s).gap <= tight) out.push_back(pair);
   }
   if (out.size() > static_cast<std::size_t>(kMaxSeatContacts)) {
     throw SimulationFailure("more than " + std::to_string(kMaxSeatContacts) +
@@ -589,6 +592,7 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
         geometry_.overturn_margin(at_event.theta) <= kContactHeight) {
       event = SeatEvent::overturns;
     }
+    arrived_point_ = event == SeatEvent::touches ? system.watched_point(which) : -1;
     if (event == SeatEvent::lift_off || event == SeatEvent::friction_limit ||
         event == SeatEvent::leaves_end) {
       const auto contact = static_cast<std::size_t>((which - 2) / kSeatContactGuards);
@@ -636,6 +640,7 @@ void SeatSimulation::run() {
     const double t_before = t_;
     ended_by_event_ = false;
     force_event_.reset();
+    arrived_point_ = -1;
     if (mode_.rest) {
       advance_rest(t_stop);
     } else {

@@ -82,6 +82,13 @@ class SeatSystem {
     return {};
   }
   FixedStateForces solve(double t, const OdeState<N>& q) const;
+  // The seat point a touching guard watches, or -1 (a block vertex's guard, or another guard).
+  int watched_point(int guard) const {
+    const int k = guard - kFirstClearanceGuard - static_cast<int>(watched_vertices_.size());
+    return k >= 0 && k < static_cast<int>(watched_points_.size())
+               ? watched_points_[static_cast<std::size_t>(k)]
+               : -1;
+  }
   int active_count() const { return count_; }
 
  private:
