@@ -13,13 +13,7 @@ namespace {
 
 Vec2 minus(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
 double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-double norm(Vec2 a) { return std::hypot(a.x, a.y); }
-
-double distance_to_segment(Vec2 a, Vec2 b, Vec2 p) {
-  const Vec2 d = minus(b, a), ap = minus(p, a);
-  const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
-  return norm(minus(p, Vec2{a.x + t * d.x, a.y + t * d.y}));
-}
+double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
 // The segment from a to b: its unit direction, its left normal (up for a seat segment, inward
 // for a counter-clockwise block's edge) and its length.
@@ -128,8 +122,15 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
   return found;
 }
 
-double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
-  const Vec2 p = vertex_at(i, s);
+void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
+  const SineCosine turn = sine_cosine(s.theta);
+  for (std::size_t i = 0; i < body_.size(); ++i) {
+    const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
+    out[i] = {s.x + r.x, s.y + r.y};
+  }
+}
+
+double SeatContacts::clearance_at(Vec2 p) const {
   const Vec2 first = seat_.front(), last = seat_.back();
   if (p.x < first.x) return norm(minus(p, first));
   if (p.x > last.x) return norm(minus(p, last));
@@ -139,34 +140,51 @@ double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
   return p.y - (a.y + (b.y - a.y) * ((p.x - a.x) / (b.x - a.x)));
 }
 
-double SeatContacts::point_clearance(int k, const BlockState& s) const {
+double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
+  return clearance_at(vertex_at(i, s));
+}
+
+double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   const Vec2 p = seat_[static_cast<std::size_t>(k)];
-  double distance = std::numeric_limits<double>::infinity();
+  double squared = std::numeric_limits<double>::infinity();
   bool inside = false;
-  const int n = vertex_count();
-  for (int i = 0, j = n - 1; i < n; j = i++) {
-    const Vec2 a = vertex_at(i, s), b = vertex_at(j, s);
-    distance = std::min(distance, distance_to_segment(a, b, p));
+  const std::size_t n = body_.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = world[i], b = world[j];
+    const Vec2 d = minus(b, a), ap = minus(p, a);
+    const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
+    const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
+    squared = std::min(squared, dot(off, off));
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
       inside = !inside;
     }
   }
+  const double distance = std::sqrt(squared);
   return inside ? -distance : distance;
 }
 
+double SeatContacts::point_clearance(int k, const BlockState& s) const {
+  std::vector<Vec2> world(body_.size());
+  world_vertices(s, world);
+  return point_clearance(k, world);
+}
+
 double SeatContacts::penetration(const BlockState& s) const {
+  std::vector<Vec2> world(body_.size());
+  world_vertices(s, world);
   double deepest = 0.0;
-  for (int i = 0; i < vertex_count(); ++i) deepest = std::max(deepest, -vertex_clearance(i, s));
-  for (int k = 0; k < point_count(); ++k) deepest = std::max(deepest, -point_clearance(k, s));
+  for (const Vec2& p : world) deepest = std::max(deepest, -clearance_at(p));
+  for (int k = 0; k < point_count(); ++k) deepest = std::max(deepest, -point_clearance(k, world));
   return deepest;
 }
 
-double SeatContacts::height_over_fall(const BlockState& s, double depth) const {
+double SeatContacts::height_over_fall(const BlockState& s, std::span<const Vec2> world,
+                                      double depth) const {
   const bool past_left = s.x<seat_.front().x, past_right = s.x> seat_.back().x;
   if (!past_left && !past_right) return depth;
   const double end = past_left ? seat_.front().y : seat_.back().y;
   double lowest = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < vertex_count(); ++i) lowest = std::min(lowest, vertex_at(i, s).y);
+  for (std::size_t i = 0; i < body_.size(); ++i) lowest = std::min(lowest, world[i].y);
   return lowest - (end - depth);
 }
 

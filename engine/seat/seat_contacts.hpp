@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "engine/contact/planar_contact.hpp"
@@ -58,6 +59,13 @@ class SeatContacts {
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
                                  const std::optional<SeatPair>& left, int arrived) const;
 
+  // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
+  // rotation for all, for the guards that look at every vertex.
+  void world_vertices(const BlockState& s, std::span<Vec2> out) const;
+  // vertex_clearance and point_clearance for the vertices given in the world frame.
+  double clearance_at(Vec2 p) const;
+  double point_clearance(int k, std::span<const Vec2> world) const;
+
   // How far block vertex i is above the seat (its height over the seat for x within the seat's
   // ends, else its distance from the nearer end): <= 0 where it touches or is below.
   double vertex_clearance(int i, const BlockState& s) const;
@@ -67,8 +75,8 @@ class SeatContacts {
   double penetration(const BlockState& s) const;
   // How far the lowest block vertex is above the level `depth` below the end of the seat the
   // centre of mass has passed (> 0 while it has not fallen there); `depth` where it has passed
-  // neither end.
-  double height_over_fall(const BlockState& s, double depth) const;
+  // neither end. `world`: the block's vertices at the pose (world_vertices).
+  double height_over_fall(const BlockState& s, std::span<const Vec2> world, double depth) const;
 
  private:
   std::vector<Vec2> body_;  // block vertices relative to the centre of mass, body frame

@@ -151,7 +151,10 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const OdeSt
   const bool over_seat = s.x >= c_.contacts->seat_point(0).x &&
                          s.x <= c_.contacts->seat_point(c_.contacts->point_count() - 1).x;
   out[0] = over_seat ? c_.geometry->overturn_margin(s.theta) : 1.0;
-  out[1] = c_.contacts->height_over_fall(s, c_.fall_depth) / R;
+  std::array<Vec2, kMaxSeatClearances> world{};
+  c_.contacts->world_vertices(s, world);
+  out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
+
   if (count_ > 0) {
     const FixedStateForces f = solve(t, q);
     const RigidVelocity v{s.vx, s.vy, s.omega};
@@ -171,8 +174,10 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const OdeSt
     }
   }
   std::size_t g = static_cast<std::size_t>(kFirstClearanceGuard);
-  for (const int i : watched_vertices_) out[g++] = c_.contacts->vertex_clearance(i, s) / R;
-  for (const int k : watched_points_) out[g++] = c_.contacts->point_clearance(k, s) / R;
+  for (const int i : watched_vertices_) {
+    out[g++] = c_.contacts->clearance_at(world[static_cast<std::size_t>(i)]) / R;
+  }
+  for (const int k : watched_points_) out[g++] = c_.contacts->point_clearance(k, world) / R;
   return out;
 }
 
