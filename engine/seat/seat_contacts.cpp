@@ -109,9 +109,19 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
         const int other_edge = at_start ? (m + n - 1) % n : (m + 1) % n;
         const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
         if (k == arrived) {
-          // The point came in through the edge it approaches faster.
+          // The point goes on along the edge whose range it moves into (the block's base as the
+          // block slides over it), or, into both or neither, the one it approaches faster.
           const RigidVelocity v{s.vx, s.vy, s.omega};
-          if (contact_velocity(p.contact, v).normal > contact_velocity(other, v).normal) continue;
+          const ContactVelocity here = contact_velocity(p.contact, v);
+          const ContactVelocity there = contact_velocity(other, v);
+          // The point moves along an edge at minus the block's tangential velocity there; the
+          // other edge meets this vertex at its other end.
+          // Rates below the velocities' rounding say nothing.
+          const double noise = 1e-9 * (std::abs(here.tangent) + std::abs(there.tangent) +
+                                       std::abs(here.normal) + std::abs(there.normal));
+          const bool enters_here = at_start ? here.tangent < -noise : here.tangent > noise;
+          const bool enters_there = at_start ? there.tangent > noise : there.tangent < -noise;
+          if (enters_here != enters_there ? !enters_here : here.normal > there.normal) continue;
         } else if (dot(p.contact.normal, up) < dot(other.normal, up)) {
           continue;
         }

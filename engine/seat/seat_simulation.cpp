@@ -107,7 +107,8 @@ class SeatSimulation {
   void project(const SeatMode& mode);
   bool rest_holds(double lambda) const;
   void set_rest_thresholds(SeatMode& mode) const;
-  double rest_margin(double t) const;
+  // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
+  double rest_margin(double t, const MotionPiece& piece, const MotionPiece& vertical) const;
   void enter(const SeatMode& mode);
   void check_budget();
   double step_cap(const MotionPiece& piece) const;
@@ -291,7 +292,9 @@ SeatMode SeatSimulation::resolve() {
   if (forces.determinacy != Determinacy::unique) ++summary_.painleve_events;
   const bool still = std::abs(s.vx) <= velocity_tol_ && std::abs(s.vy) <= velocity_tol_ &&
                      R_ * std::abs(s.omega) <= velocity_tol_;
-  if (still && holds_at_rest(forces)) {
+  // Just past a lift-off or slip-start guard the block cannot stay put, whatever the tolerance of
+  // the contact problem lets it choose.
+  if (still && holds_at_rest(forces) && !force_event_) {
     // At rest every touching contact is kept: where rest ends is found on all of them.
     mode.rest = true;
     for (const SeatPair& pair : carrying) mode.active.push_back({pair, ContactState::stick});
@@ -416,8 +419,9 @@ void SeatSimulation::set_rest_thresholds(SeatMode& mode) const {
   mode.rest_low = edge(-1.0);
 }
 
-double SeatSimulation::rest_margin(double t) const {
-  const double lambda = motion_.lambda(t), factor = gravity_factor(t);
+double SeatSimulation::rest_margin(double t, const MotionPiece& piece,
+                                   const MotionPiece& vertical) const {
+  const double lambda = piece.lambda(t), factor = 1.0 + vertical.lambda(t);
   return kOnsetMargin +
          std::min({mode_.rest_high * factor - lambda, lambda - mode_.rest_low * factor, factor});
 }
@@ -503,10 +507,10 @@ void SeatSimulation::advance_rest(double t_stop) {
     std::sort(checks.begin(), checks.end());
   }
   checks.push_back(t_stop);
-  double previous = t_, previous_margin = rest_margin(t_);
-  const auto margin = [&](double t) { return rest_margin(t); };
+  const auto margin = [&](double t) { return rest_margin(t, piece, vertical); };
+  double previous = t_, previous_margin = margin(t_);
   for (const double t : checks) {
-    const double m = rest_margin(t);
+    const double m = margin(t);
     if (m < 0) {
       const double t_event =
           previous_margin < 0
@@ -658,7 +662,9 @@ void SeatSimulation::run() {
     const bool at_piece_end = t_ == t_stop && !ended_by_event_;
     if (at_piece_end) {
       const MotionPiece& next = motion_.piece_at(t_);
-      if (mode_.rest ? rest_margin(t_) > 0 : holds_under(next)) continue;
+      if (mode_.rest ? rest_margin(t_, next, vertical_.piece_at(t_)) > 0 : holds_under(next)) {
+        continue;
+      }
     }
     enter(resolve());
   }
