@@ -50,12 +50,17 @@ struct SeatMode {
   std::vector<ActiveContact> active;
   bool rest = false;
   double rest_low = 0.0, rest_high = 0.0;
+  // The contacts leave the block no freedom: it cannot move, only wait for a force guard (just
+  // past where rest ended, inside the contact problem's tolerance).
+  bool pinned = false;
 };
 
-// Rest; no contact: flight; one contact: rock when it sticks, slide-rock when it slips; several:
-// slide when all slip, slide-rock when some do, rock otherwise.
+// Rest, or pinned; no contact: flight; one contact: rock when it sticks, slide-rock
+// when it slips; several: slide when all slip, slide-rock when some do, rock otherwise (a vertex
+// sticking in the fold, on both its segments).
 ModeKind kind_of(const SeatMode& mode) {
   if (mode.rest) return ModeKind::rest;
+  if (mode.pinned) return ModeKind::rest;
   if (mode.active.empty()) return ModeKind::flight;
   const auto slipping = std::count_if(mode.active.begin(), mode.active.end(),
                                       [](const ActiveContact& a) { return is_slip(a.state); });
@@ -320,6 +325,24 @@ SeatMode SeatSimulation::resolve() {
       }
     }
     if (state != ContactState::off) mode.active.push_back({carrying[i], state});
+  }
+  // Pinned: the active contacts' normal velocities and the sticking ones' tangential velocities
+  // leave the block no freedom (their rows have rank 3).
+  Eigen::MatrixXd rows(static_cast<Eigen::Index>(2 * mode.active.size()), 3);
+  Eigen::Index count = 0;
+  for (const ActiveContact& a : mode.active) {
+    const PlanarContact c = contact_of(a.pair, s);
+    // theta's column through R, so the rank test compares like with like.
+    rows.row(count++) = contact_row(c, c.normal).cwiseProduct(Eigen::RowVector3d(1, 1, 1 / R_));
+    if (a.state == ContactState::stick) {
+      rows.row(count++) =
+          contact_row(c, contact_tangent(c)).cwiseProduct(Eigen::RowVector3d(1, 1, 1 / R_));
+    }
+  }
+  if (count >= 3) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(rows.topRows(count));
+    lu.setThreshold(kSeatContactDrift);
+    mode.pinned = lu.rank() == 3;
   }
   return logged_mode(mode, logged);
 }
