@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
 
 #include "engine/sine_cosine.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -36,6 +38,26 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
   centre_ = {c[0], c[1]};
   for (const Vertex& v : block) body_.push_back({v[0] - c[0], v[1] - c[1]});
   for (const Vertex& p : seat) seat_.push_back({p[0], p[1]});
+  double size = 0.0;
+  for (const Vec2& r : body_) size = std::max(size, norm(r));
+  straight_ = straight(kContactHeight * size);
+}
+
+bool SeatContacts::straight(double tolerance) const {
+  const Segment whole = segment(seat_.front(), seat_.back());
+  return std::all_of(seat_.begin(), seat_.end(), [&](const Vec2& p) {
+    return std::abs(dot(whole.normal, minus(p, seat_.front()))) <= tolerance;
+  });
+}
+
+double SeatContacts::overturn_margin(const BlockGeometry& geometry, double theta) const {
+  if (straight_) return geometry.overturn_margin(theta);
+  return std::numbers::pi / 2 - std::abs(theta);
+}
+
+double SeatContacts::overturn_theta(const BlockGeometry& geometry, double direction) const {
+  if (straight_) return geometry.overturn_theta(direction);
+  return direction > 0 ? std::numbers::pi / 2 : -std::numbers::pi / 2;
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {

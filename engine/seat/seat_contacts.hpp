@@ -60,6 +60,16 @@ class SeatContacts {
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
                                  const std::optional<SeatPair>& left, int arrived) const;
 
+  // Whether the seat's points lie on one line (a flat seat, within `tolerance` m).
+  bool straight(double tolerance) const;
+  // How far theta is from overturning (> 0 inside): on a straight seat the flat ground's rule (the
+  // face next to the base lies on it, engine/scene/block_geometry.hpp), elsewhere a quarter turn
+  // either way (on a folded seat no single face lies on it; past a quarter turn the block's base
+  // faces sideways, and it has tipped over).
+  double overturn_margin(const BlockGeometry& geometry, double theta) const;
+  // The tilt the block is reported at when it overturns towards the sign of `direction`.
+  double overturn_theta(const BlockGeometry& geometry, double direction) const;
+
   // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
   // rotation for all, for the guards that look at every vertex.
   void world_vertices(const BlockState& s, std::span<Vec2> out) const;
@@ -83,6 +93,7 @@ class SeatContacts {
   std::vector<Vec2> body_;  // block vertices relative to the centre of mass, body frame
   std::vector<Vec2> seat_;
   Vec2 centre_;
+  bool straight_ = false;  // set from the block's size: see the constructor
 };
 
 }  // namespace blockfrag

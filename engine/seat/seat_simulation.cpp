@@ -496,7 +496,7 @@ void SeatSimulation::stop_at(double t, const BlockState& s, SeatEvent why) {
   t_ = t;
   state_ = s;
   if (why == SeatEvent::overturns) {
-    state_.theta = geometry_.overturn_theta(s.theta);
+    state_.theta = contacts_.overturn_theta(geometry_, s.theta);
     summary_.overturned = true;
     summary_.overturn_time = t;
   } else {
@@ -616,7 +616,7 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
     // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
     // top corner at theta = pi/2): that is overturning, whichever guard rounding put first.
     if (event == SeatEvent::touches &&
-        geometry_.overturn_margin(at_event.theta) <= kContactHeight) {
+        contacts_.overturn_margin(geometry_, at_event.theta) <= kContactHeight) {
       event = SeatEvent::overturns;
     }
     arrived_point_ = event == SeatEvent::touches ? system.watched_point(which) : -1;

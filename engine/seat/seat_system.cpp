@@ -150,7 +150,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const OdeSt
   // Lying on another face is overturning over the seat; past its ends the block falls instead.
   const bool over_seat = s.x >= c_.contacts->seat_point(0).x &&
                          s.x <= c_.contacts->seat_point(c_.contacts->point_count() - 1).x;
-  out[0] = over_seat ? c_.geometry->overturn_margin(s.theta) : 1.0;
+  out[0] = over_seat ? c_.contacts->overturn_margin(*c_.geometry, s.theta) : 1.0;
   std::array<Vec2, kMaxSeatClearances> world{};
   c_.contacts->world_vertices(s, world);
   out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
