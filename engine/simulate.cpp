@@ -22,6 +22,7 @@
 #include "engine/motion/ground_drift.hpp"
 #include "engine/motion/scene_motion.hpp"
 #include "engine/scene/scene_validation.hpp"
+#include "engine/seat/seat_simulation.hpp"
 #include "engine/segment_observer.hpp"
 #include "engine/tolerances.hpp"
 
@@ -544,6 +545,7 @@ ContactForces Simulation::forces_now() const {
 
 SimulationWithHistory run_scene(const Scene& scene, double output_interval) {
   validate_scene(scene);
+  if (scene.seat) return simulate_on_seat(scene, output_interval);
   Simulation simulation(scene, output_interval);
   try {
     simulation.run();

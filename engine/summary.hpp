@@ -34,6 +34,10 @@ struct Summary {
 
   bool overturned = false;
   std::optional<double> overturn_time;
+  // The block went off a seat's end and dropped below it (engine/seat/seat_simulation.hpp);
+  // never on the flat ground, which has no ends. Ends the run, as overturning does.
+  bool fell = false;
+  std::optional<double> fell_time;
   double max_abs_theta = 0.0;  // rad
   double final_theta = 0.0;    // rad
   double final_slide = 0.0;    // m, centre of mass relative to the ground, end minus start
@@ -43,10 +47,11 @@ struct Summary {
   std::optional<double> first_impact_time;
   long impacts = 0;
   std::vector<ModeChange> modes;
-  double end_time = 0.0;  // s, where the simulation stopped (duration, settling, or overturning)
+  double end_time =
+      0.0;  // s, where the simulation stopped (duration, settling, overturning, falling)
   // The block's fate is final at the end: every excitation has ended and it rests on its base, or
-  // it has overturned. settle_time: since when it rests for good (0 if it never moved), or the
-  // overturning time; none when not settled.
+  // it has overturned or fallen. settle_time: since when it rests for good (0 if it never moved),
+  // or the overturning or falling time; none when not settled.
   bool settled = false;
   std::optional<double> settle_time;
 

@@ -27,6 +27,22 @@ inline constexpr double kPainleveMargin = 1e-6;
 // compared, far below any physical difference.
 inline constexpr double kImpactRounding = 1e-12;
 
+// --- A seat: contacts that drift, blocks that fall ----------------------------------------------
+// An active contact on a seat whose gap has drifted this far (over R) while its mode was
+// integrated still touches at the next event, where it is projected back: the seat's modes
+// integrate x, y and theta with the contacts held at the acceleration level only.
+inline constexpr double kSeatContactDrift = 1e-6;
+// A block past a seat's end whose lowest vertex has dropped this far (over R) below that end has
+// fallen off the seat: nothing under it can catch it.
+inline constexpr double kFallDepth = 0.5;
+// Where rest on a seat ends: lambda is searched up to this (in g) for the thresholds; rest that
+// holds beyond it holds for any lambda.
+inline constexpr double kRestSearchLimit = 1024.0;
+// A seat's simulation watches each block vertex and seat point not in contact for touching, one
+// guard each in a fixed array (engine/seat/seat_system.hpp): a scene on a seat has at most this
+// many together.
+inline constexpr int kMaxSeatClearances = 38;
+
 // --- Events: where a mode ends -------------------------------------------------------------------
 // A guard this close to zero when a mode starts is armed only once it has moved away: the event
 // that started the mode left it there.

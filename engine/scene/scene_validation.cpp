@@ -61,8 +61,8 @@ void validate_block(const Scene& scene) {
           "base");
 }
 
-// The seat's points, its fit with the block at rest (engine/scene/seat.hpp), and a block released
-// flat on it. Checked in full, then refused: only the flat ground is simulated so far.
+// The seat's points, its fit with the block at rest (engine/scene/seat.hpp), a block released
+// flat on it, and few enough vertices and points for the seat's guards (one each).
 void validate_seat(const Scene& scene) {
   const auto& points = scene.seat->points;
   require(static_cast<double>(points.size()) <= domain::kMaxSeatPoints,
@@ -81,8 +81,11 @@ void validate_seat(const Scene& scene) {
     throw InvalidInput("invalid scene: seat:" + where + " " + defect->rule);
   }
   require(scene.initial.theta == 0.0, "initial theta must be 0 on a seat (the block rests on it)");
-  throw InvalidInput(
-      "invalid scene: seat: only the flat ground is simulated so far (leave seat out)");
+  const std::size_t watched = points.size() + scene_block_vertices(scene).size();
+  require(watched <= static_cast<std::size_t>(kMaxSeatClearances),
+          "seat: the block's vertices and the seat's points number " + std::to_string(watched) +
+              ", more than the " + std::to_string(kMaxSeatClearances) +
+              " a seat's simulation watches");
 }
 
 void validate_pulse(double amplitude_g, double period) {

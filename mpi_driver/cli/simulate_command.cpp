@@ -47,6 +47,8 @@ void write_simulate_report(std::ostream& out, const Scene& scene, const Summary&
         << " s: " << summary.status_reason << "\n";
   } else if (summary.overturned) {
     out << "verdict: overturned at " << time_or_never(summary.overturn_time) << "\n";
+  } else if (summary.fell) {
+    out << "verdict: fell off the seat's end at " << time_or_never(summary.fell_time) << "\n";
   } else {
     out << "verdict: did not overturn\n";
   }

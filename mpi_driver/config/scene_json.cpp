@@ -192,19 +192,14 @@ void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPoi
   }
 }
 
-// The seat (mpi_driver/config/seat_json.hpp) is checked in full, then refused: only the flat
-// ground is simulated so far.
+// The seat (mpi_driver/config/seat_json.hpp), and the block released flat on it.
 void read_scene_seat(ObjectReader& root, bool block_valid, const JsonPointer& path,
                      ConfigErrors& errors, Scene& scene) {
   const std::vector<Vertex> block = scene_block_vertices(scene);
-  const std::size_t before = errors.size();
   scene.seat = Seat{
       read_seat(*root.raw("seat"), root.path_of("seat"), errors, block_valid ? &block : nullptr)};
   if (scene.initial.theta != 0.0) {
     errors.add(path / "initial" / "theta", "must be 0 with a seat (the block rests on it)");
-  }
-  if (errors.size() == before) {
-    errors.add(path / "seat", "only the flat ground is simulated so far (leave seat out)");
   }
 }
 

@@ -43,11 +43,11 @@ class SampleColumns {
     if (config_.suite) file.create_column("/samples/record", total, Type::int64);
     file.create_group("/results");
     for (const char* name :
-         {"status", "overturned", "impacts", "steps", "rhs_evaluations", "settled"}) {
+         {"status", "overturned", "impacts", "steps", "rhs_evaluations", "settled", "fell"}) {
       file.create_column(std::string("/results/") + name, total, Type::int64);
     }
     for (const char* name : {"max_abs_theta", "final_theta", "final_slide", "max_abs_slide",
-                             "overturn_time", "settle_time"}) {
+                             "overturn_time", "settle_time", "fell_time"}) {
       file.create_column(std::string("/results/") + name, total, Type::float64);
     }
     file.set_attribute(
@@ -103,6 +103,8 @@ class SampleColumns {
     write_field(file, "overturn_time", first, records, &SampleRecord::overturn_time);
     write_field(file, "settled", first, records, &SampleRecord::settled);
     write_field(file, "settle_time", first, records, &SampleRecord::settle_time);
+    write_field(file, "fell", first, records, &SampleRecord::fell);
+    write_field(file, "fell_time", first, records, &SampleRecord::fell_time);
   }
 
  private:

@@ -9,7 +9,8 @@
 //   /records     a record suite's records: file, vertical, weight, pga_g, pgv_m_s, duration_s
 //                (sa_g with an Sa measure)
 //   /results     status, overturned, impacts, steps, rhs_evaluations, max_abs_theta, final_theta,
-//                final_slide, max_abs_slide, overturn_time, settled, settle_time: what it did
+//                final_slide, max_abs_slide, overturn_time, settled, settle_time, fell,
+//                fell_time: what it did
 //   /fragility   attributes of the measure, severity_order and crossing_pairs; one group per
 //                limit state with its points (im, trials, exceedances, probability, ci_low,
 //                ci_high), its fit and the fit's diagnostics as attributes, and the bootstrap's

@@ -22,6 +22,8 @@ nlohmann::json summary_to_json(const Summary& summary) {
           {"effects", model_effects(summary.model)},
           {"overturned", summary.overturned},
           {"overturn_time", optional_time(summary.overturn_time)},
+          {"fell", summary.fell},
+          {"fell_time", optional_time(summary.fell_time)},
           {"max_abs_theta", summary.max_abs_theta},
           {"final_theta", summary.final_theta},
           {"final_slide", summary.final_slide},

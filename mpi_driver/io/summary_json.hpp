@@ -7,7 +7,8 @@
 
 namespace blockfrag {
 
-// Keys: status ("ok"/"failed"), status_reason (null when ok), overturned, overturn_time,
+// Keys: status ("ok"/"failed"), status_reason (null when ok), overturned, overturn_time, fell,
+// fell_time (off a seat's end: never on the flat ground),
 // max_abs_theta, final_theta, final_slide, max_abs_slide, rock_start_time, slide_start_time,
 // first_impact_time (each time null when it never happened), impacts, modes ([[time, "mode"],
 // ...]), end_time, steps, rhs_evaluations, events, max_impact_energy_gain, max_contact_violation,

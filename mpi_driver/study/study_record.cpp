@@ -18,6 +18,8 @@ SampleRecord make_record(std::int64_t index, const Summary& summary) {
   if (summary.overturn_time) record.overturn_time = *summary.overturn_time;
   record.settled = summary.settled ? 1 : 0;
   if (summary.settle_time) record.settle_time = *summary.settle_time;
+  record.fell = summary.fell ? 1 : 0;
+  if (summary.fell_time) record.fell_time = *summary.fell_time;
   return record;
 }
 

@@ -32,9 +32,11 @@ struct SampleRecord {
   double overturn_time = std::numeric_limits<double>::quiet_NaN();  // NaN when it did not overturn
   std::int64_t settled = 0;  // the block's fate was final at the end (engine/summary.hpp)
   double settle_time = std::numeric_limits<double>::quiet_NaN();  // NaN when not settled
+  std::int64_t fell = 0;  // went off a seat's end (never on the flat ground)
+  double fell_time = std::numeric_limits<double>::quiet_NaN();  // NaN when it did not fall
 };
 static_assert(std::is_trivially_copyable_v<SampleRecord>);
-static_assert(sizeof(SampleRecord) == 13 * 8, "records travel as raw bytes: no padding allowed");
+static_assert(sizeof(SampleRecord) == 15 * 8, "records travel as raw bytes: no padding allowed");
 
 SampleRecord make_record(std::int64_t index, const Summary& summary);
 SampleRecord make_rejected_record(std::int64_t index);

@@ -2,8 +2,8 @@
 # `blockfrag simulate` end to end: every scene of tests/data/bad_scenes is refused with exit code 2
 # and the messages of its .expected file on stderr; the paper's example gives exactly one JSON
 # object with every summary key, a report, and a history CSV; command-line errors exit 2, I/O
-# errors 1, a failed simulation 3; a scene with a recorded ground motion named relative to its folder
-# runs, and a missing record exits 2. Prints "N passed, M failed" last; exits non-zero on any failure.
+# errors 1, a failed simulation 3; the type B block runs on its seat; a scene with a recorded ground
+# motion named relative to its folder runs, and a missing record exits 2. Prints "N passed, M failed" last; exits non-zero on any failure.
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
 
@@ -59,8 +59,10 @@ summary = json.loads(text)  # refuses anything after the object ("Extra data")
 assert isinstance(summary, dict), "not an object"
 keys = {"status", "status_reason", "overturned", "overturn_time", "max_abs_theta", "final_theta",
         "final_slide", "max_abs_slide", "rock_start_time", "slide_start_time", "first_impact_time",
-        "impacts", "modes", "end_time", "steps", "rhs_evaluations", "events", "max_impact_energy_gain"}
+        "impacts", "modes", "end_time", "steps", "rhs_evaluations", "events", "max_impact_energy_gain",
+        "fell", "fell_time"}
 assert keys <= set(summary), ("missing", keys - set(summary))  # the engine may report more
+assert summary["fell"] is False and summary["fell_time"] is None  # the flat ground has no ends
 assert summary["status"] == "ok" and summary["status_reason"] is None, summary["status"]
 assert isinstance(summary["overturned"], bool)
 assert (summary["overturn_time"] is None) != summary["overturned"]
@@ -125,6 +127,16 @@ for key in ("status", "overturned", "overturn_time", "max_abs_theta", "final_the
             "modes", "end_time"):
     assert plain[key] == observed[key], (key, plain[key], observed[key])
 ' "$work/summary.json" "$work/out"
+
+# --- The type B block on its seat ---------------------------------------------------------------------------
+run simulate "$BLOCKFRAG_SOURCE_DIR/configs/dam_block_type_b.json" --summary-json
+check "the type B block on its seat runs (got $code: $(head -c 300 "$work/err"))" test "$code" -eq 0
+check "the type B block stays on its seat under the paper's pulse" "$PYTHON" -c '
+import json, sys
+summary = json.load(open(sys.argv[1]))
+assert summary["status"] == "ok" and not summary["fell"] and not summary["overturned"], summary
+assert summary["slide_start_time"] is None, summary["slide_start_time"]  # cannot slide downstream
+' "$work/out"
 
 # --- A recorded ground motion --------------------------------------------------------------------------------
 # The scene names its record by a path relative to the scene file's folder, not to the working folder.

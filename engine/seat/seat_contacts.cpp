@@ -1,0 +1,223 @@
+#include "engine/seat/seat_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numbers>
+
+#include "engine/sine_cosine.hpp"
+#include "engine/tolerances.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+Vec2 minus(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+
+// The segment from a to b: its unit direction, its left normal (up for a seat segment, inward
+// for a counter-clockwise block's edge) and its length.
+struct Segment {
+  Vec2 direction, normal;
+  double length;
+};
+
+Segment segment(Vec2 a, Vec2 b) {
+  const Vec2 d = minus(b, a);
+  const double length = norm(d);
+  const Vec2 u{d.x / length, d.y / length};
+  return {u, {-u.y, u.x}, length};
+}
+
+}  // namespace
+
+SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<Vertex>& seat) {
+  const Vertex c = polygon_properties(block).centroid;
+  centre_ = {c[0], c[1]};
+  for (const Vertex& v : block) body_.push_back({v[0] - c[0], v[1] - c[1]});
+  for (const Vertex& p : seat) seat_.push_back({p[0], p[1]});
+  double size = 0.0;
+  for (const Vec2& r : body_) size = std::max(size, norm(r));
+  straight_ = straight(kContactHeight * size);
+}
+
+bool SeatContacts::straight(double tolerance) const {
+  const Segment whole = segment(seat_.front(), seat_.back());
+  return std::all_of(seat_.begin(), seat_.end(), [&](const Vec2& p) {
+    return std::abs(dot(whole.normal, minus(p, seat_.front()))) <= tolerance;
+  });
+}
+
+double SeatContacts::overturn_margin(const BlockGeometry& geometry, double theta) const {
+  if (straight_) return geometry.overturn_margin(theta);
+  return std::numbers::pi / 2 - std::abs(theta);
+}
+
+double SeatContacts::overturn_theta(const BlockGeometry& geometry, double direction) const {
+  if (straight_) return geometry.overturn_theta(direction);
+  return direction > 0 ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+}
+
+Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
+  const SineCosine turn = sine_cosine(s.theta);
+  const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
+  return {s.x + r.x, s.y + r.y};
+}
+
+PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
+  const Vec2 centre{s.x, s.y};
+  if (pair.kind == ContactKind::block_vertex) {
+    const Vec2 a = seat_[static_cast<std::size_t>(pair.seat)];
+    const Segment seg = segment(a, seat_[static_cast<std::size_t>(pair.seat) + 1]);
+    const Vec2 p = vertex_at(pair.block, s);
+    const Vec2 ap = minus(p, a);
+    return {dot(seg.normal, ap), dot(seg.direction, ap), seg.length,
+            PlanarContact{minus(p, centre), seg.normal, ContactKind::block_vertex}};
+  }
+  const Vec2 a = vertex_at(pair.block, s);
+  const Vec2 b = vertex_at((pair.block + 1) % vertex_count(), s);
+  const Segment edge = segment(a, b);
+  const Vec2 p = seat_[static_cast<std::size_t>(pair.seat)];
+  const Vec2 ap = minus(p, a);
+  return {-dot(edge.normal, ap), dot(edge.direction, ap), edge.length,
+          PlanarContact{minus(p, centre), edge.normal, ContactKind::seat_point}};
+}
+
+std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double tolerance,
+                                             const std::optional<SeatPair>& left,
+                                             int arrived) const {
+  std::vector<SeatPair> found;
+  std::vector<bool> vertex_on_seat(body_.size(), false);
+  for (int i = 0; i < vertex_count(); ++i) {
+    for (int j = 0; j + 1 < point_count(); ++j) {
+      const SeatPair pair{ContactKind::block_vertex, i, j};
+      if (left && *left == pair) continue;
+      const PairPose p = pose(pair, s);
+      if (std::abs(p.gap) <= tolerance && p.along >= -tolerance &&
+          p.along <= p.length + tolerance) {
+        found.push_back(pair);
+        vertex_on_seat[static_cast<std::size_t>(i)] = true;
+      }
+    }
+  }
+  for (int k = 0; k < point_count(); ++k) {
+    // The seat's upward direction at the point: its segments' normals together.
+    Vec2 up{0.0, 0.0};
+    for (const int j : {k - 1, k}) {
+      if (j < 0 || j + 1 >= point_count()) continue;
+      const Vec2 n =
+          segment(seat_[static_cast<std::size_t>(j)], seat_[static_cast<std::size_t>(j) + 1])
+              .normal;
+      up = {up.x + n.x, up.y + n.y};
+    }
+    for (int m = 0; m < vertex_count(); ++m) {
+      const SeatPair pair{ContactKind::seat_point, m, k};
+      if (left && *left == pair) continue;
+      const PairPose p = pose(pair, s);
+      if (!(std::abs(p.gap) <= tolerance && p.along >= -tolerance &&
+            p.along <= p.length + tolerance)) {
+        continue;
+      }
+      const bool at_start = p.along <= tolerance, at_end = p.along >= p.length - tolerance;
+      if (at_start || at_end) {
+        // The point is at a block vertex: taken there only when that vertex is on no seat
+        // segment, and only on the one of the vertex's two edges whose normal is nearer the
+        // seat's upward direction (the heel's base, not its upstream face).
+        const int n = vertex_count();
+        const int vertex = at_start ? m : (m + 1) % n;
+        if (k != arrived && vertex_on_seat[static_cast<std::size_t>(vertex)]) continue;
+        const int other_edge = at_start ? (m + n - 1) % n : (m + 1) % n;
+        const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
+        if (k == arrived) {
+          // The point goes on along the edge whose range it moves into (the block's base as the
+          // block slides over it), or, into both or neither, the one it approaches faster.
+          const RigidVelocity v{s.vx, s.vy, s.omega};
+          const ContactVelocity here = contact_velocity(p.contact, v);
+          const ContactVelocity there = contact_velocity(other, v);
+          // The point moves along an edge at minus the block's tangential velocity there; the
+          // other edge meets this vertex at its other end.
+          // Rates below the velocities' rounding say nothing.
+          const double noise = 1e-9 * (std::abs(here.tangent) + std::abs(there.tangent) +
+                                       std::abs(here.normal) + std::abs(there.normal));
+          const bool enters_here = at_start ? here.tangent < -noise : here.tangent > noise;
+          const bool enters_there = at_start ? there.tangent > noise : there.tangent < -noise;
+          if (enters_here != enters_there ? !enters_here : here.normal > there.normal) continue;
+        } else if (dot(p.contact.normal, up) < dot(other.normal, up)) {
+          continue;
+        }
+      }
+      found.push_back(pair);
+    }
+  }
+  return found;
+}
+
+void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
+  const SineCosine turn = sine_cosine(s.theta);
+  for (std::size_t i = 0; i < body_.size(); ++i) {
+    const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
+    out[i] = {s.x + r.x, s.y + r.y};
+  }
+}
+
+double SeatContacts::clearance_at(Vec2 p) const {
+  const Vec2 first = seat_.front(), last = seat_.back();
+  if (p.x < first.x) return norm(minus(p, first));
+  if (p.x > last.x) return norm(minus(p, last));
+  const auto right = std::upper_bound(seat_.begin() + 1, seat_.end() - 1, p.x,
+                                      [](double x, const Vec2& v) { return x < v.x; });
+  const Vec2 a = *(right - 1), b = *right;
+  return p.y - (a.y + (b.y - a.y) * ((p.x - a.x) / (b.x - a.x)));
+}
+
+double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
+  return clearance_at(vertex_at(i, s));
+}
+
+double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
+  const Vec2 p = seat_[static_cast<std::size_t>(k)];
+  double squared = std::numeric_limits<double>::infinity();
+  bool inside = false;
+  const std::size_t n = body_.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = world[i], b = world[j];
+    const Vec2 d = minus(b, a), ap = minus(p, a);
+    const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
+    const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
+    squared = std::min(squared, dot(off, off));
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
+      inside = !inside;
+    }
+  }
+  const double distance = std::sqrt(squared);
+  return inside ? -distance : distance;
+}
+
+double SeatContacts::point_clearance(int k, const BlockState& s) const {
+  std::vector<Vec2> world(body_.size());
+  world_vertices(s, world);
+  return point_clearance(k, world);
+}
+
+double SeatContacts::penetration(const BlockState& s) const {
+  std::vector<Vec2> world(body_.size());
+  world_vertices(s, world);
+  double deepest = 0.0;
+  for (const Vec2& p : world) deepest = std::max(deepest, -clearance_at(p));
+  for (int k = 0; k < point_count(); ++k) deepest = std::max(deepest, -point_clearance(k, world));
+  return deepest;
+}
+
+double SeatContacts::height_over_fall(const BlockState& s, std::span<const Vec2> world,
+                                      double depth) const {
+  const bool past_left = s.x<seat_.front().x, past_right = s.x> seat_.back().x;
+  if (!past_left && !past_right) return depth;
+  const double end = past_left ? seat_.front().y : seat_.back().y;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < body_.size(); ++i) lowest = std::min(lowest, world[i].y);
+  return lowest - (end - depth);
+}
+
+}  // namespace blockfrag

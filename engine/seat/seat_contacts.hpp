@@ -1,0 +1,99 @@
+// Where a block touches its seat (engine/scene/seat.hpp) at a pose: the possible contacts (a block
+// vertex on a seat segment, a seat point on a block edge), their gaps and the contacts the force
+// and impact laws of engine/contact/planar_contact.hpp take. World frame: the frame of the block's
+// vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "engine/contact/planar_contact.hpp"
+#include "engine/scene/block_state.hpp"
+#include "engine/scene/polygon_properties.hpp"
+
+namespace blockfrag {
+
+// A possible contact. block_vertex: block vertex `block` on seat segment `seat` (from seat point
+// `seat` to the next). seat_point: seat point `seat` on block edge `block` (from vertex `block` to
+// the next, counter-clockwise).
+struct SeatPair {
+  ContactKind kind;
+  int block, seat;
+  bool operator==(const SeatPair&) const = default;
+};
+
+// A pair at a pose: its gap (> 0 open), where its point lies along the segment or edge (0 at its
+// start, `length` at its end) and the contact the force laws take (the normal is the segment's
+// upward one, or the edge's inward one).
+struct PairPose {
+  double gap, along, length;
+  PlanarContact contact;
+};
+
+class SeatContacts {
+ public:
+  // The block's vertices (counter-clockwise) and the seat's points (left to right), in one frame.
+  SeatContacts(const std::vector<Vertex>& block, const std::vector<Vertex>& seat);
+
+  // The centre of mass at rest, in the seat's frame.
+  Vec2 rest_centre() const { return centre_; }
+  int vertex_count() const { return static_cast<int>(body_.size()); }
+  int point_count() const { return static_cast<int>(seat_.size()); }
+  Vec2 seat_point(int k) const { return seat_[static_cast<std::size_t>(k)]; }
+  // Block vertex i in the world frame at the pose.
+  Vec2 vertex_at(int i, const BlockState& s) const;
+
+  PairPose pose(const SeatPair& pair, const BlockState& s) const;
+
+  // Every pair whose gap is within `tolerance` of zero and whose point lies on its segment or
+  // edge (within `tolerance`), but `left` (a contact that has just left its segment's end). A
+  // block vertex at a seat point (the type B block's heel and fold) is taken on each seat segment
+  // it ends, with that segment's normal; a seat point at a block vertex is taken on the block's
+  // edges there only when that vertex is on no seat segment, and then on the edge whose normal is
+  // nearer the seat's upward one: where a vertex meets a vertex, the seat pushes up (the heel's
+  // seat point never pushes on the upstream face above it).
+  // A seat point that has just reached the block (`arrived`) is taken even at a vertex on the
+  // seat (that vertex is passing the seat's end or a bend, and the point carries the block from
+  // there), on the edge there whose range it moves into, or if that does not decide, on the one it
+  // approaches faster: the one it came in through.
+  std::vector<SeatPair> touching(const BlockState& s, double tolerance,
+                                 const std::optional<SeatPair>& left, int arrived) const;
+
+  // Whether the seat's points lie on one line (a flat seat, within `tolerance` m).
+  bool straight(double tolerance) const;
+  // How far theta is from overturning (> 0 inside): on a straight seat the flat ground's rule (the
+  // face next to the base lies on it, engine/scene/block_geometry.hpp), elsewhere a quarter turn
+  // either way (on a folded seat no single face lies on it; past a quarter turn the block's base
+  // faces sideways, and it has tipped over).
+  double overturn_margin(const BlockGeometry& geometry, double theta) const;
+  // The tilt the block is reported at when it overturns towards the sign of `direction`.
+  double overturn_theta(const BlockGeometry& geometry, double direction) const;
+
+  // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
+  // rotation for all, for the guards that look at every vertex.
+  void world_vertices(const BlockState& s, std::span<Vec2> out) const;
+  // vertex_clearance and point_clearance for the vertices given in the world frame.
+  double clearance_at(Vec2 p) const;
+  double point_clearance(int k, std::span<const Vec2> world) const;
+
+  // How far block vertex i is above the seat (its height over the seat for x within the seat's
+  // ends, else its distance from the nearer end): <= 0 where it touches or is below.
+  double vertex_clearance(int i, const BlockState& s) const;
+  // Seat point k's signed distance from the block's boundary: > 0 outside, < 0 inside.
+  double point_clearance(int k, const BlockState& s) const;
+  // How deep the block is in the seat: the largest of -clearance over vertices and points (>= 0).
+  double penetration(const BlockState& s) const;
+  // How far the lowest block vertex is above the level `depth` below the end of the seat the
+  // centre of mass has passed (> 0 while it has not fallen there); `depth` where it has passed
+  // neither end. `world`: the block's vertices at the pose (world_vertices).
+  double height_over_fall(const BlockState& s, std::span<const Vec2> world, double depth) const;
+
+ private:
+  std::vector<Vec2> body_;  // block vertices relative to the centre of mass, body frame
+  std::vector<Vec2> seat_;
+  Vec2 centre_;
+  bool straight_ = false;  // set from the block's size: see the constructor
+};
+
+}  // namespace blockfrag

@@ -1,0 +1,738 @@
+#include "engine/seat/seat_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "engine/contact/contact_lcp.hpp"
+#include "engine/contact/planar_impact.hpp"
+#include "engine/errors.hpp"
+#include "engine/integrate/guard_crossing.hpp"
+#include "engine/integrate/root_finding.hpp"
+#include "engine/integrate/with_stepper.hpp"
+#include "engine/motion/scene_motion.hpp"
+#include "engine/scene/seat.hpp"
+#include "engine/seat/seat_system.hpp"
+#include "engine/segment_observer.hpp"
+#include "engine/tolerances.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+// Gauss-Newton iterations that put the active contacts' gaps back to zero after an event.
+constexpr int kProjectionIterations = 4;
+// Halvings of the lambda interval that bracket where rest on a seat ends.
+constexpr int kRestThresholdHalvings = 64;
+
+bool reached(double t, double end) { return end - t <= kReachedEnd * std::max(1.0, std::abs(end)); }
+
+RigidVelocity velocity_of(const BlockState& s) { return {s.vx, s.vy, s.omega}; }
+
+void set_velocity(BlockState& s, const RigidVelocity& v) {
+  s.vx = v.vx;
+  s.vy = v.vy;
+  s.omega = v.omega;
+}
+
+bool is_slip(ContactState s) {
+  return s == ContactState::slip_positive || s == ContactState::slip_negative;
+}
+
+// The mode between two events: the active contacts and their states (none: flight); at rest the
+// block does not move while lambda / (1 + lambda_v) stays within [rest_low, rest_high].
+struct SeatMode {
+  std::vector<ActiveContact> active;
+  bool rest = false;
+  double rest_low = 0.0, rest_high = 0.0;
+  // The contacts leave the block no freedom: it cannot move, only wait for a force guard (just
+  // past where rest ended, inside the contact problem's tolerance).
+  bool pinned = false;
+};
+
+// Rest, or pinned; no contact: flight; one contact: rock when it sticks, slide-rock
+// when it slips; several: slide when all slip, slide-rock when some do, rock otherwise (a vertex
+// sticking in the fold, on both its segments).
+ModeKind kind_of(const SeatMode& mode) {
+  if (mode.rest) return ModeKind::rest;
+  if (mode.pinned) return ModeKind::rest;
+  if (mode.active.empty()) return ModeKind::flight;
+  const auto slipping = std::count_if(mode.active.begin(), mode.active.end(),
+                                      [](const ActiveContact& a) { return is_slip(a.state); });
+  if (mode.active.size() == 1) return slipping == 1 ? ModeKind::slide_rock : ModeKind::rock;
+  if (slipping == static_cast<long>(mode.active.size())) return ModeKind::slide;
+  return slipping > 0 ? ModeKind::slide_rock : ModeKind::rock;
+}
+
+class SeatSimulation {
+ public:
+  SeatSimulation(const Scene& scene, double output_interval)
+      : scene_(scene),
+        geometry_(scene_geometry(scene)),
+        contacts_(scene_block_vertices(scene), scene.seat->points),
+        motion_(scene_motion(scene)),
+        vertical_(scene_vertical_motion(scene)),
+        excitation_end_(std::max(motion_.end_of_motion(), vertical_.end_of_motion())),
+        R_(geometry_.size()),
+        velocity_tol_(kRestingVelocity * std::sqrt(scene.g * R_)),
+        settle_velocity_(kSettleVelocity * std::sqrt(scene.g * R_)),
+        observer_(summary_, geometry_, output_interval, scene.g),
+        log_impacts_(output_interval > 0) {
+    summary_.model = std::holds_alternative<NoMotion>(scene.vertical_motion) ? Model::full
+                                                                             : Model::full_vertical;
+  }
+
+  void run();
+  void finish();
+  Summary& summary() { return summary_; }
+  std::vector<HistoryRow>& history() { return observer_.history(); }
+  std::vector<ImpactRecord>& impact_log() { return impact_log_; }
+
+ private:
+  double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
+  Vec2 applied(double t) const {
+    return {motion_.lambda(t) * scene_.g, -scene_.g * gravity_factor(t)};
+  }
+  SeatSystem system(const MotionPiece& piece) const;
+  PlanarContact contact_of(const SeatPair& pair, const BlockState& s) const {
+    return contacts_.pose(pair, s).contact;
+  }
+  std::vector<SeatPair> touching(const BlockState& s) const;
+  // Impacts at the contacts that approach, one at a time as on the flat ground, until none does.
+  // slow: some impact was slower than the settling speed.
+  bool resolve_impacts(BlockState& s, const std::vector<SeatPair>& touching, bool& slow);
+  SeatMode resolve();
+  SeatMode logged_mode(const SeatMode& mode, std::size_t logged);
+  bool holds_at_rest(const PlanarForces& f) const;
+  void project(const SeatMode& mode);
+  bool rest_holds(double lambda) const;
+  void set_rest_thresholds(SeatMode& mode) const;
+  // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
+  double rest_margin(double t, const MotionPiece& piece, const MotionPiece& vertical) const;
+  void enter(const SeatMode& mode);
+  void check_budget();
+  double step_cap(const MotionPiece& piece) const;
+  bool holds_under(const MotionPiece& piece) const;
+  void observe(const BlockState& s);
+  void stop_at(double t, const BlockState& s, SeatEvent why);
+  void advance_rest(double t_stop);
+  template <class Stepper>
+  void integrate_with(const SeatSystem& system, Stepper& stepper, const MotionPiece& piece,
+                      double t_stop);
+  bool at_rest_for_good() const { return mode_.rest && t_ >= excitation_end_; }
+
+  const Scene& scene_;
+  BlockGeometry geometry_;
+  SeatContacts contacts_;
+  GroundMotionPieces motion_;
+  GroundMotionPieces vertical_;
+  double excitation_end_;
+  double R_, velocity_tol_, settle_velocity_;
+  Summary summary_;
+  SegmentObserver observer_;
+  double t_ = 0.0;
+  BlockState state_;
+  SeatMode mode_;
+  bool stopped_ = false;
+  bool ended_by_event_ = false;  // the last integrated stretch ended at a guard's crossing
+  // The contact whose force reached zero or its cone's edge, or that left its segment's or
+  // edge's end, at the last event, if one did.
+  struct ForceEvent {
+    SeatPair pair;
+    SeatEvent event;
+  };
+  std::optional<ForceEvent> force_event_;
+  int arrived_point_ = -1;  // the seat point that reached the block at the last event, if one did
+  double rest_since_ = 0.0;
+  double run_end_ = 0.0;
+  int stalled_events_ = 0;
+  double deepest_ = 0.0;  // m: the block's largest penetration of the seat seen
+  bool log_impacts_;
+  std::vector<ImpactRecord> impact_log_;
+};
+
+SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
+  const SeatSystemContext context{&contacts_,     &geometry_,
+                                  &piece,         &vertical_.piece_at(t_),
+                                  scene_.g,       scene_.contact.friction,
+                                  kFallDepth * R_};
+  // Vertices and points in an active contact are not watched for touching: they touch.
+  std::vector<int> vertices, points;
+  const double near = kSeatContactDrift * R_;
+  for (int i = 0; i < contacts_.vertex_count(); ++i) {
+    const bool active = std::any_of(mode_.active.begin(), mode_.active.end(), [&](const auto& a) {
+      return a.pair.kind == ContactKind::block_vertex && a.pair.block == i;
+    });
+    if (!active) vertices.push_back(i);
+  }
+  for (int k = 0; k < contacts_.point_count(); ++k) {
+    const Vec2 p = contacts_.seat_point(k);
+    const bool active = std::any_of(mode_.active.begin(), mode_.active.end(), [&](const auto& a) {
+      if (a.pair.kind == ContactKind::seat_point) return a.pair.seat == k;
+      const Vec2 v = contacts_.vertex_at(a.pair.block, state_);
+      return std::hypot(v.x - p.x, v.y - p.y) <= near;
+    });
+    if (!active) points.push_back(k);
+  }
+  return SeatSystem(context, mode_.active, vertices, points);
+}
+
+std::vector<SeatPair> SeatSimulation::touching(const BlockState& s) const {
+  const double tight = kContactHeight * R_;
+  std::vector<SeatPair> out;
+  std::optional<SeatPair> left;
+  if (force_event_ && force_event_->event == SeatEvent::leaves_end) left = force_event_->pair;
+  for (const SeatPair& pair : contacts_.touching(s, kSeatContactDrift * R_, left, arrived_point_)) {
+    const bool was_active = std::any_of(mode_.active.begin(), mode_.active.end(),
+                                        [&](const ActiveContact& a) { return a.pair == pair; });
+    // Another pair touches when it is closer than a new contact's tolerance, or in the seat (a
+    // drifted contact can leave a vertex under the line of the segment it has just left).
+    if (was_active || contacts_.pose(pair, s).gap <= tight) out.push_back(pair);
+  }
+  if (out.size() > static_cast<std::size_t>(kMaxSeatContacts)) {
+    throw SimulationFailure("more than " + std::to_string(kMaxSeatContacts) +
+                            " contacts with the seat at once at t = " + std::to_string(t_) + " s");
+  }
+  return out;
+}
+
+bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>& pairs,
+                                     bool& slow) {
+  const double k2 = geometry_.inertia_per_mass();
+  const double mu = scene_.contact.friction;
+  for (int round = 0; round < kMaxImpactRounds; ++round) {
+    std::vector<PlanarContact> all;
+    double fastest = 0.0;
+    int first = -1;
+    for (const SeatPair& pair : pairs) {
+      all.push_back(contact_of(pair, s));
+      const double u_n = contact_velocity(all.back(), velocity_of(s)).normal;
+      if (u_n < -velocity_tol_ && u_n < fastest) {
+        fastest = u_n;
+        first = static_cast<int>(all.size()) - 1;
+      }
+    }
+    if (first < 0) return true;
+    const double before = kinetic_energy_per_mass(geometry_, s);
+    const BlockState start = s;
+    slow = slow || -fastest < settle_velocity_;
+    const double e = -fastest < settle_velocity_ ? 0.0 : scene_.contact.restitution;
+    const PlanarImpactInput one{
+        {all[static_cast<std::size_t>(first)]}, velocity_of(s), k2, mu, e, R_};
+    PlanarImpact impact = resolve_contact_impact(one);
+    set_velocity(s, impact.after);
+    // The paper's law at the contact that hits first, as on the flat ground; when that drives
+    // another touching contact into the seat (a flat landing), all take their impulses together.
+    bool others_approach = false;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (static_cast<int>(i) == first) continue;
+      others_approach =
+          others_approach || contact_velocity(all[i], velocity_of(s)).normal < -velocity_tol_;
+    }
+    if (others_approach || -fastest < settle_velocity_) {
+      impact = simultaneous_impact({all, velocity_of(start), k2, mu, e, R_});
+      if (impact.determinacy != Determinacy::unique) ++summary_.painleve_events;
+      s = start;
+      set_velocity(s, impact.after);
+    }
+    const double after = kinetic_energy_per_mass(geometry_, s);
+    if (before > 0) {
+      summary_.max_impact_energy_gain =
+          std::max(summary_.max_impact_energy_gain, (after - before) / before);
+    }
+    if (log_impacts_) {
+      impact_log_.push_back({t_, start.omega, s.omega, before, after, ModeKind::flight});
+    }
+    if (round == 0) {
+      ++summary_.impacts;
+      if (!summary_.first_impact_time) summary_.first_impact_time = t_;
+    }
+  }
+  return false;
+}
+
+SeatMode SeatSimulation::resolve() {
+  BlockState s = state_;
+  const std::vector<SeatPair> pairs = touching(s);
+  const std::size_t logged = impact_log_.size();
+  bool slow_landing = false;
+  if (!resolve_impacts(s, pairs, slow_landing)) {
+    throw SimulationFailure("impacts on the seat do not end at t = " + std::to_string(t_) + " s");
+  }
+  // A landing slower than the settling speed where two contacts or more touch, after which no
+  // touching contact moves faster than that speed, lays the block at rest (the flat ground's
+  // lay_flat): it ends a Zeno sequence of ever smaller bounces in finite time.
+  bool slow = slow_landing && pairs.size() >= 2;
+  for (const SeatPair& pair : pairs) {
+    const ContactVelocity u = contact_velocity(contact_of(pair, s), velocity_of(s));
+    slow =
+        slow && std::abs(u.normal) <= settle_velocity_ && std::abs(u.tangent) <= settle_velocity_;
+  }
+  if (slow) s.vx = s.vy = s.omega = 0.0;
+  // The contacts that can carry force: touching and not leaving.
+  std::vector<SeatPair> carrying;
+  PlanarForcesInput in{{},
+                       velocity_of(s),
+                       geometry_.inertia_per_mass(),
+                       applied(t_),
+                       scene_.contact.friction,
+                       velocity_tol_,
+                       scene_.g,
+                       R_};
+  for (const SeatPair& pair : pairs) {
+    const PlanarContact c = contact_of(pair, s);
+    if (contact_velocity(c, velocity_of(s)).normal > velocity_tol_) continue;
+    carrying.push_back(pair);
+    in.contacts.push_back(c);
+  }
+  SeatMode mode;
+  state_ = s;
+  if (carrying.empty()) return logged_mode(mode, logged);
+  const PlanarForces forces = resolve_contact_forces(in);
+  if (forces.determinacy != Determinacy::unique) ++summary_.painleve_events;
+  const bool still = std::abs(s.vx) <= velocity_tol_ && std::abs(s.vy) <= velocity_tol_ &&
+                     R_ * std::abs(s.omega) <= velocity_tol_;
+  // Just past a lift-off or slip-start guard the block cannot stay put, whatever the tolerance of
+  // the contact problem lets it choose.
+  if (still && holds_at_rest(forces) && !force_event_) {
+    // At rest every touching contact is kept: where rest ends is found on all of them.
+    mode.rest = true;
+    for (const SeatPair& pair : carrying) mode.active.push_back({pair, ContactState::stick});
+    state_.vx = state_.vy = state_.omega = 0.0;
+    return logged_mode(mode, logged);
+  }
+  for (std::size_t i = 0; i < carrying.size(); ++i) {
+    ContactState state = forces.states[i];
+    // The contact problem accepts forces a tolerance outside their cone (1e-9 g): just past the
+    // guard that said the force left it, it can still choose the old state. The guard's crossing
+    // decides then, as the flat ground's closed forms do: the contact lifts off, or slips against
+    // its friction.
+    if (force_event_ && force_event_->pair == carrying[i]) {
+      const auto before =
+          std::find_if(mode_.active.begin(), mode_.active.end(),
+                       [&](const ActiveContact& a) { return a.pair == carrying[i]; });
+      if (before != mode_.active.end() && before->state == state) {
+        if (force_event_->event == SeatEvent::lift_off) {
+          state = ContactState::off;
+        } else if (state == ContactState::stick) {
+          state = forces.tangent[i] > 0 ? ContactState::slip_negative : ContactState::slip_positive;
+        }
+      }
+    }
+    if (state != ContactState::off) mode.active.push_back({carrying[i], state});
+  }
+  // Pinned: the active contacts' normal velocities and the sticking ones' tangential velocities
+  // leave the block no freedom (their rows have rank 3).
+  Eigen::MatrixXd rows(static_cast<Eigen::Index>(2 * mode.active.size()), 3);
+  Eigen::Index count = 0;
+  for (const ActiveContact& a : mode.active) {
+    const PlanarContact c = contact_of(a.pair, s);
+    // theta's column through R, so the rank test compares like with like.
+    rows.row(count++) = contact_row(c, c.normal).cwiseProduct(Eigen::RowVector3d(1, 1, 1 / R_));
+    if (a.state == ContactState::stick) {
+      rows.row(count++) =
+          contact_row(c, contact_tangent(c)).cwiseProduct(Eigen::RowVector3d(1, 1, 1 / R_));
+    }
+  }
+  if (count >= 3) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(rows.topRows(count));
+    lu.setThreshold(kSeatContactDrift);
+    mode.pinned = lu.rank() == 3;
+  }
+  return logged_mode(mode, logged);
+}
+
+SeatMode SeatSimulation::logged_mode(const SeatMode& mode, std::size_t logged) {
+  for (std::size_t i = logged; i < impact_log_.size(); ++i)
+    impact_log_[i].mode_after = kind_of(mode);
+  return mode;
+}
+
+// No contact slips and the block does not accelerate (to 1e-9 g, as the contact problem's
+// tolerance): the one test of rest, at an event and where rest's lambda range ends.
+bool SeatSimulation::holds_at_rest(const PlanarForces& f) const {
+  const double tolerance = 1e-9 * scene_.g;
+  return std::none_of(f.states.begin(), f.states.end(), is_slip) &&
+         std::abs(f.acceleration.x_dd) <= tolerance && std::abs(f.acceleration.y_dd) <= tolerance &&
+         R_ * std::abs(f.acceleration.theta_dd) <= tolerance;
+}
+
+// Puts the active contacts' gaps back to zero (least change of x, y, theta) and their normal
+// velocities (and a sticking one's tangential velocity) too.
+void SeatSimulation::project(const SeatMode& mode) {
+  if (mode.active.empty()) return;
+  const auto k = static_cast<Eigen::Index>(mode.active.size());
+  for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
+    Eigen::MatrixXd j(k, 3);
+    Eigen::VectorXd gap(k);
+    for (Eigen::Index i = 0; i < k; ++i) {
+      const PairPose p = contacts_.pose(mode.active[static_cast<std::size_t>(i)].pair, state_);
+      j.row(i) = contact_row(p.contact, p.contact.normal);
+      gap(i) = p.gap;
+    }
+    if (gap.cwiseAbs().maxCoeff() <= std::numeric_limits<double>::epsilon() * R_) break;
+    const Eigen::Vector3d dq = j.completeOrthogonalDecomposition().solve(-gap);
+    state_.x += dq(0);
+    state_.y += dq(1);
+    state_.theta += dq(2);
+  }
+  if (mode.rest) return;
+  std::vector<Eigen::RowVector3d> rows;
+  std::vector<double> velocities;
+  for (const ActiveContact& a : mode.active) {
+    const PlanarContact c = contact_of(a.pair, state_);
+    const ContactVelocity u = contact_velocity(c, velocity_of(state_));
+    rows.push_back(contact_row(c, c.normal));
+    velocities.push_back(u.normal);
+    if (a.state == ContactState::stick) {
+      rows.push_back(contact_row(c, contact_tangent(c)));
+      velocities.push_back(u.tangent);
+    }
+  }
+  Eigen::MatrixXd j(static_cast<Eigen::Index>(rows.size()), 3);
+  Eigen::VectorXd u(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    j.row(static_cast<Eigen::Index>(i)) = rows[i];
+    u(static_cast<Eigen::Index>(i)) = velocities[i];
+  }
+  const Eigen::Vector3d dv = j.completeOrthogonalDecomposition().solve(-u);
+  state_.vx += dv(0);
+  state_.vy += dv(1);
+  state_.omega += dv(2);
+}
+
+// Whether the block at rest on its active contacts stays at rest under lambda (with g).
+bool SeatSimulation::rest_holds(double lambda) const {
+  PlanarForcesInput in{{},
+                       {0.0, 0.0, 0.0},
+                       geometry_.inertia_per_mass(),
+                       {lambda * scene_.g, -scene_.g},
+                       scene_.contact.friction,
+                       velocity_tol_,
+                       scene_.g,
+                       R_};
+  for (const ActiveContact& a : mode_.active) in.contacts.push_back(contact_of(a.pair, state_));
+  return holds_at_rest(resolve_contact_forces(in));
+}
+
+// The lambda range of rest: rest holds on an interval of lambda (the contact forces that balance
+// the load form a convex cone), found by doubling then halving from lambda = 0 each way.
+void SeatSimulation::set_rest_thresholds(SeatMode& mode) const {
+  const auto edge = [&](double direction) {
+    double inside = 0.0, outside = direction;
+    while (rest_holds(outside)) {
+      inside = outside;
+      if (std::abs(outside) >= kRestSearchLimit)
+        return direction * std::numeric_limits<double>::infinity();
+      outside *= 2.0;
+    }
+    for (int i = 0; i < kRestThresholdHalvings && std::abs(outside - inside) > 0.0; ++i) {
+      const double middle = 0.5 * (inside + outside);
+      if (middle == inside || middle == outside) break;
+      (rest_holds(middle) ? inside : outside) = middle;
+    }
+    return inside;
+  };
+  mode.rest_high = edge(1.0);
+  mode.rest_low = edge(-1.0);
+}
+
+double SeatSimulation::rest_margin(double t, const MotionPiece& piece,
+                                   const MotionPiece& vertical) const {
+  const double lambda = piece.lambda(t), factor = 1.0 + vertical.lambda(t);
+  return kOnsetMargin +
+         std::min({mode_.rest_high * factor - lambda, lambda - mode_.rest_low * factor, factor});
+}
+
+void SeatSimulation::enter(const SeatMode& next) {
+  ++summary_.events;
+  const bool first = summary_.modes.empty();
+  const ModeKind before = kind_of(mode_);
+  mode_ = next;
+  project(mode_);
+  if (mode_.rest) set_rest_thresholds(mode_);
+  const ModeKind now = kind_of(mode_);
+  if (now == ModeKind::rest && (first || before != ModeKind::rest)) rest_since_ = t_;
+  if (first || now != before) summary_.modes.push_back({t_, now});
+  if ((now == ModeKind::rock || now == ModeKind::slide_rock) && !summary_.rock_start_time) {
+    summary_.rock_start_time = t_;
+  }
+  if ((now == ModeKind::slide || now == ModeKind::slide_rock) && !summary_.slide_start_time) {
+    summary_.slide_start_time = t_;
+  }
+  observe(state_);
+  check_budget();
+}
+
+void SeatSimulation::check_budget() {
+  const SolverSettings& solver = scene_.solver;
+  if (summary_.steps > solver.max_steps) {
+    throw SimulationFailure("step budget exceeded (" + std::to_string(solver.max_steps) +
+                            " steps)");
+  }
+  if (summary_.events > solver.max_events) {
+    throw SimulationFailure("event budget exceeded (" + std::to_string(solver.max_events) +
+                            " events): the contact state keeps changing");
+  }
+}
+
+double SeatSimulation::step_cap(const MotionPiece& piece) const {
+  const double block_time = std::sqrt(R_ / scene_.g);
+  return std::min({kMaxStepOverBlockTime * block_time, piece.time_scale() / kStepsPerPieceTimeScale,
+                   vertical_.piece_at(t_).time_scale() / kStepsPerPieceTimeScale});
+}
+
+void SeatSimulation::observe(const BlockState& s) {
+  observer_.observe_state(s);
+  deepest_ = std::max(deepest_, contacts_.penetration(s));
+}
+
+void SeatSimulation::stop_at(double t, const BlockState& s, SeatEvent why) {
+  t_ = t;
+  state_ = s;
+  if (why == SeatEvent::overturns) {
+    state_.theta = contacts_.overturn_theta(geometry_, s.theta);
+    summary_.overturned = true;
+    summary_.overturn_time = t;
+  } else {
+    summary_.fell = true;
+    summary_.fell_time = t;
+  }
+  observer_.observe_state(state_);
+  stopped_ = true;
+}
+
+// At rest the block does not move; rest ends where lambda leaves the rest range (by the onset
+// margin), looked for at lambda's extremes and, with vertical motion, at samples.
+void SeatSimulation::advance_rest(double t_stop) {
+  const MotionPiece& piece = motion_.piece_at(t_);
+  const MotionPiece& vertical = vertical_.piece_at(t_);
+  const BlockState s = state_;
+  const auto state_at = [&](double) { return s; };
+  const auto forces_at = [&](double t) {
+    const Vec2 f = applied(t);
+    return ContactForces{-f.x, -f.y};
+  };
+  std::vector<double> checks = piece.extrema_between(t_, t_stop);
+  if (!vertical.is_zero()) {
+    const std::vector<double> more = vertical.extrema_between(t_, t_stop);
+    checks.insert(checks.end(), more.begin(), more.end());
+    const double spacing =
+        std::min(piece.time_scale(), vertical.time_scale()) / kRestChecksPerTimeScale;
+    if (std::isfinite(spacing)) {
+      for (double t = t_ + spacing; t < t_stop; t += spacing) checks.push_back(t);
+    }
+    std::sort(checks.begin(), checks.end());
+  }
+  checks.push_back(t_stop);
+  const auto margin = [&](double t) { return rest_margin(t, piece, vertical); };
+  double previous = t_, previous_margin = margin(t_);
+  for (const double t : checks) {
+    const double m = margin(t);
+    if (m < 0) {
+      const double t_event =
+          previous_margin < 0
+              ? previous
+              : locate_crossing(margin, previous, t,
+                                std::max(previous_margin, std::numeric_limits<double>::min()), m,
+                                kEventTimeTolerance * (1.0 + t))
+                    .after;
+      observer_.observe_step(t_, t_event, state_at, forces_at, ModeKind::rest);
+      t_ = t_event;
+      ended_by_event_ = true;
+      return;
+    }
+    previous = t;
+    previous_margin = m;
+  }
+  observer_.observe_step(t_, t_stop, state_at, forces_at, ModeKind::rest);
+  t_ = t_stop;
+}
+
+// As the flat ground's modes: steps until a guard crosses zero or t_stop; a crossing is located on
+// the dense output and the state left just after it.
+template <class Stepper>
+void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
+                                    const MotionPiece& piece, double t_stop) {
+  auto q = system.coordinates(state_);
+  double t = t_;
+  GuardWatch<SeatSystem::kGuards> watch(system.guards(t, q));
+  const double cap = step_cap(piece);
+  const auto forces_at = [&](double x) { return system.forces(x, stepper.dense(x)); };
+  const auto state_at = [&](double x) { return system.full(x, stepper.dense(x)); };
+  long steps_counted = 0, rhs_counted = 0;
+  constexpr bool kRetakesStepToEvent = requires { Stepper::kFixedStep; };
+  double retake_until = std::numeric_limits<double>::infinity();
+  const ModeKind kind = kind_of(mode_);
+  while (!reached(t, t_stop)) {
+    const double t0 = t;
+    const auto q0 = q;
+    const bool retaking = std::isfinite(retake_until);
+    stepper.step(system, t, q, std::min({t_stop - t, cap, retake_until - t}));
+    retake_until = std::numeric_limits<double>::infinity();
+    if (reached(t, t_stop)) t = t_stop;
+    summary_.steps += stepper.steps() - steps_counted;
+    summary_.rhs_evaluations += stepper.rhs_evaluations() - rhs_counted;
+    steps_counted = stepper.steps();
+    rhs_counted = stepper.rhs_evaluations();
+    if ((summary_.steps & kBudgetCheckMask) == 0) check_budget();
+
+    const auto next = system.guards(t, q);
+    const auto guards_at = [&](double x) { return system.guards(x, stepper.dense(x)); };
+    const auto least_at_ends = [&] {
+      return system.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
+    };
+    const auto crossing = watch.first_crossing(guards_at, t0, t, next, least_at_ends);
+    const int which = crossing.which;
+    const double t_event = crossing.after;
+    if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {
+      retake_until = t_event + kRetakeOvershoot * (t - t_event);
+      t = t0;
+      q = q0;
+      continue;
+    }
+    watch.advance(next);
+
+    const double kept = which < 0 ? t : t_event;
+    if (system.active_count() > 0) {
+      const FixedStateForces f = system.solve(crossing.before, stepper.dense(crossing.before));
+      for (int i = 0; i < system.active_count(); ++i) {
+        const auto at = static_cast<std::size_t>(i);
+        summary_.max_contact_violation = std::max(
+            {summary_.max_contact_violation, -f.normal[at] / scene_.g,
+             (std::abs(f.tangent[at]) - scene_.contact.friction * f.normal[at]) / scene_.g});
+      }
+    }
+    observer_.observe_step(t0, kept, state_at, forces_at, kind);
+    deepest_ = std::max(deepest_, contacts_.penetration(state_at(kept)));
+    if (which < 0) continue;
+    const BlockState at_event = state_at(t_event);
+    SeatEvent event = system.event(which);
+    // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
+    // top corner at theta = pi/2): that is overturning, whichever guard rounding put first.
+    if (event == SeatEvent::touches &&
+        contacts_.overturn_margin(geometry_, at_event.theta) <= kContactHeight) {
+      event = SeatEvent::overturns;
+    }
+    arrived_point_ = event == SeatEvent::touches ? system.watched_point(which) : -1;
+    if (event == SeatEvent::lift_off || event == SeatEvent::friction_limit ||
+        event == SeatEvent::leaves_end) {
+      const auto contact = static_cast<std::size_t>((which - 2) / kSeatContactGuards);
+      force_event_ = ForceEvent{mode_.active[contact].pair, event};
+    }
+    if (event == SeatEvent::overturns || event == SeatEvent::falls) {
+      stop_at(t_event, at_event, event);
+      return;
+    }
+    t_ = t_event;
+    state_ = at_event;
+    ended_by_event_ = true;
+    return;
+  }
+  t_ = t_stop;
+  state_ = system.full(t, q);
+}
+
+bool SeatSimulation::holds_under(const MotionPiece& piece) const {
+  if (mode_.rest) return false;
+  const SeatSystem next = system(piece);
+  const auto guards = next.guards(t_, next.coordinates(state_));
+  for (int i = 0; i < SeatSystem::kGuards; ++i) {
+    const SeatEvent e = next.event(i);
+    if ((e == SeatEvent::lift_off || e == SeatEvent::friction_limit) &&
+        !(guards[static_cast<std::size_t>(i)] > 0)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void SeatSimulation::run() {
+  const Vec2 centre = contacts_.rest_centre();
+  state_.x = centre.x;
+  state_.y = centre.y;
+  observer_.start(state_);
+  enter(resolve());
+  run_end_ = run_end_time(scene_, motion_, vertical_);
+  const double t_end = run_end_;
+  while (!stopped_ && t_ < t_end) {
+    if (!scene_.duration && at_rest_for_good()) break;
+    const MotionPiece& piece = motion_.piece_at(t_);
+    const double t_stop = std::min({t_end, piece.end(), vertical_.piece_at(t_).end()});
+    const double t_before = t_;
+    ended_by_event_ = false;
+    force_event_.reset();
+    arrived_point_ = -1;
+    if (mode_.rest) {
+      advance_rest(t_stop);
+    } else {
+      const SeatSystem moving = system(piece);
+      with_scene_stepper<SeatSystem::N>(scene_.solver, moving.scale(), [&](auto& stepper) {
+        integrate_with(moving, stepper, piece, t_stop);
+      });
+    }
+    if (stopped_ || t_ >= t_end) break;
+    stalled_events_ = t_ == t_before ? stalled_events_ + 1 : 0;
+    if (stalled_events_ > kMaxStalledEvents) {
+      throw SimulationFailure("no progress: " + std::to_string(kMaxStalledEvents) +
+                              " contact changes at t = " + std::to_string(t_) + " s");
+    }
+    const bool at_piece_end = t_ == t_stop && !ended_by_event_;
+    if (at_piece_end) {
+      const MotionPiece& next = motion_.piece_at(t_);
+      if (mode_.rest ? rest_margin(t_, next, vertical_.piece_at(t_)) > 0 : holds_under(next)) {
+        continue;
+      }
+    }
+    enter(resolve());
+  }
+  finish();
+}
+
+void SeatSimulation::finish() {
+  summary_.end_time = t_;
+  const bool final_fate = summary_.overturned || summary_.fell;
+  summary_.settled = summary_.status == Status::ok && (final_fate || at_rest_for_good());
+  if (summary_.overturned) {
+    summary_.settle_time = summary_.overturn_time;
+  } else if (summary_.fell) {
+    summary_.settle_time = summary_.fell_time;
+  } else if (summary_.settled) {
+    summary_.settle_time = rest_since_;
+  }
+  summary_.final_theta = state_.theta;
+  summary_.final_slide = state_.x - observer_.x0();
+  // The observer measures depth below a flat ground at y = 0; on a seat it is the seat's.
+  summary_.max_penetration = deepest_ / R_;
+  ContactForces forces{0.0, 0.0};
+  if (!stopped_ && mode_.rest) {
+    const Vec2 f = applied(t_);
+    forces = {-f.x, -f.y};
+  } else if (!stopped_ && !mode_.active.empty()) {
+    const SeatSystem now = system(motion_.piece_at(t_));
+    forces = now.forces(t_, now.coordinates(state_));
+  }
+  observer_.finish(t_, state_, forces, kind_of(mode_));
+}
+
+}  // namespace
+
+SimulationWithHistory simulate_on_seat(const Scene& scene, double output_interval) {
+  SeatSimulation simulation(scene, output_interval);
+  try {
+    simulation.run();
+  } catch (const SimulationFailure& failure) {
+    simulation.summary().status = Status::failed;
+    simulation.summary().status_reason = failure.what();
+    simulation.finish();
+  }
+  return {std::move(simulation.summary()), std::move(simulation.history()),
+          std::move(simulation.impact_log())};
+}
+
+}  // namespace blockfrag
