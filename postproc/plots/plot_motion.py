@@ -314,7 +314,8 @@ def plot(data, shape, title, output, wanted, seat=None, ax=None, strip=None):
         strip.spines[side].set_visible(False)
 
     if not own:
-        ax.set_title(title, fontsize=10, pad=28)
+        # Inside the panel, at its top: above it the legend takes the room.
+        ax.text(0.5, 0.985, title, transform=ax.transAxes, ha="center", va="top", fontsize=10.5)
         return
     fig.suptitle(title, fontsize=12)
     fig.tight_layout()

@@ -14,7 +14,8 @@ plot_motion.py: a PNG showing the colours of the modes present and not of the ab
 animated GIF of several distinct frames, a polygon given in another frame drawn like the
 rectangle, a one-line error for a scene that is not the history's; on a seat, the seat drawn (and
 no seat on the flat ground), a block that sinks into the seat or floats off it while touching
-refused, one that falls past the seat's end accepted. plot_spectrum.py: a PNG showing
+refused, one that falls past the seat's end accepted. plot_motion_pair.py: two panels side by
+side, the seat drawn, each history checked against its scene. plot_spectrum.py: a PNG showing
 the colours of the verdicts present (a safe island's among them) and not of those absent, the
 islands found as connected cells above an overturning point, boundary lines that join neighbouring
 crossings and not distant ones, one-line errors for a missing file, a file that is not a spectrum
@@ -49,6 +50,7 @@ PLOT_HISTORY = SOURCE / "postproc" / "plots" / "plot_history.py"
 PLOT_FRAGILITY = SOURCE / "postproc" / "plots" / "plot_fragility.py"
 PLOT_CLOUD = SOURCE / "postproc" / "plots" / "plot_cloud.py"
 PLOT_MOTION = SOURCE / "postproc" / "plots" / "plot_motion.py"
+PLOT_MOTION_PAIR = SOURCE / "postproc" / "plots" / "plot_motion_pair.py"
 PLOT_SPECTRUM = SOURCE / "postproc" / "plots" / "plot_spectrum.py"
 PLOT_SURFACE = SOURCE / "postproc" / "plots" / "plot_fragility_surface.py"
 
@@ -609,6 +611,26 @@ def test_motion_plot_refuses_a_block_in_the_seat(work):
     falling = {"t": np.array([0.0, 1.0, 1.5]), "x": np.array([0.0, -4.5, -5.0]), "y": np.array([0.0, -0.5, -2.0]),
                "theta": np.array([0.0, 0.3, 0.5]), "mode": np.array(["rest", "flight", "flight"])}
     motion.check_fit(shape, falling, "h", "s", seat)
+
+
+def test_motion_pair_draws_two_panels_on_their_seats(work):
+    write_seat_motion(work / "h.csv")
+    write_motion(work / "flat.csv")
+    (work / "seat.json").write_text(json.dumps(ON_SEAT))
+    (work / "flat.json").write_text(json.dumps(RECTANGLE))
+    result = call(PLOT_MOTION_PAIR, work / "h.csv", work / "seat.json", work / "flat.csv", work / "flat.json",
+                  "-o", work / "two.png", "--titles", "on a seat", "flat")
+    assert result.returncode == 0, result.stderr
+    width, height = png_size(work / "two.png")
+    assert width > 1.2 * height, f"two panels side by side: {width} x {height}"
+    pixels = check_plausible_png(work / "two.png")
+    assert colour_pixels(pixels, SEAT_FILL) > 3000, "no seat"
+    assert colour_pixels(pixels, ROCK_EDGE, 3.0 / 255.0) > 400, "no rocking outline"
+    # Each history is checked against its own scene: swapped, they are refused.
+    result = call(PLOT_MOTION_PAIR, work / "h.csv", work / "flat.json", work / "flat.csv", work / "seat.json",
+                  "-o", work / "x.png")
+    assert result.returncode == 1 and "scene of that history" in result.stderr, result.stderr
+    assert not (work / "x.png").exists()
 
 
 # --- plot_spectrum.py ---------------------------------------------------------------------------------
