@@ -14,9 +14,9 @@ damping), and prints for each run next to the paper's numbers:
 - the upstream dislocation at 3.0 s: how far upstream the heel (the block's vertex at the crack's
   upstream end) has moved horizontally from its place at rest, and the centre of mass's (the
   history's x, which includes the shift from rocking);
-- the verdict of a run that settles (no duration, at most 30 s after the pulse and the crest's
-  ringing): stays (and where it comes to rest), falls into the reservoir (past the seat's upstream
-  end, with its time) or overturns (with its time).
+- the verdict of a run that settles (no duration; max_duration 30 s from t = 0, well past the
+  pulse and the crest's ringing): stays (and where it comes to rest), falls into the reservoir
+  (past the seat's upstream end, with its time), overturns (with its time), or still moving at 30 s.
 
     /usr/bin/python3 tests/benchmarks/type_b_paper_table.py --blockfrag build/mpi_driver/blockfrag
 
