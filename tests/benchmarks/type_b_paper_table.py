@@ -136,8 +136,8 @@ def main():
     base["max_duration"] = 30.0
     centroid = centroid_of(base["block"]["polygon"])
 
-    header = ["A", "model", "max upstream theta to 2.5 s [deg] at [s]",
-              "max downstream theta to 2.5 s [deg] at [s]", "theta [deg], omega [rad/s] at 2.0 s", "theta at 3.0 s [deg]",
+    header = ["A", "model", "max upstream theta to 2.5 s [deg] at [s]", "max downstream theta to 2.5 s [deg] at [s]",
+              "theta [deg], omega [rad/s] at 2.0 s", "theta at 3.0 s [deg]",
               "upstream dislocation at 3.0 s [m]: heel (centre)", "verdict"]
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     with tempfile.TemporaryDirectory() as directory:
