@@ -6,7 +6,10 @@ mode: the centre of mass relative to the ground, m and rad) and the scene it ran
 shape: a rectangle's half_width/half_height or a polygon's vertices; a study file's scene works
 too). Draws about 16 outlines, evenly spaced in the rows, filled with the mode's colour of
 plot_history.py and edged in a darker shade, the centre of mass's trail, the ground, and below a
-strip of the modes over time with the snapshots' times marked. With --gif, also an animated GIF
+strip of the modes over time with the snapshots' times marked. A scene with a "seat" (a polyline
+in the frame of the block's vertices) is drawn in that frame: the seat and the body under it in
+place of the flat ground, nothing beyond its ends, and the history's x (the centre of mass's
+displacement from its place at rest) added to the block's centroid there. With --gif, also an animated GIF
 of the block moving (matplotlib's Pillow writer), real time unless that needs more than
 --max-frames frames.
 
@@ -47,6 +50,13 @@ def fill_colour(mode):
 
 def read_shape(path):
     """The block's outline in body coordinates about its centre of mass, counter-clockwise."""
+    return read_scene(path)[0]
+
+
+def read_scene(path):
+    """The block's outline about its centre of mass (as read_shape), and the scene's seat: None on
+    flat ground, else (points, centre): the polyline, left to right, and the block's centre of mass
+    at rest, both in the frame of the block's vertices (a rectangle's centre is its origin)."""
     try:
         with open(path) as stream:
             scene = json.load(stream)
@@ -73,14 +83,37 @@ def read_shape(path):
         if area == 0.0:
             raise InputError(f"{path}: /block/polygon has no area")
         centroid = np.array([((x + x1) * cross).sum(), ((y + y1) * cross).sum()]) / (6.0 * area)
-        return vertices - centroid
+        return vertices - centroid, read_seat(path, scene, centroid)
     try:
         a, b = float(block["half_width"]), float(block["half_height"])
     except (KeyError, TypeError, ValueError) as error:
         raise InputError(f"{path}: /block has neither half_width and half_height nor polygon") from error
     if not (a > 0 and b > 0 and math.isfinite(a) and math.isfinite(b)):
         raise InputError(f"{path}: /block's half_width and half_height must be positive")
-    return np.array([[-a, -b], [a, -b], [a, b], [-a, b]])
+    return np.array([[-a, -b], [a, -b], [a, b], [-a, b]]), read_seat(path, scene, np.zeros(2))
+
+
+def read_seat(path, scene, centre):
+    if "seat" not in scene:
+        return None
+    try:
+        points = np.asarray(scene["seat"], dtype=float)
+    except (TypeError, ValueError) as error:
+        raise InputError(f"{path}: /seat is not a list of [x, y] pairs") from error
+    if points.ndim != 2 or points.shape[1] != 2 or len(points) < 2 or not np.all(np.isfinite(points)):
+        raise InputError(f"{path}: /seat is not a list of at least 2 [x, y] pairs")
+    if np.any(np.diff(points[:, 0]) <= 0):
+        raise InputError(f"{path}: /seat's x must increase strictly, left to right")
+    return points, centre
+
+
+def on_seat(data, seat):
+    """The history with x in the seat's frame: its x is the centre of mass's displacement from rest."""
+    if seat is None:
+        return data
+    shifted = dict(data)
+    shifted["x"] = data["x"] + seat[1][0]
+    return shifted
 
 
 def outline(shape, x, y, theta):
@@ -89,8 +122,52 @@ def outline(shape, x, y, theta):
     return np.column_stack((x + c * shape[:, 0] - s * shape[:, 1], y + s * shape[:, 0] + c * shape[:, 1]))
 
 
-def check_fit(shape, data, history, scene):
-    """Refuse a scene whose block does not stand on the ground of this history."""
+def point_segment_distance(points, a, b):
+    """Distance from each of the points (n x 2) to each segment a[j] -> b[j] (m x 2): n x m."""
+    d = b - a
+    rel = points[:, None, :] - a[None, :, :]
+    u = np.clip(np.sum(rel * d[None], axis=2) / np.sum(d * d, axis=1)[None], 0.0, 1.0)
+    return np.hypot(*np.moveaxis(rel - u[..., None] * d[None], 2, 0))
+
+
+def inside_depth(points, polygon):
+    """How far each point lies inside the closed polygon (0 outside): its distance to the outline."""
+    x, y = points[:, 0:1], points[:, 1:2]
+    x0, y0 = polygon[:, 0][None], polygon[:, 1][None]
+    x1, y1 = np.roll(polygon[:, 0], -1)[None], np.roll(polygon[:, 1], -1)[None]
+    straddles = (y0 > y) != (y1 > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        crossing_x = x0 + (y - y0) * (x1 - x0) / (y1 - y0)
+    inside = np.sum(straddles & (x < crossing_x), axis=1) % 2 == 1
+    distance = point_segment_distance(points, polygon, np.roll(polygon, -1, axis=0)).min(axis=1)
+    return np.where(inside, distance, 0.0)
+
+
+def seat_depth_and_gap(corners, points):
+    """How deep the block (its outline, corners) reaches into the seat (points), and its distance
+    from the seat when it does not. Into the seat: a block vertex below a seat segment under it
+    (measured across the segment), or a seat point inside the block."""
+    a, b = points[:-1], points[1:]
+    depth = 0.0
+    for k in range(len(a)):
+        over = (corners[:, 0] >= a[k, 0]) & (corners[:, 0] <= b[k, 0])
+        if over.any():
+            d = b[k] - a[k]
+            # The height over the segment's line, across it: the cross product with its direction.
+            height = (d[0] * (corners[over, 1] - a[k, 1]) - d[1] * (corners[over, 0] - a[k, 0])) / np.hypot(*d)
+            depth = max(depth, float(-height.min()))
+    depth = max(depth, float(inside_depth(points, corners).max()))
+    gap = min(float(point_segment_distance(corners, a, b).min()),
+              float(point_segment_distance(points, corners, np.roll(corners, -1, axis=0)).min()))
+    return depth, gap
+
+
+def check_fit(shape, data, history, scene, seat=None):
+    """Refuse a scene whose block does not stand on the ground of this history (with a seat, data's
+    x in the seat's frame: on_seat)."""
+    if seat is not None:
+        check_seat_fit(shape, data, history, scene, seat[0])
+        return
     size = float(np.max(np.hypot(shape[:, 0], shape[:, 1])))
     lowest = np.array([outline(shape, x, y, th)[:, 1].min() for x, y, th in zip(data["x"], data["y"], data["theta"])])
     tolerance = FIT_TOLERANCE * size
@@ -108,18 +185,65 @@ def check_fit(shape, data, history, scene):
                              f"is this the scene of that history?")
 
 
-def extent(shape, data):
+def check_seat_fit(shape, data, history, scene, points):
+    size = float(np.max(np.hypot(shape[:, 0], shape[:, 1])))
+    tolerance = FIT_TOLERANCE * size
+    fits = [seat_depth_and_gap(outline(shape, x, y, th), points)
+            for x, y, th in zip(data["x"], data["y"], data["theta"])]
+    depth = np.array([f[0] for f in fits])
+    gap = np.array([f[1] for f in fits])
+    deepest = int(np.argmax(depth))
+    if depth[deepest] > tolerance:
+        raise InputError(f"the block of {scene} would reach {depth[deepest]:.3g} m into the seat at "
+                         f"t = {data['t'][deepest]:.3g} s of {history}: is this the scene of that history?")
+    touching = data["mode"] != "flight"
+    if touching.any():
+        gap = np.where(touching & (depth == 0.0), gap, -np.inf)
+        above = int(np.argmax(gap))
+        if gap[above] > tolerance:
+            raise InputError(f"the block of {scene} would float {gap[above]:.3g} m off the seat at "
+                             f"t = {data['t'][above]:.3g} s of {history} ({data['mode'][above]}): "
+                             f"is this the scene of that history?")
+
+
+def extent(shape, data, seat=None):
     corners = np.vstack([outline(shape, x, y, th) for x, y, th in zip(data["x"], data["y"], data["theta"])])
     size = float(np.max(np.hypot(shape[:, 0], shape[:, 1])))
     margin = 0.12 * size
-    return (corners[:, 0].min() - margin, corners[:, 0].max() + margin,
-            min(0.0, corners[:, 1].min()) - margin, corners[:, 1].max() + margin)
+    if seat is None:
+        return (corners[:, 0].min() - margin, corners[:, 0].max() + margin,
+                min(0.0, corners[:, 1].min()) - margin, corners[:, 1].max() + margin)
+    # The seat in view: all of it that lies within the block's reach, with a margin of body under it.
+    points = seat[0]
+    x_low, x_high = corners[:, 0].min() - margin, corners[:, 0].max() + margin
+    seen = points[(points[:, 0] >= x_low) & (points[:, 0] <= x_high)]
+    seat_low = min(np.interp([x_low, x_high], points[:, 0], points[:, 1]).min(),
+                   seen[:, 1].min() if len(seen) else np.inf)
+    return (x_low, x_high, min(seat_low - 0.25 * size, corners[:, 1].min() - margin),
+            corners[:, 1].max() + margin)
 
 
-def draw_ground(ax, x_low, x_high, depth):
+def draw_ground(ax, x_low, x_high, depth, seat=None):
+    if seat is not None:
+        draw_seat(ax, seat[0], -depth)
+        return
     ax.add_patch(Rectangle((x_low, -depth), x_high - x_low, depth, facecolor="0.93", edgecolor="0.6",
                            hatch="////", linewidth=0, zorder=0))
     ax.axhline(0.0, color="0.15", linewidth=1.2, zorder=1)
+
+
+SEAT_FILL = "#ddd6c8"  # the body under a seat (concrete), hatched like the flat ground
+SEAT_LINE = "#3b3b3b"
+
+
+def draw_seat(ax, points, bottom):
+    """The seat's polyline over the body under it, which ends with the seat (no ground beyond)."""
+    body = np.vstack(([points[0, 0], bottom], points, [points[-1, 0], bottom]))
+    ax.add_patch(Polygon(body, closed=True, facecolor=SEAT_FILL, edgecolor="0.6", hatch="////", linewidth=0,
+                         zorder=0))
+    ax.plot(points[:, 0], points[:, 1], color=SEAT_LINE, linewidth=1.6, solid_capstyle="butt", zorder=1)
+    ax.plot([points[0, 0], points[0, 0]], [bottom, points[0, 1]], color=SEAT_LINE, linewidth=0.9, zorder=1)
+    ax.plot([points[-1, 0], points[-1, 0]], [bottom, points[-1, 1]], color=SEAT_LINE, linewidth=0.9, zorder=1)
 
 
 def snapshot_rows(count, wanted):
@@ -133,15 +257,19 @@ def mode_legend(modes):
             for m in present]
 
 
-def plot(data, shape, title, output, wanted):
+def plot(data, shape, title, output, wanted, seat=None, ax=None, strip=None):
+    """The snapshots (with a seat: data's x in the seat's frame, on_seat). Given the two axes, draws
+    into them (one panel of a larger figure) and leaves the figure to the caller."""
     rows = snapshot_rows(len(data["t"]), wanted)
-    x_low, x_high, y_low, y_high = extent(shape, data)
+    x_low, x_high, y_low, y_high = extent(shape, data, seat)
     width = 9.0
     height = min(7.0, max(2.2, width * 0.86 * (y_high - y_low) / (x_high - x_low)))
-    fig, (ax, strip) = plt.subplots(2, 1, figsize=(width, height + 1.9),
-                                    gridspec_kw={"height_ratios": [height, 0.45]})
+    own = ax is None
+    if own:
+        fig, (ax, strip) = plt.subplots(2, 1, figsize=(width, height + 1.9),
+                                        gridspec_kw={"height_ratios": [height, 0.45]})
 
-    draw_ground(ax, x_low, x_high, -y_low)
+    draw_ground(ax, x_low, x_high, -y_low, seat)
     for order, i in enumerate(rows):
         mode = data["mode"][i]
         corners = outline(shape, data["x"][i], data["y"][i], data["theta"][i])
@@ -159,7 +287,7 @@ def plot(data, shape, title, output, wanted):
     ax.set_xlim(x_low, x_high)
     ax.set_ylim(y_low, y_high + 0.08 * (y_high - y_low))
     ax.set_aspect("equal")
-    ax.set_xlabel("x relative to the ground [m]")
+    ax.set_xlabel("x relative to the ground [m]" if seat is None else "x relative to the seat [m]")
     ax.set_ylabel("height [m]")
     handles = mode_legend(data["mode"]) + [
         plt.Line2D([], [], color="0.35", linewidth=0.8, marker="o", markersize=2.2, label="centre of mass"),
@@ -185,13 +313,17 @@ def plot(data, shape, title, output, wanted):
     for side in ("top", "right", "left"):
         strip.spines[side].set_visible(False)
 
+    if not own:
+        # Inside the panel, at its top: above it the legend takes the room.
+        ax.text(0.5, 0.985, title, transform=ax.transAxes, ha="center", va="top", fontsize=10.5)
+        return
     fig.suptitle(title, fontsize=12)
     fig.tight_layout()
     fig.savefig(output, dpi=150)
     plt.close(fig)
 
 
-def animate(data, shape, title, output, fps, max_frames):
+def animate(data, shape, title, output, fps, max_frames, seat=None):
     t = data["t"]
     duration = float(t[-1] - t[0])
     frames = max(2, min(max_frames, int(math.ceil(duration * fps)) + 1))
@@ -204,14 +336,14 @@ def animate(data, shape, title, output, fps, max_frames):
     modes = data["mode"][np.clip(np.searchsorted(t, times, side="right") - 1, 0, len(t) - 1)]
     hold = int(round(fps))  # the last picture stays a second before the loop restarts
 
-    x_low, x_high, y_low, y_high = extent(shape, data)
+    x_low, x_high, y_low, y_high = extent(shape, data, seat)
     height = min(5.0, max(2.4, 6.4 * 0.86 * (y_high - y_low) / (x_high - x_low)))
     fig, ax = plt.subplots(figsize=(6.4, height + 0.9))
-    draw_ground(ax, x_low, x_high, -y_low)
+    draw_ground(ax, x_low, x_high, -y_low, seat)
     ax.set_xlim(x_low, x_high)
     ax.set_ylim(y_low, y_high + 0.08 * (y_high - y_low))
     ax.set_aspect("equal")
-    ax.set_xlabel("x relative to the ground [m]", fontsize=8)
+    ax.set_xlabel("x relative to the ground [m]" if seat is None else "x relative to the seat [m]", fontsize=8)
     ax.tick_params(labelsize=7)
     trail, = ax.plot([], [], color="0.35", linewidth=0.8, zorder=4)
     block = Polygon(outline(shape, x[0], y[0], theta[0]), closed=True, linewidth=1.2, zorder=3)
@@ -261,14 +393,16 @@ def main(argv=None):
                 raise InputError(f"{args.history}: column {column} holds NaN or infinity")
         if np.any(np.diff(data["t"]) < 0):
             raise InputError(f"{args.history}: time goes backwards")
-        shape = read_shape(args.scene)
-        check_fit(shape, data, args.history, args.scene)
+        shape, seat = read_scene(args.scene)
+        data = on_seat(data, seat)
+        check_fit(shape, data, args.history, args.scene, seat)
         title = args.title or f"Motion: {os.path.basename(args.history)}"
         if args.output:
-            plot(data, shape, title, args.output, args.snapshots)
+            plot(data, shape, title, args.output, args.snapshots, seat)
         if args.gif:
             target = args.gif
-            animate(data, shape, args.title or os.path.basename(args.history), args.gif, args.fps, args.max_frames)
+            animate(data, shape, args.title or os.path.basename(args.history), args.gif, args.fps, args.max_frames,
+                    seat)
     except InputError as error:
         print(f"{name}: error: {error}", file=sys.stderr)
         return 1

@@ -12,7 +12,10 @@ colours, the verdict counts that alpha = atan(a/b) (sampled or the config's; a p
 corner) gives, one colour pair with --limit-state, panels by record, one-line errors.
 plot_motion.py: a PNG showing the colours of the modes present and not of the absent one, an
 animated GIF of several distinct frames, a polygon given in another frame drawn like the
-rectangle, a one-line error for a scene that is not the history's. plot_spectrum.py: a PNG showing
+rectangle, a one-line error for a scene that is not the history's; on a seat, the seat drawn (and
+no seat on the flat ground), a block that sinks into the seat or floats off it while touching
+refused, one that falls past the seat's end accepted. plot_motion_pair.py: two panels side by
+side, the seat drawn, each history checked against its scene. plot_spectrum.py: a PNG showing
 the colours of the verdicts present (a safe island's among them) and not of those absent, the
 islands found as connected cells above an overturning point, boundary lines that join neighbouring
 crossings and not distant ones, one-line errors for a missing file, a file that is not a spectrum
@@ -47,6 +50,7 @@ PLOT_HISTORY = SOURCE / "postproc" / "plots" / "plot_history.py"
 PLOT_FRAGILITY = SOURCE / "postproc" / "plots" / "plot_fragility.py"
 PLOT_CLOUD = SOURCE / "postproc" / "plots" / "plot_cloud.py"
 PLOT_MOTION = SOURCE / "postproc" / "plots" / "plot_motion.py"
+PLOT_MOTION_PAIR = SOURCE / "postproc" / "plots" / "plot_motion_pair.py"
 PLOT_SPECTRUM = SOURCE / "postproc" / "plots" / "plot_spectrum.py"
 PLOT_SURFACE = SOURCE / "postproc" / "plots" / "plot_fragility_surface.py"
 
@@ -57,6 +61,8 @@ FIRST_STATE, SECOND_STATE = "#0072B2", "#D55E00"
 # plot_cloud.py's verdicts; plot_motion.py's outline edges of a rocking block.
 OVERTURNED, EXCEEDED, BELOW = "#D55E00", "#E69F00", "#0072B2"
 ROCK_EDGE = "#c4661b"
+# plot_motion.py's body under a seat.
+SEAT_FILL = "#ddd6c8"
 
 
 def blend(hex_colour, alpha):
@@ -491,6 +497,7 @@ def test_motion_plot_and_gif(work):
         assert colour_pixels(pixels, colour) > 2000, f"no {name} colour"
     assert colour_pixels(pixels, SLIDE_ROCK) == 0, "slide-rock colour without any"
     assert colour_pixels(pixels, ROCK_EDGE, 3.0 / 255.0) > 400, "no rocking outline"
+    assert colour_pixels(pixels, SEAT_FILL) == 0, "a seat on the flat ground"
     with Image.open(work / "m.gif") as gif:
         assert gif.format == "GIF" and gif.n_frames >= 10, f"{gif.format}, {gif.n_frames} frames"
         gif.seek(0)
@@ -519,6 +526,110 @@ def test_motion_plot_refuses_another_scene(work):
                        "tall.json", "scene of that history")
     result = call(PLOT_MOTION, work / "h.csv", work / "absent.json", "-o", work / "x.png")
     assert result.returncode == 1 and "absent.json" in result.stderr, result.stderr
+    assert not (work / "x.png").exists()
+
+
+# The rectangle on a seat: a horizontal part to its right corner, then an incline at 45 deg, in the
+# frame of its vertices (its centre at the origin, its base at y = -B).
+ON_SEAT = {"block": {"half_width": A, "half_height": B}, "seat": [[-3, -B], [A, -B], [A + 1.5, -B + 1.5]]}
+
+
+def write_seat_motion(path, into_incline=0.0, lift=0.0):
+    """The rectangle on ON_SEAT as blockfrag writes it there (x the centre's displacement from rest, y
+    in the seat's frame): at rest, sliding 0.3 m upstream (left), rocking on its left corner and back;
+    into_incline slides it right instead, that far into the incline; lift raises it while it rocks."""
+    rows = []
+    for t in np.linspace(0.0, 3.0, 151):
+        if t < 0.5:
+            mode, x, y, theta = "rest", 0.0, 0.0, 0.0
+        elif t < 1.0:
+            mode, x, y, theta = "slide", (into_incline or -0.3) * (t - 0.5) / 0.5, 0.0, 0.0
+        elif t < 2.0 and not into_incline:
+            mode, theta = "rock", 0.3 * math.sin(math.pi * (t - 1.0))
+            x = -0.3 - A + A * math.cos(theta) - B * math.sin(theta)
+            y = -B + A * math.sin(theta) + B * math.cos(theta) + lift * math.sin(math.pi * (t - 1.0))
+        else:
+            mode, x, y, theta = "rest", into_incline or -0.3, 0.0, 0.0
+        rows.append((t, x, y, theta, 0, 0, 0, mode, 0, 1))
+    with open(path, "w") as out:
+        out.write("t,x,y,theta,vx,vy,omega,mode,friction_per_weight,normal_per_weight\n")
+        out.writelines(",".join(str(v) for v in row) + "\n" for row in rows)
+
+
+def test_motion_plot_draws_the_seat(work):
+    write_seat_motion(work / "h.csv")
+    (work / "seat.json").write_text(json.dumps(ON_SEAT))
+    result = call(PLOT_MOTION, work / "h.csv", work / "seat.json", "-o", work / "m.png", "--gif", work / "m.gif",
+                  "--fps", "4")
+    assert result.returncode == 0, result.stderr
+    pixels = check_plausible_png(work / "m.png")
+    assert colour_pixels(pixels, SEAT_FILL) > 5000, "no seat"
+    assert colour_pixels(pixels, ROCK_EDGE, 3.0 / 255.0) > 400, "no rocking outline"
+    # The seat is drawn where it is: at the right end of the view its incline has risen above the
+    # horizontal part at the left end (a flat band of the seat's colour would not).
+    seat_pixels = np.all(np.abs(pixels[..., :3] - np.array([0xdd, 0xd6, 0xc8]) / 255.0) <= 2 / 255, axis=-1)
+    columns = np.nonzero(seat_pixels.any(axis=0))[0]
+    top = [int(np.argmax(seat_pixels[:, c])) for c in (columns[0] + 3, columns[-1] - 3)]
+    assert top[1] < top[0] - 10, f"the seat's incline is not drawn (its top at {top} px, left and right)"
+    motion = load(PLOT_MOTION)
+    shape, seat = motion.read_scene(str(work / "seat.json"))
+    assert np.allclose(seat[1], [0, 0]) and np.allclose(seat[0][1], [A, -B]), seat
+
+
+def test_motion_plot_refuses_a_block_in_the_seat(work):
+    (work / "seat.json").write_text(json.dumps(ON_SEAT))
+    (work / "flat.json").write_text(json.dumps(RECTANGLE))
+    # Sliding 0.2 m right pushes its right corner 0.2 m under the incline (0.14 m across it).
+    write_seat_motion(work / "h.csv", into_incline=0.2)
+    assert_clean_error(run(PLOT_MOTION, work / "h.csv", work / "seat.json", "-o", work / "x.png"),
+                       "into the seat", "seat.json")
+    assert not (work / "x.png").exists()
+    # Lifted 0.1 m off its corner while rocking: it floats.
+    write_seat_motion(work / "h.csv", lift=0.1)
+    assert_clean_error(run(PLOT_MOTION, work / "h.csv", work / "seat.json", "-o", work / "x.png"),
+                       "off the seat")
+    # Which the fit check finds on the seat, not as on the flat ground: 0.1 m below the seat's
+    # line is sunk; a corner far past the seat's end, under its level, is not (it falls).
+    motion = load(PLOT_MOTION)
+    shape, seat = motion.read_scene(str(work / "seat.json"))
+    data = {"t": np.array([0.0, 1.0]), "x": np.array([0.0, 0.0]), "y": np.array([-0.1, 0.0]),
+            "theta": np.zeros(2), "mode": np.array(["rest", "rest"])}
+    try:
+        motion.check_fit(shape, data, "h", "s", seat)
+        raise AssertionError("a block 0.1 m into the seat accepted")
+    except motion.InputError as error:
+        assert "0.1 m into the seat at t = 0 s" in str(error), error
+    # Tilted over the seat's end with every corner above the seat or past its end, but the end
+    # 0.081 m inside the block's base.
+    data = {"t": np.array([0.0, 1.0]), "x": np.array([0.0, -3.2]), "y": np.array([0.0, -0.1]),
+            "theta": np.array([0.0, 0.3]), "mode": np.array(["rest", "rock"])}
+    try:
+        motion.check_fit(shape, data, "h", "s", seat)
+        raise AssertionError("the seat's end inside the block accepted")
+    except motion.InputError as error:
+        assert "0.0811 m into the seat at t = 1 s" in str(error), error
+    falling = {"t": np.array([0.0, 1.0, 1.5]), "x": np.array([0.0, -4.5, -5.0]), "y": np.array([0.0, -0.5, -2.0]),
+               "theta": np.array([0.0, 0.3, 0.5]), "mode": np.array(["rest", "flight", "flight"])}
+    motion.check_fit(shape, falling, "h", "s", seat)
+
+
+def test_motion_pair_draws_two_panels_on_their_seats(work):
+    write_seat_motion(work / "h.csv")
+    write_motion(work / "flat.csv")
+    (work / "seat.json").write_text(json.dumps(ON_SEAT))
+    (work / "flat.json").write_text(json.dumps(RECTANGLE))
+    result = call(PLOT_MOTION_PAIR, work / "h.csv", work / "seat.json", work / "flat.csv", work / "flat.json",
+                  "-o", work / "two.png", "--titles", "on a seat", "flat")
+    assert result.returncode == 0, result.stderr
+    width, height = png_size(work / "two.png")
+    assert width > 1.2 * height, f"two panels side by side: {width} x {height}"
+    pixels = check_plausible_png(work / "two.png")
+    assert colour_pixels(pixels, SEAT_FILL) > 3000, "no seat"
+    assert colour_pixels(pixels, ROCK_EDGE, 3.0 / 255.0) > 400, "no rocking outline"
+    # Each history is checked against its own scene: swapped, they are refused.
+    result = call(PLOT_MOTION_PAIR, work / "h.csv", work / "flat.json", work / "flat.csv", work / "seat.json",
+                  "-o", work / "x.png")
+    assert result.returncode == 1 and "scene of that history" in result.stderr, result.stderr
     assert not (work / "x.png").exists()
 
 
