@@ -12,11 +12,9 @@
 #include "engine/contact/model_choice.hpp"
 #include "engine/contact/reduced_contact.hpp"
 #include "engine/errors.hpp"
-#include "engine/integrate/dormand_prince_stepper.hpp"
-#include "engine/integrate/gsl_stepper.hpp"
 #include "engine/integrate/guard_crossing.hpp"
-#include "engine/integrate/rk4_stepper.hpp"
 #include "engine/integrate/root_finding.hpp"
+#include "engine/integrate/with_stepper.hpp"
 #include "engine/modes/flight.hpp"
 #include "engine/modes/modes.hpp"
 #include "engine/motion/ground_drift.hpp"
@@ -29,32 +27,6 @@
 namespace blockfrag {
 
 namespace {
-
-// Calls fn with the stepper the scene's solver names; the mode loops are instantiated per stepper,
-// so no call per step or per right-hand side goes through a virtual function.
-template <int N, class Fn>
-void with_stepper(const SolverSettings& solver, const OdeState<N>& scale, Fn&& fn) {
-  switch (solver.method) {
-    case Method::rk4: {
-      Rk4Stepper<N> stepper(solver.dt);
-      fn(stepper);
-      return;
-    }
-    case Method::adaptive: {
-      DormandPrinceStepper<N> stepper(solver.tolerance, scale);
-      fn(stepper);
-      return;
-    }
-    case Method::gsl_rkf45:
-    case Method::gsl_rk8pd: {
-      GslStepper<N> stepper(
-          solver.method == Method::gsl_rkf45 ? GslStepperKind::rkf45 : GslStepperKind::rk8pd,
-          solver.tolerance, scale);
-      fn(stepper);
-      return;
-    }
-  }
-}
 
 bool reached(double t, double end) { return end - t <= kReachedEnd * std::max(1.0, std::abs(end)); }
 
@@ -387,8 +359,9 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
 
 template <class System>
 void Simulation::advance(const System& system, const MotionPiece& piece, double t_stop) {
-  with_stepper<System::N>(scene_.solver, system.scale(),
-                          [&](auto& stepper) { integrate_with(system, stepper, piece, t_stop); });
+  with_scene_stepper<System::N>(scene_.solver, system.scale(), [&](auto& stepper) {
+    integrate_with(system, stepper, piece, t_stop);
+  });
 }
 
 // Steps until a guard crosses zero or t_stop; a crossing is located on the dense output and the

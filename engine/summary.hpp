@@ -47,8 +47,8 @@ struct Summary {
   std::optional<double> first_impact_time;
   long impacts = 0;
   std::vector<ModeChange> modes;
-  double end_time =
-      0.0;  // s, where the simulation stopped (duration, settling, overturning, falling)
+  // s, where the simulation stopped (duration, settling, overturning, falling)
+  double end_time = 0.0;
   // The block's fate is final at the end: every excitation has ended and it rests on its base, or
   // it has overturned or fallen. settle_time: since when it rests for good (0 if it never moved),
   // or the overturning or falling time; none when not settled.
