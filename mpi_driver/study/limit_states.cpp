@@ -11,9 +11,10 @@
 namespace blockfrag {
 
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha) {
-  if (record.overturned != 0 && state.overturned_exceeds) return true;
+  const bool lost = record.overturned != 0 || record.fell != 0;
+  if (lost && state.overturned_exceeds) return true;
   switch (state.kind) {
-    case LimitStateKind::overturning: return record.overturned != 0;
+    case LimitStateKind::overturning: return lost;
     case LimitStateKind::max_rotation: return record.max_abs_theta / alpha > state.threshold;
     case LimitStateKind::residual_slide: return std::abs(record.final_slide) > state.threshold;
   }

@@ -11,10 +11,11 @@
 
 namespace blockfrag {
 
-// Whether one successful sample exceeds the limit state; alpha = atan(a / b) of its block. An
-// overturned block exceeds every limit state (it lies on its side: past any rotation, and its
-// slide is no longer a sliding block's), unless the state counts only its raw measure
-// (overturned_exceeds false).
+// Whether one successful sample exceeds the limit state; alpha = atan(a / b) of its block. A
+// block lost from its seat, overturned or fallen off the seat's end, exceeds the overturning state
+// and every other (it lies on its side or below the crest: past any rotation, and its slide is no
+// longer a sliding block's), unless the state counts only its raw measure (overturned_exceeds
+// false).
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha);
 
 // The curve of per-level counts (stripes), with its bootstrap.

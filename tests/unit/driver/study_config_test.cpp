@@ -360,6 +360,23 @@ TEST(StudyFragility, CountsPerLevelExcludeFailedSamples) {
             (std::vector<std::int64_t>{1, 1}));
 }
 
+TEST(StudyFragility, ABlockThatFellOffItsSeatIsLostLikeAnOverturnedOne) {
+  const StudyConfig config = parse_study_config(small_study(), "study.json");
+  const double alpha = std::atan(0.5);
+  SampleRecord fell = record(0, false, 0.1 * alpha, -0.01);  // little rotation, a short slide
+  fell.fell = 1;
+  SampleRecord stayed = fell;
+  stayed.fell = 0;
+  for (const LimitState& state : config.limit_states) {
+    EXPECT_TRUE(exceeds(state, fell, alpha)) << state.name;
+    EXPECT_FALSE(exceeds(state, stayed, alpha)) << state.name;
+  }
+  // Counted only by its raw measure, the slide limit sees the short slide before it fell.
+  LimitState raw_slide = config.limit_states[2];
+  raw_slide.overturned_exceeds = false;
+  EXPECT_FALSE(exceeds(raw_slide, fell, alpha));
+}
+
 TEST(StudyFragility, WilsonIntervalAndFitMatchTheReferenceData) {
   // docs/references.md (Baker 2015): levels 0.2 .. 1.0, n = 40, z = 0 0 0 4 6 13 12 16 ->
   // theta = 1.076116, beta = 0.429237, -ln L = 10.797705; Wilson 16/40 -> (0.2635, 0.5540).
