@@ -119,11 +119,12 @@ kill -0 "$job" 2>/dev/null && alive=1 || alive=0
 kill_job KILL
 kills=$((kills + 1))
 [[ $alive -eq 1 && ! -e study.h5 ]] && mid_run=$((mid_run + 1))
-# Then five kills at random moments 0.1 to 0.7 s into a run (a sixth of an uninterrupted one).
+# Then five kills at random moments 0.1 to 0.4 s into a run (each resume goes on from the last
+# checkpoint, so the runs add up: five late kills of up to 0.7 s could finish a 4 s study).
 pause=0
 for _ in 1 2 3 4 5; do
   start_job
-  sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.1 + 0.6 * r / 32768 }')"
+  sleep "$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 0.1 + 0.3 * r / 32768 }')"
   kill -0 "$job" 2>/dev/null && alive=1 || alive=0
   kill_job KILL
   kills=$((kills + 1))
