@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "engine/scene/polygon_properties.hpp"
+#include "engine/scene/seat.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -30,6 +32,15 @@ BlockGeometry::BlockGeometry(const PolygonBlock& block) : size_(0.0) {
   const Vec2 after_right = corners_[2], before_left = corners_.back();
   overturn_angle_ = {std::atan2(before_left.y - left.y, left.x - before_left.x),
                      std::atan2(after_right.y - right.y, after_right.x - right.x)};
+}
+
+double block_alpha(const Scene& scene) {
+  if (scene.seat) {
+    return seat_alpha(scene.seat->points, scene_block_vertices(scene),
+                      kContactHeight * scene_geometry(scene).size());
+  }
+  if (!scene.polygon) return std::atan2(scene.block.half_width, scene.block.half_height);
+  return std::atan(BlockGeometry(*scene.polygon).flat_slide_friction_limit());
 }
 
 }  // namespace blockfrag

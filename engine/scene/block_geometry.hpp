@@ -129,10 +129,8 @@ inline BlockGeometry scene_geometry(const Scene& scene) {
 
 // alpha, the angle results are measured in (max |theta| / alpha): atan(a/b) for a rectangle; for a
 // polygon, atan of the easier corner's tip threshold, the tilt at which the block balances on that
-// corner (the smaller of its two alphas).
-inline double block_alpha(const Scene& scene) {
-  if (!scene.polygon) return std::atan2(scene.block.half_width, scene.block.half_height);
-  return std::atan(BlockGeometry(*scene.polygon).flat_slide_friction_limit());
-}
+// corner (the smaller of its two alphas); on a seat, the tilt that balances it on its outermost
+// support (engine/scene/seat.hpp).
+double block_alpha(const Scene& scene);
 
 }  // namespace blockfrag

@@ -150,6 +150,19 @@ std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
   return contacts;
 }
 
+double seat_alpha(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
+                  double tolerance) {
+  const Point centre = at(polygon_properties(block).centroid);
+  const std::vector<RestContact> contacts = rest_contacts(seat, block, tolerance);
+  const auto by_x = [](const RestContact& a, const RestContact& b) {
+    return a.point[0] < b.point[0];
+  };
+  const Point left = at(std::min_element(contacts.begin(), contacts.end(), by_x)->point);
+  const Point right = at(std::max_element(contacts.begin(), contacts.end(), by_x)->point);
+  return std::min(std::atan2(centre.x - left.x, centre.y - left.y),
+                  std::atan2(right.x - centre.x, centre.y - right.y));
+}
+
 std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
                                       const std::vector<Vertex>& block, double tolerance) {
   if (seat.size() < 2) {

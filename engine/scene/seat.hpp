@@ -45,6 +45,13 @@ std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
 std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
                                        const std::vector<Vertex>& block, double tolerance);
 
+// The tilt at which the block resting on its seat balances on its outermost support: the lesser
+// of the angles that turn its centre of mass over the leftmost and over the rightmost point where
+// it touches (about the leftmost counter-clockwise, about the rightmost clockwise). On a flat seat
+// these are the base's corners, and the angle is the flat ground's alpha.
+double seat_alpha(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
+                  double tolerance);
+
 // The scene's block as vertices in its own frame: the polygon, or the rectangle's corners about
 // its centre, counter-clockwise from the base's left end.
 std::vector<Vertex> scene_block_vertices(const Scene& scene);

@@ -38,6 +38,11 @@ std::string time_or_never(const std::optional<double>& time) {
   return time ? "t = " + fixed(*time) + " s" : "never";
 }
 
+const char* alpha_meaning(const Scene& scene) {
+  if (scene.seat) return "the tilt that balances the block on its outermost support";
+  return scene.polygon ? "atan(easier corner's tip threshold)" : "atan(a/b)";
+}
+
 }  // namespace
 
 void write_simulate_report(std::ostream& out, const Scene& scene, const Summary& summary) {
@@ -58,8 +63,7 @@ void write_simulate_report(std::ostream& out, const Scene& scene, const Summary&
       << "\n";
   out << "max |theta|: " << fixed(summary.max_abs_theta)
       << " rad = " << fixed(summary.max_abs_theta / alpha)
-      << " alpha (alpha = " << (scene.polygon ? "atan(easier corner's tip threshold)" : "atan(a/b)")
-      << " = " << fixed(alpha) << " rad)\n"
+      << " alpha (alpha = " << alpha_meaning(scene) << " = " << fixed(alpha) << " rad)\n"
       << "final theta: " << fixed(summary.final_theta) << " rad\n"
       << "slide: final " << fixed(summary.final_slide) << " m, max |slide| "
       << fixed(summary.max_abs_slide) << " m\n"

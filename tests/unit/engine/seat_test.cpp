@@ -1,7 +1,9 @@
 // Seats (engine/scene/seat.hpp): which polylines a block fits at rest, where it touches them, and
-// the engine's refusal to simulate one for now.
+// the tilt its results are measured in (alpha).
 #include "engine/scene/seat.hpp"
 
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,36 @@ TEST(Seat, TypeBBlockFitsItsSeatAndTouchesAtHeelFoldAndToe) {
   EXPECT_EQ(contacts.size(), 10u);
   EXPECT_EQ(horizontal, 4);  // heel, fold on the horizontal segment; seat heel, fold on the base
   EXPECT_EQ(incline, 4);     // fold, toe on the incline; seat fold, toe on the crack's incline
+}
+
+// The centroid of a polygon by the shoelace formula, written out here rather than taken from
+// polygon_properties, which seat_alpha uses.
+Vertex shoelace_centroid(const std::vector<Vertex>& p) {
+  double area = 0, x = 0, y = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vertex& a = p[i];
+    const Vertex& b = p[(i + 1) % p.size()];
+    const double w = a[0] * b[1] - b[0] * a[1];
+    area += w / 2;
+    x += (a[0] + b[0]) * w / 6;
+    y += (a[1] + b[1]) * w / 6;
+  }
+  return {x / area, y / area};
+}
+
+// On a flat seat the rectangle balances on a base corner at atan(a/b); the type B block on its seat
+// tips over its heel (the origin) before its toe (12.525, 5): atan(c_x / c_y) against
+// atan((12.525 - c_x) / (c_y - 5)), about 0.433 and 0.894 rad.
+TEST(Seat, AlphaIsTheTiltOverTheOutermostSupport) {
+  EXPECT_NEAR(seat_alpha({{-10, -1}, {10, -1}}, kRectangle, kTolerance), std::atan2(0.5, 1.0),
+              1e-15);
+  EXPECT_NEAR(seat_alpha({{-10, -1}, {0.1, -1}, {10, -1}}, kRectangle, kTolerance),
+              std::atan2(0.5, 1.0), 1e-15);
+  const Vertex c = shoelace_centroid(kTypeB);
+  const double heel = std::atan2(c[0], c[1]), toe = std::atan2(12.525 - c[0], c[1] - 5);
+  ASSERT_LT(heel, toe);
+  EXPECT_NEAR(seat_alpha(kTypeBSeat, kTypeB, kTolerance), heel, 1e-14);
+  EXPECT_NEAR(heel, 0.4328, 1e-4);
 }
 
 TEST(Seat, PointsMustRunLeftToRight) {
