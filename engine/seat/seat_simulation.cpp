@@ -109,6 +109,7 @@ class SeatSimulation {
   SeatMode resolve();
   SeatMode logged_mode(const SeatMode& mode, std::size_t logged);
   bool holds_at_rest(const PlanarForces& f) const;
+  Eigen::Vector3d least_kinetic_change(const Eigen::MatrixXd& j, const Eigen::VectorXd& b) const;
   void project(const SeatMode& mode);
   bool rest_holds(double lambda) const;
   void set_rest_thresholds(SeatMode& mode) const;
@@ -151,7 +152,8 @@ class SeatSimulation {
   double rest_since_ = 0.0;
   double run_end_ = 0.0;
   int stalled_events_ = 0;
-  double deepest_ = 0.0;  // m: the block's largest penetration of the seat seen
+  double stall_start_ = 0.0;  // the first event of the instant the latest events are in
+  double deepest_ = 0.0;      // m: the block's largest penetration of the seat seen
   bool log_impacts_;
   std::vector<ImpactRecord> impact_log_;
 };
@@ -235,10 +237,15 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
           others_approach || contact_velocity(all[i], velocity_of(s)).normal < -velocity_tol_;
     }
     if (others_approach || -fastest < settle_velocity_) {
-      impact = simultaneous_impact({all, velocity_of(start), k2, mu, e, R_});
-      if (impact.determinacy != Determinacy::unique) ++summary_.painleve_events;
-      s = start;
-      set_velocity(s, impact.after);
+      const PlanarImpact together = simultaneous_impact({all, velocity_of(start), k2, mu, e, R_});
+      if (together.determinacy != Determinacy::unique) ++summary_.painleve_events;
+      // No consistent choice of impulses together (two pairs of one contact point, a block vertex
+      // on a seat point, whose geometries differ by the contact tolerance): the first contact's
+      // impact stands, and the next round takes any contact it leaves approaching.
+      if (together.determinacy != Determinacy::inconsistent) {
+        s = start;
+        set_velocity(s, together.after);
+      }
     }
     const double after = kinetic_energy_per_mass(geometry_, s);
     if (before > 0) {
@@ -362,7 +369,21 @@ bool SeatSimulation::holds_at_rest(const PlanarForces& f) const {
          R_ * std::abs(f.acceleration.theta_dd) <= tolerance;
 }
 
-// Puts the active contacts' gaps back to zero (least change of x, y, theta) and their normal
+// The change dq with J dq = b that is least in the kinetic metric dx^2 + dy^2 + k^2 dtheta^2 (k the
+// radius of gyration): the change impulses at the contacts would make. Least in the plain
+// (x, y, theta) norm instead, a rotation is cheap and turns the block about its centre, sliding
+// every contact point along its segment (far past a fold, at the type B block's height).
+Eigen::Vector3d SeatSimulation::least_kinetic_change(const Eigen::MatrixXd& j,
+                                                     const Eigen::VectorXd& b) const {
+  const double k = std::sqrt(geometry_.inertia_per_mass());
+  Eigen::MatrixXd scaled = j;
+  scaled.col(2) /= k;
+  Eigen::Vector3d change = scaled.completeOrthogonalDecomposition().solve(b);
+  change(2) /= k;
+  return change;
+}
+
+// Puts the active contacts' gaps back to zero (the least change) and their normal
 // velocities (and a sticking one's tangential velocity) too.
 void SeatSimulation::project(const SeatMode& mode) {
   if (mode.active.empty()) return;
@@ -376,7 +397,7 @@ void SeatSimulation::project(const SeatMode& mode) {
       gap(i) = p.gap;
     }
     if (gap.cwiseAbs().maxCoeff() <= std::numeric_limits<double>::epsilon() * R_) break;
-    const Eigen::Vector3d dq = j.completeOrthogonalDecomposition().solve(-gap);
+    const Eigen::Vector3d dq = least_kinetic_change(j, -gap);
     state_.x += dq(0);
     state_.y += dq(1);
     state_.theta += dq(2);
@@ -400,7 +421,7 @@ void SeatSimulation::project(const SeatMode& mode) {
     j.row(static_cast<Eigen::Index>(i)) = rows[i];
     u(static_cast<Eigen::Index>(i)) = velocities[i];
   }
-  const Eigen::Vector3d dv = j.completeOrthogonalDecomposition().solve(-u);
+  const Eigen::Vector3d dv = least_kinetic_change(j, -u);
   state_.vx += dv(0);
   state_.vy += dv(1);
   state_.omega += dv(2);
@@ -664,7 +685,6 @@ void SeatSimulation::run() {
     if (!scene_.duration && at_rest_for_good()) break;
     const MotionPiece& piece = motion_.piece_at(t_);
     const double t_stop = std::min({t_end, piece.end(), vertical_.piece_at(t_).end()});
-    const double t_before = t_;
     ended_by_event_ = false;
     force_event_.reset();
     arrived_point_ = -1;
@@ -677,10 +697,16 @@ void SeatSimulation::run() {
       });
     }
     if (stopped_ || t_ >= t_end) break;
-    stalled_events_ = t_ == t_before ? stalled_events_ + 1 : 0;
-    if (stalled_events_ > kMaxStalledEvents) {
-      throw SimulationFailure("no progress: " + std::to_string(kMaxStalledEvents) +
-                              " contact changes at t = " + std::to_string(t_) + " s");
+    if (t_ - stall_start_ > kSeatInstant * (1.0 + t_)) {
+      stall_start_ = t_;
+      stalled_events_ = 0;
+    } else {
+      ++stalled_events_;
+    }
+    if (stalled_events_ > kMaxSeatInstantEvents) {
+      throw SimulationFailure(
+          "no progress: " + std::to_string(kMaxSeatInstantEvents) +
+          " contact changes within 1e-6 (1 + t) s of t = " + std::to_string(t_) + " s");
     }
     const bool at_piece_end = t_ == t_stop && !ended_by_event_;
     if (at_piece_end) {
