@@ -51,6 +51,7 @@ PLOT_FRAGILITY = SOURCE / "postproc" / "plots" / "plot_fragility.py"
 PLOT_CLOUD = SOURCE / "postproc" / "plots" / "plot_cloud.py"
 PLOT_MOTION = SOURCE / "postproc" / "plots" / "plot_motion.py"
 PLOT_MOTION_PAIR = SOURCE / "postproc" / "plots" / "plot_motion_pair.py"
+PLOT_FRAGILITY_PAIR = SOURCE / "postproc" / "plots" / "plot_fragility_pair.py"
 PLOT_SPECTRUM = SOURCE / "postproc" / "plots" / "plot_spectrum.py"
 PLOT_SURFACE = SOURCE / "postproc" / "plots" / "plot_fragility_surface.py"
 
@@ -58,6 +59,8 @@ PLOT_SURFACE = SOURCE / "postproc" / "plots" / "plot_fragility_surface.py"
 # colours of plot_fragility.py.
 ROCK, FLIGHT, SLIDE, SLIDE_ROCK = "#fde3c8", "#d5ecd4", "#cfe2f3", "#e4d3ef"
 FIRST_STATE, SECOND_STATE = "#0072B2", "#D55E00"
+# plot_fragility_pair.py's two studies.
+FIRST_STUDY, SECOND_STUDY = "#1f77b4", "#d62728"
 # plot_cloud.py's verdicts; plot_motion.py's outline edges of a rocking block.
 OVERTURNED, EXCEEDED, BELOW = "#D55E00", "#E69F00", "#0072B2"
 ROCK_EDGE = "#c4661b"
@@ -631,6 +634,35 @@ def test_motion_pair_draws_two_panels_on_their_seats(work):
                   "-o", work / "x.png")
     assert result.returncode == 1 and "scene of that history" in result.stderr, result.stderr
     assert not (work / "x.png").exists()
+
+
+# --- plot_fragility_pair.py ---------------------------------------------------------------------------
+
+def test_fragility_pair_draws_both_studies_per_limit_state(work):
+    write_study(work / "a.h5")
+    write_study(work / "b.h5", diagnostics=True)
+    with h5py.File(work / "b.h5", "r+") as f:  # the second study's curves at 1.6 times the intensity
+        for state in f["fragility"].values():
+            state["im"][...] = 1.6 * state["im"][...]
+            state.attrs["median"] = 1.6 * state.attrs["median"]
+    result = call(PLOT_FRAGILITY_PAIR, work / "a.h5", work / "b.h5", "-o", work / "ab.png",
+                  "--labels", "type A", "type B")
+    assert result.returncode == 0, result.stderr
+    width, height = png_size(work / "ab.png")
+    assert width > 1.5 * height, f"two limit states side by side: {width} x {height}"
+    pixels = check_plausible_png(work / "ab.png", min_height=300)
+    assert colour_pixels(pixels, FIRST_STUDY) > 300, "the first study is not drawn"
+    assert colour_pixels(pixels, SECOND_STUDY) > 300, "the second study is not drawn"
+
+
+def test_fragility_pair_refuses_studies_that_measure_intensity_differently(work):
+    write_study(work / "a.h5")
+    write_study(work / "b.h5", with_names=False)
+    assert_clean_error(call(PLOT_FRAGILITY_PAIR, work / "a.h5", work / "b.h5", "-o", work / "ab.png"),
+                       "intensity differently")
+    assert not (work / "ab.png").exists()
+    assert_clean_error(call(PLOT_FRAGILITY_PAIR, work / "a.h5", work / "absent.h5", "-o", work / "ab.png"),
+                       "absent.h5")
 
 
 # --- plot_spectrum.py ---------------------------------------------------------------------------------
