@@ -224,7 +224,7 @@ Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction) {
   return {direction.x, direction.y, c.r.x * direction.y - c.r.y * direction.x};
 }
 
-LcpSolution solve_contact_lcp(const LcpProblem& p) {
+LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search) {
   if (p.contacts.size() > kMaxContacts) {
     throw ContractViolation("contact problem: more than 6 contacts at once");
   }
@@ -244,6 +244,8 @@ LcpSolution solve_contact_lcp(const LcpProblem& p) {
       differ = true;
     }
     ++consistent;
+    // Past this, no choice changes what is chosen or what is known of its determinacy.
+    if (differ || search == LcpSearch::first_consistent) break;
   }
   chosen.consistent_choices = consistent;
   chosen.determinacy = consistent == 0 ? Determinacy::inconsistent

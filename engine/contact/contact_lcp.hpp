@@ -40,10 +40,12 @@ struct LcpSolution {
   std::vector<double> normal, tangent;  // lambda at each contact
   Eigen::Vector3d change;               // Minv J^T lambda: the body's accelerations or jump
   Determinacy determinacy = Determinacy::inconsistent;
+  // The consistent choices seen: the search stops at the second that disagrees with the first.
   int consistent_choices = 0;
 };
 
-LcpSolution solve_contact_lcp(const LcpProblem& problem);
+LcpSolution solve_contact_lcp(const LcpProblem& problem,
+                              LcpSearch search = LcpSearch::every_choice);
 
 // y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
 Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction);

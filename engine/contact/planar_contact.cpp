@@ -39,7 +39,7 @@ ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelo
           contact_row(c, c.normal).dot(q_dd) + terms.normal};
 }
 
-PlanarForces resolve_contact_forces(const PlanarForcesInput& in) {
+PlanarForces resolve_contact_forces(const PlanarForcesInput& in, LcpSearch search) {
   const Eigen::Vector3d inverse_mass(1.0, 1.0, 1.0 / in.inertia_per_mass);
   const BodyAcceleration free{in.applied.x, in.applied.y, 0.0};
   LcpProblem problem{{}, inverse_mass, in.friction, kForceTolerance * in.g, in.length};
@@ -50,7 +50,7 @@ PlanarForces resolve_contact_forces(const PlanarForcesInput& in) {
     problem.contacts.push_back({contact_row(c, c.normal), contact_row(c, contact_tangent(c)),
                                 y.normal, y.tangent, 0.0, forced, true});
   }
-  const LcpSolution s = solve_contact_lcp(problem);
+  const LcpSolution s = solve_contact_lcp(problem, search);
   return {s.states,
           s.normal,
           s.tangent,

@@ -52,6 +52,11 @@ enum class ContactState { stick, slip_positive, slip_negative, off };
 // preference order below); inconsistent: no choice is consistent.
 enum class Determinacy { unique, indeterminate, inconsistent };
 
+// every_choice: the first consistent choice, and whether others disagree with it (determinacy);
+// first_consistent: the same choice without looking further (its determinacy says only whether
+// one was found), for questions the choice alone answers, such as whether a body stays at rest.
+enum class LcpSearch { every_choice, first_consistent };
+
 struct PlanarForcesInput {
   std::vector<PlanarContact> contacts;  // touching, normal velocity zero
   RigidVelocity velocity;
@@ -81,6 +86,7 @@ struct PlanarForces {
 // engine/contact/contact_resolution.hpp chooses for one corner), then by the contacts' order. A
 // statically indeterminate set (three contacts holding a block at rest) gets one of its force
 // distributions. Inconsistent: no forces (the free motion), reported, never silent.
-PlanarForces resolve_contact_forces(const PlanarForcesInput& in);
+PlanarForces resolve_contact_forces(const PlanarForcesInput& in,
+                                    LcpSearch search = LcpSearch::every_choice);
 
 }  // namespace blockfrag

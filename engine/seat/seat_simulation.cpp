@@ -438,7 +438,8 @@ bool SeatSimulation::rest_holds(double lambda) const {
                        scene_.g,
                        R_};
   for (const ActiveContact& a : mode_.active) in.contacts.push_back(contact_of(a.pair, state_));
-  return holds_at_rest(resolve_contact_forces(in));
+  // The first consistent choice decides rest; whether others disagree does not matter here.
+  return holds_at_rest(resolve_contact_forces(in, LcpSearch::first_consistent));
 }
 
 // The lambda range of rest: rest holds on an interval of lambda (the contact forces that balance
