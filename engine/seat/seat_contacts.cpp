@@ -132,7 +132,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
         const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
         if (k == arrived) {
           // The point goes on along the edge whose range it moves into (the block's base as the
-          // block slides over it), or, into both or neither, the one it approaches faster.
+          // block slides over it), or, into neither, the one it approaches faster.
           const RigidVelocity v{s.vx, s.vy, s.omega};
           const ContactVelocity here = contact_velocity(p.contact, v);
           const ContactVelocity there = contact_velocity(other, v);
@@ -143,7 +143,15 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
                                        std::abs(here.normal) + std::abs(there.normal));
           const bool enters_here = at_start ? here.tangent < -noise : here.tangent > noise;
           const bool enters_there = at_start ? there.tangent > noise : there.tangent < -noise;
-          if (enters_here != enters_there ? !enters_here : here.normal > there.normal) continue;
+          // Into both: the edge it moves more nearly along (a seat point at the joint of two
+          // collinear segments slides along the base, whatever the face beside it does).
+          bool other_edge_better = here.normal > there.normal;
+          if (enters_here != enters_there) {
+            other_edge_better = !enters_here;
+          } else if (enters_here) {
+            other_edge_better = std::abs(here.tangent) < std::abs(there.tangent);
+          }
+          if (other_edge_better) continue;
         } else if (dot(p.contact.normal, up) < dot(other.normal, up)) {
           continue;
         }
