@@ -3,17 +3,13 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
-#include <memory>
 #include <sstream>
-
-#include <CLI/CLI.hpp>
 
 #include "mpi_driver/accuracy/accuracy_fragility.hpp"
 #include "mpi_driver/accuracy/accuracy_output.hpp"
 #include "mpi_driver/accuracy/accuracy_settings.hpp"
 #include "mpi_driver/accuracy/accuracy_study.hpp"
 #include "mpi_driver/accuracy/accuracy_suite.hpp"
-#include "mpi_driver/cli/cli_validators.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
@@ -21,15 +17,6 @@
 namespace blockfrag {
 
 namespace {
-
-std::string valid_setting(const std::string& text) {
-  try {
-    parse_solver_setting(text);
-    return {};
-  } catch (const InvalidInput& error) {
-    return error.what();
-  }
-}
 
 // The settings whose fragility curves are compared when the command line names none: the paper's,
 // the production default, and one looser and one tighter setting of each kind.
@@ -90,62 +77,6 @@ int run_accuracy(const AccuracyOptions& options, std::ostream& out, std::ostream
   out.flush();
   if (options.table_path) write_file_atomically(*options.table_path, table.str());
   return 0;
-}
-
-void add_accuracy_command(CLI::App& app, std::function<int()>& command) {
-  auto options = std::make_shared<AccuracyOptions>();
-  CLI::App* accuracy = app.add_subcommand("accuracy",
-                                          "Work-precision study: every scene of a suite with every "
-                                          "solver setting, against a reference");
-  accuracy
-      ->add_option("suite", options->suite_path,
-                   "Scene suite (JSON), e.g. configs/accuracy_suite.json")
-      ->required()
-      ->check(CLI::ExistingFile);
-  accuracy
-      ->add_option("--setting", options->settings,
-                   "Run only this setting (repeatable): rk4:DT, adaptive:TOL, gsl_rkf45:TOL or "
-                   "gsl_rk8pd:TOL")
-      ->type_name("METHOD:VALUE")
-      ->check(CLI::Validator(valid_setting, "METHOD:VALUE"));
-  accuracy->add_option("--output", options->output_path, "HDF5 file to write")
-      ->capture_default_str();
-  accuracy->add_option("--table", options->table_path, "Also write the markdown table to this file")
-      ->type_name("FILE.md");
-  accuracy
-      ->add_option("--reference-tolerance", options->reference_tolerance,
-                   "Tolerance of the reference (adaptive) and of its check (gsl_rk8pd)")
-      ->capture_default_str()
-      ->check(positive_finite_number("TOL"));
-  accuracy
-      ->add_option("--min-batch-ms", options->min_batch_ms,
-                   "Each scene is repeated until a timed batch takes at least this long")
-      ->capture_default_str()
-      ->check(positive_finite_number("MS"));
-  accuracy
-      ->add_option(
-          "--fragility-study", options->fragility_study,
-          "Also compare this study's fragility curves per setting, and MC against LHS convergence")
-      ->check(CLI::ExistingFile)
-      ->type_name("STUDY.json");
-  accuracy
-      ->add_option("--replicates", options->replicates,
-                   "Seeds per design and size (--fragility-study)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 10000));
-  accuracy
-      ->add_option("--design-sizes", options->design_sizes,
-                   "Samples per level compared (--fragility-study)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  accuracy
-      ->add_option("--reference-samples", options->reference_samples_per_level,
-                   "Samples per level of the Latin hypercube reference (--fragility-study)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  accuracy->callback([options, &command] {
-    command = [options] { return run_accuracy(*options, std::cout, std::cerr); };
-  });
 }
 
 }  // namespace blockfrag

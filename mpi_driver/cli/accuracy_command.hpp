@@ -9,16 +9,10 @@
 #pragma once
 
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
-
-// CLI11 is a large header-only library: only the .cpp files that use it include it.
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace blockfrag {
 
@@ -38,7 +32,5 @@ struct AccuracyOptions {
 // Runs the study; the table goes to `out`, progress lines to `log`. Returns 0. Throws ConfigError
 // for a bad suite, InvalidInput for a bad setting, Hdf5Error or FileError on output.
 int run_accuracy(const AccuracyOptions& options, std::ostream& out, std::ostream& log);
-
-void add_accuracy_command(CLI::App& app, std::function<int()>& command);
 
 }  // namespace blockfrag

@@ -1,12 +1,16 @@
 #include "mpi_driver/cli/app.hpp"
 
+#include <cmath>
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <memory>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "engine/errors.hpp"
+#include "mpi_driver/accuracy/accuracy_settings.hpp"
 #include "mpi_driver/cli/accuracy_command.hpp"
 #include "mpi_driver/cli/bench_command.hpp"
 #include "mpi_driver/cli/exit_codes.hpp"
@@ -17,18 +21,210 @@
 
 namespace blockfrag {
 
-int run_command_line(int argc, char** argv) {
-  CLI::App app{"blockfrag: rigid-block rocking, sliding and overturning under ground pulses"};
-  app.set_version_flag("--version", std::string("blockfrag ") + BLOCKFRAG_VERSION);
-  app.require_subcommand(1);
+namespace {
 
-  std::function<int()> command;
+// A finite number > 0: CLI11's PositiveNumber lets "nan" and "inf" through.
+CLI::Validator positive_finite_number(const std::string& name) {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          const double x = std::stod(text, &used);
+          if (used == text.size() && std::isfinite(x) && x > 0) return {};
+        } catch (const std::exception&) {
+        }
+        return "must be a positive number (got " + text + ")";
+      },
+      name);
+}
+
+std::string valid_setting(const std::string& text) {
+  try {
+    parse_solver_setting(text);
+    return {};
+  } catch (const InvalidInput& error) {
+    return error.what();
+  }
+}
+
+void add_simulate_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* simulate = app.add_subcommand("simulate", "Simulate one scene and print its summary");
+  simulate->add_option("scene", options->scene_path, "Scene file (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  simulate->add_flag("--summary-json", options->summary_json,
+                     "Print the summary as exactly one JSON object on stdout, nothing else");
+  auto* history = simulate
+                      ->add_option("--history", options->history_path,
+                                   "Also write the time history to this CSV file")
+                      ->type_name("FILE.csv");
+  simulate
+      ->add_option("--history-interval", options->history_interval, "Time between history rows, s")
+      ->capture_default_str()
+      ->check(positive_finite_number("SECONDS"))
+      ->needs(history);
+  simulate->callback(
+      [options, &command] { command = [options] { return run_simulate(*options, std::cout); }; });
+}
+
+void add_run_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* run = app.add_subcommand("run", "Run a batch study (under mpirun for several ranks)");
+  run->add_option("study", options->study_path, "Study config (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  run->add_option("--output", options->output,
+                  "Output HDF5 file (replaces the config's \"output\")");
+  run->add_option("--samples-per-level", options->samples_per_level,
+                  "Samples per intensity level (replaces the config's \"samples_per_level\")")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--max-chunk", options->max_chunk,
+                  "Largest number of samples a worker gets per request (default: adapted to the "
+                  "measured speed; results never depend on it)")
+      ->check(CLI::Range(1, 1 << 20));
+  run->callback(
+      [options, &command] { command = [options] { return run_study_command(*options); }; });
+}
+
+void add_accuracy_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<AccuracyOptions>();
+  CLI::App* accuracy = app.add_subcommand("accuracy",
+                                          "Work-precision study: every scene of a suite with every "
+                                          "solver setting, against a reference");
+  accuracy
+      ->add_option("suite", options->suite_path,
+                   "Scene suite (JSON), e.g. configs/accuracy_suite.json")
+      ->required()
+      ->check(CLI::ExistingFile);
+  accuracy
+      ->add_option("--setting", options->settings,
+                   "Run only this setting (repeatable): rk4:DT, adaptive:TOL, gsl_rkf45:TOL or "
+                   "gsl_rk8pd:TOL")
+      ->type_name("METHOD:VALUE")
+      ->check(CLI::Validator(valid_setting, "METHOD:VALUE"));
+  accuracy->add_option("--output", options->output_path, "HDF5 file to write")
+      ->capture_default_str();
+  accuracy->add_option("--table", options->table_path, "Also write the markdown table to this file")
+      ->type_name("FILE.md");
+  accuracy
+      ->add_option("--reference-tolerance", options->reference_tolerance,
+                   "Tolerance of the reference (adaptive) and of its check (gsl_rk8pd)")
+      ->capture_default_str()
+      ->check(positive_finite_number("TOL"));
+  accuracy
+      ->add_option("--min-batch-ms", options->min_batch_ms,
+                   "Each scene is repeated until a timed batch takes at least this long")
+      ->capture_default_str()
+      ->check(positive_finite_number("MS"));
+  accuracy
+      ->add_option(
+          "--fragility-study", options->fragility_study,
+          "Also compare this study's fragility curves per setting, and MC against LHS convergence")
+      ->check(CLI::ExistingFile)
+      ->type_name("STUDY.json");
+  accuracy
+      ->add_option("--replicates", options->replicates,
+                   "Seeds per design and size (--fragility-study)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000));
+  accuracy
+      ->add_option("--design-sizes", options->design_sizes,
+                   "Samples per level compared (--fragility-study)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  accuracy
+      ->add_option("--reference-samples", options->reference_samples_per_level,
+                   "Samples per level of the Latin hypercube reference (--fragility-study)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  accuracy->callback([options, &command] {
+    command = [options] { return run_accuracy(*options, std::cout, std::cerr); };
+  });
+}
+
+void add_bench_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* bench =
+      app.add_subcommand("bench", "Time one scene: N runs after a warm-up, one JSON object");
+  bench->add_option("scene", options->scene_path, "Scene file (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  bench->add_option("--repeat", options->repeat, "Timed runs")
+      ->capture_default_str()
+      ->check(CLI::Range(1L, 1000000000L));
+  bench->callback(
+      [options, &command] { command = [options] { return run_bench(*options, std::cout); }; });
+}
+
+void add_export_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* export_ = app.add_subcommand(
+      "export", "Write a study's fragility fits as a pelicun damage model or an OpenQuake model");
+  export_->add_option("results", options->results, "The study's HDF5 output")->required();
+  auto format = std::make_shared<std::string>();
+  export_
+      ->add_option("--format", *format,
+                   "pelicun: fragility.csv and fragility.json in --output; openquake: an NRML "
+                   "0.5 fragility model in --output")
+      ->required()
+      ->check(CLI::IsMember({"pelicun", "openquake"}));
+  export_
+      ->add_option("--output", options->output,
+                   "pelicun: the folder (created if missing); openquake: the XML file")
+      ->required()
+      ->type_name("PATH");
+  export_->add_option("--id", options->id,
+                      "The component (pelicun) and taxonomy (OpenQuake) ID; default "
+                      "BF.BLOCK.<config hash>");
+  export_->add_flag("--fitted-only", options->fitted_only,
+                    "Export the limit states that have a fit and name the others, instead of "
+                    "refusing a limit state without a fit");
+  export_->callback([options, format, &command] {
+    options->format = *format == "openquake" ? ExportFormat::openquake : ExportFormat::pelicun;
+    command = [options] { return run_export(*options, std::cerr); };
+  });
+}
+
+void add_spectrum_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<SpectrumOptions>();
+  CLI::App* spectrum =
+      app.add_subcommand("spectrum",
+                         "Map an overturning spectrum and bisect its boundaries (under mpirun for "
+                         "several ranks)");
+  spectrum->add_option("spectrum", options->spectrum_path, "Spectrum config (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  spectrum->add_option("--output", options->output,
+                       "Output HDF5 file (replaces the config's \"output\")");
+  spectrum
+      ->add_option("--max-chunk", options->max_chunk,
+                   "Largest number of points a worker gets per request (default: adapted to the "
+                   "measured speed; results never depend on it)")
+      ->check(CLI::Range(1, 1 << 20));
+  spectrum->callback(
+      [options, &command] { command = [options] { return run_spectrum_command(*options); }; });
+}
+
+// Declares every subcommand on `app`; once one has been parsed, `command` runs it.
+void add_subcommands(CLI::App& app, std::function<int()>& command) {
   add_simulate_command(app, command);
   add_run_command(app, command);
   add_accuracy_command(app, command);
   add_bench_command(app, command);
   add_export_command(app, command);
   add_spectrum_command(app, command);
+}
+
+}  // namespace
+
+int run_command_line(int argc, char** argv) {
+  CLI::App app{"blockfrag: rigid-block rocking, sliding and overturning under ground pulses"};
+  app.set_version_flag("--version", std::string("blockfrag ") + BLOCKFRAG_VERSION);
+  app.require_subcommand(1);
+
+  std::function<int()> command;
+  add_subcommands(app, command);
 
   try {
     app.parse(argc, argv);

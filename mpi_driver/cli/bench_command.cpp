@@ -3,10 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
-#include <memory>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/accuracy/accuracy_metrics.hpp"
@@ -40,20 +37,6 @@ int run_bench(const BenchOptions& options, std::ostream& out) {
   out << result.dump() << '\n';
   out.flush();
   return summary.status == Status::ok ? 0 : exit_code_simulation_failed;
-}
-
-void add_bench_command(CLI::App& app, std::function<int()>& command) {
-  auto options = std::make_shared<BenchOptions>();
-  CLI::App* bench =
-      app.add_subcommand("bench", "Time one scene: N runs after a warm-up, one JSON object");
-  bench->add_option("scene", options->scene_path, "Scene file (JSON)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  bench->add_option("--repeat", options->repeat, "Timed runs")
-      ->capture_default_str()
-      ->check(CLI::Range(1L, 1000000000L));
-  bench->callback(
-      [options, &command] { command = [options] { return run_bench(*options, std::cout); }; });
 }
 
 }  // namespace blockfrag

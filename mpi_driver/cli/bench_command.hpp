@@ -7,13 +7,7 @@
 #pragma once
 
 #include <filesystem>
-#include <functional>
 #include <ostream>
-
-// CLI11 is a large header-only library: only the .cpp files that use it include it.
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace blockfrag {
 
@@ -25,7 +19,5 @@ struct BenchOptions {
 // Returns 0, or exit_code_simulation_failed (exit_codes.hpp) when the scene's status is
 // "failed" (the JSON is still printed). Throws ConfigError for a bad scene.
 int run_bench(const BenchOptions& options, std::ostream& out);
-
-void add_bench_command(CLI::App& app, std::function<int()>& command);
 
 }  // namespace blockfrag

@@ -2,11 +2,8 @@
 
 #include <algorithm>
 #include <iostream>
-#include <memory>
 #include <system_error>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "engine/errors.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
@@ -98,35 +95,6 @@ int run_export(const ExportOptions& options, std::ostream& log) {
   }
   log.flush();
   return 0;
-}
-
-void add_export_command(CLI::App& app, std::function<int()>& command) {
-  auto options = std::make_shared<ExportOptions>();
-  CLI::App* export_ = app.add_subcommand(
-      "export", "Write a study's fragility fits as a pelicun damage model or an OpenQuake model");
-  export_->add_option("results", options->results, "The study's HDF5 output")->required();
-  auto format = std::make_shared<std::string>();
-  export_
-      ->add_option("--format", *format,
-                   "pelicun: fragility.csv and fragility.json in --output; openquake: an NRML "
-                   "0.5 fragility model in --output")
-      ->required()
-      ->check(CLI::IsMember({"pelicun", "openquake"}));
-  export_
-      ->add_option("--output", options->output,
-                   "pelicun: the folder (created if missing); openquake: the XML file")
-      ->required()
-      ->type_name("PATH");
-  export_->add_option("--id", options->id,
-                      "The component (pelicun) and taxonomy (OpenQuake) ID; default "
-                      "BF.BLOCK.<config hash>");
-  export_->add_flag("--fitted-only", options->fitted_only,
-                    "Export the limit states that have a fit and name the others, instead of "
-                    "refusing a limit state without a fit");
-  export_->callback([options, format, &command] {
-    options->format = *format == "openquake" ? ExportFormat::openquake : ExportFormat::pelicun;
-    command = [options] { return run_export(*options, std::cerr); };
-  });
 }
 
 }  // namespace blockfrag

@@ -8,15 +8,9 @@
 #pragma once
 
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
-
-// CLI11 is a large header-only library: only the .cpp files that use it include it.
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace blockfrag {
 
@@ -34,7 +28,5 @@ struct ExportOptions {
 // study output with fits, a measure or limit state that cannot be exported, or an output path that
 // cannot be used; FileError when a file cannot be written.
 int run_export(const ExportOptions& options, std::ostream& log);
-
-void add_export_command(CLI::App& app, std::function<int()>& command);
 
 }  // namespace blockfrag

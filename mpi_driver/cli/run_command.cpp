@@ -3,9 +3,6 @@
 #include <unistd.h>
 
 #include <iostream>
-#include <memory>
-
-#include <CLI/CLI.hpp>
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/cli/distributed_run.hpp"
@@ -136,25 +133,6 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
     return finish_study(adaptive ? adaptive->grown : config, settings, result, engine,
                         adaptive ? &*adaptive : nullptr);
   });
-}
-
-void add_run_command(CLI::App& app, std::function<int()>& command) {
-  auto options = std::make_shared<RunOptions>();
-  CLI::App* run = app.add_subcommand("run", "Run a batch study (under mpirun for several ranks)");
-  run->add_option("study", options->study_path, "Study config (JSON)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  run->add_option("--output", options->output,
-                  "Output HDF5 file (replaces the config's \"output\")");
-  run->add_option("--samples-per-level", options->samples_per_level,
-                  "Samples per intensity level (replaces the config's \"samples_per_level\")")
-      ->check(CLI::PositiveNumber);
-  run->add_option("--max-chunk", options->max_chunk,
-                  "Largest number of samples a worker gets per request (default: adapted to the "
-                  "measured speed; results never depend on it)")
-      ->check(CLI::Range(1, 1 << 20));
-  run->callback(
-      [options, &command] { command = [options] { return run_study_command(*options); }; });
 }
 
 }  // namespace blockfrag

@@ -16,16 +16,10 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <optional>
 
 #include "mpi_driver/cli/exit_codes.hpp"
 #include "mpi_driver/parallel/study_runner.hpp"
-
-// CLI11 is a large header-only library: only the .cpp files that use it include it.
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace blockfrag {
 
@@ -40,8 +34,5 @@ struct RunOptions {
 // and returns the exit code. On rank 0, a bad config or a refused resume throws ConfigError (after
 // MPI is finalised); the other ranks return 2 quietly, so the message is printed once.
 int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate = {});
-
-// Declares the `run` subcommand on `app`; once it has been parsed, `command` runs it.
-void add_run_command(CLI::App& app, std::function<int()>& command);
 
 }  // namespace blockfrag

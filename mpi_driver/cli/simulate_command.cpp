@@ -3,14 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <memory>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/simulate.hpp"
-#include "mpi_driver/cli/cli_validators.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/io/history_csv.hpp"
@@ -110,27 +106,6 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
   }
   out.flush();
   return summary.status == Status::ok ? 0 : exit_code_simulation_failed;
-}
-
-void add_simulate_command(CLI::App& app, std::function<int()>& command) {
-  auto options = std::make_shared<SimulateOptions>();
-  CLI::App* simulate = app.add_subcommand("simulate", "Simulate one scene and print its summary");
-  simulate->add_option("scene", options->scene_path, "Scene file (JSON)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  simulate->add_flag("--summary-json", options->summary_json,
-                     "Print the summary as exactly one JSON object on stdout, nothing else");
-  auto* history = simulate
-                      ->add_option("--history", options->history_path,
-                                   "Also write the time history to this CSV file")
-                      ->type_name("FILE.csv");
-  simulate
-      ->add_option("--history-interval", options->history_interval, "Time between history rows, s")
-      ->capture_default_str()
-      ->check(positive_finite_number("SECONDS"))
-      ->needs(history);
-  simulate->callback(
-      [options, &command] { command = [options] { return run_simulate(*options, std::cout); }; });
 }
 
 }  // namespace blockfrag

@@ -4,18 +4,12 @@
 #pragma once
 
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <ostream>
 
 #include "engine/scene/scene.hpp"
 #include "engine/summary.hpp"
 #include "mpi_driver/cli/exit_codes.hpp"
-
-// CLI11 is a large header-only library: only the .cpp files that use it include it.
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace blockfrag {
 
@@ -33,8 +27,5 @@ int run_simulate(const SimulateOptions& options, std::ostream& out);
 
 // The human-readable report: verdict, rotation against alpha, onset times, impacts, modes.
 void write_simulate_report(std::ostream& out, const Scene& scene, const Summary& summary);
-
-// Declares the `simulate` subcommand on `app`; once it has been parsed, `command` runs it.
-void add_simulate_command(CLI::App& app, std::function<int()>& command);
 
 }  // namespace blockfrag

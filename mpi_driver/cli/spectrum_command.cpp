@@ -3,9 +3,6 @@
 #include <unistd.h>
 
 #include <iostream>
-#include <memory>
-
-#include <CLI/CLI.hpp>
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/cli/distributed_run.hpp"
@@ -120,26 +117,6 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
     return exit_code_interrupted;
   }
   return finish_on_rank0(comm, [&] { return finish_spectrum(config, settings, files, result); });
-}
-
-void add_spectrum_command(CLI::App& app, std::function<int()>& command) {
-  auto options = std::make_shared<SpectrumOptions>();
-  CLI::App* spectrum =
-      app.add_subcommand("spectrum",
-                         "Map an overturning spectrum and bisect its boundaries (under mpirun for "
-                         "several ranks)");
-  spectrum->add_option("spectrum", options->spectrum_path, "Spectrum config (JSON)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  spectrum->add_option("--output", options->output,
-                       "Output HDF5 file (replaces the config's \"output\")");
-  spectrum
-      ->add_option("--max-chunk", options->max_chunk,
-                   "Largest number of points a worker gets per request (default: adapted to the "
-                   "measured speed; results never depend on it)")
-      ->check(CLI::Range(1, 1 << 20));
-  spectrum->callback(
-      [options, &command] { command = [options] { return run_spectrum_command(*options); }; });
 }
 
 }  // namespace blockfrag

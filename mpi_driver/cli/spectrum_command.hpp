@@ -12,14 +12,9 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <optional>
 
 #include "mpi_driver/study/sample_evaluation.hpp"
-
-namespace CLI {
-class App;
-}  // namespace CLI
 
 namespace blockfrag {
 
@@ -33,8 +28,5 @@ struct SpectrumOptions {
 // default) and returns the exit code. On rank 0, a bad config or a refused run throws ConfigError
 // (after MPI is finalised); the other ranks return 2 quietly, so the message is printed once.
 int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& evaluate = {});
-
-// Declares the `spectrum` subcommand on `app`; once it has been parsed, `command` runs it.
-void add_spectrum_command(CLI::App& app, std::function<int()>& command);
 
 }  // namespace blockfrag
