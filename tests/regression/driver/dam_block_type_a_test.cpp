@@ -4,6 +4,7 @@
 // crest more than the ground: its numbers are not ours to match, see docs/validation.md).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,8 @@ namespace blockfrag {
 namespace {
 
 Scene dam_scene(double amplitude_g) {
-  Scene scene =
-      read_scene_file(std::string(BLOCKFRAG_SOURCE_DIR) + "/configs/dam_block_type_a.json");
+  Scene scene = read_scene_file(std::filesystem::path(BLOCKFRAG_SOURCE_DIR) /
+                                "configs/dam_block_type_a.json");
   std::get<CosinePulse>(scene.ground_motion).amplitude_g = amplitude_g;
   return scene;
 }

@@ -1,5 +1,6 @@
 // The paper's section 3 example (configs/paper_example.json) against the paper's statements.
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -11,7 +12,8 @@ namespace blockfrag {
 namespace {
 
 Scene paper_scene() {
-  return read_scene_file(std::string(BLOCKFRAG_SOURCE_DIR) + "/configs/paper_example.json");
+  return read_scene_file(std::filesystem::path(BLOCKFRAG_SOURCE_DIR) /
+                         "configs/paper_example.json");
 }
 
 TEST(PaperExample, FrictionCannotHoldPureRockingWhenThePulseStarts) {
