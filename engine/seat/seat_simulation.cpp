@@ -264,8 +264,19 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
 }
 
 SeatMode SeatSimulation::resolve() {
+  const std::vector<SeatPair> pairs = touching(state_);
+  // Between events the contacts hold only at the acceleration level: the integrator lets their
+  // gaps and velocities drift, to its tolerance. The contact problem at the event reads contact
+  // velocities against 1e-9 sqrt(gR), well below an adaptive solver's drift, so it is solved on the
+  // state put back on the contacts that were active and still touch (the projection enter() makes
+  // after the event, made before it too): a drifted pivot does not count as leaving.
+  SeatMode holding;
+  holding.rest = mode_.rest;
+  for (const ActiveContact& a : mode_.active) {
+    if (std::find(pairs.begin(), pairs.end(), a.pair) != pairs.end()) holding.active.push_back(a);
+  }
+  project(holding);
   BlockState s = state_;
-  const std::vector<SeatPair> pairs = touching(s);
   const std::size_t logged = impact_log_.size();
   bool slow_landing = false;
   if (!resolve_impacts(s, pairs, slow_landing)) {
