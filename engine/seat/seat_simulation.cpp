@@ -110,6 +110,7 @@ class SeatSimulation {
   SeatMode logged_mode(const SeatMode& mode, std::size_t logged);
   bool holds_at_rest(const PlanarForces& f) const;
   Eigen::Vector3d least_kinetic_change(const Eigen::MatrixXd& j, const Eigen::VectorXd& b) const;
+  void project_positions(const std::vector<ActiveContact>& active, BlockState& s) const;
   void project(const SeatMode& mode);
   bool rest_holds(double lambda) const;
   void set_rest_thresholds(SeatMode& mode) const;
@@ -394,25 +395,32 @@ Eigen::Vector3d SeatSimulation::least_kinetic_change(const Eigen::MatrixXd& j,
   return change;
 }
 
-// Puts the active contacts' gaps back to zero (the least change) and their normal
-// velocities (and a sticking one's tangential velocity) too.
-void SeatSimulation::project(const SeatMode& mode) {
-  if (mode.active.empty()) return;
-  const auto k = static_cast<Eigen::Index>(mode.active.size());
+// Puts the contacts' gaps back to zero: the least change of the pose.
+void SeatSimulation::project_positions(const std::vector<ActiveContact>& active,
+                                       BlockState& s) const {
+  if (active.empty()) return;
+  const auto k = static_cast<Eigen::Index>(active.size());
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
     Eigen::MatrixXd j(k, 3);
     Eigen::VectorXd gap(k);
     for (Eigen::Index i = 0; i < k; ++i) {
-      const PairPose p = contacts_.pose(mode.active[static_cast<std::size_t>(i)].pair, state_);
+      const PairPose p = contacts_.pose(active[static_cast<std::size_t>(i)].pair, s);
       j.row(i) = contact_row(p.contact, p.contact.normal);
       gap(i) = p.gap;
     }
     if (gap.cwiseAbs().maxCoeff() <= std::numeric_limits<double>::epsilon() * R_) break;
     const Eigen::Vector3d dq = least_kinetic_change(j, -gap);
-    state_.x += dq(0);
-    state_.y += dq(1);
-    state_.theta += dq(2);
+    s.x += dq(0);
+    s.y += dq(1);
+    s.theta += dq(2);
   }
+}
+
+// Puts the active contacts' gaps back to zero (the least change) and their normal
+// velocities (and a sticking one's tangential velocity) too.
+void SeatSimulation::project(const SeatMode& mode) {
+  if (mode.active.empty()) return;
+  project_positions(mode.active, state_);
   if (mode.rest) return;
   std::vector<Eigen::RowVector3d> rows;
   std::vector<double> velocities;
@@ -646,13 +654,22 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
     if (which < 0) continue;
     const BlockState at_event = state_at(t_event);
     SeatEvent event = system.event(which);
-    // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
-    // top corner at theta = pi/2): that is overturning, whichever guard rounding put first.
-    if (event == SeatEvent::touches &&
-        contacts_.overturn_margin(geometry_, at_event.theta) <= kContactHeight) {
-      event = SeatEvent::overturns;
-    }
     arrived_point_ = event == SeatEvent::touches ? system.watched_point(which) : -1;
+    // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
+    // top corner at theta = pi/2): that is overturning, whichever guard rounding put first. The
+    // tilt is read with every touching contact put back on the seat: the active ones have drifted
+    // (by the integrator's error, far more than 1e-9 rad at an adaptive tolerance of 1e-8), and a
+    // pivot sunk into the seat lets the face's far corner touch before the tilt is reached.
+    if (event == SeatEvent::touches) {
+      std::vector<ActiveContact> landed;
+      for (const SeatPair& pair : touching(at_event)) landed.push_back({pair, ContactState::stick});
+      BlockState on_seat = at_event;
+      project_positions(landed, on_seat);
+      if (contacts_.overturn_margin(geometry_, on_seat.theta) <= kContactHeight) {
+        event = SeatEvent::overturns;
+        arrived_point_ = -1;
+      }
+    }
     if (event == SeatEvent::lift_off || event == SeatEvent::friction_limit ||
         event == SeatEvent::leaves_end) {
       const auto contact = static_cast<std::size_t>((which - 2) / kSeatContactGuards);
