@@ -3,10 +3,11 @@
 Three runs of the script (a few seconds each):
 
 - the accuracy suite as given and 20 random scenes: exit 0 and a row per compared field; the seat's
-  engine refuses exactly the suite's scenes released tilted, on both seats; every flat-ground run
-  ends, every seat run but the suite's rock_stocky; the verdicts (overturned, fell, settled) are
-  equal wherever both ended; on the random scenes that RK4 runs, the fields agree within the
-  tolerances below; the script's temporary folders are gone;
+  engine refuses exactly the suite's scenes released tilted, on both seats; every run ends, on the
+  flat ground and on the seat; the verdicts (overturned, fell, settled) are equal wherever both
+  ended, and on the suite every onset time too (present on both or on neither); on the random scenes
+  that RK4 runs, the fields agree within the tolerances below; the script's temporary folders are
+  gone;
 - the suite with every adaptive scene at tolerance 1e-12: no verdict difference at all (every
   onset time present on both or on neither) and the fields within the tolerances below;
 - the same through a blockfrag that adds 1e-7 rad to a seat run's max |theta|: those checks fail.
@@ -17,16 +18,19 @@ seat against the flat ground") measured, with a margin, so they hold for any ran
 - RK4: angles 3.8e-10 rad (a settled block's final theta 4e-16; one still bouncing at the end, e >
   0.9, is chaotic: not compared); overturn, first impact and end times 2e-10 s; rock onsets 3.6e-9 s
   (the seat's rest ends where its contact problem's 1e-9 g tolerance lets it); max |slide| 3.1e-7 R,
-  a settled block's final slide 6.5e-6 R (after 911 impacts at e = 0.96). Slide onsets and settle
-  times are not compared: a micro-slip at the last landing of a bouncing sequence, or where the
-  sequence ends, differs between the engines (slide onsets by up to 1.2 s, settle times 0.09 s).
-- The suite at 1e-12: max |theta| 7.7e-12 rad, final theta and slide 4.4e-8 (bounce_cosine_e09, e =
+  a settled block's final slide 1.7e-5 R (random-0713, after 911 impacts at e = 0.96; 6.5e-6 R
+  before the seat's engine put the block back on its contacts ahead of deciding their states at an
+  event). Slide onsets and settle times are not compared: a micro-slip at the last landing of a
+  bouncing sequence, or where the sequence ends, differs between the engines (slide onsets by up to
+  1.2 s, settle times 0.08 s).
+- The suite at 1e-12: max |theta| 8.0e-12 rad, final theta and slide 5.6e-8 (bounce_cosine_e09, e =
   0.9), max |slide| 1e-11 R, slide onset, first impact, overturn and end times 4.4e-10 s, rock
   onsets 1.4e-9 s; settle times not compared (0.0024 s, as above).
 
-At the default tolerance (1e-8) the seat's engine drifts off its contacts by more than its 1e-9
-velocity tolerance and takes a spurious lift-off where a slip starts: the suite's fields differ by up
-to pi, and only the verdicts are checked there.
+At the default tolerance (1e-8) the seat's engine drifts off its contacts between events by the
+integrator's error (it projects the block back onto them at each event, before it decides the
+contacts' states); the suite's fields differ by up to 0.04 rad and 0.43 s (a settle time), so only
+the verdicts are checked there.
 
 Prints "N passed, M failed" last; exits non-zero on any failure.
 """
@@ -47,14 +51,14 @@ RANDOM_SCENES = 20
 SEED = 20261127
 FIELDS = ("max_abs_theta", "final_theta", "final_slide", "max_abs_slide", "rock_start_time", "slide_start_time",
           "first_impact_time", "overturn_time", "settle_time", "end_time")
-# The suite's scene whose seat runs do not end: e = 0 rocking impacts whose Zeno sequence the flat
-# ground lays flat at 0.83 s and the seat's engine does not (10,000 events by 0.84 s).
-SEAT_UNFINISHED = {"rock_stocky"}
+# The suite's scenes whose seat runs do not end: none (rock_stocky's e = 0 rocking impacts, 10,000
+# events by 0.84 s once, now rest at 0.830 s after 16 impacts, as on the flat ground).
+SEAT_UNFINISHED = set()
 
 # Largest |seat - flat ground| allowed, per field (rad, s, or over R): see the docstring.
 RK4_TOLERANCES = {"max_abs_theta": 1e-9, "overturn_time": 1e-9, "first_impact_time": 1e-9, "end_time": 1e-9,
                   "rock_start_time": 1e-8, "max_abs_slide": 1e-6}
-RK4_SETTLED_TOLERANCES = {"final_theta": 1e-9, "final_slide": 1e-5}
+RK4_SETTLED_TOLERANCES = {"final_theta": 1e-9, "final_slide": 3e-5}
 TIGHT_SUITE_TOLERANCES = {"max_abs_theta": 1e-9, "final_theta": 1e-7, "final_slide": 1e-7, "max_abs_slide": 1e-9,
                           "slide_start_time": 1e-9, "first_impact_time": 1e-9, "overturn_time": 1e-9,
                           "end_time": 1e-9, "rock_start_time": 1e-8}
@@ -154,6 +158,11 @@ def main():
                          if v.split(":")[0] in ("overturned", "fell", "settled")]
             assert differing == [], differing
 
+        def suite_onsets_equal():
+            differing = [(r["scene"], r["seat"], v) for r in data["compared"] if r["group"] == "suite"
+                         for v in r["verdicts"]]
+            assert differing == [], differing
+
         def rk4_within_tolerances():
             rk4 = [r for r in data["compared"] if r["group"] == "random, rk4"]
             assert len(rk4) >= 10, len(rk4)
@@ -167,8 +176,9 @@ def main():
 
         check("exits 0 with a row per field", exits_0_with_the_table)
         check("the seat refuses the scenes released tilted", refuses_the_scenes_released_tilted)
-        check("every run ends but rock_stocky's on the seat", every_run_ends)
+        check("every run ends", every_run_ends)
         check("overturned, fell and settled equal", verdicts_equal)
+        check("the suite's onset times present alike", suite_onsets_equal)
         check("RK4 scenes within their tolerances", rk4_within_tolerances)
         check("the temporary folders are removed", temporary_folders_removed)
 
