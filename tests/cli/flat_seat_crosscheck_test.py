@@ -40,10 +40,11 @@ import os
 import subprocess
 import sys
 import tempfile
-import traceback
 from pathlib import Path
 
 SOURCE = Path(os.environ.get("BLOCKFRAG_SOURCE_DIR", Path(__file__).resolve().parents[2]))
+sys.path.insert(0, str(SOURCE / "tests" / "support"))
+from script_checks import check, summary  # noqa: E402  (tests/support is not a package)
 SCRIPT = SOURCE / "tests" / "benchmarks" / "flat_seat_crosscheck.py"
 SUITE = SOURCE / "configs" / "accuracy_suite.json"
 BLOCKFRAG = os.environ["BLOCKFRAG"]
@@ -77,20 +78,6 @@ if "seat" in json.loads(open(sys.argv[2]).read()):
     summary["max_abs_theta"] += {PERTURBATION!r}
 print(json.dumps(summary))
 """
-
-passed = 0
-failed = 0
-
-
-def check(name, function):
-    global passed, failed
-    try:
-        function()
-        passed += 1
-    except Exception:  # noqa: BLE001  (every failure is reported and counted, then the next check runs)
-        failed += 1
-        print(f"FAIL: {name}", file=sys.stderr)
-        traceback.print_exc()
 
 
 def run(blockfrag, scratch, output, *args):
@@ -206,8 +193,7 @@ def main():
 
         check("a seat off by 1e-7 rad fails the checks", a_perturbed_seat_fails_the_checks)
 
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return summary()
 
 
 if __name__ == "__main__":

@@ -11,27 +11,14 @@ import os
 import subprocess
 import sys
 import tempfile
-import traceback
 from pathlib import Path
 
 SOURCE = Path(os.environ.get("BLOCKFRAG_SOURCE_DIR", Path(__file__).resolve().parents[2]))
+sys.path.insert(0, str(SOURCE / "tests" / "support"))
+from script_checks import check, summary  # noqa: E402  (tests/support is not a package)
 SCRIPT = SOURCE / "tests" / "benchmarks" / "study_throughput.py"
 BLOCKFRAG = os.environ["BLOCKFRAG"]
 QUICK_SCENES = {"grid": 200, "example1e5": 100, "example1e6": 1000, "record_suite": 20}
-
-passed = 0
-failed = 0
-
-
-def check(name, function):
-    global passed, failed
-    try:
-        function()
-        passed += 1
-    except Exception:  # noqa: BLE001  (every failure is reported and counted, then the next check runs)
-        failed += 1
-        print(f"FAIL: {name}", file=sys.stderr)
-        traceback.print_exc()
 
 
 def run(scratch, *args):
@@ -127,8 +114,7 @@ def main():
 
         check("an unknown case is refused", unknown_case)
 
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return summary()
 
 
 if __name__ == "__main__":
