@@ -45,6 +45,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from shoelace import centroid
+
 SOURCE = Path(__file__).resolve().parents[2]
 SUITE = SOURCE / "configs" / "accuracy_suite.json"
 
@@ -92,17 +94,6 @@ def block_vertices(block):
         return [tuple(v) for v in block["polygon"]]
     a, b = block["half_width"], block["half_height"]
     return [(-a, -b), (a, -b), (a, b), (-a, b)]
-
-
-def centroid(vertices):
-    """The shoelace centre of mass of a counter-clockwise polygon."""
-    area = cx = cy = 0.0
-    for (x0, y0), (x1, y1) in zip(vertices, vertices[1:] + vertices[:1]):
-        cross = x0 * y1 - x1 * y0
-        area += cross / 2
-        cx += (x0 + x1) * cross
-        cy += (y0 + y1) * cross
-    return cx / (6 * area), cy / (6 * area)
 
 
 def block_size(vertices):

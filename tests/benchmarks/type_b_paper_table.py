@@ -32,6 +32,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from shoelace import centroid as centroid_of
+
 SOURCE = Path(__file__).resolve().parents[2]
 SCENE = SOURCE / "configs" / "dam_block_type_b.json"
 # The dam of the record-suite and type A studies: Fenves & Chopra's period of a 100 m dam of 25 GPa.
@@ -78,16 +80,6 @@ def heel_shift(row, centroid):
     c, s = math.cos(row["theta"]), math.sin(row["theta"])
     rx, ry = -centroid[0], -centroid[1]
     return row["x"] + (c * rx - s * ry) - rx
-
-
-def centroid_of(polygon):
-    area = cx = cy = 0.0
-    for (x0, y0), (x1, y1) in zip(polygon, polygon[1:] + polygon[:1]):
-        cross = x0 * y1 - x1 * y0
-        area += cross / 2
-        cx += (x0 + x1) * cross
-        cy += (y0 + y1) * cross
-    return cx / (6 * area), cy / (6 * area)
 
 
 def degrees(theta):
