@@ -28,8 +28,6 @@ namespace blockfrag {
 
 namespace {
 
-bool reached(double t, double end) { return end - t <= kReachedEnd * std::max(1.0, std::abs(end)); }
-
 class Simulation {
  public:
   Simulation(const Scene& scene, double output_interval)

@@ -3,6 +3,9 @@
 // velocities over sqrt(g R), times in s unless a line says otherwise; guards are dimensionless.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 namespace blockfrag {
 
 // --- Contact: when a corner touches, rests, settles ---------------------------------------------
@@ -59,6 +62,9 @@ inline constexpr double kEventTimeTolerance = 1e-15;
 // A time within this relative distance (of max(1, |end|)) of the end of a stretch has reached it:
 // a step that short cannot advance t.
 inline constexpr double kReachedEnd = 1e-14;
+inline bool reached(double t, double end) {
+  return end - t <= kReachedEnd * std::max(1.0, std::abs(end));
+}
 // Rest ends where lambda is past a threshold by this much (in units of lambda), so the modes it
 // leads to see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
 inline constexpr double kOnsetMargin = 1e-12;

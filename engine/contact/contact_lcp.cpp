@@ -29,10 +29,6 @@ struct Column {
   double tangent;  // lambda_t per lambda_n
 };
 
-int slip_sign(ContactState s) {
-  return s == ContactState::slip_positive ? 1 : s == ContactState::slip_negative ? -1 : 0;
-}
-
 std::vector<ContactState> allowed_states(const LcpContact& c) {
   if (c.forced_slip != 0) {
     return {c.forced_slip > 0 ? ContactState::slip_positive : ContactState::slip_negative,

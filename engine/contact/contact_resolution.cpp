@@ -19,14 +19,6 @@ constexpr double kSingularPivot = 1e-300;
 
 int sign_of(double v) { return v > 0 ? 1 : -1; }
 
-RigidVelocity velocity_of(const BlockState& s) { return {s.vx, s.vy, s.omega}; }
-
-void set_velocity(BlockState& s, const RigidVelocity& v) {
-  s.vx = v.vx;
-  s.vy = v.vy;
-  s.omega = v.omega;
-}
-
 // Solves the 3x3 system A z = b by Gaussian elimination with partial pivoting.
 bool solve3(std::array<std::array<double, 4>, 3> m, std::array<double, 3>& z) {
   for (int col = 0; col < 3; ++col) {

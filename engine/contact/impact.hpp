@@ -6,6 +6,8 @@
 
 #include <optional>
 
+#include "engine/scene/block_state.hpp"
+
 namespace blockfrag {
 
 struct CornerImpactInput {
@@ -47,6 +49,14 @@ struct RigidVelocity {
   double vx, vy;  // centre of mass, m/s
   double omega;   // rad/s, counter-clockwise positive
 };
+
+inline RigidVelocity velocity_of(const BlockState& s) { return {s.vx, s.vy, s.omega}; }
+
+inline void set_velocity(BlockState& s, const RigidVelocity& v) {
+  s.vx = v.vx;
+  s.vy = v.vy;
+  s.omega = v.omega;
+}
 
 struct CornerVelocity {
   double u_x, u_y;

@@ -47,6 +47,11 @@ ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelo
 // What a contact does: sticks, slips along +t or -t (friction -s mu V), or carries no force.
 enum class ContactState { stick, slip_positive, slip_negative, off };
 
+// s of a slipping state (+1 or -1); 0 for stick and off.
+inline int slip_sign(ContactState s) {
+  return s == ContactState::slip_positive ? 1 : s == ContactState::slip_negative ? -1 : 0;
+}
+
 // unique: every consistent choice of contact states gives the same accelerations (or velocities);
 // indeterminate: consistent choices disagree (the Painleve family: the chosen one follows the
 // preference order below); inconsistent: no choice is consistent.

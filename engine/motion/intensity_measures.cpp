@@ -195,7 +195,7 @@ double first_free_extremum(double omega, double zeta, const OscillatorState& s) 
   return std::abs(NigamJenningsStep(omega, zeta, phase / wd)(s, 0.0, 0.0).q);
 }
 
-void require_in(const Domain& domain, double value, const char* name) {
+void require_measure_in(const Domain& domain, double value, const char* name) {
   if (!domain.contains(value)) {
     throw InvalidInput(std::string("invalid intensity measure: ") + name + " " + domain.rule() +
                        " (got " + format_number(value) + ")");
@@ -209,7 +209,7 @@ double peak_ground_acceleration_g(const GroundMotionPieces& motion) {
 }
 
 double peak_ground_velocity(const GroundMotionPieces& motion, double g) {
-  require_in(domain::g, g, "g");
+  require_measure_in(domain::g, g, "g");
   double area = 0.0, peak = 0.0;  // area: the integral of lambda from 0 to the piece's start
   for_each_moving_piece(motion, [&](const MotionPiece& piece) {
     for (const double t : lambda_sign_changes(piece)) {
@@ -292,8 +292,8 @@ std::vector<double> step_extrema(double omega, double zeta, double h, double a0,
 }
 
 double spectral_acceleration_g(const GroundMotionPieces& motion, double period, double damping) {
-  require_in(kSpectralPeriodDomain, period, "period");
-  require_in(kSpectralDampingDomain, damping, "damping");
+  require_measure_in(kSpectralPeriodDomain, period, "period");
+  require_measure_in(kSpectralDampingDomain, damping, "damping");
   const double omega = 2.0 * pi / period, end = motion.end_of_motion();
 
   const auto refuse = [&] {

@@ -12,13 +12,6 @@ namespace blockfrag {
 
 namespace {
 
-double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
-
-// > 0 when c lies left of the line from a to b.
-double orientation(const Vertex& a, const Vertex& b, const Vertex& c) {
-  return cross(b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]);
-}
-
 std::size_t next(std::size_t i, std::size_t n) { return (i + 1) % n; }
 
 // Twice the signed area (> 0 counter-clockwise).

@@ -12,6 +12,13 @@ namespace blockfrag {
 
 using Vertex = std::array<double, 2>;  // (x, y), m
 
+inline double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+
+// > 0 when c lies left of the line from a to b.
+inline double orientation(const Vertex& a, const Vertex& b, const Vertex& c) {
+  return cross(b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]);
+}
+
 // Why a vertex list cannot be a block resting on its base; `vertex` is the index of the offending
 // vertex when one can be named, else -1 (the list as a whole).
 struct PolygonDefect {

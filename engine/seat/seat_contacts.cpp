@@ -19,12 +19,12 @@ double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
 // The segment from a to b: its unit direction, its left normal (up for a seat segment, inward
 // for a counter-clockwise block's edge) and its length.
-struct Segment {
+struct SegmentFrame {
   Vec2 direction, normal;
   double length;
 };
 
-Segment segment(Vec2 a, Vec2 b) {
+SegmentFrame segment_frame(Vec2 a, Vec2 b) {
   const Vec2 d = minus(b, a);
   const double length = norm(d);
   const Vec2 u{d.x / length, d.y / length};
@@ -44,7 +44,7 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
 }
 
 bool SeatContacts::straight(double tolerance) const {
-  const Segment whole = segment(seat_.front(), seat_.back());
+  const SegmentFrame whole = segment_frame(seat_.front(), seat_.back());
   return std::all_of(seat_.begin(), seat_.end(), [&](const Vec2& p) {
     return std::abs(dot(whole.normal, minus(p, seat_.front()))) <= tolerance;
   });
@@ -70,7 +70,7 @@ PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
   const Vec2 centre{s.x, s.y};
   if (pair.kind == ContactKind::block_vertex) {
     const Vec2 a = seat_[static_cast<std::size_t>(pair.seat)];
-    const Segment seg = segment(a, seat_[static_cast<std::size_t>(pair.seat) + 1]);
+    const SegmentFrame seg = segment_frame(a, seat_[static_cast<std::size_t>(pair.seat) + 1]);
     const Vec2 p = vertex_at(pair.block, s);
     const Vec2 ap = minus(p, a);
     return {dot(seg.normal, ap), dot(seg.direction, ap), seg.length,
@@ -78,7 +78,7 @@ PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
   }
   const Vec2 a = vertex_at(pair.block, s);
   const Vec2 b = vertex_at((pair.block + 1) % vertex_count(), s);
-  const Segment edge = segment(a, b);
+  const SegmentFrame edge = segment_frame(a, b);
   const Vec2 p = seat_[static_cast<std::size_t>(pair.seat)];
   const Vec2 ap = minus(p, a);
   return {-dot(edge.normal, ap), dot(edge.direction, ap), edge.length,
@@ -108,7 +108,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
     for (const int j : {k - 1, k}) {
       if (j < 0 || j + 1 >= point_count()) continue;
       const Vec2 n =
-          segment(seat_[static_cast<std::size_t>(j)], seat_[static_cast<std::size_t>(j) + 1])
+          segment_frame(seat_[static_cast<std::size_t>(j)], seat_[static_cast<std::size_t>(j) + 1])
               .normal;
       up = {up.x + n.x, up.y + n.y};
     }

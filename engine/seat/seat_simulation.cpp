@@ -30,16 +30,6 @@ constexpr int kProjectionIterations = 4;
 // Halvings of the lambda interval that bracket where rest on a seat ends.
 constexpr int kRestThresholdHalvings = 64;
 
-bool reached(double t, double end) { return end - t <= kReachedEnd * std::max(1.0, std::abs(end)); }
-
-RigidVelocity velocity_of(const BlockState& s) { return {s.vx, s.vy, s.omega}; }
-
-void set_velocity(BlockState& s, const RigidVelocity& v) {
-  s.vx = v.vx;
-  s.vy = v.vy;
-  s.omega = v.omega;
-}
-
 bool is_slip(ContactState s) {
   return s == ContactState::slip_positive || s == ContactState::slip_negative;
 }

@@ -15,10 +15,6 @@ constexpr int kMaxUnknowns = 2 * kMaxSeatContacts;
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxUnknowns, kMaxUnknowns>;
 using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxUnknowns, 1>;
 
-int slip_sign(ContactState s) {
-  return s == ContactState::slip_positive ? 1 : s == ContactState::slip_negative ? -1 : 0;
-}
-
 }  // namespace
 
 FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,

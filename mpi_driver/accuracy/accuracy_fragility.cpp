@@ -57,7 +57,7 @@ bool exceeds_at(const LimitState& state, const StudyResults& results, std::size_
          exceeds(state, record, results.alphas[i]);
 }
 
-std::string number(double x, const char* format = "%.3g") {
+std::string table_number(double x, const char* format = "%.3g") {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, format, x);
   return buffer;
@@ -158,11 +158,12 @@ void write_fragility_table(std::ostream& out, const std::vector<FragilityDiffere
       << "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
     out << "| " << setting_label(row.setting) << " | " << row.limit_state << " | " << row.failures
-        << " | " << row.verdicts_changed << " | " << number(row.max_probability_difference) << " | "
-        << number(row.max_sampling_half_width) << " | " << number(row.median, "%.5g") << " ("
-        << number(row.reference_median, "%.5g") << ") | " << number(row.beta, "%.4g") << " ("
-        << number(row.reference_beta, "%.4g") << ") | " << number(1e3 * row.median_seconds)
-        << " |\n";
+        << " | " << row.verdicts_changed << " | " << table_number(row.max_probability_difference)
+        << " | " << table_number(row.max_sampling_half_width) << " | "
+        << table_number(row.median, "%.5g") << " (" << table_number(row.reference_median, "%.5g")
+        << ") | " << table_number(row.beta, "%.4g") << " ("
+        << table_number(row.reference_beta, "%.4g") << ") | "
+        << table_number(1e3 * row.median_seconds) << " |\n";
   }
 }
 
@@ -172,8 +173,8 @@ void write_design_convergence_table(std::ostream& out, const std::vector<DesignC
       << "|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
     out << "| " << row.design << " | " << row.samples_per_level << " | " << row.limit_state << " | "
-        << number(row.rms_relative_median_error) << " | " << number(row.rms_beta_error) << " | "
-        << row.fitted_replicates << " |\n";
+        << table_number(row.rms_relative_median_error) << " | " << table_number(row.rms_beta_error)
+        << " | " << row.fitted_replicates << " |\n";
   }
 }
 

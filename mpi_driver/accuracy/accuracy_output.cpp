@@ -140,7 +140,7 @@ void write_summary(Hdf5Writer& file, const AccuracyStudy& study) {
   stat("median_steps", &SettingStatistics::median_steps);
 }
 
-std::string number(double x, const char* format = "%.2e") {
+std::string error_number(double x, const char* format = "%.2e") {
   if (std::isinf(x)) return "inf";
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, format, x);
@@ -177,10 +177,10 @@ void write_accuracy_table(std::ostream& out, const AccuracyStudy& study) {
   out << "Reference: " << setting_label(study.reference_setting)
       << "; check: " << setting_label(study.check_setting) << " on " << study.scene_names.size()
       << " scenes. Largest |check - reference|: max|theta| "
-      << number(check.max_error.max_abs_theta) << " rad, final theta "
-      << number(check.max_error.final_theta) << " rad, final slide "
-      << number(check.max_error.final_slide) << " m, first impact "
-      << number(check.max_error.first_impact_time)
+      << error_number(check.max_error.max_abs_theta) << " rad, final theta "
+      << error_number(check.max_error.final_theta) << " rad, final slide "
+      << error_number(check.max_error.final_slide) << " m, first impact "
+      << error_number(check.max_error.first_impact_time)
       << " s; verdicts that differ: " << check.wrong_verdicts << "; failures: " << check.failures
       << ".\n\n";
   out << "| setting | max err max\\|theta\\| (rad) | scenes with err max\\|theta\\| > 1e-6 | max "
@@ -191,13 +191,13 @@ void write_accuracy_table(std::ostream& out, const AccuracyStudy& study) {
   const std::size_t scenes = study.scene_names.size();
   for (const SettingResult& result : study.settings) {
     const SettingStatistics& s = result.statistics;
-    out << "| " << setting_label(result.setting) << " | " << number(s.max_error.max_abs_theta)
+    out << "| " << setting_label(result.setting) << " | " << error_number(s.max_error.max_abs_theta)
         << " | " << s.scenes_over_target << "/" << scenes << " | "
-        << number(s.max_error.final_theta) << " | " << number(s.max_error.final_slide) << " | "
-        << number(s.max_error.first_impact_time) << " | " << s.wrong_verdicts << "/" << scenes
-        << " | " << s.failures << " | " << number(1e3 * s.median_seconds, "%.3g") << " | "
-        << number(1e3 * s.p95_seconds, "%.3g") << " | " << number(s.median_rhs_evaluations, "%.0f")
-        << " |\n";
+        << error_number(s.max_error.final_theta) << " | " << error_number(s.max_error.final_slide)
+        << " | " << error_number(s.max_error.first_impact_time) << " | " << s.wrong_verdicts << "/"
+        << scenes << " | " << s.failures << " | " << error_number(1e3 * s.median_seconds, "%.3g")
+        << " | " << error_number(1e3 * s.p95_seconds, "%.3g") << " | "
+        << error_number(s.median_rhs_evaluations, "%.0f") << " |\n";
   }
 }
 

@@ -11,7 +11,7 @@ namespace blockfrag {
 namespace {
 
 // Records read from the spool at a time: 64k of them, a few MB.
-constexpr std::int64_t kBlock = 1 << 16;
+constexpr std::int64_t kSpoolRecordsPerRead = 1 << 16;
 
 void write_root(Hdf5Writer& file, const SpectrumConfig& config) {
   file.set_attribute("/", "config", canonical_text(config.canonical));
@@ -48,8 +48,8 @@ SpectrumTally write_map(Hdf5Writer& file, const SpectrumConfig& config, const Re
       overturn_time(static_cast<std::size_t>(total));
   SpectrumTally tally;
   std::vector<SampleRecord> records;
-  for (std::int64_t first = 0; first < total; first += kBlock) {
-    records.resize(static_cast<std::size_t>(std::min(kBlock, total - first)));
+  for (std::int64_t first = 0; first < total; first += kSpoolRecordsPerRead) {
+    records.resize(static_cast<std::size_t>(std::min(kSpoolRecordsPerRead, total - first)));
     spool.read(first, records);
     for (const SampleRecord& record : records) {
       const std::int64_t index = first + (&record - records.data());

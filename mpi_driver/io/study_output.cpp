@@ -14,7 +14,7 @@ namespace blockfrag {
 namespace {
 
 // Samples at a time in the streaming pass: 64k records and their columns, a few tens of MB.
-constexpr std::int64_t kBlock = 1 << 16;
+constexpr std::int64_t kSamplesPerPass = 1 << 16;
 
 // The /samples and /results columns of one block of samples, written where they belong.
 class SampleColumns {
@@ -334,8 +334,8 @@ StudyTallies write_study_output(const std::filesystem::path& path, const StudyCo
     StudySampler sampler(config);
     std::vector<SampleRecord> records;
     const std::int64_t total = config.total_samples();
-    for (std::int64_t first = 0; first < total; first += kBlock) {
-      records.resize(static_cast<std::size_t>(std::min(kBlock, total - first)));
+    for (std::int64_t first = 0; first < total; first += kSamplesPerPass) {
+      records.resize(static_cast<std::size_t>(std::min(kSamplesPerPass, total - first)));
       spool.read(first, records);
       columns.clear();
       for (const SampleRecord& record : records) {

@@ -11,8 +11,8 @@
 namespace blockfrag {
 namespace {
 
-constexpr std::string_view magic = "BFBISE01";
-constexpr std::size_t header_size = magic.size() + 3 * 8;
+constexpr std::string_view bisection_magic = "BFBISE01";
+constexpr std::size_t bisection_header_size = bisection_magic.size() + 3 * 8;
 
 using bytes::append;
 using bytes::read_at;
@@ -32,8 +32,8 @@ bool plausible(const Bracket& bracket, std::int64_t frequencies) {
 
 std::string encode_bisection_state(const BisectionState& state) {
   std::string out;
-  out.reserve(header_size + state.brackets.size() * sizeof(Bracket) + 8);
-  out.append(magic);
+  out.reserve(bisection_header_size + state.brackets.size() * sizeof(Bracket) + 8);
+  out.append(bisection_magic);
   append(out, state.config_hash);
   append(out, state.round);
   append(out, static_cast<std::int64_t>(state.brackets.size()));
@@ -48,22 +48,24 @@ BisectionState decode_bisection_state(std::string_view bytes, const std::string&
     return CheckpointError(source + ": not a usable blockfrag bisection state (" + why +
                            "); remove it to start the bisection over");
   };
-  if (bytes.size() < header_size + 8 || bytes.substr(0, magic.size()) != magic) {
+  if (bytes.size() < bisection_header_size + 8 ||
+      bytes.substr(0, bisection_magic.size()) != bisection_magic) {
     throw fail("wrong header");
   }
   if (fnv1a64(bytes.substr(0, bytes.size() - 8)) != read_at<std::uint64_t>(bytes, bytes.size() - 8))
     throw fail("checksum mismatch");
   BisectionState state;
-  state.config_hash = read_at<std::uint64_t>(bytes, magic.size());
-  state.round = read_at<std::int64_t>(bytes, magic.size() + 8);
-  const auto count = read_at<std::int64_t>(bytes, magic.size() + 16);
+  state.config_hash = read_at<std::uint64_t>(bytes, bisection_magic.size());
+  state.round = read_at<std::int64_t>(bytes, bisection_magic.size() + 8);
+  const auto count = read_at<std::int64_t>(bytes, bisection_magic.size() + 16);
   if (state.round < 0 || count < 0 || count > max_brackets ||
-      bytes.size() != header_size + static_cast<std::size_t>(count) * sizeof(Bracket) + 8) {
+      bytes.size() !=
+          bisection_header_size + static_cast<std::size_t>(count) * sizeof(Bracket) + 8) {
     throw fail("wrong length");
   }
   state.brackets.resize(static_cast<std::size_t>(count));
   for (std::size_t k = 0; k < state.brackets.size(); ++k) {
-    state.brackets[k] = read_at<Bracket>(bytes, header_size + k * sizeof(Bracket));
+    state.brackets[k] = read_at<Bracket>(bytes, bisection_header_size + k * sizeof(Bracket));
     if (!plausible(state.brackets[k], frequencies)) throw fail("a bracket out of range");
   }
   return state;
@@ -79,7 +81,7 @@ std::optional<BisectionState> read_bisection_state(const std::filesystem::path& 
   std::error_code error;
   if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return std::nullopt;
   const std::size_t largest =
-      header_size + static_cast<std::size_t>(max_brackets) * sizeof(Bracket) + 8;
+      bisection_header_size + static_cast<std::size_t>(max_brackets) * sizeof(Bracket) + 8;
   try {
     return decode_bisection_state(read_input_file(path, {largest, false}), path.string(),
                                   max_brackets, frequencies);

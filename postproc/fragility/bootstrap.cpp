@@ -7,14 +7,13 @@
 #include <gsl/gsl_cdf.h>
 
 #include "postproc/fragility/lognormal_fit.hpp"
+#include "postproc/fragility/normal_probability.hpp"
 
 namespace blockfrag {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr int kBandPoints = 200;
-
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
 // The q-quantile of values (sorted here), interpolated between order statistics (Hyndman & Fan
 // type 7, numpy's default).

@@ -7,10 +7,10 @@
 
 #include <gsl/gsl_cdf.h>
 
+#include "postproc/fragility/normal_probability.hpp"
+
 namespace blockfrag {
 namespace {
-
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
 // z ln(z / e), 0 when z = 0.
 double term(double z, double expected) { return z > 0 ? z * std::log(z / expected) : 0.0; }

@@ -11,6 +11,7 @@
 #include <gsl/gsl_sf_erf.h>
 
 #include "postproc/fragility/lognormal_fit.hpp"
+#include "postproc/fragility/normal_probability.hpp"
 
 // The fit works in centred coordinates: eta_j = a + b1 v1_j + b2 v2_j, v = ln x - (the trials-
 // weighted mean of ln x). ln L of a probit is concave (Pratt 1981), so Newton's method with a
@@ -53,13 +54,6 @@ std::vector<Cell> checked_cells(std::span<const double> im1, std::span<const dou
   }
   return cells;
 }
-
-double log_choose(double n, double z) {
-  return std::lgamma(n + 1.0) - std::lgamma(z + 1.0) - std::lgamma(n - z + 1.0);
-}
-
-// ln Phi(eta), accurate far into the lower tail where Phi itself underflows.
-double log_normal_cdf(double eta) { return gsl_sf_log_erfc(-eta / M_SQRT2) - M_LN2; }
 
 // The inverse of a symmetric positive definite matrix by Cholesky; none when it is not (to
 // rounding).

@@ -11,6 +11,8 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_erf.h>
 
+#include "postproc/fragility/normal_probability.hpp"
+
 // The fit works in probit coordinates: p_j = Phi(a + s (u_j - centre)), u_j = ln x_j, s = 1 / beta,
 // a = (centre - ln median) / beta. There ln L is concave (Pratt 1981), so Newton's method with a
 // backtracking line search climbs to the maximum from any start, and whether that maximum exists is
@@ -51,13 +53,6 @@ std::vector<Level> checked_levels(std::span<const double> im, std::span<const st
   }
   return levels;
 }
-
-double log_choose(double n, double z) {
-  return std::lgamma(n + 1.0) - std::lgamma(z + 1.0) - std::lgamma(n - z + 1.0);
-}
-
-// ln Phi(eta), accurate far into the lower tail where Phi itself underflows.
-double log_normal_cdf(double eta) { return gsl_sf_log_erfc(-eta / M_SQRT2) - M_LN2; }
 
 // z ln p + (n - z) ln(1 - p) over all levels with the binomial coefficients, p = p(level); terms
 // with a zero count are left out so that p = 0 or 1 where it should be gives 0, not NaN.
