@@ -90,8 +90,5 @@ TEST_P(BothMethods, BlockReleasedAtItsBalancePointEitherStaysOrFallsWithEnergyCo
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, BothMethods,
-                         ::testing::Values(Method::adaptive, Method::rk4));
-
 }  // namespace
 }  // namespace blockfrag

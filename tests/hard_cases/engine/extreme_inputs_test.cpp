@@ -140,8 +140,5 @@ TEST(SafetyNet, BudgetsStopAScenesLoudly) {
   EXPECT_NE(events.status_reason.find("event budget"), std::string::npos);
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, BothMethods,
-                         ::testing::Values(Method::adaptive, Method::rk4));
-
 }  // namespace
 }  // namespace blockfrag

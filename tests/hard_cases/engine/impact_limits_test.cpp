@@ -149,8 +149,5 @@ TEST(PainleveApproach, PaperMethodRetakesTheStepThatCrossesTheBoundary) {
   EXPECT_NEAR(runs[0].modes[1].time, runs[1].modes[1].time, 1e-5);
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, BothMethods,
-                         ::testing::Values(Method::adaptive, Method::rk4));
-
 }  // namespace
 }  // namespace blockfrag

@@ -21,22 +21,12 @@
 #include "mpi_driver/parallel/bisection_state.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "tests/support/mpi_environment.hpp"
+#include "tests/support/temporary_folder.hpp"
 
 namespace blockfrag {
 namespace {
 
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    char pattern[] = "/tmp/blockfrag_spectrum_runner_test_XXXXXX";
-    path_ = ::mkdtemp(pattern);
-  }
-  ~TemporaryFolder() { std::filesystem::remove_all(path_); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+using testing::TemporaryFolder;
 
 SpectrumConfig small_spectrum(double restitution = 0.6) {
   nlohmann::json document = nlohmann::json::parse(R"({

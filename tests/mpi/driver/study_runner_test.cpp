@@ -18,22 +18,12 @@
 #include "mpi_driver/parallel/checkpoint.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 #include "tests/support/mpi_environment.hpp"
+#include "tests/support/temporary_folder.hpp"
 
 namespace blockfrag {
 namespace {
 
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    char pattern[] = "/tmp/blockfrag_study_runner_test_XXXXXX";
-    path_ = ::mkdtemp(pattern);
-  }
-  ~TemporaryFolder() { std::filesystem::remove_all(path_); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+using testing::TemporaryFolder;
 
 bool same_bits(const SampleRecord& a, const SampleRecord& b) {
   return std::memcmp(&a, &b, sizeof a) == 0;

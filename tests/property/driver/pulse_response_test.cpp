@@ -9,6 +9,7 @@
 
 #include "engine/simulate.hpp"
 #include "mpi_driver/io/summary_json.hpp"
+#include "tests/support/paper_block.hpp"
 #include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
@@ -16,8 +17,8 @@ namespace {
 
 using testing::block_scene;
 
-constexpr double pi = std::numbers::pi;
-constexpr double g = 9.81;
+using testing::g;
+using testing::pi;
 
 TEST(PulseResponse, MakrisTypesAAndBDriveTheSameSimulationAsOneCycleSineAndCosine) {
   // Rocking, impacts and (with the low friction) sliding: the whole summary must agree.

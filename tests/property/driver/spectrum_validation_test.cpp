@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "mpi_driver/config/spectrum_config.hpp"
+#include "tests/support/paper_block.hpp"
 #include "tests/support/spectrum_serial.hpp"
 
 namespace blockfrag {
@@ -25,7 +26,7 @@ using nlohmann::json;
 using testing::serial_spectrum;
 using testing::SerialSpectrum;
 
-constexpr double pi = std::numbers::pi;
+using testing::pi;
 
 SpectrumConfig spectrum_of(const json& document) {
   return parse_spectrum_config(document, "validation.json");

@@ -11,13 +11,14 @@
 
 #include "engine/motion/dam_crest.hpp"
 #include "engine/simulate.hpp"
+#include "tests/support/paper_block.hpp"
 #include "tests/support/scene_builders.hpp"
 
 namespace blockfrag {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double pi = std::numbers::pi;
+using testing::g;
+using testing::pi;
 
 DamCrest dam_with(double period, double zeta) {
   DamCrest dam;

@@ -26,22 +26,12 @@
 #include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/parallel/study_lock.hpp"
 #include "mpi_driver/parallel/work_distribution.hpp"
+#include "tests/support/temporary_folder.hpp"
 
 namespace blockfrag {
 namespace {
 
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    char pattern[] = "/tmp/blockfrag_checkpoint_test_XXXXXX";
-    path_ = ::mkdtemp(pattern);
-  }
-  ~TemporaryFolder() { std::filesystem::remove_all(path_); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+using testing::TemporaryFolder;
 
 SampleRecord some_record(std::int64_t index) {
   SampleRecord record;

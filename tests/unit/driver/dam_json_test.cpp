@@ -25,7 +25,7 @@ json scene_with_dam(const json& dam) {
   return scene;
 }
 
-std::string errors_of(const json& document) { return testing::scene_errors(document); }
+using testing::scene_errors;
 
 TEST(DamJson, NoDamUnlessTheSceneAsks) {
   json document = scene_with_dam(nullptr);
@@ -60,23 +60,23 @@ TEST(DamJson, ReadsHeightAndModulusAndWritesThemBack) {
 
 TEST(DamJson, RefusesEachRuleAtItsPath) {
   EXPECT_EQ(
-      errors_of(scene_with_dam({{"period", 0.3}, {"height", 100.0}, {"elastic_modulus", 25e9}})),
+      scene_errors(scene_with_dam({{"period", 0.3}, {"height", 100.0}, {"elastic_modulus", 25e9}})),
       "scene.json: /dam/period: give either period or height and elastic_modulus, not both");
-  EXPECT_EQ(errors_of(scene_with_dam({{"damping", 0.05}})),
+  EXPECT_EQ(scene_errors(scene_with_dam({{"damping", 0.05}})),
             "scene.json: /dam: needs period, or height and elastic_modulus");
-  EXPECT_EQ(errors_of(scene_with_dam({{"height", 100.0}})),
+  EXPECT_EQ(scene_errors(scene_with_dam({{"height", 100.0}})),
             "scene.json: /dam/elastic_modulus: is required");
-  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.0}})),
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.0}})),
             "scene.json: /dam/period: must be in [0.001, 10] (got 0)");
-  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"damping", 1.0}})),
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"damping", 1.0}})),
             "scene.json: /dam/damping: must be in [0, 1) (got 1)");
-  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"damping", -0.1}})),
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"damping", -0.1}})),
             "scene.json: /dam/damping: must be in [0, 1) (got -0.1)");
-  EXPECT_EQ(errors_of(scene_with_dam({{"period", 0.3}, {"participation", -1.0}})),
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"participation", -1.0}})),
             "scene.json: /dam/participation: must be in (0, 100] (got -1)");
-  EXPECT_THAT(errors_of(scene_with_dam({{"period", 0.3}, {"dampng", 0.1}})),
+  EXPECT_THAT(scene_errors(scene_with_dam({{"period", 0.3}, {"dampng", 0.1}})),
               HasSubstr("/dam/dampng: unknown key; did you mean \"damping\"?"));
-  EXPECT_THAT(errors_of(scene_with_dam(0.3)), HasSubstr("/dam: must be an object"));
+  EXPECT_THAT(scene_errors(scene_with_dam(0.3)), HasSubstr("/dam: must be an object"));
 }
 
 }  // namespace

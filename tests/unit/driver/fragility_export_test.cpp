@@ -21,28 +21,18 @@
 #include "mpi_driver/io/fragility_fits.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
 #include "mpi_driver/io/hdf5_reader.hpp"
+#include "tests/support/temporary_folder.hpp"
 
 namespace blockfrag {
 namespace {
 
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    char pattern[] = "/tmp/blockfrag_export_test_XXXXXX";
-    path_ = ::mkdtemp(pattern);
-  }
-  ~TemporaryFolder() { std::filesystem::remove_all(path_); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+using testing::TemporaryFolder;
 
 const double nan = std::numeric_limits<double>::quiet_NaN();
 
 // Expects `call` to throw InvalidInput whose message holds every fragment.
 template <typename Call>
-void expect_refused(Call call, const std::vector<std::string>& fragments) {
+void expect_export_refused(Call call, const std::vector<std::string>& fragments) {
   try {
     call();
     ADD_FAILURE() << "no InvalidInput";
@@ -200,24 +190,27 @@ TEST(FragilityFits, RefusesWhatIsNotAStudyOutputWithFits) {
   TemporaryFolder folder;
   const auto& dir = folder.path();
   std::ofstream(dir / "notes.txt") << "hello\n";
-  expect_refused([&] { read_fragility_fits(dir / "notes.txt"); }, {"notes.txt", "not an HDF5"});
-  expect_refused([&] { read_fragility_fits(dir / "absent.h5"); }, {"absent.h5", "no such file"});
-  expect_refused([&] { read_fragility_fits(dir); }, {"folder"});
+  expect_export_refused([&] { read_fragility_fits(dir / "notes.txt"); },
+                        {"notes.txt", "not an HDF5"});
+  expect_export_refused([&] { read_fragility_fits(dir / "absent.h5"); },
+                        {"absent.h5", "no such file"});
+  expect_export_refused([&] { read_fragility_fits(dir); }, {"folder"});
   {
     Hdf5Writer other(dir / "other.h5");
     other.set_attribute("/", "title", std::string("someone else's"));
     other.close();
   }
-  expect_refused([&] { read_fragility_fits(dir / "other.h5"); },
-                 {"other.h5", "not a blockfrag study output"});
+  expect_export_refused([&] { read_fragility_fits(dir / "other.h5"); },
+                        {"other.h5", "not a blockfrag study output"});
   write_fits_file(dir / "bare.h5", {}, "", false);
-  expect_refused([&] { read_fragility_fits(dir / "bare.h5"); }, {"bare.h5", "/fragility"});
+  expect_export_refused([&] { read_fragility_fits(dir / "bare.h5"); }, {"bare.h5", "/fragility"});
   write_fits_file(dir / "wrong.h5", three_states, "overturn,landslide");
-  expect_refused([&] { read_fragility_fits(dir / "wrong.h5"); }, {"wrong.h5", "landslide"});
+  expect_export_refused([&] { read_fragility_fits(dir / "wrong.h5"); }, {"wrong.h5", "landslide"});
   write_fits_file(dir / "twice.h5", three_states, "overturn,overturn");
-  expect_refused([&] { read_fragility_fits(dir / "twice.h5"); }, {"twice.h5", "twice"});
+  expect_export_refused([&] { read_fragility_fits(dir / "twice.h5"); }, {"twice.h5", "twice"});
   write_fits_file(dir / "nan.h5", {{"overturn", "overturning", 0.0, nan, 0.3}}, "overturn");
-  expect_refused([&] { read_fragility_fits(dir / "nan.h5"); }, {"nan.h5", "/fragility/overturn"});
+  expect_export_refused([&] { read_fragility_fits(dir / "nan.h5"); },
+                        {"nan.h5", "/fragility/overturn"});
 }
 
 FragilityFits some_fits(const std::string& im_name, const std::string& units) {
@@ -315,20 +308,20 @@ TEST(FragilityExport, ExactNumbersReadBackTheSame) {
 TEST(FragilityExport, RefusesMeasuresTheToolsDoNotKnow) {
   auto fits = some_fits("pga_over_g_tan_alpha", "1");
   fits.im_label = "PGA/(g tan alpha)";
-  expect_refused([&] { pelicun_damage_model(fits, "B"); },
-                 {"study.h5", "PGA/(g tan alpha)", "dimensionless", "pelicun"});
-  expect_refused([&] { openquake_fragility_model(fits, "B"); }, {"study.h5", "OpenQuake"});
-  expect_refused([&] { openquake_fragility_model(some_fits("pulse_amplitude", "g"), "B"); },
-                 {"pulse amplitude"});
-  expect_refused([&] { pelicun_damage_model(some_fits("pga", "m/s"), "B"); }, {"m/s"});
+  expect_export_refused([&] { pelicun_damage_model(fits, "B"); },
+                        {"study.h5", "PGA/(g tan alpha)", "dimensionless", "pelicun"});
+  expect_export_refused([&] { openquake_fragility_model(fits, "B"); }, {"study.h5", "OpenQuake"});
+  expect_export_refused([&] { openquake_fragility_model(some_fits("pulse_amplitude", "g"), "B"); },
+                        {"pulse amplitude"});
+  expect_export_refused([&] { pelicun_damage_model(some_fits("pga", "m/s"), "B"); }, {"m/s"});
   auto sa = some_fits("sa", "g");
   sa.im_period_s = 1.0;
   sa.im_damping = 0.02;
-  expect_refused([&] { openquake_fragility_model(sa, "B"); }, {"2 %", "5 %"});
+  expect_export_refused([&] { openquake_fragility_model(sa, "B"); }, {"2 %", "5 %"});
   sa.im_damping.reset();
-  expect_refused([&] { pelicun_damage_model(sa, "B"); }, {"damping"});
+  expect_export_refused([&] { pelicun_damage_model(sa, "B"); }, {"damping"});
   sa.im_period_s.reset();
-  expect_refused([&] { pelicun_damage_model(sa, "B"); }, {"period"});
+  expect_export_refused([&] { pelicun_damage_model(sa, "B"); }, {"period"});
 }
 
 TEST(FragilityExport, ExportableFitsRefuseOrLeaveOutUnfittedStates) {
@@ -340,8 +333,8 @@ TEST(FragilityExport, ExportableFitsRefuseOrLeaveOutUnfittedStates) {
   never.fit_status = "no exceedance at any level";
   fits.states.push_back(never);
   std::vector<std::string> left_out;
-  expect_refused([&] { exportable_fits(fits, false, left_out); },
-                 {"study.h5", "slide_1m", "no exceedance at any level", "--fitted-only"});
+  expect_export_refused([&] { exportable_fits(fits, false, left_out); },
+                        {"study.h5", "slide_1m", "no exceedance at any level", "--fitted-only"});
   left_out.clear();
   const FragilityFits kept = exportable_fits(fits, true, left_out);
   EXPECT_EQ(left_out, std::vector<std::string>{"slide_1m"});
@@ -350,12 +343,12 @@ TEST(FragilityExport, ExportableFitsRefuseOrLeaveOutUnfittedStates) {
 
   FragilityFits none = fits;
   none.states = {never};
-  expect_refused([&] { exportable_fits(none, true, left_out); }, {"nothing to export"});
+  expect_export_refused([&] { exportable_fits(none, true, left_out); }, {"nothing to export"});
 
   FragilityFits swapped = some_fits("pga", "g");
   std::swap(swapped.states[0], swapped.states[1]);
-  expect_refused([&] { exportable_fits(swapped, false, left_out); },
-                 {"not in order of severity", "overturn"});
+  expect_export_refused([&] { exportable_fits(swapped, false, left_out); },
+                        {"not in order of severity", "overturn"});
 }
 
 TEST(FragilityExport, IdsAndDescriptions) {

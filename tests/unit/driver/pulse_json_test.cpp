@@ -23,7 +23,7 @@ json scene_with(const json& motion) {
           {"duration", 3.0}};
 }
 
-std::string errors_of(const json& motion) { return testing::scene_errors(scene_with(motion)); }
+std::string motion_errors(const json& motion) { return testing::scene_errors(scene_with(motion)); }
 
 TEST(PulseJson, EachTypeReadsIntoItsPulse) {
   const auto c = scene_from_json(
@@ -76,12 +76,12 @@ TEST(PulseJson, CanonicalFormFillsTheCentresAndReadsBack) {
 
 TEST(PulseJson, RulesAreRefusedAtTheirPath) {
   const json c = {{"type", "makris_c"}, {"amplitude_g", 0.5}, {"period", 0.3}};
-  EXPECT_EQ(errors_of(c), "scene.json: /ground_motion/n: is required");
+  EXPECT_EQ(motion_errors(c), "scene.json: /ground_motion/n: is required");
   json bad = c;
   bad["n"] = 0;
-  EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/n: must be in [1, 1000] (got 0)");
+  EXPECT_EQ(motion_errors(bad), "scene.json: /ground_motion/n: must be in [1, 1000] (got 0)");
   bad["n"] = 1.5;
-  EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/n: must be an integer (got 1.5)");
+  EXPECT_EQ(motion_errors(bad), "scene.json: /ground_motion/n: must be an integer (got 1.5)");
 
   const json mp = {{"type", "mavroeidis_papageorgiou"},
                    {"velocity_amplitude", 0.7},
@@ -89,22 +89,22 @@ TEST(PulseJson, RulesAreRefusedAtTheirPath) {
                    {"gamma", 2.0}};
   bad = mp;
   bad["gamma"] = 1.0;
-  EXPECT_EQ(errors_of(bad), "scene.json: /ground_motion/gamma: must be in (1, 100] (got 1)");
+  EXPECT_EQ(motion_errors(bad), "scene.json: /ground_motion/gamma: must be in (1, 100] (got 1)");
   bad = mp;
   bad["t0"] = 0.4;
-  EXPECT_EQ(errors_of(bad),
+  EXPECT_EQ(motion_errors(bad),
             "scene.json: /ground_motion/t0: must be >= gamma period / 2 = 0.5 (the pulse starts at "
             "t >= 0) (got 0.4)");
   bad = mp;
   bad["amplitude_g"] = 1.0;  // this pulse is given by its velocity
-  EXPECT_EQ(errors_of(bad),
+  EXPECT_EQ(motion_errors(bad),
             "scene.json: /ground_motion/amplitude_g: unknown key for type "
             "\"mavroeidis_papageorgiou\" (known keys: gamma "
             "period phase t0 type velocity_amplitude)");
 
-  EXPECT_EQ(errors_of({{"type", "ricker"}, {"amplitude_g", 0.5}, {"period", 0.4}, {"t0", 0.0}}),
+  EXPECT_EQ(motion_errors({{"type", "ricker"}, {"amplitude_g", 0.5}, {"period", 0.4}, {"t0", 0.0}}),
             "scene.json: /ground_motion/t0: must be in (0, 1e+05] (got 0)");
-  EXPECT_EQ(errors_of({{"type", "makris_a"}, {"amplitude_g", 0.5}, {"period", -1}}),
+  EXPECT_EQ(motion_errors({{"type", "makris_a"}, {"amplitude_g", 0.5}, {"period", -1}}),
             "scene.json: /ground_motion/period: must be in [0.001, 1000] (got -1)");
 }
 

@@ -25,9 +25,9 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-const std::filesystem::path records =
+const std::filesystem::path records_folder =
     std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/records";
-const std::string study_file = (records / "study.json").string();
+const std::string study_file = (records_folder / "study.json").string();
 
 json suite_study(const json& suite_records, const json& measure, int per_level) {
   return {{"scene",
@@ -45,7 +45,7 @@ json suite_study(const json& suite_records, const json& measure, int per_level) 
 
 const json three_records = {"decaying_sine.AT2", "cosine_pulse.txt", "old_header.at2"};
 
-std::vector<std::string> errors_of(const json& document) {
+std::vector<std::string> suite_errors(const json& document) {
   try {
     parse_study_config(document, study_file);
   } catch (const ConfigError& error) {
@@ -157,45 +157,46 @@ TEST(RecordSuiteStudy, AVerticalCompanionIsScaledWithItsRecordButNotTurned) {
 
 TEST(RecordSuiteStudy, BadSuitesAndMeasuresAreRefusedAtTheirPaths) {
   const json pga = {{"type", "pga"}, {"levels", {0.2}}};
-  EXPECT_THAT(
-      errors_of(suite_study({"decaying_sine.AT2", "missing.AT2"}, pga, 2)),
-      ::testing::ElementsAre(HasSubstr("study.json: /scene/ground_motion/records/1: " +
-                                       (records / "missing.AT2").string() + ": no such file")));
-  EXPECT_THAT(errors_of(suite_study(
+  EXPECT_THAT(suite_errors(suite_study({"decaying_sine.AT2", "missing.AT2"}, pga, 2)),
+              ::testing::ElementsAre(HasSubstr("study.json: /scene/ground_motion/records/1: " +
+                                               (records_folder / "missing.AT2").string() +
+                                               ": no such file")));
+  EXPECT_THAT(suite_errors(suite_study(
                   json::array({json{{"file", "cosine_pulse.txt"}, {"weight", 0}}}), pga, 2)),
               ::testing::ElementsAre(
                   HasSubstr("/scene/ground_motion/records/0/weight: must be in (0, 1e+06]")));
-  EXPECT_THAT(errors_of(suite_study(json::array(), pga, 2)),
+  EXPECT_THAT(suite_errors(suite_study(json::array(), pga, 2)),
               ::testing::ElementsAre(
                   HasSubstr("/scene/ground_motion/records: must list 1 to 10000 records")));
   EXPECT_THAT(
-      errors_of(
+      suite_errors(
           suite_study(three_records, {{"type", "sa"}, {"period", 12.0}, {"levels", {0.2}}}, 2)),
       ::testing::ElementsAre(HasSubstr("/intensity_measure/period: must be in (0, 10] (got 12)")));
   EXPECT_THAT(
-      errors_of(suite_study(three_records,
-                            {{"type", "sa"}, {"period", 1.0}, {"damping", 1.0}, {"levels", {0.2}}},
-                            2)),
+      suite_errors(
+          suite_study(three_records,
+                      {{"type", "sa"}, {"period", 1.0}, {"damping", 1.0}, {"levels", {0.2}}}, 2)),
       ::testing::ElementsAre(HasSubstr("/intensity_measure/damping: must be in [0, 1) (got 1)")));
   EXPECT_THAT(
-      errors_of(suite_study(three_records, {{"type", "pulse_amplitude"}, {"levels", {0.2}}}, 2)),
+      suite_errors(suite_study(three_records, {{"type", "pulse_amplitude"}, {"levels", {0.2}}}, 2)),
       ::testing::ElementsAre(
           HasSubstr("/intensity_measure/type: a record has no pulse amplitude")));
   // cosine_pulse.txt peaks at 0.4 g: 50 g would need a scale of 125.
   EXPECT_THAT(
-      errors_of(suite_study({"cosine_pulse.txt"}, {{"type", "pga"}, {"levels", {0.2, 50.0}}}, 2)),
+      suite_errors(
+          suite_study({"cosine_pulse.txt"}, {{"type", "pga"}, {"levels", {0.2, 50.0}}}, 2)),
       ::testing::ElementsAre(HasSubstr(
           "/scene/ground_motion/records/0: cosine_pulse.txt: reaching the level 50 g needs a "
           "scale of 125, more than 100")));
-  EXPECT_THAT(errors_of(suite_study(three_records,
-                                    {{"type", "pga"}, {"scaling", "none"}, {"levels", {0.2}}}, 2)),
+  EXPECT_THAT(suite_errors(suite_study(
+                  three_records, {{"type", "pga"}, {"scaling", "none"}, {"levels", {0.2}}}, 2)),
               ::testing::ElementsAre(HasSubstr(
                   "/intensity_measure/levels: a cloud (\"scaling\": \"none\") has no levels")));
 }
 
 TEST(RecordSuiteStudy, AnSaPeriodTooShortToStepIsRefusedAtItsPath) {
   EXPECT_THAT(
-      errors_of(
+      suite_errors(
           suite_study(three_records, {{"type", "sa"}, {"period", 1e-7}, {"levels", {0.2}}}, 2)),
       ::testing::Contains(HasSubstr("study.json: /intensity_measure/period: decaying_sine.AT2: ")));
 }

@@ -23,10 +23,10 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-const std::filesystem::path records =
+const std::filesystem::path record_files =
     std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/records";
 // A scene file next to the records (it need not exist: only its folder matters).
-const std::string scene_file = (records / "scene.json").string();
+const std::string scene_file = (record_files / "scene.json").string();
 
 // The largest |a| among the samples make_records.py wrote (before rounding to 8 digits).
 double decaying_sine_peak() {
@@ -38,20 +38,20 @@ double decaying_sine_peak() {
   return peak;
 }
 
-json scene_with(const json& motion) {
+json record_scene_with(const json& motion) {
   return {{"block", {{"half_width", 0.2}, {"half_height", 1.0}}},
           {"contact", {{"friction", 0.7}, {"restitution", 0.8}}},
           {"ground_motion", motion},
           {"duration", 3.0}};
 }
 
-std::string errors_of(const json& document, const std::string& source = scene_file) {
+std::string record_scene_errors(const json& document, const std::string& source = scene_file) {
   return testing::scene_errors(document, source);
 }
 
 TEST(SceneJsonRecord, ARelativeFileIsTakenFromTheSceneFilesFolder) {
-  const Scene scene =
-      scene_from_json(scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}}), scene_file);
+  const Scene scene = scene_from_json(
+      record_scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}}), scene_file);
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   EXPECT_EQ(motion.file, "decaying_sine.AT2");
   EXPECT_EQ(motion.scale, 1.0);
@@ -60,9 +60,9 @@ TEST(SceneJsonRecord, ARelativeFileIsTakenFromTheSceneFilesFolder) {
 }
 
 TEST(SceneJsonRecord, AnAbsoluteFileIgnoresTheFolder) {
-  const std::string file = (records / "cosine_pulse.txt").string();
+  const std::string file = (record_files / "cosine_pulse.txt").string();
   const Scene scene =
-      scene_from_json(scene_with({{"type", "record"}, {"file", file}, {"scale", -2.0}}),
+      scene_from_json(record_scene_with({{"type", "record"}, {"file", file}, {"scale", -2.0}}),
                       "/no/such/folder/scene.json");
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   EXPECT_EQ(motion.scale, -2.0);
@@ -72,7 +72,8 @@ TEST(SceneJsonRecord, AnAbsoluteFileIgnoresTheFolder) {
 
 TEST(SceneJsonRecord, TargetPgaScalesThePeakToTheTarget) {
   const Scene scene = scene_from_json(
-      scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}}),
+      record_scene_with(
+          {{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}}),
       scene_file);
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   // Against the formula's peak: the file keeps 8 digits, so the two agree to 5e-8 relative.
@@ -81,8 +82,8 @@ TEST(SceneJsonRecord, TargetPgaScalesThePeakToTheTarget) {
 }
 
 TEST(SceneJsonRecord, CanonicalFormWritesTheFileAsGivenAndTheResolvedScale) {
-  const json document =
-      scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}});
+  const json document = record_scene_with(
+      {{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0.45}});
   const json canonical = scene_to_json(scene_from_json(document, scene_file));
   const json& motion = canonical["ground_motion"];
   EXPECT_EQ(motion["type"], "record");
@@ -94,30 +95,31 @@ TEST(SceneJsonRecord, CanonicalFormWritesTheFileAsGivenAndTheResolvedScale) {
 
 TEST(SceneJsonRecord, ScaleAndTargetPgaAreExclusiveAndTheFileIsRequired) {
   EXPECT_EQ(
-      errors_of(scene_with({{"type", "record"},
-                            {"file", "decaying_sine.AT2"},
-                            {"scale", 2},
-                            {"target_pga_g", 0.4}})),
+      record_scene_errors(record_scene_with({{"type", "record"},
+                                             {"file", "decaying_sine.AT2"},
+                                             {"scale", 2},
+                                             {"target_pga_g", 0.4}})),
       scene_file + ": /ground_motion/target_pga_g: give either scale or target_pga_g, not both");
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"scale", 2}})),
+  EXPECT_EQ(record_scene_errors(record_scene_with({{"type", "record"}, {"scale", 2}})),
             scene_file + ": /ground_motion/file: is required");
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", ""}})),
+  EXPECT_EQ(record_scene_errors(record_scene_with({{"type", "record"}, {"file", ""}})),
             scene_file + ": /ground_motion/file: must not be empty");
-  EXPECT_EQ(errors_of(scene_with(
+  EXPECT_EQ(record_scene_errors(record_scene_with(
                 {{"type", "record"}, {"file", "decaying_sine.AT2"}, {"target_pga_g", 0}})),
             scene_file + ": /ground_motion/target_pga_g: must be in (0, 1000] (got 0)");
-  EXPECT_THAT(errors_of(scene_with(
+  EXPECT_THAT(record_scene_errors(record_scene_with(
                   {{"type", "record"}, {"file", "decaying_sine.AT2"}, {"amplitude_g", 1}})),
               HasSubstr("/ground_motion/amplitude_g: unknown key for type \"record\""));
 }
 
 TEST(SceneJsonRecord, AnUnreadableRecordIsAnErrorAtFileWithTheReadersLineAndReason) {
-  const std::filesystem::path bad = records / "../bad_records/non_numeric.AT2";
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", "../bad_records/non_numeric.AT2"}})),
+  const std::filesystem::path bad = record_files / "../bad_records/non_numeric.AT2";
+  EXPECT_EQ(record_scene_errors(record_scene_with(
+                {{"type", "record"}, {"file", "../bad_records/non_numeric.AT2"}})),
             scene_file + ": /ground_motion/file: " + bad.string() +
                 ":6: not a number: \"2.0000000E-0Z\"");
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", "missing.AT2"}})),
-            scene_file + ": /ground_motion/file: " + (records / "missing.AT2").string() +
+  EXPECT_EQ(record_scene_errors(record_scene_with({{"type", "record"}, {"file", "missing.AT2"}})),
+            scene_file + ": /ground_motion/file: " + (record_files / "missing.AT2").string() +
                 ": no such file");
 }
 
@@ -125,38 +127,41 @@ TEST(SceneJsonRecord, ARecordOfZerosCannotBeScaledToAPeak) {
   const std::filesystem::path zeros =
       std::filesystem::temp_directory_path() / "blockfrag_zero_record.txt";
   std::ofstream(zeros) << "0 0\n0.01 0\n0.02 0\n";
-  EXPECT_EQ(
-      errors_of(scene_with({{"type", "record"}, {"file", zeros.string()}, {"target_pga_g", 0.3}})),
-      scene_file + ": /ground_motion/target_pga_g: cannot scale " + zeros.string() +
-          " to a peak: its accelerations are all 0");
-  EXPECT_EQ(errors_of(scene_with({{"type", "record"}, {"file", zeros.string()}, {"scale", 3}})),
+  EXPECT_EQ(record_scene_errors(record_scene_with(
+                {{"type", "record"}, {"file", zeros.string()}, {"target_pga_g", 0.3}})),
+            scene_file + ": /ground_motion/target_pga_g: cannot scale " + zeros.string() +
+                " to a peak: its accelerations are all 0");
+  EXPECT_EQ(record_scene_errors(
+                record_scene_with({{"type", "record"}, {"file", zeros.string()}, {"scale", 3}})),
             "(accepted)");
   std::filesystem::remove(zeros);
 }
 
 TEST(SceneJsonRecord, AnEmbeddedSceneTakesRecordsFromTheGivenFolder) {
   ConfigErrors errors("suite.json");
-  const json suite_scene = scene_with({{"type", "record"}, {"file", "records/cosine_pulse.txt"}});
-  const Scene scene =
-      scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors, records.parent_path());
+  const json suite_scene =
+      record_scene_with({{"type", "record"}, {"file", "records/cosine_pulse.txt"}});
+  const Scene scene = scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors,
+                                      record_files.parent_path());
   EXPECT_TRUE(errors.empty());
   const auto& motion = std::get<RecordedMotion>(scene.ground_motion);
   ASSERT_NE(motion.record, nullptr);
   EXPECT_EQ(motion.record->times.size(), 51u);
 
-  scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors, records);
+  scene_from_json(suite_scene, JsonPointer("/scenes/0/scene"), errors, record_files);
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_THROW(errors.throw_if_any(), ConfigError);
 }
 
 TEST(SceneJsonRecord, AStudyScalesTheRecordsPeakToEachIntensityLevel) {
-  const json study = {{"scene", scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}})},
-                      {"inputs", {{"direction", {{"distribution", "random_sign"}}}}},
-                      {"intensity_measure", {{"levels", {0.2, 0.6}}}},
-                      {"samples_per_level", 4},
-                      {"limit_states", {{{"name", "overturn"}, {"type", "overturning"}}}},
-                      {"seed", 7}};
-  const StudyConfig config = parse_study_config(study, (records / "study.json").string());
+  const json study = {
+      {"scene", record_scene_with({{"type", "record"}, {"file", "decaying_sine.AT2"}})},
+      {"inputs", {{"direction", {{"distribution", "random_sign"}}}}},
+      {"intensity_measure", {{"levels", {0.2, 0.6}}}},
+      {"samples_per_level", 4},
+      {"limit_states", {{{"name", "overturn"}, {"type", "overturning"}}}},
+      {"seed", 7}};
+  const StudyConfig config = parse_study_config(study, (record_files / "study.json").string());
   StudySampler sampler(config);
   for (std::int64_t index = 0; index < 8; ++index) {
     const StudySample sample = sampler.draw(index);

@@ -46,7 +46,7 @@ json without(json document, const std::string& pointer) {
   return document;
 }
 
-std::string errors_of(const json& document) { return testing::scene_errors(document); }
+using testing::scene_errors;
 
 std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 
@@ -118,7 +118,7 @@ TEST_P(SceneRule, IsRefusedWithPathAndRule) {
   json document = paper_scene();
   if (std::string(rule.pointer).rfind("/solver/dt", 0) == 0)
     document["solver"] = {{"method", "rk4"}};
-  EXPECT_EQ(errors_of(with(document, rule.pointer, rule.value)),
+  EXPECT_EQ(scene_errors(with(document, rule.pointer, rule.value)),
             std::string("scene.json: ") + rule.message);
 }
 
@@ -214,7 +214,7 @@ TEST(SceneJson, EffectsNameAModelAndRoundTrip) {
   EXPECT_TRUE(
       scene_from_json(with(paper_scene(), "/effects", "auto"), "scene.json").effects.automatic);
   EXPECT_EQ(
-      errors_of(with(paper_scene(), "/effects", json{"rocking", "vertical"})),
+      scene_errors(with(paper_scene(), "/effects", json{"rocking", "vertical"})),
       "scene.json: /effects: effects: vertical ground motion needs the full model (rocking, "
       "sliding, impact, flight)\nscene.json: /effects: lists \"vertical\" exactly when the scene "
       "has a vertical_motion");
@@ -232,22 +232,22 @@ TEST(SceneJson, VerticalMotionTakesAnyGroundMotionTypeAndTheFullModel) {
       scene_to_json(scene_from_json(with(document, "/effects", all), "scene.json"))["effects"],
       all);
   EXPECT_EQ(
-      errors_of(with(document, "/effects", json{"rocking", "sliding", "impact", "flight"})),
+      scene_errors(with(document, "/effects", json{"rocking", "sliding", "impact", "flight"})),
       "scene.json: /effects: lists \"vertical\" exactly when the scene has a vertical_motion");
-  EXPECT_EQ(errors_of(with(document, "/vertical_motion/duration", 0)),
+  EXPECT_EQ(scene_errors(with(document, "/vertical_motion/duration", 0)),
             "scene.json: /vertical_motion/duration: must be in [1e-04, 10000] (got 0)");
   EXPECT_FALSE(
       scene_to_json(scene_from_json(paper_scene(), "scene.json")).contains("vertical_motion"));
 }
 
 TEST(SceneJson, KeysOfAnotherMethodOrTypeAreUnknown) {
-  EXPECT_EQ(errors_of(with(paper_scene(), "/solver/dt", 0.001)),
+  EXPECT_EQ(scene_errors(with(paper_scene(), "/solver/dt", 0.001)),
             "scene.json: /solver/dt: unknown key for method \"adaptive\" (known keys: max_events "
             "max_steps "
             "method tolerance)");
-  EXPECT_THAT(
-      errors_of(with(paper_scene(), "/ground_motion", json{{"type", "none"}, {"amplitude_g", 1}})),
-      HasSubstr("/ground_motion/amplitude_g: unknown key for type \"none\""));
+  EXPECT_THAT(scene_errors(with(paper_scene(), "/ground_motion",
+                                json{{"type", "none"}, {"amplitude_g", 1}})),
+              HasSubstr("/ground_motion/amplitude_g: unknown key for type \"none\""));
 }
 
 TEST(SceneJson, RequiredKeysAreNamed) {
@@ -255,11 +255,11 @@ TEST(SceneJson, RequiredKeysAreNamed) {
        {"/block", "/contact", "/ground_motion", "/block/half_width", "/block/half_height",
         "/contact/friction", "/contact/restitution", "/ground_motion/type",
         "/ground_motion/amplitude_g", "/ground_motion/period"}) {
-    EXPECT_EQ(errors_of(without(paper_scene(), pointer)),
+    EXPECT_EQ(scene_errors(without(paper_scene(), pointer)),
               "scene.json: " + std::string(pointer) + ": is required");
   }
-  EXPECT_EQ(errors_of(with(paper_scene(), "/ground_motion",
-                           json{{"type", "rectangular_pulse"}, {"amplitude_g", 1}})),
+  EXPECT_EQ(scene_errors(with(paper_scene(), "/ground_motion",
+                              json{{"type", "rectangular_pulse"}, {"amplitude_g", 1}})),
             "scene.json: /ground_motion/duration: is required");
 }
 
@@ -279,10 +279,10 @@ TEST(SceneJson, DurationIsOptionalAndExclusiveWithMaxDuration) {
   EXPECT_EQ(scene_to_json(capped).at("max_duration"), 30.0);
   EXPECT_EQ(scene_from_json(scene_to_json(capped), "canonical.json").max_duration, 30.0);
 
-  EXPECT_EQ(errors_of(with(paper_scene(), "/max_duration", 30.0)),
+  EXPECT_EQ(scene_errors(with(paper_scene(), "/max_duration", 30.0)),
             "scene.json: /max_duration: give duration (a fixed run) or max_duration (a run to "
             "settle), not both");
-  EXPECT_EQ(errors_of(with(without(paper_scene(), "/duration"), "/max_duration", 0.0)),
+  EXPECT_EQ(scene_errors(with(without(paper_scene(), "/duration"), "/max_duration", 0.0)),
             "scene.json: /max_duration: must be in (0, 1e+05] (got 0)");
 }
 
@@ -292,10 +292,10 @@ TEST(SceneJson, BoundaryValuesAreAccepted) {
   document["solver"]["tolerance"] = 0.1;
   document["ground_motion"]["amplitude_g"] = -2.0;  // a reversed pulse
   document["initial"] = {{"theta", -1.5}};
-  EXPECT_EQ(errors_of(document), "(accepted)");
+  EXPECT_EQ(scene_errors(document), "(accepted)");
   document["contact"]["restitution"] = 1;
   document["solver"] = {{"method", "rk4"}, {"dt", 4.0}};  // dt == duration
-  EXPECT_EQ(errors_of(document), "(accepted)");
+  EXPECT_EQ(scene_errors(document), "(accepted)");
 }
 
 TEST(SceneJson, EveryErrorIsReportedTogether) {
@@ -305,7 +305,7 @@ TEST(SceneJson, EveryErrorIsReportedTogether) {
   document["contact"]["frictoin"] = 0.5;
   document["g"] = "9.81";
   document.erase("duration");
-  EXPECT_EQ(errors_of(document),
+  EXPECT_EQ(scene_errors(document),
             "scene.json: /block/half_width: must be in [1e-04, 10000] (got -1)\n"
             "scene.json: /contact/restitution: must be in [0, 1] (got 2)\n"
             "scene.json: /contact/frictoin: unknown key; did you mean \"friction\"?\n"
@@ -328,7 +328,7 @@ TEST(SceneJson, EmbeddedSceneReportsFullPathsIntoTheCallersErrors) {
 }
 
 TEST(SceneJson, RootMustBeAnObject) {
-  EXPECT_EQ(errors_of(json::array()), "scene.json: must be an object (got an array)");
+  EXPECT_EQ(scene_errors(json::array()), "scene.json: must be an object (got an array)");
 }
 
 TEST(SceneJson, CanonicalFormHasEveryKeyWithDefaults) {
@@ -388,7 +388,7 @@ TEST(SceneJson, GslMethodsTakeATolerance) {
     EXPECT_EQ(canonical["solver"]["tolerance"], 1e-6);
     EXPECT_FALSE(canonical["solver"].contains("dt"));
     EXPECT_EQ(scene_to_json(scene_from_json(canonical, "canonical.json")), canonical);
-    EXPECT_THAT(errors_of(with(with(paper_scene(), "/solver", solver), "/solver/dt", 0.01)),
+    EXPECT_THAT(scene_errors(with(with(paper_scene(), "/solver", solver), "/solver/dt", 0.01)),
                 HasSubstr("/solver/dt: unknown key for method \"" + std::string(name) + "\""));
   }
 }

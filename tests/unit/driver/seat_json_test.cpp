@@ -26,37 +26,38 @@ json rectangle_on(const json& seat) {
   return scene;
 }
 
-std::string errors_of(const json& document) { return testing::scene_errors(document); }
+using testing::scene_errors;
 
 TEST(SeatJson, AFittingSeatIsAccepted) {
-  EXPECT_EQ(errors_of(rectangle_on(json::parse("[[-10, -1], [0.1, -1], [10, -1]]"))), "(accepted)");
+  EXPECT_EQ(scene_errors(rectangle_on(json::parse("[[-10, -1], [0.1, -1], [10, -1]]"))),
+            "(accepted)");
 }
 
 TEST(SeatJson, EveryRuleAtItsPath) {
-  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -1], [10, \"a\"]]"))),
+  EXPECT_THAT(scene_errors(rectangle_on(json::parse("[[-10, -1], [10, \"a\"]]"))),
               HasSubstr("/seat/1/1:"));
-  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -1], [10, -1, 3]]"))),
+  EXPECT_THAT(scene_errors(rectangle_on(json::parse("[[-10, -1], [10, -1, 3]]"))),
               HasSubstr("/seat/1: must be a point [x, y] (got 3 numbers)"));
-  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -1], [-10, -1]]"))),
+  EXPECT_THAT(scene_errors(rectangle_on(json::parse("[[-10, -1], [-10, -1]]"))),
               HasSubstr("/seat/1: x must be greater than the previous point's"));
-  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -0.9], [10, -0.9]]"))),
+  EXPECT_THAT(scene_errors(rectangle_on(json::parse("[[-10, -0.9], [10, -0.9]]"))),
               HasSubstr("/seat: block vertex 0 lies"));
-  EXPECT_THAT(errors_of(rectangle_on(
+  EXPECT_THAT(scene_errors(rectangle_on(
                   json::parse("[[-10, -1.5], [-0.5, -1], [0, -0.9], [0.5, -1], [10, -1.5]]"))),
               HasSubstr("/seat/2: lies inside the block"));
-  EXPECT_THAT(errors_of(rectangle_on(json::parse("[[-10, -2], [10, -2]]"))),
+  EXPECT_THAT(scene_errors(rectangle_on(json::parse("[[-10, -2], [10, -2]]"))),
               HasSubstr("/seat: does not touch the block"));
-  EXPECT_THAT(errors_of(rectangle_on(json::parse("{\"points\": []}"))), HasSubstr("/seat:"));
+  EXPECT_THAT(scene_errors(rectangle_on(json::parse("{\"points\": []}"))), HasSubstr("/seat:"));
   json tilted = rectangle_on(json::parse("[[-10, -1], [10, -1]]"));
   tilted["initial"] = {{"theta", 0.1}};
-  EXPECT_THAT(errors_of(tilted), HasSubstr("/initial/theta: must be 0 with a seat"));
+  EXPECT_THAT(scene_errors(tilted), HasSubstr("/initial/theta: must be 0 with a seat"));
 }
 
 // A block with errors of its own is not fitted to the seat (its vertices mean nothing).
 TEST(SeatJson, NoFitForABlockWithErrors) {
   json scene = rectangle_on(json::parse("[[-10, -5], [10, -5]]"));
   scene["block"]["half_width"] = -1;
-  const std::string errors = errors_of(scene);
+  const std::string errors = scene_errors(scene);
   EXPECT_THAT(errors, HasSubstr("/block/half_width"));
   EXPECT_THAT(errors, Not(HasSubstr("does not touch")));
 }

@@ -110,7 +110,7 @@ TEST(SpectrumBisection, StopsAtAFailedMidpointOrTheCap) {
   EXPECT_EQ(capped.low, 1.875);
 }
 
-BisectionState some_state() {
+BisectionState some_bisection_state() {
   BisectionState state;
   state.config_hash = 0x0123456789abcdefULL;
   state.round = 7;
@@ -129,7 +129,7 @@ BisectionState some_state() {
 }
 
 TEST(BisectionState, RoundTripsEveryBit) {
-  const BisectionState state = some_state();
+  const BisectionState state = some_bisection_state();
   const BisectionState back =
       decode_bisection_state(encode_bisection_state(state), "s.bisection", 100, 3);
   EXPECT_EQ(back.config_hash, state.config_hash);
@@ -143,7 +143,7 @@ TEST(BisectionState, RoundTripsEveryBit) {
 }
 
 TEST(BisectionState, RefusesDamage) {
-  const std::string good = encode_bisection_state(some_state());
+  const std::string good = encode_bisection_state(some_bisection_state());
   const auto refused = [](const std::string& bytes, std::int64_t max_brackets = 100,
                           std::int64_t frequencies = 3) {
     try {
@@ -164,10 +164,10 @@ TEST(BisectionState, RefusesDamage) {
   EXPECT_NE(refused(good, 4), "(accepted)");       // more brackets than allowed
   EXPECT_NE(refused(good, 100, 2), "(accepted)");  // a frequency index outside the map
   // A consistent file (checksum and all) with an impossible bracket is refused too.
-  BisectionState odd = some_state();
+  BisectionState odd = some_bisection_state();
   odd.brackets[2].high = odd.brackets[2].low;
   EXPECT_NE(refused(encode_bisection_state(odd)), "(accepted)");
-  odd = some_state();
+  odd = some_bisection_state();
   odd.brackets[1].verdict_low = 9;
   EXPECT_NE(refused(encode_bisection_state(odd)), "(accepted)");
   EXPECT_NE(refused(good).find("(accepted)"), std::string::npos);

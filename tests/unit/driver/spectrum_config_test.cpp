@@ -33,7 +33,7 @@ json paper_spectrum() {
     "checkpoint_interval_s": 5})");
 }
 
-std::string errors_of(const json& document) {
+std::string spectrum_errors(const json& document) {
   try {
     parse_spectrum_config(document, "spec.json");
   } catch (const ConfigError& error) {
@@ -130,7 +130,7 @@ TEST(SpectrumConfig, ReportsEveryErrorAtItsPath) {
   document["amplitude_ratio"]["to"] = 0.5;
   document["bisection"] = {{"tolerance", 0}, {"max_iterations", 1000}};
   document["settle_alowance_tau"] = 10;
-  const std::string errors = errors_of(document);
+  const std::string errors = spectrum_errors(document);
   EXPECT_THAT(errors, HasSubstr("spec.json: /contact/friction: must be in [0, 10000] (got -1)"));
   EXPECT_THAT(errors, HasSubstr("spec.json: /pulse/amplitude_g: is set at each point of the grid"));
   EXPECT_THAT(errors, HasSubstr("spec.json: /amplitude_ratio/to: must be greater than from (1)"));
@@ -142,36 +142,40 @@ TEST(SpectrumConfig, ReportsEveryErrorAtItsPath) {
 TEST(SpectrumConfig, RefusesBlocksItCannotMap) {
   json document = paper_spectrum();
   document["block"] = {{"polygon", {{0, 0}, {1, 0}, {1, 2}, {0, 2}}}};
-  EXPECT_THAT(errors_of(document), HasSubstr("spec.json: /block: a spectrum is of a rectangular"));
+  EXPECT_THAT(spectrum_errors(document),
+              HasSubstr("spec.json: /block: a spectrum is of a rectangular"));
   document["block"] = {{"alpha", 0.4}, {"R", 1}, {"half_width", 0.5}};
-  EXPECT_THAT(errors_of(document),
+  EXPECT_THAT(spectrum_errors(document),
               HasSubstr("/block/half_width: give the block as alpha and R, or as half_width"));
   document["block"] = {{"alpha", 2}, {"R", 1}};
-  EXPECT_THAT(errors_of(document), HasSubstr("/block/alpha: must be in (0, pi/2)"));
+  EXPECT_THAT(spectrum_errors(document), HasSubstr("/block/alpha: must be in (0, pi/2)"));
   document["block"] = {{"alpha", 1e-9}, {"R", 1}};
-  EXPECT_THAT(errors_of(document),
+  EXPECT_THAT(spectrum_errors(document),
               HasSubstr("/block/R: with this alpha gives the half_width 1e-09 m"));
   document.erase("block");
-  EXPECT_THAT(errors_of(document), HasSubstr("spec.json: /block: "));
+  EXPECT_THAT(spectrum_errors(document), HasSubstr("spec.json: /block: "));
 }
 
 TEST(SpectrumConfig, RefusesAxesItCannotRun) {
   json document = paper_spectrum();
   document["frequency_ratio"] = {{"values", {1, 0.5}}};
-  EXPECT_THAT(errors_of(document),
+  EXPECT_THAT(spectrum_errors(document),
               HasSubstr("/frequency_ratio/values/1: must be greater than the value before it"));
   document["frequency_ratio"] = {{"values", json::array()}};
-  EXPECT_THAT(errors_of(document), HasSubstr("/frequency_ratio/values: must have 1 to 100000"));
+  EXPECT_THAT(spectrum_errors(document),
+              HasSubstr("/frequency_ratio/values: must have 1 to 100000"));
   document["frequency_ratio"] = {{"values", {1}}, {"from", 1}};
-  EXPECT_THAT(errors_of(document), HasSubstr("/frequency_ratio/from: give either values or"));
+  EXPECT_THAT(spectrum_errors(document), HasSubstr("/frequency_ratio/from: give either values or"));
   document["frequency_ratio"] = paper_spectrum()["frequency_ratio"];
   document["amplitude_ratio"] = {{"values", {1}}};
-  EXPECT_THAT(errors_of(document), HasSubstr("/amplitude_ratio/values: must have 2 to 100000"));
+  EXPECT_THAT(spectrum_errors(document),
+              HasSubstr("/amplitude_ratio/values: must have 2 to 100000"));
   document["amplitude_ratio"] = {{"from", 1}, {"to", 1 + 1e-15}, {"count", 100}};
-  EXPECT_THAT(errors_of(document), HasSubstr("/amplitude_ratio/count: is too large for the range"));
+  EXPECT_THAT(spectrum_errors(document),
+              HasSubstr("/amplitude_ratio/count: is too large for the range"));
   document["amplitude_ratio"] = {{"from", 1}, {"to", 2}, {"count", 3000}};
   document["frequency_ratio"] = {{"from", 1}, {"to", 2}, {"count", 3000}};
-  EXPECT_THAT(errors_of(document),
+  EXPECT_THAT(spectrum_errors(document),
               HasSubstr("/amplitude_ratio: the grid has 9000000 points (3000 x 3000), more than "
                         "4000000"));
 }
@@ -181,7 +185,7 @@ TEST(SpectrumConfig, RefusesAGridOutsideTheSceneDomains) {
   // p = 2.5653 rad/s: omega_p / p = 5000 is a period of 0.49 ms, 1e-4 one of 24,500 s.
   document["frequency_ratio"] = {{"from", 1e-4}, {"to", 5000}, {"count", 3}};
   document["amplitude_ratio"]["to"] = 4000;  // 2000 g at tan alpha = 0.5
-  const std::string errors = errors_of(document);
+  const std::string errors = spectrum_errors(document);
   EXPECT_THAT(errors, HasSubstr("/frequency_ratio/to: gives a pulse period of 0.00048"));
   EXPECT_THAT(errors, HasSubstr("/frequency_ratio/from: gives a pulse period of 2449"));
   EXPECT_THAT(errors, HasSubstr("must be in [0.001, 1000] s"));
@@ -190,8 +194,9 @@ TEST(SpectrumConfig, RefusesAGridOutsideTheSceneDomains) {
   document = paper_spectrum();
   document["frequency_ratio"] = {{"values", {0.01}}};
   document["settle_allowance_tau"] = 1e6;
-  EXPECT_THAT(errors_of(document), HasSubstr("/frequency_ratio/values/0: with "
-                                             "settle_allowance_tau, the longest run would last"));
+  EXPECT_THAT(spectrum_errors(document),
+              HasSubstr("/frequency_ratio/values/0: with "
+                        "settle_allowance_tau, the longest run would last"));
 }
 
 TEST(SpectrumConfig, PointSceneIsThePulseAtItsRatios) {

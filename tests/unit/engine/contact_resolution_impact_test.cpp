@@ -9,6 +9,7 @@
 
 #include "engine/contact/contact_resolution.hpp"
 #include "tests/support/contact_states.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
@@ -17,7 +18,7 @@ using testing::flat_state;
 using testing::rectangle_kinetic_energy;
 using testing::turning_about;
 
-constexpr double g = 9.81;
+using testing::g;
 
 TEST(ContactResolverImpact, ALandingCornerThatSticksWithoutBounceKeepsHousnersRatio) {
   // Rocking back about the right corner (omega = 1 rad/s counter-clockwise) to theta = 0, the

@@ -10,13 +10,16 @@
 
 #include "engine/contact/contact_resolution.hpp"
 #include "tests/support/contact_states.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
 
 using testing::turning_about;
 
-constexpr double g = 9.81, a = 0.5, b = 1.0;
+using testing::a;
+using testing::b;
+using testing::g;
 
 // The paper's block turning at omega about its right (corner_x = a) or left (-a) corner at x = 0.
 ContactOutcome resolve_turning(double corner_x, double theta, double omega, double lambda,

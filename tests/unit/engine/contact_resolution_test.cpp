@@ -7,13 +7,14 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/contact_states.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
 
 using testing::flat_state;
 
-constexpr double g = 9.81;
+using testing::g;
 
 // The paper's block, resting flat with its centre of mass at x.
 ContactOutcome resolve_from_rest(double mu, double lambda, double gravity_factor = 1.0,

@@ -10,16 +10,17 @@
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/polygon_properties.hpp"
+#include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
 namespace {
 
 // The derivation's results, heel at the origin, upstream on the left.
-constexpr double kFoldX = 703.0 / 120.0;
-constexpr double kToeX = 12.525, kToeY = 5.0;
-constexpr double kBreakY = 251.0 / 30.0;
-const std::vector<Vertex> kTypeB = {{0, 0},        {kFoldX, 0}, {kToeX, kToeY},
-                                    {10, kBreakY}, {10, 21.7},  {0, 21.7}};
+using testing::kBreakY;
+using testing::kFoldX;
+using testing::kToeX;
+using testing::kToeY;
+using testing::kTypeB;
 
 struct Line {
   Vec2 point, direction;

@@ -11,12 +11,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/errors.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double pi = std::numbers::pi;
+using testing::g;
+using testing::pi;
 
 DamCrest dam_with(double period, double zeta, double participation = 1.0) {
   DamCrest dam;

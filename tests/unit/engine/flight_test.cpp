@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/paper_block.hpp"
+
 namespace blockfrag {
 namespace {
 
-const double g = 9.81;
+using testing::g;
 
 TEST(Flight, FlatBlockThrownUpLandsAfterTwiceTheRiseTime) {
   const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});

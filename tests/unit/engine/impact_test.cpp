@@ -236,7 +236,7 @@ TEST(CornerImpact, RandomSweepKeepsTheLawsAndNeverGainsEnergy) {
     const double uy = uniform(gen, -2.0, -0.01), omega = uniform(gen, -3.0, 3.0);
     const RigidVelocity before{ux + omega * body.r_y, uy - omega * body.r_x, omega};
     const CornerImpactInput in{body.mass, body.inertia, body.r_x, body.r_y, ux, uy, mu, e};
-    SCOPED_TRACE(testing::Message() << "sample " << n << " mu " << mu << " e " << e);
+    SCOPED_TRACE(::testing::Message() << "sample " << n << " mu " << mu << " e " << e);
 
     const CornerImpulse p = corner_impact(in);
     const RigidVelocity v = after(body, before, p);
@@ -312,7 +312,7 @@ TEST(CornerImpact, RandomSweepKeepsTheLawsAndNeverGainsEnergy) {
     EXPECT_EQ(pm.p_y, p.p_y);
     EXPECT_EQ(pm.regime, p.regime);
     EXPECT_EQ(pm.energy_capped, p.energy_capped);
-    if (testing::Test::HasFailure()) break;
+    if (::testing::Test::HasFailure()) break;
   }
   // The sweep reaches every branch. Newton's law gains energy when the slip stops, then sticks or
   // reverses; one straight phase (stick or slip throughout) never gains: u_y runs linearly

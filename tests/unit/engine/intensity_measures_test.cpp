@@ -15,12 +15,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/errors.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double pi = std::numbers::pi;
+using testing::g;
+using testing::pi;
 
 GroundMotionPieces record_motion(const std::vector<double>& times, const std::vector<double>& a_g,
                                  double scale = 1.0) {

@@ -10,12 +10,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/modes/modes.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-constexpr double g = 9.81;
-const BlockGeometry paper_block(RectangularBlock{0.5, 1.0, 1.0});
+using testing::g;
+using testing::paper_block;
 const double R = std::sqrt(1.25);
 const MotionPiece lambda_one({MotionPiece::Shape::constant, 1.0}, 0.0, 10.0);
 const MotionPiece lambda_zero({}, 0.0, 10.0);

@@ -13,11 +13,12 @@
 #include "engine/contact/contact_dynamics.hpp"
 #include "engine/contact/contact_resolution.hpp"
 #include "engine/tolerances.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-constexpr double g = 9.81;
+using testing::g;
 
 PlanarForcesInput one_contact(Vec2 r, const RigidVelocity& v, double k2, double lambda, double mu,
                               double length) {

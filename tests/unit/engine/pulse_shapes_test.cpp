@@ -13,12 +13,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/motion/ground_motion.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-constexpr double pi = std::numbers::pi;
-constexpr double g = 9.81;
+using testing::g;
+using testing::pi;
 
 // integral of f over [a, b]: 20-point Gauss-Legendre on 400 panels, exact to round-off for the
 // smooth integrands here.
@@ -203,7 +204,7 @@ void expect_extrema_found(const MotionPiece& piece, double t0, double t1, std::s
 TEST(PulseShapes, MavroeidisPapageorgiouExtremaAreAllFound) {
   for (const double gamma : {1.1, 1.5, 2.0, 3.0, 6.0}) {
     for (const double nu : {0.0, 0.9, pi / 2, 2.5}) {
-      SCOPED_TRACE(testing::Message() << "gamma " << gamma << " nu " << nu);
+      SCOPED_TRACE(::testing::Message() << "gamma " << gamma << " nu " << nu);
       const MavroeidisPapageorgiouPulse pulse{0.5, 0.7, gamma, nu, {}};
       const GroundMotionPieces pieces(pulse, g);
       const MotionPiece& piece = pieces.pieces().front();

@@ -12,6 +12,7 @@
 
 #include "engine/tolerances.hpp"
 #include "tests/support/contact_states.hpp"
+#include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
 namespace {
@@ -19,9 +20,11 @@ namespace {
 using testing::flat_state;
 using testing::turning_about;
 
-constexpr double g = 9.81, a = 0.5, b = 1.0;
+using testing::a;
+using testing::b;
+using testing::g;
 // The paper's block: R = sqrt(1.25), sqrt(g R) = 3.311784 m/s, base width 2a = 1 m.
-const BlockGeometry paper_block(RectangularBlock{a, b, 1.0});
+using testing::paper_block;
 const double sqrt_gR = std::sqrt(g * std::hypot(a, b));
 
 TEST(HousnerRules, StartsToRockOnlyPastTheTipThresholdAboutThePushedCorner) {

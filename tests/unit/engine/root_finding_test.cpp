@@ -9,7 +9,7 @@
 namespace blockfrag {
 namespace {
 
-struct Counted {
+struct CountedLine {
   double root;
   double curvature;
   int* evaluations;
@@ -26,7 +26,7 @@ TEST(LocateCrossing, ClosesTheBracketInFewEvaluationsWhereverTheCrossingLies) {
   for (const double root : {1e-12, 1e-7, 0.3, 0.5, 0.999, 1.0 - 1e-9}) {
     for (const double curvature : {0.0, 2.0, -0.9}) {
       int evaluations = 0;
-      const Counted f{root, curvature, &evaluations};
+      const CountedLine f{root, curvature, &evaluations};
       const Bracket at = locate_crossing(f, 0.0, 1.0, f(0.0), f(1.0), 1e-15);
       evaluations -= 2;
       SCOPED_TRACE("root " + std::to_string(root) + ", curvature " + std::to_string(curvature));
@@ -44,7 +44,7 @@ TEST(LocateCrossing, AnEndValueThatSaysLittleDoesNotPinTheEstimateToThatEnd) {
   // A guard that starts at zero is given the smallest positive value at the start: the secant then
   // points at the start, where the guard is still positive (a corner that lifts and lands later).
   int evaluations = 0;
-  const Counted f{4.5e-6, 0.0, &evaluations};
+  const CountedLine f{4.5e-6, 0.0, &evaluations};
   const Bracket at =
       locate_crossing(f, 0.0, 2e-4, std::numeric_limits<double>::min(), f(2e-4), 1e-15);
   EXPECT_NEAR(at.after, 4.5e-6, 1e-15);

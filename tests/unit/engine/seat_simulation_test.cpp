@@ -11,15 +11,13 @@
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/simulate.hpp"
+#include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-// The type B block and its seat (docs/references.md), heel at the origin, upstream on the left.
-constexpr double kFoldX = 703.0 / 120.0;
-const std::vector<std::array<double, 2>> kTypeB = {{0, 0},           {kFoldX, 0}, {12.525, 5},
-                                                   {10, 251.0 / 30}, {10, 21.7},  {0, 21.7}};
-const std::vector<std::array<double, 2>> kTypeBSeat = {{0, 0}, {kFoldX, 0}, {12.525, 5}};
+using testing::kTypeB;
+using testing::kTypeBSeat;
 
 Scene type_b(double amplitude_g, double duration) {
   Scene scene;

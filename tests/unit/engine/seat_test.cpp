@@ -12,6 +12,7 @@
 
 #include "engine/errors.hpp"
 #include "engine/scene/scene_validation.hpp"
+#include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
 namespace {
@@ -23,11 +24,9 @@ constexpr double kTolerance = 1e-9;
 // A 1 x 2 rectangle about its centre, as scene_block_vertices lists it.
 const std::vector<Vertex> kRectangle = {{-0.5, -1}, {0.5, -1}, {0.5, 1}, {-0.5, 1}};
 
-// The paper's type B dam block and its seat (docs/references.md).
-constexpr double kFoldX = 703.0 / 120.0;
-const std::vector<Vertex> kTypeB = {{0, 0},           {kFoldX, 0}, {12.525, 5},
-                                    {10, 251.0 / 30}, {10, 21.7},  {0, 21.7}};
-const std::vector<Vertex> kTypeBSeat = {{0, 0}, {kFoldX, 0}, {12.525, 5}};
+using testing::kFoldX;
+using testing::kTypeB;
+using testing::kTypeBSeat;
 
 std::string defect_of(const std::vector<Vertex>& seat, const std::vector<Vertex>& block) {
   const auto defect = seat_defect(seat, block, kTolerance);

@@ -19,7 +19,7 @@ constexpr double z_95 = 1.9599639845400542;
 constexpr double z_99 = 2.5758293035489004;
 
 // docs/references.md prints four digits: half a unit in the last one.
-constexpr double printed = 0.5e-4;
+constexpr double kPrintedFourDigits = 0.5e-4;
 
 // P(X = k) for X ~ Binomial(n, p), from log-gamma in long double.
 long double binomial_pmf(std::int64_t k, std::int64_t n, long double p) {
@@ -45,14 +45,14 @@ long double binomial_at_most(std::int64_t x, std::int64_t n, long double p) {
 
 TEST(WilsonInterval, MatchesReferenceValues) {
   const auto a = wilson_interval(7, 20);
-  EXPECT_NEAR(a.low, 0.1812, printed);
-  EXPECT_NEAR(a.high, 0.5671, printed);
+  EXPECT_NEAR(a.low, 0.1812, kPrintedFourDigits);
+  EXPECT_NEAR(a.high, 0.5671, kPrintedFourDigits);
   const auto b = wilson_interval(16, 40);
-  EXPECT_NEAR(b.low, 0.2635, printed);
-  EXPECT_NEAR(b.high, 0.5540, printed);
+  EXPECT_NEAR(b.low, 0.2635, kPrintedFourDigits);
+  EXPECT_NEAR(b.high, 0.5540, kPrintedFourDigits);
   const auto c = wilson_interval(0, 40);
   EXPECT_EQ(c.low, 0.0);
-  EXPECT_NEAR(c.high, 0.0876, printed);
+  EXPECT_NEAR(c.high, 0.0876, kPrintedFourDigits);
 }
 
 // The Wilson bounds are the two roots in p of (x/n - p)^2 = z^2 p (1 - p) / n.
@@ -77,13 +77,13 @@ TEST(WilsonInterval, BoundsSolveTheScoreEquation) {
 TEST(WilsonInterval, AllSuccessesReachOneExactly) {
   const auto interval = wilson_interval(40, 40);
   EXPECT_EQ(interval.high, 1.0);
-  EXPECT_NEAR(interval.low, 1.0 - 0.0876, printed);  // the mirror of 0/40
+  EXPECT_NEAR(interval.low, 1.0 - 0.0876, kPrintedFourDigits);  // the mirror of 0/40
 }
 
 TEST(ClopperPearsonInterval, MatchesReferenceValues) {
   const auto interval = clopper_pearson_interval(7, 20);
-  EXPECT_NEAR(interval.low, 0.1539, printed);
-  EXPECT_NEAR(interval.high, 0.5922, printed);
+  EXPECT_NEAR(interval.low, 0.1539, kPrintedFourDigits);
+  EXPECT_NEAR(interval.high, 0.5922, kPrintedFourDigits);
 }
 
 // With no successes the upper bound solves (1 - p)^n = alpha / 2; with all, the lower one p^n =
@@ -166,8 +166,8 @@ TEST(BinomialInterval, IsSymmetricUnderSwappingSuccessesAndFailures) {
 TEST(BinomialInterval, DispatchesOnTheMethod) {
   const auto w = binomial_interval(IntervalMethod::wilson, 7, 20);
   const auto c = binomial_interval(IntervalMethod::clopper_pearson, 7, 20);
-  EXPECT_NEAR(w.low, 0.1812, printed);
-  EXPECT_NEAR(c.low, 0.1539, printed);
+  EXPECT_NEAR(w.low, 0.1812, kPrintedFourDigits);
+  EXPECT_NEAR(c.low, 0.1539, kPrintedFourDigits);
 }
 
 TEST(BinomialInterval, RejectsInvalidArguments) {

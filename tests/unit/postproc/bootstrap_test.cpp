@@ -18,15 +18,14 @@
 #include "postproc/fragility/cloud_fragility.hpp"
 #include "postproc/fragility/fit_diagnostics.hpp"
 #include "postproc/fragility/lognormal_fit.hpp"
+#include "tests/support/fragility_draws.hpp"
 
 namespace blockfrag {
 namespace {
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
-
-double uniform(std::mt19937_64& engine) {
-  return (static_cast<double>(engine() >> 11) + 0.5) * 0x1.0p-53;
-}
+using testing::binomial_draw;
+using testing::normal_cdf;
+using testing::uniform;
 
 // SplitMix64's finaliser.
 std::uint64_t mix(std::uint64_t x) {
@@ -42,13 +41,6 @@ UniformDraw counter_uniforms(std::uint64_t seed) {
     const std::uint64_t bits = mix(mix(mix(seed) ^ resample) ^ draw);
     return (static_cast<double>(bits >> 11) + 0.5) * 0x1.0p-53;
   };
-}
-
-// A Binomial(n, p) count as a sum of Bernoulli trials: independent of binomial_quantile.
-std::int64_t binomial_draw(std::mt19937_64& engine, std::int64_t n, double p) {
-  std::int64_t count = 0;
-  for (std::int64_t i = 0; i < n; ++i) count += uniform(engine) < p ? 1 : 0;
-  return count;
 }
 
 // Whether k is the u-quantile of Binomial(n, p) by GSL's CDF: P(X <= k - 1) < u <= P(X <= k),
@@ -126,15 +118,8 @@ TEST(BinomialQuantile, OfUniformsHasTheBinomialMeanAndVariance) {
   }
 }
 
-struct Stripes {
-  std::vector<double> im;
-  std::vector<std::int64_t> trials;
-  std::vector<std::int64_t> exceedances;
-};
-
-const Stripes baker{{0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0},
-                    std::vector<std::int64_t>(8, 40),
-                    {0, 0, 0, 4, 6, 13, 12, 16}};
+using Stripes = testing::FragilityCounts;
+const Stripes& baker = testing::kBakerStripes;
 
 void expect_bitwise_equal(const BootstrapResult& a, const BootstrapResult& b) {
   EXPECT_EQ(a.resamples, b.resamples);

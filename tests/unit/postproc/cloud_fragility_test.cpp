@@ -11,17 +11,13 @@
 #include <gtest/gtest.h>
 
 #include "postproc/fragility/lognormal_fit.hpp"
+#include "tests/support/fragility_draws.hpp"
 
 namespace blockfrag {
 namespace {
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
-
-// Uniforms from mt19937_64's raw bits (the std::*_distribution algorithms differ between
-// standard libraries; this is the same everywhere).
-double uniform(std::mt19937_64& engine) {
-  return (static_cast<double>(engine() >> 11) + 0.5) * 0x1.0p-53;
-}
+using testing::normal_cdf;
+using testing::uniform;
 
 TEST(CloudFragility, SamplesAtRepeatedIntensitiesGiveTheBinnedFit) {
   // The check data of docs/references.md (Baker 2015), as 320 single samples.

@@ -18,43 +18,28 @@
 #include "postproc/fragility/cloud_fragility.hpp"
 #include "postproc/fragility/fragility_curve.hpp"
 #include "postproc/fragility/lognormal_fit.hpp"
+#include "tests/support/fragility_draws.hpp"
 
 namespace blockfrag {
 namespace {
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+using testing::binomial_draw;
+using testing::fit;
+using testing::FragilityCounts;
+using testing::normal_cdf;
+using testing::uniform;
+
 double normal_pdf(double x) { return std::exp(-0.5 * x * x) / std::sqrt(2.0 * M_PI); }
 
-// Uniforms from mt19937_64's raw bits (the std::*_distribution algorithms differ between
-// standard libraries; this is the same everywhere).
-double uniform(std::mt19937_64& engine) {
-  return (static_cast<double>(engine() >> 11) + 0.5) * 0x1.0p-53;
-}
-
-// A Binomial(n, p) count as a sum of Bernoulli trials: slow, and independent of the library.
-std::int64_t binomial_draw(std::mt19937_64& engine, std::int64_t n, double p) {
-  std::int64_t count = 0;
-  for (std::int64_t i = 0; i < n; ++i) count += uniform(engine) < p ? 1 : 0;
-  return count;
-}
-
-struct Data {
-  std::vector<double> im;
-  std::vector<std::int64_t> trials;
-  std::vector<std::int64_t> exceedances;
-};
-
-Data drawn_from(std::mt19937_64& engine, const std::vector<double>& im, std::int64_t n,
-                double median, double beta) {
-  Data d{im, std::vector<std::int64_t>(im.size(), n), {}};
+FragilityCounts drawn_from(std::mt19937_64& engine, const std::vector<double>& im, std::int64_t n,
+                           double median, double beta) {
+  FragilityCounts d{im, std::vector<std::int64_t>(im.size(), n), {}};
   for (const double x : im)
     d.exceedances.push_back(binomial_draw(engine, n, normal_cdf(std::log(x / median) / beta)));
   return d;
 }
 
-LognormalFit fit(const Data& d) { return fit_lognormal_fragility(d.im, d.trials, d.exceedances); }
-
-StandardErrors errors(const Data& d, const LognormalFit& f) {
+StandardErrors errors(const FragilityCounts& d, const LognormalFit& f) {
   return fit_standard_errors(d.im, d.trials, d.exceedances, f);
 }
 
@@ -82,7 +67,7 @@ TEST(StandardErrors, MatchTheExpectedInformationWithHugeCounts) {
   // in the wrong variable, the delta method left out).
   const double m = 0.9, beta = 0.45;
   const std::int64_t n = 1'000'000;
-  Data d{{0.3, 0.5, 0.7, 1.0, 1.4, 2.0}, std::vector<std::int64_t>(6, n), {}};
+  FragilityCounts d{{0.3, 0.5, 0.7, 1.0, 1.4, 2.0}, std::vector<std::int64_t>(6, n), {}};
   for (const double x : d.im)
     d.exceedances.push_back(
         std::llround(static_cast<double>(n) * normal_cdf(std::log(x / m) / beta)));
@@ -126,7 +111,7 @@ TEST(StandardErrors, MatchTheSpreadOfFitsToDataDrawnFromAKnownCurve) {
   const int datasets = 500;
   std::vector<double> medians, betas, se_medians, se_betas;
   for (int k = 0; k < datasets; ++k) {
-    const Data d = drawn_from(engine, im, 200, m, beta);
+    const FragilityCounts d = drawn_from(engine, im, 200, m, beta);
     const LognormalFit f = fit(d);
     ASSERT_EQ(f.status, FitStatus::ok);
     const StandardErrors se = errors(d, f);
@@ -147,7 +132,7 @@ TEST(StandardErrors, MatchTheSpreadOfFitsToDataDrawnFromAKnownCurve) {
 }
 
 TEST(StandardErrors, RefuseAFitThatDoesNotExist) {
-  const Data d{{0.5, 1.0}, {10, 10}, {0, 0}};
+  const FragilityCounts d{{0.5, 1.0}, {10, 10}, {0, 0}};
   const LognormalFit f = fit(d);
   ASSERT_EQ(f.status, FitStatus::no_exceedances);
   EXPECT_THROW(errors(d, f), FitError);
@@ -235,7 +220,7 @@ TEST(GoodnessOfFit, PValuesAreUniformUnderTheLognormal) {
   int small = 0;
   double deviance_sum = 0.0;
   for (int k = 0; k < datasets; ++k) {
-    const Data d = drawn_from(engine, im, 100, 0.9, 0.45);
+    const FragilityCounts d = drawn_from(engine, im, 100, 0.9, 0.45);
     const LognormalFit f = fit(d);
     ASSERT_EQ(f.status, FitStatus::ok);
     const GoodnessOfFit gof = goodness_of_fit(d.im, d.trials, d.exceedances, f.median, f.beta);
@@ -258,7 +243,7 @@ TEST(GoodnessOfFit, RejectsACurveWithAPlateau) {
   };
   std::mt19937_64 engine(88);
   const std::vector<double> im{0.2, 0.3, 0.4, 0.55, 0.8, 1.0, 1.3, 1.8, 2.5, 3.5, 5.0};
-  Data d{im, std::vector<std::int64_t>(im.size(), 10'000), {}};
+  FragilityCounts d{im, std::vector<std::int64_t>(im.size(), 10'000), {}};
   for (const double x : im) d.exceedances.push_back(binomial_draw(engine, 10'000, truth(x)));
   const LognormalFit f = fit(d);
   ASSERT_EQ(f.status, FitStatus::ok);

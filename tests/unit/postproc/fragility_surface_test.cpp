@@ -14,11 +14,12 @@
 
 #include "postproc/fragility/bootstrap.hpp"
 #include "postproc/fragility/lognormal_fit.hpp"
+#include "tests/support/fragility_draws.hpp"
 
 namespace blockfrag {
 namespace {
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+using testing::normal_cdf;
 
 struct Grid {
   std::vector<double> im1, im2;
@@ -28,8 +29,8 @@ struct Grid {
 // A pulse-like truth: the median amplitude 0.8 g at a 1 s period falls as T^-0.5, beta 0.4:
 // b = (-ln 0.8 / 0.4, 1 / 0.4, 0.5 / 0.4).
 const std::array<double, 3> truth{-std::log(0.8) / 0.4, 2.5, 1.25};
-const std::vector<double> amplitudes{0.3, 0.45, 0.65, 0.9, 1.3, 2.0};
-const std::vector<double> periods{0.5, 0.7, 1.0, 1.4, 2.0};
+using testing::kSurfaceAmplitudes;
+using testing::kSurfacePeriods;
 
 double true_probability(double x1, double x2) {
   return normal_cdf(truth[0] + truth[1] * std::log(x1) + truth[2] * std::log(x2));
@@ -39,8 +40,8 @@ double true_probability(double x1, double x2) {
 template <class Count>
 Grid grid_of(std::int64_t n, const Count& count) {
   Grid grid;
-  for (const double x1 : amplitudes) {
-    for (const double x2 : periods) {
+  for (const double x1 : kSurfaceAmplitudes) {
+    for (const double x2 : kSurfacePeriods) {
       grid.im1.push_back(x1);
       grid.im2.push_back(x2);
       grid.trials.push_back(n);
@@ -59,7 +60,7 @@ Grid drawn_grid(std::int64_t n, std::uint64_t seed) {
   });
 }
 
-SurfaceFit fit(const Grid& g) {
+SurfaceFit fit_surface(const Grid& g) {
   return fit_fragility_surface(g.im1, g.im2, g.trials, g.exceedances);
 }
 
@@ -78,7 +79,7 @@ double independent_log_likelihood(const Grid& g, const std::array<double, 3>& b)
 TEST(FragilitySurface, RecoversTheSurfaceFromExactProportions) {
   // 10^8 trials a cell: the rounding of the counts moves each proportion by at most 5e-9.
   const Grid g = grid_of(100'000'000, [](double p) { return std::llround(1e8 * p); });
-  const SurfaceFit r = fit(g);
+  const SurfaceFit r = fit_surface(g);
   ASSERT_EQ(r.status, SurfaceFitStatus::ok);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.coefficients[i], truth[i], 1e-5) << i;
   EXPECT_NEAR(r.beta1, 0.4, 1e-6);
@@ -91,7 +92,7 @@ TEST(FragilitySurface, RecoversTheSurfaceFromExactProportions) {
 
 TEST(FragilitySurface, GradientOfAnIndependentLikelihoodVanishesAtTheEstimate) {
   const Grid g = drawn_grid(200, 1);
-  const SurfaceFit r = fit(g);
+  const SurfaceFit r = fit_surface(g);
   ASSERT_EQ(r.status, SurfaceFitStatus::ok);
   // Central differences of ln L ~ 1e3 with h = 1e-6 are good to about 1e-7.
   const auto slope_at = [&](std::array<double, 3> b, int i) {
@@ -113,7 +114,7 @@ TEST(FragilitySurface, GradientOfAnIndependentLikelihoodVanishesAtTheEstimate) {
 
 TEST(FragilitySurface, TruthLiesWithinThreeStandardErrorsOfDrawnData) {
   for (const std::uint64_t seed : {11u, 12u, 13u, 14u, 15u}) {
-    const SurfaceFit r = fit(drawn_grid(200, seed));
+    const SurfaceFit r = fit_surface(drawn_grid(200, seed));
     ASSERT_EQ(r.status, SurfaceFitStatus::ok) << seed;
     for (int i = 0; i < 3; ++i) {
       EXPECT_LT(std::abs(r.coefficients[i] - truth[i]), 3 * r.standard_errors[i])
@@ -132,7 +133,7 @@ TEST(FragilitySurface, StandardErrorsMatchTheSpreadOfRepeatedDraws) {
   constexpr int draws = 400;
   std::array<double, 3> sum{}, sum_squares{}, se_sum{};
   for (int k = 0; k < draws; ++k) {
-    const SurfaceFit r = fit(drawn_grid(200, 1000 + static_cast<std::uint64_t>(k)));
+    const SurfaceFit r = fit_surface(drawn_grid(200, 1000 + static_cast<std::uint64_t>(k)));
     ASSERT_EQ(r.status, SurfaceFitStatus::ok) << k;
     for (int i = 0; i < 3; ++i) {
       sum[i] += r.coefficients[i];
@@ -156,27 +157,29 @@ TEST(FragilitySurface, ReportsSeparatedData) {
   for (std::size_t j = 0; j < g.im1.size(); ++j) {
     if (std::log(g.im1[j]) + std::log(g.im2[j]) > 0) g.exceedances[j] = 50;
   }
-  EXPECT_EQ(fit(g).status, SurfaceFitStatus::separated);
+  EXPECT_EQ(fit_surface(g).status, SurfaceFitStatus::separated);
   // Quasi-complete: the cells on the line (x1 x2 = 1 at (2, 0.5) and (1, 1) if present) may mix.
   g.im1.push_back(1.0);
   g.im2.push_back(1.0);
   g.trials.push_back(50);
   g.exceedances.push_back(20);
-  EXPECT_EQ(fit(g).status, SurfaceFitStatus::separated);
+  EXPECT_EQ(fit_surface(g).status, SurfaceFitStatus::separated);
   // One cell below the line with an exceedance breaks the separation: a maximum exists again.
   g.exceedances[0] = 1;
-  EXPECT_EQ(fit(g).status, SurfaceFitStatus::ok);
+  EXPECT_EQ(fit_surface(g).status, SurfaceFitStatus::ok);
 }
 
 TEST(FragilitySurface, ReportsDataWithoutAMaximum) {
-  EXPECT_EQ(fit(grid_of(40, [](double) { return 0; })).status, SurfaceFitStatus::no_exceedances);
-  EXPECT_EQ(fit(grid_of(40, [](double) { return 40; })).status, SurfaceFitStatus::all_exceedances);
-  EXPECT_EQ(fit(Grid{}).status, SurfaceFitStatus::no_data);
+  EXPECT_EQ(fit_surface(grid_of(40, [](double) { return 0; })).status,
+            SurfaceFitStatus::no_exceedances);
+  EXPECT_EQ(fit_surface(grid_of(40, [](double) { return 40; })).status,
+            SurfaceFitStatus::all_exceedances);
+  EXPECT_EQ(fit_surface(Grid{}).status, SurfaceFitStatus::no_data);
   // One period: the cells lie on a line, b2 is not identified.
   Grid one_period = drawn_grid(200, 3);
   for (double& x2 : one_period.im2) x2 = 1.0;
-  EXPECT_EQ(fit(one_period).status, SurfaceFitStatus::collinear);
-  const SurfaceFit none = fit(one_period);
+  EXPECT_EQ(fit_surface(one_period).status, SurfaceFitStatus::collinear);
+  const SurfaceFit none = fit_surface(one_period);
   EXPECT_TRUE(std::isnan(none.coefficients[1]));
   EXPECT_TRUE(std::isnan(none.median_im1(1.0)));
 }
@@ -185,7 +188,7 @@ TEST(FragilitySurface, AFallingSurfaceIsNotAFragility) {
   // The amplitudes reversed: P falls with IM1. The maximum exists, with b1 < 0.
   Grid g = drawn_grid(200, 5);
   for (double& x1 : g.im1) x1 = 1.0 / x1;
-  const SurfaceFit r = fit(g);
+  const SurfaceFit r = fit_surface(g);
   EXPECT_EQ(r.status, SurfaceFitStatus::not_increasing);
   EXPECT_LT(r.coefficients[1], 0.0);
   EXPECT_TRUE(std::isnan(r.beta1));
@@ -194,12 +197,12 @@ TEST(FragilitySurface, AFallingSurfaceIsNotAFragility) {
 TEST(FragilitySurface, RefusesInvalidCounts) {
   Grid g = drawn_grid(10, 1);
   g.exceedances[3] = 11;
-  EXPECT_THROW(fit(g), FitError);
+  EXPECT_THROW(fit_surface(g), FitError);
   g = drawn_grid(10, 1);
   g.im2[0] = 0.0;
-  EXPECT_THROW(fit(g), FitError);
+  EXPECT_THROW(fit_surface(g), FitError);
   g.im2.pop_back();
-  EXPECT_THROW(fit(g), FitError);
+  EXPECT_THROW(fit_surface(g), FitError);
 }
 
 }  // namespace

@@ -10,26 +10,21 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/fragility_draws.hpp"
+
 namespace blockfrag {
 namespace {
 
-struct Data {
-  std::vector<double> im;
-  std::vector<std::int64_t> trials;
-  std::vector<std::int64_t> exceedances;
-};
-
-const Data baker{{0.2, 0.3, 0.4, 0.6, 0.7, 0.8, 0.9, 1.0},
-                 std::vector<std::int64_t>(8, 40),
-                 {0, 0, 0, 4, 6, 13, 12, 16}};
+using testing::fit;
+using testing::FragilityCounts;
+using testing::kBakerStripes;
+using testing::normal_cdf;
 
 // docs/references.md prints six decimals: half a unit in the last one.
-constexpr double printed = 0.5e-6;
-
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+constexpr double kPrintedSixDecimals = 0.5e-6;
 
 // ln L from the definition; with_coefficients adds ln C(n, z).
-double independent_log_likelihood(const Data& d, double median, double beta,
+double independent_log_likelihood(const FragilityCounts& d, double median, double beta,
                                   bool with_coefficients = true) {
   double sum = 0.0;
   for (std::size_t j = 0; j < d.im.size(); ++j) {
@@ -44,7 +39,7 @@ double independent_log_likelihood(const Data& d, double median, double beta,
 }
 
 // Central differences in (ln median, ln beta).
-std::pair<double, double> numerical_gradient(const Data& d, double median, double beta,
+std::pair<double, double> numerical_gradient(const FragilityCounts& d, double median, double beta,
                                              double h = 1e-5) {
   auto at = [&](double dm, double db) {
     return independent_log_likelihood(d, median * std::exp(dm), beta * std::exp(db));
@@ -52,36 +47,34 @@ std::pair<double, double> numerical_gradient(const Data& d, double median, doubl
   return {(at(h, 0) - at(-h, 0)) / (2 * h), (at(0, h) - at(0, -h)) / (2 * h)};
 }
 
-LognormalFit fit(const Data& d) { return fit_lognormal_fragility(d.im, d.trials, d.exceedances); }
-
 TEST(LognormalFit, MatchesBakersCheckValues) {
-  const auto result = fit(baker);
+  const auto result = fit(kBakerStripes);
   ASSERT_EQ(result.status, FitStatus::ok);
   EXPECT_TRUE(result.converged);
-  EXPECT_NEAR(result.median, 1.076116, printed);
-  EXPECT_NEAR(result.beta, 0.429237, printed);
-  EXPECT_NEAR(-result.log_likelihood, 10.797705, printed);
-  EXPECT_NEAR(-independent_log_likelihood(baker, result.median, result.beta, false), 107.899826,
-              printed);
+  EXPECT_NEAR(result.median, 1.076116, kPrintedSixDecimals);
+  EXPECT_NEAR(result.beta, 0.429237, kPrintedSixDecimals);
+  EXPECT_NEAR(-result.log_likelihood, 10.797705, kPrintedSixDecimals);
+  EXPECT_NEAR(-independent_log_likelihood(kBakerStripes, result.median, result.beta, false),
+              107.899826, kPrintedSixDecimals);
   EXPECT_EQ(result.median_low, result.median);
   EXPECT_EQ(result.median_high, result.median);
 }
 
 TEST(LognormalFit, GradientOfAnIndependentLikelihoodVanishesAtTheEstimate) {
-  const auto result = fit(baker);
-  const auto [g_median, g_beta] = numerical_gradient(baker, result.median, result.beta);
+  const auto result = fit(kBakerStripes);
+  const auto [g_median, g_beta] = numerical_gradient(kBakerStripes, result.median, result.beta);
   // Central differences with h = 1e-5 on ln L ~ 10 are good to about 1e-9.
   EXPECT_NEAR(g_median, 0.0, 1e-7);
   EXPECT_NEAR(g_beta, 0.0, 1e-7);
   // ... and the same differences are far from zero a little away: the check can fail.
-  const auto [g_off, _] = numerical_gradient(baker, result.median * 1.01, result.beta);
+  const auto [g_off, _] = numerical_gradient(kBakerStripes, result.median * 1.01, result.beta);
   EXPECT_GT(std::abs(g_off), 1e-2);
   EXPECT_LE(result.gradient_norm, 1e-10 * 320);
   // A maximum, not a saddle: every nearby point is lower.
   for (const double dm : {-1e-3, 0.0, 1e-3}) {
     for (const double db : {-1e-3, 0.0, 1e-3}) {
       if (dm == 0.0 && db == 0.0) continue;
-      EXPECT_LT(independent_log_likelihood(baker, result.median * std::exp(dm),
+      EXPECT_LT(independent_log_likelihood(kBakerStripes, result.median * std::exp(dm),
                                            result.beta * std::exp(db)),
                 result.log_likelihood);
     }
@@ -91,8 +84,9 @@ TEST(LognormalFit, GradientOfAnIndependentLikelihoodVanishesAtTheEstimate) {
 TEST(LognormalFit, LikelihoodMatchesAnIndependentEvaluation) {
   for (const double median : {0.3, 1.076116, 4.0})
     for (const double beta : {0.05, 0.4, 2.0}) {
-      const double expected = independent_log_likelihood(baker, median, beta);
-      EXPECT_NEAR(lognormal_log_likelihood(baker.im, baker.trials, baker.exceedances, median, beta),
+      const double expected = independent_log_likelihood(kBakerStripes, median, beta);
+      EXPECT_NEAR(lognormal_log_likelihood(kBakerStripes.im, kBakerStripes.trials,
+                                           kBakerStripes.exceedances, median, beta),
                   expected, 1e-11 * std::abs(expected))
           << median << " " << beta;
     }
@@ -110,9 +104,9 @@ TEST(LognormalFit, LikelihoodStaysFiniteInTheFarTails) {
 
 // The curve is a function of x / median: changing the unit of the intensity scales the median only.
 TEST(LognormalFit, ScalesWithTheUnitOfTheIntensity) {
-  Data scaled = baker;
+  FragilityCounts scaled = kBakerStripes;
   for (double& x : scaled.im) x *= 9.81;
-  const auto base = fit(baker), other = fit(scaled);
+  const auto base = fit(kBakerStripes), other = fit(scaled);
   ASSERT_EQ(other.status, FitStatus::ok);
   EXPECT_NEAR(other.median / base.median, 9.81, 1e-9);
   EXPECT_NEAR(other.beta, base.beta, 1e-9);
@@ -122,16 +116,16 @@ TEST(LognormalFit, ScalesWithTheUnitOfTheIntensity) {
 // Levels without trials carry no information; a level split into two entries at the same im
 // carries the same information about the curve (the binomial coefficients change, not the fit).
 TEST(LognormalFit, IgnoresEmptyLevelsAndPoolsRepeatedOnes) {
-  Data padded = baker;
+  FragilityCounts padded = kBakerStripes;
   padded.im.push_back(5.0);
   padded.trials.push_back(0);
   padded.exceedances.push_back(0);
-  const auto base = fit(baker), with_empty = fit(padded);
+  const auto base = fit(kBakerStripes), with_empty = fit(padded);
   EXPECT_NEAR(with_empty.median, base.median, 1e-12);
   EXPECT_NEAR(with_empty.beta, base.beta, 1e-12);
   EXPECT_NEAR(with_empty.log_likelihood, base.log_likelihood, 1e-12);
 
-  Data split = baker;
+  FragilityCounts split = kBakerStripes;
   split.trials[5] = 25;
   split.exceedances[5] = 9;
   split.im.push_back(0.8);
@@ -142,9 +136,10 @@ TEST(LognormalFit, IgnoresEmptyLevelsAndPoolsRepeatedOnes) {
   EXPECT_NEAR(pooled.beta, base.beta, 1e-9);
 }
 
-// Data close to separation still have a maximum (one level overlaps): it must be found, sharp.
+// FragilityCounts close to separation still have a maximum (one level overlaps): it must be found,
+// sharp.
 TEST(LognormalFit, FindsSteepCurvesOfNearlySeparatedData) {
-  const Data steep{baker.im, baker.trials, {0, 0, 0, 1, 39, 40, 40, 40}};
+  const FragilityCounts steep{kBakerStripes.im, kBakerStripes.trials, {0, 0, 0, 1, 39, 40, 40, 40}};
   const auto result = fit(steep);
   ASSERT_EQ(result.status, FitStatus::ok);
   EXPECT_GT(result.median, 0.6);
@@ -156,18 +151,19 @@ TEST(LognormalFit, FindsSteepCurvesOfNearlySeparatedData) {
 }
 
 TEST(LognormalFit, ConvergesWithMillionsOfTrials) {
-  Data big = baker;
+  FragilityCounts big = kBakerStripes;
   for (auto& n : big.trials) n *= 250000;
   for (auto& z : big.exceedances) z *= 250000;
   const auto result = fit(big);
   ASSERT_EQ(result.status, FitStatus::ok);
   // The same proportions: the same maximum.
-  EXPECT_NEAR(result.median, 1.076116, printed);
-  EXPECT_NEAR(result.beta, 0.429237, printed);
+  EXPECT_NEAR(result.median, 1.076116, kPrintedSixDecimals);
+  EXPECT_NEAR(result.beta, 0.429237, kPrintedSixDecimals);
 }
 
 TEST(LognormalFit, ReportsNoExceedances) {
-  const auto result = fit({baker.im, baker.trials, std::vector<std::int64_t>(8, 0)});
+  const auto result =
+      fit({kBakerStripes.im, kBakerStripes.trials, std::vector<std::int64_t>(8, 0)});
   EXPECT_EQ(result.status, FitStatus::no_exceedances);
   EXPECT_FALSE(result.converged);
   EXPECT_TRUE(std::isnan(result.median));
@@ -178,7 +174,7 @@ TEST(LognormalFit, ReportsNoExceedances) {
 }
 
 TEST(LognormalFit, ReportsAllExceedances) {
-  const auto result = fit({baker.im, baker.trials, baker.trials});
+  const auto result = fit({kBakerStripes.im, kBakerStripes.trials, kBakerStripes.trials});
   EXPECT_EQ(result.status, FitStatus::all_exceedances);
   EXPECT_TRUE(std::isnan(result.median));
   EXPECT_EQ(result.median_low, 0.0);
@@ -186,7 +182,7 @@ TEST(LognormalFit, ReportsAllExceedances) {
 }
 
 TEST(LognormalFit, ReportsASingleLevel) {
-  const Data single{{0.5, 0.5}, {40, 20}, {10, 5}};
+  const FragilityCounts single{{0.5, 0.5}, {40, 20}, {10, 5}};
   const auto below = fit(single);
   EXPECT_EQ(below.status, FitStatus::single_level);
   EXPECT_TRUE(std::isnan(below.median));
@@ -204,7 +200,8 @@ TEST(LognormalFit, ReportsASingleLevel) {
 // Zeros up to 0.6 and all exceedances from 0.7: ln L keeps rising as beta -> 0 with the median in
 // between, towards 0; no finite estimate is the answer.
 TEST(LognormalFit, ReportsSeparatedData) {
-  const Data separated{baker.im, baker.trials, {0, 0, 0, 0, 40, 40, 40, 40}};
+  const FragilityCounts separated{
+      kBakerStripes.im, kBakerStripes.trials, {0, 0, 0, 0, 40, 40, 40, 40}};
   const auto result = fit(separated);
   EXPECT_EQ(result.status, FitStatus::separated);
   EXPECT_TRUE(std::isnan(result.median));
@@ -225,7 +222,7 @@ TEST(LognormalFit, ReportsSeparatedData) {
 // One mixed level at the boundary (13 of 40 at 0.7): the curve tends to a step at 0.7 through
 // p = 13/40 there; the supremum is that level's binomial log-likelihood at its own proportion.
 TEST(LognormalFit, ReportsQuasiSeparatedDataWithTheBoundaryLevel) {
-  const Data data{baker.im, baker.trials, {0, 0, 0, 0, 13, 40, 40, 40}};
+  const FragilityCounts data{kBakerStripes.im, kBakerStripes.trials, {0, 0, 0, 0, 13, 40, 40, 40}};
   const auto result = fit(data);
   EXPECT_EQ(result.status, FitStatus::separated);
   EXPECT_EQ(result.median_low, 0.7);
@@ -244,7 +241,7 @@ TEST(LognormalFit, ReportsQuasiSeparatedDataWithTheBoundaryLevel) {
 TEST(LognormalFit, ReportsDataWithoutAnIncreasingTrend) {
   for (const auto& z : {std::vector<std::int64_t>{40, 40, 40, 20, 0, 0, 0, 0},
                         std::vector<std::int64_t>{40, 40, 30, 20, 10, 0, 0, 0}}) {
-    const Data data{baker.im, baker.trials, z};
+    const FragilityCounts data{kBakerStripes.im, kBakerStripes.trials, z};
     const auto result = fit(data);
     EXPECT_EQ(result.status, FitStatus::no_trend);
     EXPECT_TRUE(std::isnan(result.median));
@@ -275,7 +272,7 @@ TEST(LognormalFit, ReportsDataWithoutAnIncreasingTrend) {
 // The same proportion at every level: the maximum is exactly flat (beta = infinity, the median
 // overflows), not an "ok" fit with a huge beta.
 TEST(LognormalFit, ReportsEqualProportionsAsNoTrend) {
-  const Data data{{537.79, 3703.2}, {20, 10}, {4, 2}};
+  const FragilityCounts data{{537.79, 3703.2}, {20, 10}, {4, 2}};
   const auto result = fit(data);
   EXPECT_EQ(result.status, FitStatus::no_trend);
   EXPECT_TRUE(std::isnan(result.median));
@@ -284,8 +281,8 @@ TEST(LognormalFit, ReportsEqualProportionsAsNoTrend) {
 
 // The iteration limit ends the fit with a status, never with a half-converged estimate.
 TEST(LognormalFit, ReportsTheIterationLimit) {
-  const auto result =
-      fit_lognormal_fragility(baker.im, baker.trials, baker.exceedances, {1e-10, 1});
+  const auto result = fit_lognormal_fragility(kBakerStripes.im, kBakerStripes.trials,
+                                              kBakerStripes.exceedances, {1e-10, 1});
   EXPECT_EQ(result.status, FitStatus::not_converged);
   EXPECT_FALSE(result.converged);
   EXPECT_EQ(result.iterations, 1);
@@ -308,9 +305,11 @@ TEST(LognormalFit, RejectsInvalidData) {
   EXPECT_THROW(fit({{0.5, 1.0}, {-1, 10}, {0, 2}}), FitError);
   EXPECT_THROW(fit({{0.5, 1.0}, {10, 10}, {11, 2}}), FitError);
   EXPECT_THROW(fit({{0.5, 1.0}, {10, 10}, {-1, 2}}), FitError);
-  EXPECT_THROW(fit_lognormal_fragility(baker.im, baker.trials, baker.exceedances, {0.0, 100}),
+  EXPECT_THROW(fit_lognormal_fragility(kBakerStripes.im, kBakerStripes.trials,
+                                       kBakerStripes.exceedances, {0.0, 100}),
                FitError);
-  EXPECT_THROW(lognormal_log_likelihood(baker.im, baker.trials, baker.exceedances, 1.0, 0.0),
+  EXPECT_THROW(lognormal_log_likelihood(kBakerStripes.im, kBakerStripes.trials,
+                                        kBakerStripes.exceedances, 1.0, 0.0),
                FitError);
 }
 

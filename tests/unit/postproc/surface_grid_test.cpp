@@ -13,28 +13,29 @@
 
 #include "postproc/fragility/binomial_interval.hpp"
 #include "postproc/fragility/bootstrap.hpp"
+#include "tests/support/fragility_draws.hpp"
 
 namespace blockfrag {
 namespace {
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+using testing::normal_cdf;
 
-const std::vector<double> amplitudes{0.3, 0.45, 0.65, 0.9, 1.3, 2.0};
-const std::vector<double> periods{0.5, 0.7, 1.0, 1.4, 2.0};
+using testing::kSurfaceAmplitudes;
+using testing::kSurfacePeriods;
 
 // n trials a cell, row by row, from probability(x1, x2) by inversion of seeded uniforms.
 template <class Probability>
 SurfaceGrid drawn(std::uint64_t seed, std::int64_t n, const Probability& probability) {
   std::mt19937_64 engine(seed);
   std::vector<std::int64_t> trials, exceedances;
-  for (const double x1 : amplitudes) {
-    for (const double x2 : periods) {
+  for (const double x1 : kSurfaceAmplitudes) {
+    for (const double x2 : kSurfacePeriods) {
       const double u = (static_cast<double>(engine() >> 11) + 0.5) * 0x1p-53;
       trials.push_back(n);
       exceedances.push_back(binomial_quantile(u, n, probability(x1, x2)));
     }
   }
-  return surface_from_counts(amplitudes, periods, trials, exceedances);
+  return surface_from_counts(kSurfaceAmplitudes, kSurfacePeriods, trials, exceedances);
 }
 
 double probit_surface(double x1, double x2) {
@@ -43,10 +44,10 @@ double probit_surface(double x1, double x2) {
 
 TEST(SurfaceGrid, KeepsEachCellInRowOrderWithItsInterval) {
   const SurfaceGrid grid = drawn(3, 100, probit_surface);
-  ASSERT_EQ(grid.trials.size(), amplitudes.size() * periods.size());
-  for (std::size_t k1 = 0; k1 < amplitudes.size(); ++k1) {
-    for (std::size_t k2 = 0; k2 < periods.size(); ++k2) {
-      const std::size_t c = k1 * periods.size() + k2;
+  ASSERT_EQ(grid.trials.size(), kSurfaceAmplitudes.size() * kSurfacePeriods.size());
+  for (std::size_t k1 = 0; k1 < kSurfaceAmplitudes.size(); ++k1) {
+    for (std::size_t k2 = 0; k2 < kSurfacePeriods.size(); ++k2) {
+      const std::size_t c = k1 * kSurfacePeriods.size() + k2;
       EXPECT_EQ(grid.probability[c], static_cast<double>(grid.exceedances[c]) / 100.0);
       const ProportionInterval wilson = wilson_interval(grid.exceedances[c], 100);
       EXPECT_EQ(grid.ci_low[c], wilson.low);
@@ -55,8 +56,8 @@ TEST(SurfaceGrid, KeepsEachCellInRowOrderWithItsInterval) {
   }
   // The fit is over each cell's own (amplitude, period): the same as fitting the cells directly.
   std::vector<double> x1, x2;
-  for (const double a : amplitudes) {
-    for (const double t : periods) {
+  for (const double a : kSurfaceAmplitudes) {
+    for (const double t : kSurfacePeriods) {
       x1.push_back(a);
       x2.push_back(t);
     }
@@ -66,7 +67,8 @@ TEST(SurfaceGrid, KeepsEachCellInRowOrderWithItsInterval) {
   // A grid with a cell without trials: NaN there, the rest fitted.
   std::vector<std::int64_t> trials = grid.trials, exceedances = grid.exceedances;
   trials[4] = exceedances[4] = 0;
-  const SurfaceGrid holed = surface_from_counts(amplitudes, periods, trials, exceedances);
+  const SurfaceGrid holed =
+      surface_from_counts(kSurfaceAmplitudes, kSurfacePeriods, trials, exceedances);
   EXPECT_TRUE(std::isnan(holed.probability[4]) && std::isnan(holed.ci_low[4]));
   EXPECT_EQ(holed.gof.dof, 30 - 1 - 3);
 }
