@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/random_trials.hpp"
+
 namespace blockfrag {
 namespace {
 
@@ -107,13 +109,14 @@ TEST(PlanarImpact, SimultaneousLawOnOneContactAgreesWithThePapersLaw) {
   EXPECT_GT(compared, 3000);
 }
 
-// Random impacts at 2 to 4 contacts at once (4,000: about a second, 16 s under the sanitizers):
+// Random impacts at 2 to 4 contacts at once (4,000: about a second, 45 s under the sanitizers):
 // kinetic energy never grows, no contact leaves approaching, every impulse is in its cone.
 TEST(PlanarImpact, RandomMultiContactImpactsNeverCreateEnergy) {
   RandomImpact make;
   double largest_gain = -1.0;
   int capped = 0, impacts = 0, not_unique = 0;
-  for (int trial = 0; trial < 4000; ++trial) {
+  const int trials = testing::random_trials(4000);
+  for (int trial = 0; trial < trials; ++trial) {
     const int count = 2 + static_cast<int>(3 * make.unit(make.random));
     std::vector<PlanarContact> contacts;
     for (int i = 0; i < count; ++i) contacts.push_back(make.contact());
@@ -144,9 +147,10 @@ TEST(PlanarImpact, RandomMultiContactImpactsNeverCreateEnergy) {
       EXPECT_LE(std::abs(impact.tangent[i]), mu * impact.normal[i] * (1 + 1e-12) + 1e-12);
     }
   }
-  EXPECT_GT(impacts, 3600);
-  // The cap is exercised, and so the test would see a law that creates energy.
-  EXPECT_GT(capped, 10);
+  // Nine in ten draws approach (3,859 of 4,000); the cap is exercised (237 of them), and so the
+  // test would see a law that creates energy.
+  EXPECT_GT(impacts, trials * 9 / 10);
+  EXPECT_GT(capped, trials / 400);
   char gain[32];
   std::snprintf(gain, sizeof gain, "%.3g", largest_gain);
   RecordProperty("largest_relative_gain", gain);

@@ -11,6 +11,7 @@
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/simulate.hpp"
+#include "tests/support/random_trials.hpp"
 #include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
@@ -129,7 +130,8 @@ TEST(SeatSimulation, FlatSeatReproducesTheFlatGround) {
 // such scenes: 5e-11 rad in max |theta|, 4e-7 R in slides, 1e-9 s in onsets).
 TEST(SeatSimulation, RandomFlatSeatsReproduceTheFlatGround) {
   PortableUniform unit(20261125);
-  for (int trial = 0; trial < 24; ++trial) {
+  const int trials = testing::random_trials(24);
+  for (int trial = 0; trial < trials; ++trial) {
     Scene scene;
     scene.solver.method = Method::rk4;
     double base_y = 0.0;
