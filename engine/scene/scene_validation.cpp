@@ -81,6 +81,9 @@ void validate_seat(const Scene& scene) {
     throw InvalidInput("invalid scene: seat:" + where + " " + defect->rule);
   }
   require(scene.initial.theta == 0.0, "initial theta must be 0 on a seat (the block rests on it)");
+  require(model_named_by(scene.effects) == Model::full,
+          "effects on a seat must be \"auto\" or the full model's (rocking, sliding, impact, "
+          "flight): a seat's simulation has no reduced models");
   const std::size_t watched = points.size() + scene_block_vertices(scene).size();
   require(watched <= static_cast<std::size_t>(kMaxSeatClearances),
           "seat: the block's vertices and the seat's points number " + std::to_string(watched) +

@@ -201,6 +201,12 @@ void read_scene_seat(ObjectReader& root, bool block_valid, const JsonPointer& pa
   if (scene.initial.theta != 0.0) {
     errors.add(path / "initial" / "theta", "must be 0 with a seat (the block rests on it)");
   }
+  const Effects& e = scene.effects;
+  if (!e.automatic && !(e.rocking && e.sliding && e.impact && e.flight)) {
+    errors.add(path / "effects",
+               "must be \"auto\" or the full model's (rocking, sliding, impact, flight) with a "
+               "seat: a seat's simulation has no reduced models");
+  }
 }
 
 InitialState read_initial(ObjectReader reader) {

@@ -51,6 +51,11 @@ TEST(SeatJson, EveryRuleAtItsPath) {
   json tilted = rectangle_on(json::parse("[[-10, -1], [10, -1]]"));
   tilted["initial"] = {{"theta", 0.1}};
   EXPECT_THAT(scene_errors(tilted), HasSubstr("/initial/theta: must be 0 with a seat"));
+  json sliding = rectangle_on(json::parse("[[-10, -1], [10, -1]]"));
+  sliding["effects"] = {"sliding"};
+  EXPECT_THAT(scene_errors(sliding),
+              HasSubstr("/effects: must be \"auto\" or the full model's (rocking, sliding, impact, "
+                        "flight) with a seat"));
 }
 
 // A block with errors of its own is not fitted to the seat (its vertices mean nothing).

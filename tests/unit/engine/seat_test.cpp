@@ -149,6 +149,21 @@ TEST(Seat, SceneWithASeatIsChecked) {
         }
       },
       InvalidInput);
+  // The seat's simulation is the full model's: a reduced one named is refused, not ignored.
+  scene.initial.theta = 0.0;
+  scene.effects = Effects{false, true, false, true, false, false};  // Housner with impacts
+  EXPECT_THROW(
+      {
+        try {
+          validate_scene(scene);
+        } catch (const InvalidInput& error) {
+          EXPECT_THAT(error.what(), HasSubstr("effects on a seat must be \"auto\" or the full"));
+          throw;
+        }
+      },
+      InvalidInput);
+  scene.effects = Effects{false, true, true, true, true, false};
+  EXPECT_NO_THROW(validate_scene(scene));
 }
 
 }  // namespace
