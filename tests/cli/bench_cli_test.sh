@@ -6,18 +6,9 @@
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
 
-check() {
-  local name=$1
-  shift
-  if "$@"; then pass; else fail "$name"; fi
-}
 
 suite="$BLOCKFRAG_SOURCE_DIR/configs/accuracy_suite.json"
 
-run() {
-  "$BLOCKFRAG" "$@" >"$work/out" 2>"$work/err"
-  code=$?
-}
 
 # --- bench --------------------------------------------------------------------------------------------
 run bench "$BLOCKFRAG_SOURCE_DIR/configs/paper_example.json" --repeat 3

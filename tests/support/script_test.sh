@@ -14,3 +14,16 @@ fail() {
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+# check NAME COMMAND...: one pass when COMMAND succeeds, one fail named NAME when it does not.
+check() {
+  local name=$1
+  shift
+  if "$@"; then pass; else fail "$name"; fi
+}
+
+# run ARGUMENTS...: blockfrag with them; stdout in $work/out, stderr in $work/err, exit code in $code.
+run() {
+  "$BLOCKFRAG" "$@" >"$work/out" 2>"$work/err"
+  code=$?
+}
