@@ -93,10 +93,14 @@ def load(script):
 
 def call(script, *args):
     """The script's main() in this process, like run() but without starting Python and importing
-    matplotlib again (most of a run's time): for the runs that should succeed."""
+    matplotlib again (most of a run's time). An exception main() lets out fails the test, as a
+    traceback would; argparse's errors exit, and their code is the run's."""
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = load(script).main([str(a) for a in args])
+        try:
+            code = load(script).main([str(a) for a in args])
+        except SystemExit as exit_request:
+            code = exit_request.code
     return subprocess.CompletedProcess(args, code, out.getvalue(), err.getvalue())
 
 
@@ -231,23 +235,23 @@ def test_history_plot_shows_the_modes_present(work):
 
 
 def test_history_plot_refuses_a_missing_file(work):
-    assert_clean_error(run(PLOT_HISTORY, work / "absent.csv", "-o", work / "x.png"), "absent.csv")
+    assert_clean_error(call(PLOT_HISTORY, work / "absent.csv", "-o", work / "x.png"), "absent.csv")
     assert not (work / "x.png").exists()
 
 
 def test_history_plot_names_a_missing_column(work):
     write_history(work / "h.csv", drop="normal_per_weight")
-    assert_clean_error(run(PLOT_HISTORY, work / "h.csv", "-o", work / "x.png"), "normal_per_weight")
+    assert_clean_error(call(PLOT_HISTORY, work / "h.csv", "-o", work / "x.png"), "normal_per_weight")
 
 
 def test_history_plot_refuses_an_unknown_mode(work):
     write_history(work / "h.csv", modes=["rock"] * 300 + ["tumbling"] * 301)
-    assert_clean_error(run(PLOT_HISTORY, work / "h.csv", "-o", work / "x.png"), "tumbling")
+    assert_clean_error(call(PLOT_HISTORY, work / "h.csv", "-o", work / "x.png"), "tumbling")
 
 
 def test_history_plot_reports_an_unwritable_output(work):
     write_history(work / "h.csv")
-    assert_clean_error(run(PLOT_HISTORY, work / "h.csv", "-o", work / "no_dir" / "x.png"), "cannot write")
+    assert_clean_error(call(PLOT_HISTORY, work / "h.csv", "-o", work / "no_dir" / "x.png"), "cannot write")
 
 
 # --- plot_fragility.py --------------------------------------------------------------------------------
@@ -284,17 +288,17 @@ def test_fragility_summary_prints_the_tables(work):
 
 
 def test_fragility_plot_refuses_a_missing_file(work):
-    assert_clean_error(run(PLOT_FRAGILITY, work / "absent.h5", "-o", work / "f.png"), "absent.h5")
+    assert_clean_error(call(PLOT_FRAGILITY, work / "absent.h5", "-o", work / "f.png"), "absent.h5")
 
 
 def test_fragility_plot_refuses_a_file_that_is_not_hdf5(work):
     write_history(work / "h.csv")
-    assert_clean_error(run(PLOT_FRAGILITY, work / "h.csv", "--summary"), "h.csv")
+    assert_clean_error(call(PLOT_FRAGILITY, work / "h.csv", "--summary"), "h.csv")
 
 
 def test_fragility_plot_refuses_a_file_without_fragility(work):
     write_study(work / "s.h5", with_fragility=False)
-    assert_clean_error(run(PLOT_FRAGILITY, work / "s.h5", "-o", work / "f.png"), "/fragility")
+    assert_clean_error(call(PLOT_FRAGILITY, work / "s.h5", "-o", work / "f.png"), "/fragility")
     assert not (work / "f.png").exists()
 
 
@@ -363,7 +367,7 @@ def test_fragility_plot_refuses_half_a_band(work):
     write_study(work / "s.h5", diagnostics=True)
     with h5py.File(work / "s.h5", "r+") as f:
         del f["fragility/overturn/band_high"]
-    assert_clean_error(run(PLOT_FRAGILITY, work / "s.h5", "-o", work / "f.png"), "band_high")
+    assert_clean_error(call(PLOT_FRAGILITY, work / "s.h5", "-o", work / "f.png"), "band_high")
 
 
 # --- plot_cloud.py ------------------------------------------------------------------------------------
@@ -452,11 +456,11 @@ def test_cloud_plot_by_limit_state_and_by_record(work):
 
 def test_cloud_plot_errors_are_one_line(work):
     write_samples(work / "s.h5")
-    assert_clean_error(run(PLOT_CLOUD, work / "s.h5", "-o", work / "x.png", "--by-record"), "--by-record")
+    assert_clean_error(call(PLOT_CLOUD, work / "s.h5", "-o", work / "x.png", "--by-record"), "--by-record")
     result = call(PLOT_CLOUD, work / "s.h5", "-o", work / "x.png", "--limit-state", "nope")
     assert result.returncode == 1 and "nope" in result.stderr and "rocking_half" in result.stderr, result.stderr
     write_study(work / "f.h5")
-    assert_clean_error(run(PLOT_CLOUD, work / "f.h5", "-o", work / "x.png"), "/samples/im")
+    assert_clean_error(call(PLOT_CLOUD, work / "f.h5", "-o", work / "x.png"), "/samples/im")
     assert not (work / "x.png").exists()
 
 
@@ -525,7 +529,7 @@ def test_motion_plot_takes_a_polygon_about_its_centroid(work):
 def test_motion_plot_refuses_another_scene(work):
     write_motion(work / "h.csv")
     (work / "tall.json").write_text(json.dumps({"block": {"half_width": 0.5, "half_height": 3.0}}))
-    assert_clean_error(run(PLOT_MOTION, work / "h.csv", work / "tall.json", "-o", work / "x.png"),
+    assert_clean_error(call(PLOT_MOTION, work / "h.csv", work / "tall.json", "-o", work / "x.png"),
                        "tall.json", "scene of that history")
     result = call(PLOT_MOTION, work / "h.csv", work / "absent.json", "-o", work / "x.png")
     assert result.returncode == 1 and "absent.json" in result.stderr, result.stderr
@@ -584,12 +588,12 @@ def test_motion_plot_refuses_a_block_in_the_seat(work):
     (work / "flat.json").write_text(json.dumps(RECTANGLE))
     # Sliding 0.2 m right pushes its right corner 0.2 m under the incline (0.14 m across it).
     write_seat_motion(work / "h.csv", into_incline=0.2)
-    assert_clean_error(run(PLOT_MOTION, work / "h.csv", work / "seat.json", "-o", work / "x.png"),
+    assert_clean_error(call(PLOT_MOTION, work / "h.csv", work / "seat.json", "-o", work / "x.png"),
                        "into the seat", "seat.json")
     assert not (work / "x.png").exists()
     # Lifted 0.1 m off its corner while rocking: it floats.
     write_seat_motion(work / "h.csv", lift=0.1)
-    assert_clean_error(run(PLOT_MOTION, work / "h.csv", work / "seat.json", "-o", work / "x.png"),
+    assert_clean_error(call(PLOT_MOTION, work / "h.csv", work / "seat.json", "-o", work / "x.png"),
                        "off the seat")
     # Which the fit check finds on the seat, not as on the flat ground: 0.1 m below the seat's
     # line is sunk; a corner far past the seat's end, under its level, is not (it falls).
@@ -766,9 +770,9 @@ def test_spectrum_islands_and_boundary_lines(work):
 
 
 def test_spectrum_plot_errors_are_one_line(work):
-    assert_clean_error(run(PLOT_SPECTRUM, work / "absent.h5", "-o", work / "x.png"), "absent.h5")
+    assert_clean_error(call(PLOT_SPECTRUM, work / "absent.h5", "-o", work / "x.png"), "absent.h5")
     write_study(work / "study.h5")
-    assert_clean_error(run(PLOT_SPECTRUM, work / "study.h5", "-o", work / "x.png"), "not a blockfrag spectrum")
+    assert_clean_error(call(PLOT_SPECTRUM, work / "study.h5", "-o", work / "x.png"), "not a blockfrag spectrum")
     write_spectrum(work / "s.h5")
     result = run(PLOT_SPECTRUM, work / "s.h5", "-o", work / "x.png", "--mark-point", "1")
     assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
@@ -847,10 +851,10 @@ def test_surface_plot_says_when_a_limit_state_has_no_fit(work):
 
 def test_surface_plot_errors_are_one_line(work):
     write_study(work / "study.h5")
-    assert_clean_error(run(PLOT_SURFACE, work / "study.h5", "-o", work / "x.png"), "no /fragility_surface")
-    assert_clean_error(run(PLOT_SURFACE, work / "absent.h5", "-o", work / "x.png"), "absent.h5: no such file")
+    assert_clean_error(call(PLOT_SURFACE, work / "study.h5", "-o", work / "x.png"), "no /fragility_surface")
+    assert_clean_error(call(PLOT_SURFACE, work / "absent.h5", "-o", work / "x.png"), "absent.h5: no such file")
     write_surface(work / "s.h5")
-    assert_clean_error(run(PLOT_SURFACE, work / "s.h5", "-o", work / "x.png", "--limit-state", "nope"),
+    assert_clean_error(call(PLOT_SURFACE, work / "s.h5", "-o", work / "x.png", "--limit-state", "nope"),
                        "--limit-state nope", "overturn, slide")
     result = run(PLOT_SURFACE, work / "s.h5", "-o", work / "x.png", "--contours", "0.5,1.5")
     assert result.returncode == 2 and "every probability must be in (0, 1)" in result.stderr, result.stderr
