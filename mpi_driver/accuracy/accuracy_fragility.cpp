@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 
 #include "engine/scene/block_geometry.hpp"
 #include "engine/simulate.hpp"
 #include "mpi_driver/accuracy/accuracy_metrics.hpp"
+#include "mpi_driver/accuracy/table_cell.hpp"
 #include "mpi_driver/study/sample_evaluation.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
@@ -55,12 +55,6 @@ bool exceeds_at(const LimitState& state, const StudyResults& results, std::size_
   const SampleRecord& record = results.records[i];
   return record.status == static_cast<std::int64_t>(SampleStatus::ok) &&
          exceeds(state, record, results.alphas[i]);
-}
-
-std::string table_number(double x, const char* format = "%.3g") {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, format, x);
-  return buffer;
 }
 
 double root_mean_square(const std::vector<double>& values) {
@@ -158,12 +152,12 @@ void write_fragility_table(std::ostream& out, const std::vector<FragilityDiffere
       << "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
     out << "| " << setting_label(row.setting) << " | " << row.limit_state << " | " << row.failures
-        << " | " << row.verdicts_changed << " | " << table_number(row.max_probability_difference)
-        << " | " << table_number(row.max_sampling_half_width) << " | "
-        << table_number(row.median, "%.5g") << " (" << table_number(row.reference_median, "%.5g")
-        << ") | " << table_number(row.beta, "%.4g") << " ("
-        << table_number(row.reference_beta, "%.4g") << ") | "
-        << table_number(1e3 * row.median_seconds) << " |\n";
+        << " | " << row.verdicts_changed << " | "
+        << table_cell(row.max_probability_difference, "%.3g") << " | "
+        << table_cell(row.max_sampling_half_width, "%.3g") << " | "
+        << table_cell(row.median, "%.5g") << " (" << table_cell(row.reference_median, "%.5g")
+        << ") | " << table_cell(row.beta, "%.4g") << " (" << table_cell(row.reference_beta, "%.4g")
+        << ") | " << table_cell(1e3 * row.median_seconds, "%.3g") << " |\n";
   }
 }
 
@@ -173,8 +167,8 @@ void write_design_convergence_table(std::ostream& out, const std::vector<DesignC
       << "|---|---|---|---|---|---|\n";
   for (const auto& row : rows) {
     out << "| " << row.design << " | " << row.samples_per_level << " | " << row.limit_state << " | "
-        << table_number(row.rms_relative_median_error) << " | " << table_number(row.rms_beta_error)
-        << " | " << row.fitted_replicates << " |\n";
+        << table_cell(row.rms_relative_median_error, "%.3g") << " | "
+        << table_cell(row.rms_beta_error, "%.3g") << " | " << row.fitted_replicates << " |\n";
   }
 }
 

@@ -1,6 +1,5 @@
 #include "mpi_driver/accuracy/accuracy_output.hpp"
 
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -8,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "mpi_driver/accuracy/table_cell.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
 
@@ -140,13 +140,6 @@ void write_summary(Hdf5Writer& file, const AccuracyStudy& study) {
   stat("median_steps", &SettingStatistics::median_steps);
 }
 
-std::string error_number(double x, const char* format = "%.2e") {
-  if (std::isinf(x)) return "inf";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, format, x);
-  return buffer;
-}
-
 }  // namespace
 
 void write_accuracy_hdf5(const std::filesystem::path& path, const AccuracyStudy& study,
@@ -177,10 +170,10 @@ void write_accuracy_table(std::ostream& out, const AccuracyStudy& study) {
   out << "Reference: " << setting_label(study.reference_setting)
       << "; check: " << setting_label(study.check_setting) << " on " << study.scene_names.size()
       << " scenes. Largest |check - reference|: max|theta| "
-      << error_number(check.max_error.max_abs_theta) << " rad, final theta "
-      << error_number(check.max_error.final_theta) << " rad, final slide "
-      << error_number(check.max_error.final_slide) << " m, first impact "
-      << error_number(check.max_error.first_impact_time)
+      << table_cell(check.max_error.max_abs_theta, "%.2e") << " rad, final theta "
+      << table_cell(check.max_error.final_theta, "%.2e") << " rad, final slide "
+      << table_cell(check.max_error.final_slide, "%.2e") << " m, first impact "
+      << table_cell(check.max_error.first_impact_time, "%.2e")
       << " s; verdicts that differ: " << check.wrong_verdicts << "; failures: " << check.failures
       << ".\n\n";
   out << "| setting | max err max\\|theta\\| (rad) | scenes with err max\\|theta\\| > 1e-6 | max "
@@ -191,13 +184,14 @@ void write_accuracy_table(std::ostream& out, const AccuracyStudy& study) {
   const std::size_t scenes = study.scene_names.size();
   for (const SettingResult& result : study.settings) {
     const SettingStatistics& s = result.statistics;
-    out << "| " << setting_label(result.setting) << " | " << error_number(s.max_error.max_abs_theta)
-        << " | " << s.scenes_over_target << "/" << scenes << " | "
-        << error_number(s.max_error.final_theta) << " | " << error_number(s.max_error.final_slide)
-        << " | " << error_number(s.max_error.first_impact_time) << " | " << s.wrong_verdicts << "/"
-        << scenes << " | " << s.failures << " | " << error_number(1e3 * s.median_seconds, "%.3g")
-        << " | " << error_number(1e3 * s.p95_seconds, "%.3g") << " | "
-        << error_number(s.median_rhs_evaluations, "%.0f") << " |\n";
+    out << "| " << setting_label(result.setting) << " | "
+        << table_cell(s.max_error.max_abs_theta, "%.2e") << " | " << s.scenes_over_target << "/"
+        << scenes << " | " << table_cell(s.max_error.final_theta, "%.2e") << " | "
+        << table_cell(s.max_error.final_slide, "%.2e") << " | "
+        << table_cell(s.max_error.first_impact_time, "%.2e") << " | " << s.wrong_verdicts << "/"
+        << scenes << " | " << s.failures << " | " << table_cell(1e3 * s.median_seconds, "%.3g")
+        << " | " << table_cell(1e3 * s.p95_seconds, "%.3g") << " | "
+        << table_cell(s.median_rhs_evaluations, "%.0f") << " |\n";
   }
 }
 
