@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/errors.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -113,6 +114,7 @@ class Choice {
       }
       d(r) = row.normal ? c.target_n - c.free_n : -c.free_t;
     }
+    if (p_.must_move && pins(j)) return std::nullopt;
     // More fixed contact values than the body's three freedoms (as when three contacts hold a
     // block at rest): the body must be able to reach them at all. Checked first, as it rules out
     // most such choices at the cost of one small least-squares solve.
@@ -154,6 +156,12 @@ class Choice {
     std::size_t contact;
     bool normal;
   };
+
+  bool pins(const Jacobian& j) const {
+    std::vector<Eigen::RowVector3d> rows;
+    for (Eigen::Index r = 0; r < j.rows(); ++r) rows.push_back(j.row(r));
+    return pins_body(rows, p_.length);
+  }
 
   Eigen::Vector3d generalized(const Column& col) const {
     const LcpContact& c = p_.contacts[col.contact];
@@ -218,6 +226,18 @@ double difference(const LcpProblem& p, const Eigen::Vector3d& a, const Eigen::Ve
 Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction) {
   // u = (x' - theta' r_y, y' + theta' r_x): d . u = d_x x' + d_y y' + (r x d) theta'.
   return {direction.x, direction.y, c.r.x * direction.y - c.r.y * direction.x};
+}
+
+bool pins_body(const std::vector<Eigen::RowVector3d>& rows, double length) {
+  if (rows.size() < 3) return false;
+  Eigen::MatrixXd scaled(static_cast<Eigen::Index>(rows.size()), 3);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    scaled.row(static_cast<Eigen::Index>(i)) =
+        rows[i].cwiseProduct(Eigen::RowVector3d(1, 1, 1 / length));
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(scaled);
+  lu.setThreshold(kSeatContactDrift);
+  return lu.rank() == 3;
 }
 
 LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search) {

@@ -33,6 +33,10 @@ struct LcpProblem {
   double friction;
   double tolerance;  // absolute, in y's units
   double length;     // R: a theta component is compared through R times it
+  // Skip the choices whose fixed contact values leave the body no freedom (pins_body): a body
+  // that may not stay put (its rest has ended) must move, and is given the first choice that lets
+  // it.
+  bool must_move = false;
 };
 
 struct LcpSolution {
@@ -49,5 +53,10 @@ LcpSolution solve_contact_lcp(const LcpProblem& problem,
 
 // y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
 Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction);
+
+// Whether these rows (contact_row's, each held at a fixed value) leave the body no freedom: rank 3,
+// theta's column taken through `length` (R) so that the rank test compares like with like, to the
+// seat's contact drift (engine/tolerances.hpp).
+bool pins_body(const std::vector<Eigen::RowVector3d>& rows, double length);
 
 }  // namespace blockfrag

@@ -42,7 +42,8 @@ ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelo
 PlanarForces resolve_contact_forces(const PlanarForcesInput& in, LcpSearch search) {
   const Eigen::Vector3d inverse_mass(1.0, 1.0, 1.0 / in.inertia_per_mass);
   const BodyAcceleration free{in.applied.x, in.applied.y, 0.0};
-  LcpProblem problem{{}, inverse_mass, in.friction, kForceTolerance * in.g, in.length};
+  LcpProblem problem{{},        inverse_mass, in.friction, kForceTolerance * in.g,
+                     in.length, in.must_move};
   for (const PlanarContact& c : in.contacts) {
     const ContactAcceleration y = contact_acceleration(c, in.velocity, free);
     const double u_t = contact_velocity(c, in.velocity).tangent;

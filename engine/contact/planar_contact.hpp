@@ -72,6 +72,8 @@ struct PlanarForcesInput {
   double slip_velocity;
   double g;       // scales the tolerances (accelerations are compared to 1e-9 g)
   double length;  // R, m: theta'' is compared through R theta''
+  // The body may not stay put: choices that leave it no freedom are skipped (LcpProblem).
+  bool must_move = false;
 };
 
 struct PlanarForces {
