@@ -106,7 +106,7 @@ BootstrapResult bootstrap_stripes(const std::vector<double>& im,
                                   const UniformDraw& uniform) {
   std::vector<LognormalFit> fits;
   fits.reserve(static_cast<std::size_t>(resamples));
-  std::vector<std::int64_t> drawn(im.size());
+  std::vector<std::int64_t> drawn(im.size()), previous;
   for (int b = 0; b < resamples; ++b) {
     for (std::size_t j = 0; j < im.size(); ++j) {
       const double p = trials[j] > 0
@@ -114,7 +114,15 @@ BootstrapResult bootstrap_stripes(const std::vector<double>& im,
                            : 0.0;
       drawn[j] = binomial_quantile(uniform(static_cast<std::uint64_t>(b), j), trials[j], p);
     }
-    fits.push_back(fit_lognormal_fragility(im, trials, drawn));
+    // A level observed at 0 or 1 draws its own count every time, so where every level is (a grid
+    // of one sample a level) all resamples are the data: the fit, a pure function of the counts,
+    // is taken once for a run of equal draws.
+    if (drawn == previous) {
+      fits.push_back(fits.back());
+    } else {
+      fits.push_back(fit_lognormal_fragility(im, trials, drawn));
+      previous = drawn;
+    }
   }
   const double im_max = im.empty() ? 1.0 : *std::max_element(im.begin(), im.end());
   return summarise(resamples, fits, im_max);

@@ -324,6 +324,37 @@ TEST(Bootstrap, StripesIntervalsAreThoseOfTheRefitsThatExist) {
   EXPECT_TRUE(std::isnan(none.band_low[100]));
 }
 
+TEST(Bootstrap, StripesResamplesThatRepeatADrawKeepItsRefit) {
+  // The levels of the test above, drawing {1, 1, 2} three times and {0, 2, 1} once between them:
+  // the intervals are those of the four refits, each of its own draw (a refit kept from the wrong
+  // draw moves an order statistic the interval reads).
+  const std::vector<double> im{1.0, 2.0, 4.0};
+  const std::vector<std::int64_t> trials{2, 2, 2}, exceedances{1, 1, 1};
+  const std::vector<std::vector<std::int64_t>> drawn{{1, 1, 2}, {1, 1, 2}, {0, 2, 1}, {1, 1, 2}};
+  std::vector<std::vector<double>> table;
+  std::vector<double> medians, betas;
+  for (const auto& draw : drawn) {
+    std::vector<double> row;
+    for (const auto z : draw) row.push_back(z == 0 ? 0.1 : z == 1 ? 0.5 : 0.9);
+    table.push_back(row);
+    const LognormalFit fit = fit_lognormal_fragility(im, trials, draw);
+    ASSERT_EQ(fit.status, FitStatus::ok);
+    medians.push_back(fit.median);
+    betas.push_back(fit.beta);
+  }
+  ASSERT_NE(medians[0], medians[2]);
+  ASSERT_NE(betas[0], betas[2]);
+  // Type 7 of four values at 2.5 % and 97.5 %: 0.075 and 2.925 order statistics from the first.
+  std::sort(medians.begin(), medians.end());
+  std::sort(betas.begin(), betas.end());
+  const auto r = bootstrap_stripes(im, trials, exceedances, 4, from_table(table));
+  EXPECT_EQ(r.fitted, 4);
+  EXPECT_NEAR(r.median_low, between(medians[0], medians[1], 0.075), 1e-14);
+  EXPECT_NEAR(r.median_high, between(medians[2], medians[3], 0.925), 1e-14);
+  EXPECT_NEAR(r.beta_low, between(betas[0], betas[1], 0.075), 1e-14);
+  EXPECT_NEAR(r.beta_high, between(betas[2], betas[3], 0.925), 1e-14);
+}
+
 TEST(Bootstrap, CloudResamplesPickSamplesUniformly) {
   // Six samples; a uniform in [k / 6, (k + 1) / 6) picks sample k. Two resamples chosen by hand,
   // refitted here as clouds of the picked samples.
