@@ -324,6 +324,7 @@ json scene_to_json(const Scene& scene) {
   if (scene.duration) out["duration"] = *scene.duration;
   if (scene.max_duration) out["max_duration"] = *scene.max_duration;
   if (scene.dam) out["dam"] = dam_to_json(*scene.dam);
+  if (scene.seat) out["seat"] = scene.seat->points;
   if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) {
     out["vertical_motion"] = ground_motion_to_json(scene.vertical_motion);
   }

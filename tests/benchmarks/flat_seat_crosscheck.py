@@ -22,7 +22,7 @@ angles in rad, slides over R (the block's farthest corner from its centre of mas
 gives the counts per group (the suite, the random scenes by solver: the agreement depends on it),
 the largest |difference| per field with its scene and seat and how many scenes exceed 1e-9 on
 either seat, the verdict differences, the runs without a result (refused by the seat's engine, or
-stopped by the budgets: 10,000 events, 6 s) and the bookkeeping fields the engines are not expected to share
+stopped by the budgets: 10,000 events, 6 s of CPU time) and the bookkeeping fields the engines are not expected to share
 (what each counts as an impact or an event, the steps each takes). --figure draws, per field, the
 fraction of seat runs whose difference is at least x.
 
@@ -30,7 +30,7 @@ fraction of seat runs whose difference is at least x.
         --figure docs/flat_seat_crosscheck.png
 
 About 2.5 minutes on 2 cores for the suite and 1,000 random scenes, most of it in the seat runs
-stopped at the time limit. Each scene's files are written into a fresh temporary folder, removed
+stopped at the CPU-time limit. Each scene's files are written into a fresh temporary folder, removed
 after its runs.
 """
 
@@ -39,6 +39,8 @@ import concurrent.futures
 import json
 import math
 import random
+import resource
+import signal
 import subprocess
 import sys
 import tempfile
@@ -64,10 +66,14 @@ REFUSED = 2
 # run that ended took over the suite and 1,000 random scenes: 3,473 on the flat ground (rest under
 # a ringing dam crest), 5,611 on a seat.
 EVENT_BUDGET = 10000
-# s: a run still going after this has no summary (a seat's storm of contact changes among three
-# contacts costs up to 10 ms an event); the slowest run that ended took 1.2 s on a seat (5,611
-# events) and 0.07 s on the flat ground.
+# s of CPU time: a run that has used this much has no summary (a seat's storm of contact changes
+# among three contacts costs up to 10 ms an event); the slowest run that ended took 1.2 s on a seat
+# (5,611 events) and 0.07 s on the flat ground. CPU time, not wall time: a machine loaded by other
+# work slows a run's clock, not its work, and a limit on the clock turned slow runs into failures.
 DEFAULT_RUN_TIMEOUT = 6.0
+# A run that has not ended after this many times its CPU limit of wall time is stopped too: one
+# that waits without working would never reach the CPU limit.
+WALL_LIMIT_FACTOR = 20
 
 VERDICTS = ("overturned", "fell", "settled")
 # Each compared field with its unit: "R" is divided by the block's size before comparing.
@@ -263,23 +269,43 @@ def with_event_budget(scene):
     return dict(scene, solver=solver)
 
 
+def cpu_limit(seconds):
+    """The CPU time (s) a run may use: `seconds` rounded up to whole seconds, as the kernel counts it."""
+    return max(1, math.ceil(seconds))
+
+
+def children_cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def simulate(blockfrag, scene, path, timeout):
-    """The summary of one run, or {"refused": message} / {"error": message}; with its wall time."""
+    """The summary of one run, or {"refused": message} / {"error": message}; with its wall time
+    ("seconds") and CPU time ("cpu_seconds")."""
     path.write_text(json.dumps(with_event_budget(scene)))
-    started = time.monotonic()
+    cpu = cpu_limit(timeout)
+
+    def limit_cpu():  # in the child, before it runs blockfrag: the kernel stops it (SIGXCPU) there
+        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
+
+    started, cpu_started = time.monotonic(), children_cpu_seconds()
     try:
         result = subprocess.run([blockfrag, "simulate", str(path), "--summary-json"], capture_output=True,
-                                text=True, timeout=timeout, check=False)
+                                text=True, timeout=WALL_LIMIT_FACTOR * cpu, check=False, preexec_fn=limit_cpu)
     except subprocess.TimeoutExpired:
-        return {"error": f"no summary within {timeout:g} s", "seconds": timeout}
-    seconds = time.monotonic() - started
+        # subprocess.run has killed and waited for the child: its CPU time is counted.
+        return {"error": f"no summary within {WALL_LIMIT_FACTOR * cpu:g} s of wall time",
+                "seconds": time.monotonic() - started, "cpu_seconds": children_cpu_seconds() - cpu_started}
+    seconds, cpu_seconds = time.monotonic() - started, children_cpu_seconds() - cpu_started
+    if result.returncode in (-signal.SIGXCPU, -signal.SIGKILL):
+        return {"error": f"no summary within {cpu:g} s of CPU time", "seconds": seconds, "cpu_seconds": cpu_seconds}
     message = result.stderr.strip().splitlines()[-1] if result.stderr.strip() else f"exit {result.returncode}"
     if result.returncode == REFUSED:
-        return {"refused": message.replace(str(path), path.name), "seconds": seconds}
+        return {"refused": message.replace(str(path), path.name), "seconds": seconds, "cpu_seconds": cpu_seconds}
     try:
-        return dict(json.loads(result.stdout), seconds=seconds)
+        return dict(json.loads(result.stdout), seconds=seconds, cpu_seconds=cpu_seconds)
     except json.JSONDecodeError:
-        return {"error": f"exit {result.returncode}: {message}", "seconds": seconds}
+        return {"error": f"exit {result.returncode}: {message}", "seconds": seconds, "cpu_seconds": cpu_seconds}
 
 
 def run_case(blockfrag, timeout, case):
@@ -461,10 +487,11 @@ def bookkeeping_table(compared):
 
 
 def timing_line(results, seconds, jobs):
-    flat = sum(r["runs"]["flat"]["seconds"] for r in results)
-    seat = sum(r["runs"][s]["seconds"] for r in results for s in SEATS)
-    return (f"{seconds:.0f} s with {jobs} jobs; runs' wall time summed: flat ground {flat:.0f} s, "
-            f"seats {seat:.0f} s")
+    def summed(key, runs):
+        return sum(r["runs"][run][key] for r in results for run in runs)
+    return (f"{seconds:.0f} s with {jobs} jobs; runs' CPU time summed: flat ground "
+            f"{summed('cpu_seconds', ['flat']):.0f} s, seats {summed('cpu_seconds', SEATS):.0f} s "
+            f"(wall time {summed('seconds', ['flat']):.0f} s and {summed('seconds', SEATS):.0f} s)")
 
 
 def report(results, compared, unfinished, seconds, jobs):
@@ -541,8 +568,9 @@ def main():
     parser.add_argument("--jobs", type=int, default=2, help="runs at once (default 2)")
     parser.add_argument("--no-suite", action="store_true", help="the random scenes only")
     parser.add_argument("--timeout", type=float, default=DEFAULT_RUN_TIMEOUT,
-                        help=f"s a run may take before it counts as without a summary "
-                             f"(default {DEFAULT_RUN_TIMEOUT:g})")
+                        help=f"s of CPU time a run may use before it counts as without a summary, rounded up "
+                             f"to whole seconds (default {DEFAULT_RUN_TIMEOUT:g}; a run is also stopped after "
+                             f"{WALL_LIMIT_FACTOR} times this of wall time)")
     parser.add_argument("--adaptive-tolerance", type=float,
                         help="run every adaptive scene (the suite's too) at this tolerance instead of its own")
     parser.add_argument("--figure", type=Path, help="write the differences' distributions here (PNG)")

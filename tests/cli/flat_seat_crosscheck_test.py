@@ -82,8 +82,8 @@ print(json.dumps(summary))
 
 def run(blockfrag, scratch, output, *args):
     """The script's run, its JSON output read back (None if it wrote none)."""
-    # Every run that should end does within a second or two; the script's wall-clock limit is set far
-    # above that so that a loaded machine (or the sanitizers) cannot turn a slow run into "no result".
+    # Every run that should end does within a second or two of CPU time; the script's CPU-time limit
+    # is set far above that so that the sanitizers cannot turn a slow run into "no result".
     timeout = ["--timeout", "120"]
     result = subprocess.run([sys.executable, str(SCRIPT), "--blockfrag", str(blockfrag), "--json", str(output),
                              *timeout, *args], capture_output=True, text=True, timeout=600,

@@ -1,5 +1,5 @@
-// The scene's "seat" from JSON: every rule refused at its path, and a seat that fits refused as
-// not simulated yet.
+// The scene's "seat" from JSON: every rule refused at its path, a seat that fits accepted, and the
+// canonical scene keeping it.
 #include "mpi_driver/config/seat_json.hpp"
 
 #include <string>
@@ -7,6 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "mpi_driver/config/scene_json.hpp"
 #include "tests/support/scene_json_errors.hpp"
 
 namespace blockfrag {
@@ -31,6 +32,18 @@ using testing::scene_errors;
 TEST(SeatJson, AFittingSeatIsAccepted) {
   EXPECT_EQ(scene_errors(rectangle_on(json::parse("[[-10, -1], [0.1, -1], [10, -1]]"))),
             "(accepted)");
+}
+
+// The canonical scene (a study's canonical config and hash, a sample written out as a scene file)
+// keeps the seat: without it the scene file ran the block on the flat ground's engine.
+TEST(SeatJson, TheCanonicalSceneKeepsTheSeat) {
+  const json seat = json::parse("[[-10, -1], [0.1, -1], [10, -1]]");
+  const json canonical = scene_to_json(scene_from_json(rectangle_on(seat), "scene.json"));
+  EXPECT_EQ(canonical.at("seat"), seat);
+  const Scene back = scene_from_json(canonical, "canonical.json");
+  ASSERT_TRUE(back.seat.has_value());
+  EXPECT_EQ(json(back.seat->points), seat);
+  EXPECT_EQ(scene_to_json(back), canonical);
 }
 
 TEST(SeatJson, EveryRuleAtItsPath) {

@@ -132,6 +132,7 @@ TEST(StudyConfig, HashIgnoresOutputIntervalAndSpellingButNotTheScience) {
                                                  {"/design", "monte_carlo"},
                                                  {"/inputs/friction/max", 0.91},
                                                  {"/scene/duration", 2.5},
+                                                 {"/scene/seat", {{-10, -1}, {10, -1}}},
                                                  {"/limit_states/1/theta_over_alpha", 0.6},
                                                  {"/limit_states/2/overturned_exceeds", false},
                                                  {"/bootstrap_resamples", 200},
