@@ -2,7 +2,8 @@
 # Every study in configs/ runs (with few samples per level, on 2 ranks) to a complete output; and
 # configs/slurm_study.sh, run with stand-ins for srun and scontrol, forwards a SIGTERM to the ranks,
 # requeues the interrupted job (exit 4), and on its resubmission finishes the study from the
-# checkpoint with the same output as an uninterrupted run.
+# checkpoint with the same output as an uninterrupted run. A study whose samples fail writes its
+# output, names the first three failures with their reasons, and exits 3 past its allowed fraction.
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
 
@@ -31,6 +32,35 @@ PY
   [[ $code -eq 0 ]] && pass || fail "$name: exit code $code: $(cat "$name.err")"
   "$PYTHON" "$COMPARE" "$name.h5" >/dev/null && pass || fail "$name: incomplete output"
 done
+
+# --- failed samples ---------------------------------------------------------------------------------
+# The paper's block under pulses of 0.3 to 1.5 g with a budget of 3 events: the samples that rock or
+# slide spend it (13 of 20), the ones at rest do not.
+"$PYTHON" - fails.json <<'PY'
+import json, sys
+study = {"scene": {"block": {"half_width": 0.5, "half_height": 1.0},
+                   "contact": {"friction": 0.6, "restitution": 0.6},
+                   "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 2.0, "cycles": 1},
+                   "duration": 4.0, "solver": {"max_events": 3}},
+         "intensity_measure": {"from": 0.3, "to": 1.5, "count": 20}, "samples_per_level": 1,
+         "limit_states": [{"name": "overturn", "type": "overturning"}], "seed": 1, "output": "fails.h5"}
+json.dump(study, open(sys.argv[1], "w"))
+PY
+"$BLOCKFRAG" run fails.json 2>fails.err
+code=$?
+reasons=$(grep -cE '^  sample [0-9]+ \(level [0-9]+, failed\): event budget exceeded \(3 events\)' fails.err)
+if [[ $code -eq 3 && -e fails.h5 && $reasons -eq 3 ]] &&
+  grep -q '^13 failed and 0 rejected of 20 samples' fails.err &&
+  grep -q 'more than allowed_failed_fraction = 0 of the samples gave no verdict: exit code 3' fails.err; then
+  pass
+else
+  fail "a study whose samples fail: exit $code, $reasons reasons: $(cat fails.err)"
+fi
+sed -e 's/"seed": 1/"seed": 1, "allowed_failed_fraction": 0.65/' -e 's/fails.h5/allowed.h5/' fails.json >allowed.json
+"$BLOCKFRAG" run allowed.json 2>allowed.err
+code=$?
+[[ $code -eq 0 ]] && grep -q '^13 failed and 0 rejected of 20 samples' allowed.err && pass ||
+  fail "failures within allowed_failed_fraction 0.65: exit $code: $(cat allowed.err)"
 
 # --- slurm_study.sh with stand-ins ------------------------------------------------------------------
 mkdir bin
