@@ -50,10 +50,10 @@ OutputVerdict judge_existing_output(const std::filesystem::path& path, std::uint
 }
 
 // A run started without mpirun or srun is a singleton: it talks to no other process, yet Open
-// MPI's defaults start a helper daemon and probe UCX's transports for it, 0.3 s of waiting at
-// every start (a singleton study of 20,000 scenes took 2.1 s, 0.5 s of it in MPI_Init). Such a
-// run gets the messaging layer for one machine and no daemon, unless the user's environment says
-// otherwise; a launched rank keeps whatever its launcher and the user chose.
+// MPI's defaults start a helper daemon and probe UCX's transports for it, about 0.4 s of waiting
+// at every start (a 2-scene study took 0.5 to 0.65 s, 0.13 s without them). Such a run gets the
+// messaging layer for one machine and no daemon, unless the user's environment says otherwise; a
+// launched rank keeps whatever its launcher and the user chose.
 void prefer_quick_singleton_start() {
   for (const char* launched : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"}) {
     if (std::getenv(launched)) return;
