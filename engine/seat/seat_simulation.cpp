@@ -119,6 +119,10 @@ class SeatSimulation {
   void observe(const BlockState& s);
   void stop_at(double t, const BlockState& s, SeatEvent why);
   void advance_rest(double t_stop);
+  template <class StateAt>
+  GuardWatch<SeatSystem::kGuards>::Crossing touch_before_an_end(const SeatSystem& system,
+                                                                const StateAt& state_at, double t0,
+                                                                double t1) const;
   template <class Stepper>
   void integrate_with(const SeatSystem& system, Stepper& stepper, const MotionPiece& piece,
                       double t_stop);
@@ -675,6 +679,48 @@ void SeatSimulation::advance_rest(double t_stop) {
   t_ = t_stop;
 }
 
+// A watched vertex's clearance is its height over the seat between the seat's ends and its distance
+// from the nearer end past them: it jumps from below zero to above where a vertex under a segment's
+// line passes that segment's end, and one step can hold the whole dip, which the guard's samples
+// then miss (the type B block turning downstream about its fold, its toe at the seat's downstream
+// end: the toe reached the incline 3e-6 s into a 1.6e-4 s step and was past the seat's end 6e-6 s
+// later; the block went on turning, its face 0.17 m into the incline, held by nothing). Where a
+// watched vertex passes an end in the step, its height just inside the end says whether it went
+// under the line there; if it did, its touch is located on that height, before the end.
+template <class StateAt>
+GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::touch_before_an_end(
+    const SeatSystem& system, const StateAt& state_at, double t0, double t1) const {
+  GuardWatch<SeatSystem::kGuards>::Crossing found;
+  const double first = contacts_.seat_point(0).x;
+  const double last = contacts_.seat_point(contacts_.point_count() - 1).x;
+  const double time_tolerance = kEventTimeTolerance * (1.0 + t1);
+  const std::vector<int>& watched = system.watched_vertices();
+  for (std::size_t k = 0; k < watched.size(); ++k) {
+    const int i = watched[k];
+    const double x0 = contacts_.vertex_at(i, state_at(t0)).x;
+    const double x1 = contacts_.vertex_at(i, state_at(t1)).x;
+    if (x0 < first || x0 > last || (x1 >= first && x1 <= last)) continue;
+    // Inside the seat's range > 0: how far the vertex is from the end it passes.
+    const double end = x1 > last ? last : first;
+    const auto inside = [&](double x) {
+      return (x1 > last ? end - contacts_.vertex_at(i, state_at(x)).x
+                        : contacts_.vertex_at(i, state_at(x)).x - end);
+    };
+    const double inside0 = std::abs(x0 - end);
+    if (!(inside0 > 0)) continue;
+    const double passes =
+        locate_crossing(inside, t0, t1, inside0, inside(t1), time_tolerance).before;
+    const auto height = [&](double x) { return contacts_.vertex_clearance(i, state_at(x)) / R_; };
+    const double h0 = height(t0), h_end = height(passes);
+    if (!(h0 > kArmingMargin) || h_end > 0) continue;
+    const Bracket touch = locate_crossing(height, t0, passes, h0, h_end, time_tolerance);
+    if (touch.after < found.after) {
+      found = {kFirstClearanceGuard + static_cast<int>(k), touch.after, touch.before};
+    }
+  }
+  return found;
+}
+
 // As the flat ground's modes: steps until a guard crosses zero or t_stop; a crossing is located on
 // the dense output and the state left just after it.
 template <class Stepper>
@@ -708,7 +754,9 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
     const auto least_at_ends = [&] {
       return system.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
     };
-    const auto crossing = watch.first_crossing(guards_at, t0, t, next, least_at_ends);
+    auto crossing = watch.first_crossing(guards_at, t0, t, next, least_at_ends);
+    const auto under = touch_before_an_end(system, state_at, t0, t);
+    if (under.which >= 0 && under.after < crossing.after) crossing = under;
     const int which = crossing.which;
     const double t_event = crossing.after;
     if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {

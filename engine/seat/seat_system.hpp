@@ -90,6 +90,9 @@ class SeatSystem {
                : -1;
   }
   int active_count() const { return count_; }
+  // The block vertices whose clearance is watched; vertex k of them has guard
+  // kFirstClearanceGuard + k.
+  const std::vector<int>& watched_vertices() const { return watched_vertices_; }
 
  private:
   SeatSystemContext c_;
