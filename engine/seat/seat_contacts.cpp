@@ -17,6 +17,11 @@ Vec2 minus(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
 double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
+// Two block edges at a vertex whose normals' nearness to the seat's upward direction differs by
+// less than this (times that direction's length) are equally near it: a tilt of the block by about
+// this much (rad) would swap them.
+constexpr double kNormalTie = 1e-6;
+
 // The segment from a to b: its unit direction, its left normal (up for a seat segment, inward
 // for a counter-clockwise block's edge) and its length.
 struct SegmentFrame {
@@ -130,9 +135,13 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
         if (k != arrived && vertex_on_seat[static_cast<std::size_t>(vertex)]) continue;
         const int other_edge = at_start ? (m + n - 1) % n : (m + 1) % n;
         const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
-        if (k == arrived) {
-          // The point goes on along the edge whose range it moves into (the block's base as the
-          // block slides over it), or, into neither, the one it approaches faster.
+        // How much nearer the seat's upward direction this edge's normal is than the other's.
+        const double nearer_up = dot(p.contact.normal, up) - dot(other.normal, up);
+        if (k == arrived && std::abs(nearer_up) <= kNormalTie * norm(up)) {
+          // The normals do not tell the edges apart (the block's fold in the seat's fold, its two
+          // edges symmetric about the seat's upward direction there): the point goes on along the
+          // edge whose range it moves into (the block's base as the block slides over it), or,
+          // into neither, the one it approaches faster.
           const RigidVelocity v{s.vx, s.vy, s.omega};
           const ContactVelocity here = contact_velocity(p.contact, v);
           const ContactVelocity there = contact_velocity(other, v);
@@ -152,7 +161,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
             other_edge_better = std::abs(here.tangent) < std::abs(there.tangent);
           }
           if (other_edge_better) continue;
-        } else if (dot(p.contact.normal, up) < dot(other.normal, up)) {
+        } else if (nearer_up < 0) {
           continue;
         }
       }

@@ -55,8 +55,9 @@ class SeatContacts {
   // seat point never pushes on the upstream face above it).
   // A seat point that has just reached the block (`arrived`) is taken even at a vertex on the
   // seat (that vertex is passing the seat's end or a bend, and the point carries the block from
-  // there), on the edge there whose range it moves into, or if that does not decide, on the one it
-  // approaches faster: the one it came in through.
+  // there), on the same edge; where the two edges' normals are equally near the seat's upward
+  // direction (the block's fold in the seat's fold), on the edge whose range it moves into, or if
+  // that does not decide, on the one it approaches faster: the one it came in through.
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
                                  const std::optional<SeatPair>& left, int arrived) const;
 

@@ -35,5 +35,26 @@ TEST(DamTypeBRecordSuite, SamplesThatRanOutOfTheBudgetsComeToRest) {
   }
 }
 
+// Samples 116 and 127 (0.8 g) made 100,000 contact changes 4e-11 s apart at t = 4.914 s and 6.129 s.
+// The block's heel had slid 8e-8 m past the seat's upstream end, and as the block turned about its
+// fold the heel came down on it: the seat's end was taken as a contact on the upstream face, not
+// on the base it lay on, and the face's horizontal normal carried the block
+// (tests/unit/engine/seat_contacts_test.cpp). Now the block rocks on and comes to rest.
+TEST(DamTypeBRecordSuite, SamplesWhoseHeelCameDownOnTheSeatsEndComeToRest) {
+  const StudyConfig config = read_study_config(std::filesystem::path(BLOCKFRAG_SOURCE_DIR) /
+                                               "configs/dam_type_b_record_suite.json");
+  StudySampler sampler(config);
+  for (const std::int64_t index : {116, 127}) {
+    SCOPED_TRACE("sample " + std::to_string(index));
+    const Summary s = simulate(sampler.draw(index).scene);
+    ASSERT_EQ(s.status, Status::ok) << s.status_reason;
+    EXPECT_TRUE(s.settled);
+    EXPECT_FALSE(s.overturned);
+    EXPECT_FALSE(s.fell);
+    EXPECT_EQ(s.modes.back().mode, ModeKind::rest);
+    EXPECT_NEAR(s.final_theta, 0.0, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace blockfrag

@@ -1,0 +1,67 @@
+// Where a block touches its seat (engine/seat/seat_contacts.hpp): which contact a seat point that
+// reaches the block at one of its corners is taken as.
+#include "engine/seat/seat_contacts.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/type_b_block.hpp"
+
+namespace blockfrag {
+namespace {
+
+using testing::kFoldX;
+using testing::kTypeB;
+using testing::kTypeBSeat;
+
+bool found(const std::vector<SeatPair>& pairs, const SeatPair& pair) {
+  return std::find(pairs.begin(), pairs.end(), pair) != pairs.end();
+}
+
+// The type B block's heel has slid 8e-8 m past the seat's upstream end, and the block turns
+// upstream about its fold, so the heel comes down: the seat's end reaches the block's base 8e-8 m
+// from the heel, inside the upstream face's line by as much. It is a contact on the base, whose
+// normal is up, not on the face, whatever the point's motion along the face (it moves up it, as
+// the block comes down). Taken on the face, the contact's horizontal normal carried the block,
+// and the storm of record suite samples 116 and 127 followed.
+TEST(SeatContacts, ASeatPointAPassedCornerComesDownOnIsOnTheEdgeItLiesOn) {
+  const SeatContacts contacts(kTypeB, kTypeBSeat);
+  const Vec2 centre = contacts.rest_centre();
+  const double omega = 1e-4;  // rad/s, upstream (counter-clockwise) about the fold
+  BlockState s;
+  s.x = centre.x - 8e-8;
+  s.y = centre.y;
+  s.vx = -omega * centre.y;
+  s.vy = omega * (centre.x - kFoldX);
+  s.omega = omega;
+  const double R = 12.1;
+  const int seat_end = 0;  // the seat's upstream end
+  const std::vector<SeatPair> pairs = contacts.touching(s, 1e-6 * R, std::nullopt, seat_end);
+  const int base = 0, upstream_face = 5;  // block edges from vertex 0 (the heel) and to it
+  EXPECT_TRUE(found(pairs, {ContactKind::seat_point, base, seat_end}));
+  EXPECT_FALSE(found(pairs, {ContactKind::seat_point, upstream_face, seat_end}));
+}
+
+// With the heel exactly at the seat's end, the seat's end is on the base whichever way the block
+// moves: sliding upstream over it, or coming down on it (the point moving up the face).
+TEST(SeatContacts, ASeatPointAtTheHeelIsOnTheBaseWhicheverWayTheBlockMoves) {
+  const SeatContacts contacts(kTypeB, kTypeBSeat);
+  const Vec2 centre = contacts.rest_centre();
+  for (const double omega : {0.0, 1e-4, -1e-4}) {
+    BlockState s;
+    s.x = centre.x;
+    s.y = centre.y;
+    s.vx = -0.1 - omega * centre.y;
+    s.vy = omega * (centre.x - kFoldX);
+    s.omega = omega;
+    const std::vector<SeatPair> pairs = contacts.touching(s, 1e-6 * 12.1, std::nullopt, 0);
+    EXPECT_TRUE(found(pairs, {ContactKind::seat_point, 0, 0})) << omega;
+    EXPECT_FALSE(found(pairs, {ContactKind::seat_point, 5, 0})) << omega;
+  }
+}
+
+}  // namespace
+}  // namespace blockfrag
