@@ -126,8 +126,7 @@ inline constexpr int kMaxStalledEvents = 100;
 // by several contacts, whose forces the contact problem cannot tell apart, can flip between its
 // equally valid force distributions 4e-11 s apart, each a new time, at a millisecond of CPU each.
 // Most such storms end within a few thousand changes; kMaxSeatInstantEvents fails the sample at
-// 100 s of CPU at most (in the type B record-suite study, samples 116, 127, 151 and 183 of 360,
-// where the seat's upstream end, meeting the block's heel, is taken on its upstream face).
+// 100 s of CPU at most.
 inline constexpr double kSeatInstant = 1e-6;
 inline constexpr int kMaxSeatInstantEvents = 100'000;
 

@@ -53,11 +53,11 @@ class SeatContacts {
   // edges there only when that vertex is on no seat segment, and then on the edge whose normal is
   // nearer the seat's upward one: where a vertex meets a vertex, the seat pushes up (the heel's
   // seat point never pushes on the upstream face above it).
-  // A seat point that has just reached the block (`arrived`) is taken even at a vertex on the
-  // seat (that vertex is passing the seat's end or a bend, and the point carries the block from
-  // there), on the same edge; where the two edges' normals are equally near the seat's upward
-  // direction (the block's fold in the seat's fold), on the edge whose range it moves into, or if
-  // that does not decide, on the one it approaches faster: the one it came in through.
+  // Not even a seat point that has just reached the block (`arrived`) is taken at a vertex on the
+  // seat: that vertex's own contact carries the block there. Where the two edges' normals are
+  // equally near the seat's upward direction (the block's fold in the seat's fold), an arrived
+  // point is taken on the edge whose range it moves into, or if that does not decide, on the one
+  // it approaches faster: the one it came in through.
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
                                  const std::optional<SeatPair>& left, int arrived) const;
 
