@@ -35,11 +35,11 @@ TEST(DamTypeBRecordSuite, SamplesThatRanOutOfTheBudgetsComeToRest) {
   }
 }
 
-// Samples 116 and 127 (0.8 g) made 100,000 contact changes 4e-11 s apart at t = 4.914 s and 6.129 s.
-// The block's heel had slid 8e-8 m past the seat's upstream end, and as the block turned about its
-// fold the heel came down on it: the seat's end was taken as a contact on the upstream face, not
-// on the base it lay on, and the face's horizontal normal carried the block
-// (tests/unit/engine/seat_contacts_test.cpp). Now the block rocks on and comes to rest.
+// Samples 116 and 127 (0.8 g): the block's heel slides 8e-8 m past the seat's upstream end, and as
+// the block turns about its fold the heel comes down on it. Taken as a contact on the upstream
+// face, not on the base the heel lies on, the seat's end let the face's horizontal normal carry
+// the block, and the contact state changed 100,000 times 4e-11 s apart (at t = 4.914 s and 6.129
+// s; tests/unit/engine/seat_contacts_test.cpp). Taken on the base, the block rocks on and rests.
 TEST(DamTypeBRecordSuite, SamplesWhoseHeelCameDownOnTheSeatsEndComeToRest) {
   const StudyConfig config = read_study_config(std::filesystem::path(BLOCKFRAG_SOURCE_DIR) /
                                                "configs/dam_type_b_record_suite.json");
