@@ -22,12 +22,12 @@ bool found(const std::vector<SeatPair>& pairs, const SeatPair& pair) {
 }
 
 // The type B block's heel has slid 8e-8 m past the seat's upstream end, and the block turns
-// upstream about its fold, so the heel comes down: the seat's end reaches the block's base 8e-8 m
-// from the heel, inside the upstream face's line by as much. It is a contact on the base, whose
-// normal is up, not on the face, whatever the point's motion along the face (it moves up it, as
-// the block comes down). Taken on the face, the contact's horizontal normal carried the block,
-// and the storm of record suite samples 116 and 127 followed.
-TEST(SeatContacts, ASeatPointAPassedCornerComesDownOnIsOnTheEdgeItLiesOn) {
+// upstream about its fold, so the heel comes down: the seat's end reaches the block 8e-8 m from the
+// heel, within the contact tolerance of it. The heel, on the seat's first segment within that
+// tolerance, carries the block there; the seat's end is taken on neither of the heel's edges. Taken
+// on the upstream face, its horizontal normal carried the block, and the storm of record suite
+// samples 116 and 127 followed; taken on the base too, it duplicated the heel's own contact.
+TEST(SeatContacts, AHeelJustPastTheSeatsEndCarriesTheBlockThereNotTheSeatsEnd) {
   const SeatContacts contacts(kTypeB, kTypeBSeat);
   const Vec2 centre = contacts.rest_centre();
   const double omega = 1e-4;  // rad/s, upstream (counter-clockwise) about the fold
@@ -41,17 +41,16 @@ TEST(SeatContacts, ASeatPointAPassedCornerComesDownOnIsOnTheEdgeItLiesOn) {
   const int seat_end = 0;  // the seat's upstream end
   const std::vector<SeatPair> pairs = contacts.touching(s, 1e-6 * R, std::nullopt, seat_end);
   const int base = 0, upstream_face = 5;  // block edges from vertex 0 (the heel) and to it
-  // typeb-seat-end-wip2: the heel is on the seat's first segment (within the contact tolerance)
-  // and carries the block there; the seat's end is not taken again on an edge.
   const int heel = 0;
   EXPECT_TRUE(found(pairs, {ContactKind::block_vertex, heel, seat_end}));
   EXPECT_FALSE(found(pairs, {ContactKind::seat_point, base, seat_end}));
   EXPECT_FALSE(found(pairs, {ContactKind::seat_point, upstream_face, seat_end}));
 }
 
-// With the heel exactly at the seat's end, the seat's end is on the base whichever way the block
-// moves: sliding upstream over it, or coming down on it (the point moving up the face).
-TEST(SeatContacts, ASeatPointAtTheHeelIsOnTheBaseWhicheverWayTheBlockMoves) {
+// With the heel exactly at the seat's end, the heel's own contact carries the block there whichever
+// way it moves (sliding upstream over the end, or coming down on it): the seat's end is taken on
+// neither the base nor the upstream face.
+TEST(SeatContacts, AtTheSeatsEndTheHeelCarriesTheBlockWhicheverWayItMoves) {
   const SeatContacts contacts(kTypeB, kTypeBSeat);
   const Vec2 centre = contacts.rest_centre();
   for (const double omega : {0.0, 1e-4, -1e-4}) {
