@@ -115,6 +115,9 @@ class GuardWatch {
     return found;
   }
 
+  // Whether guard i was armed at the step's start: a guard that was not fires below -offset.
+  bool armed(int i) const { return armed_[i]; }
+
   // The step is kept: its end values become the next step's start.
   void advance(const std::array<double, G>& next) {
     for (int i = 0; i < G; ++i) armed_[i] = armed_[i] || next[i] > kArmingMargin;

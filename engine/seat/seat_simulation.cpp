@@ -119,6 +119,15 @@ class SeatSimulation {
   void observe(const BlockState& s);
   void stop_at(double t, const BlockState& s, SeatEvent why);
   void advance_rest(double t_stop);
+  // The rounding noise of a vertex's clearance over R near the block's pose s.
+  double clearance_noise(const BlockState& s) const {
+    return 8 * std::numeric_limits<double>::epsilon() *
+           (1.0 + (std::abs(s.x) + std::abs(s.y)) / R_);
+  }
+  template <class GuardsAt>
+  static GuardWatch<SeatSystem::kGuards>::Crossing landing_at_zero(
+      const GuardsAt& guards_at, double t0, GuardWatch<SeatSystem::kGuards>::Crossing found,
+      double noise);
   template <class StateAt>
   GuardWatch<SeatSystem::kGuards>::Crossing touch_before_an_end(const SeatSystem& system,
                                                                 const StateAt& state_at, double t0,
@@ -721,6 +730,38 @@ GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::touch_before_an_end(
   return found;
 }
 
+// A bounce's landing in flight, found by a guard that was not armed when the flight began: the
+// vertex that bounced off the seat fires only once it is kArmingMargin R inside it unless it rose
+// above that margin by the end of a step, and a bounce that rises less than the margin (5e-14 m)
+// or lands within one step (a flight of 5e-5 s inside a 0.25 ms RK4 step) landed 1e-12 R inside
+// the seat, 6e-9 s late, where the flat ground's closed-form flight lands at zero: the next
+// impact then differed by 1e-8 of the velocity scale (random-0246 of the flat-seat cross-check).
+// Where the vertex rose above the seat (by more than its clearance's rounding noise) before the
+// crossing, its landing is where it comes back to zero.
+template <class GuardsAt>
+GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::landing_at_zero(
+    const GuardsAt& guards_at, double t0, GuardWatch<SeatSystem::kGuards>::Crossing found,
+    double noise) {
+  const auto i = static_cast<std::size_t>(found.which);
+  const auto f = [&](double x) { return guards_at(x)[i]; };
+  const double spacing = (found.after - t0) / kInteriorSamples;
+  bool rose = false;
+  double last = t0, f_last = 0.0;
+  for (int k = 1; k <= kInteriorSamples; ++k) {
+    const double x = k == kInteriorSamples ? found.after : t0 + k * spacing;
+    const double fx = f(x);
+    if (rose && fx <= 0) {
+      const Bracket zero =
+          locate_crossing(f, last, x, f_last, fx, kEventTimeTolerance * (1.0 + found.after));
+      return {found.which, zero.after, zero.before};
+    }
+    rose = rose || fx > noise;
+    last = x;
+    f_last = fx;
+  }
+  return found;
+}
+
 // As the flat ground's modes: steps until a guard crosses zero or t_stop; a crossing is located on
 // the dense output and the state left just after it.
 template <class Stepper>
@@ -755,6 +796,10 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
       return system.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
     };
     auto crossing = watch.first_crossing(guards_at, t0, t, next, least_at_ends);
+    if (kind == ModeKind::flight && crossing.which >= 0 && !watch.armed(crossing.which) &&
+        system.event(crossing.which) == SeatEvent::touches) {
+      crossing = landing_at_zero(guards_at, t0, crossing, clearance_noise(state_));
+    }
     const auto under = touch_before_an_end(system, state_at, t0, t);
     if (under.which >= 0 && under.after < crossing.after) crossing = under;
     const int which = crossing.which;

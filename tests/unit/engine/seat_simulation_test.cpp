@@ -314,6 +314,41 @@ TEST(SeatSimulation, SlidingBlockRockingAtZeroRestitutionIsLaidOnTheSeat) {
   expect_flat_ground_on_both_seats(scene, 0.5 * 0.5492768063660706, 0.15677102852028615, 0.0, 1e-5);
 }
 
+// A bounce that lands within the RK4 step of the impact it left from (random-0246 of the flat-seat
+// cross-check: a flight of 4.9e-5 s inside a 2.5e-4 s step, rising 2e-9 R) lands where its
+// vertex comes back to the seat, as the flat ground's closed-form flight does. Its guard, not
+// armed when the flight began, fired only 1e-12 R inside the seat, 6e-9 s late: after that landing
+// the velocities differed from the flat ground's by 3e-8 to 8e-8 m/s (1e-8 of sqrt(g R)).
+TEST(SeatSimulation, BounceWithinOneStepLandsWhereTheFlatGroundsDoes) {
+  Scene scene;
+  scene.solver.method = Method::rk4;
+  scene.polygon = PolygonBlock{{{0.0, 0.0},
+                                {1.422619482870014, 0.0},
+                                {0.28949904062454423, 2.110585195487301},
+                                {-0.2728060962929574, 2.086047825510867},
+                                {-0.31189240984213445, 1.3683383643490008}},
+                               1.0};
+  scene.contact = {0.521554421902244, 0.44100517708725684};
+  scene.ground_motion = MakrisPulseC{-0.4272196392367293, 0.39178156044258716, 1};
+  scene.duration = 0.0143;  // in flight after the bounce's landing at 0.0142927 s
+  const SimulationWithHistory flat = simulate_with_history(scene, 0.01);
+  scene.seat = Seat{{{-100.0, 0.0}, {100.0, 0.0}}};
+  const SimulationWithHistory seat = simulate_with_history(scene, 0.01);
+  ASSERT_EQ(flat.summary.status, Status::ok) << flat.summary.status_reason;
+  ASSERT_EQ(seat.summary.status, Status::ok) << seat.summary.status_reason;
+  EXPECT_EQ(flat.summary.impacts, 2);
+  EXPECT_EQ(seat.summary.impacts, 2);
+  const HistoryRow& a = flat.history.back();
+  const HistoryRow& b = seat.history.back();
+  ASSERT_EQ(a.t, 0.0143);
+  ASSERT_EQ(b.t, 0.0143);
+  EXPECT_EQ(a.mode, ModeKind::flight);
+  EXPECT_EQ(b.mode, ModeKind::flight);
+  EXPECT_NEAR(b.vx, a.vx, 1e-10);
+  EXPECT_NEAR(b.vy, a.vy, 1e-10);
+  EXPECT_NEAR(b.omega, a.omega, 1e-10);
+}
+
 TEST(SeatSimulation, TypeBRestsSixtySeconds) {
   Scene scene = type_b(0.0, 60.0);
   scene.ground_motion = NoMotion{};
