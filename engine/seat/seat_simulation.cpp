@@ -731,13 +731,13 @@ GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::touch_before_an_end(
 }
 
 // A bounce's landing in flight, found by a guard that was not armed when the flight began: the
-// vertex that bounced off the seat fires only once it is kArmingMargin R inside it unless it rose
-// above that margin by the end of a step, and a bounce that rises less than the margin (5e-14 m)
-// or lands within one step (a flight of 5e-5 s inside a 0.25 ms RK4 step) landed 1e-12 R inside
-// the seat, 6e-9 s late, where the flat ground's closed-form flight lands at zero: the next
-// impact then differed by 1e-8 of the velocity scale (random-0246 of the flat-seat cross-check).
-// Where the vertex rose above the seat (by more than its clearance's rounding noise) before the
-// crossing, its landing is where it comes back to zero.
+// vertex that bounced off the seat arms only at a step's end once above kArmingMargin R, and
+// unarmed it fires that far inside the seat. A bounce that rises less than the margin, or lands
+// within the step it left in (random-0246 of the flat-seat cross-check: a flight of 5e-5 s rising
+// 2e-9 R inside a 2.5e-4 s RK4 step), landed 1e-12 R inside the seat, 6e-9 s late, where the flat
+// ground's closed-form flight lands at zero, and the next impact's velocities differed from the
+// flat ground's by 1e-8 of sqrt(g R). Where the vertex rose above the seat (by more than its
+// clearance's rounding noise) before the crossing, its landing is where it comes back to zero.
 template <class GuardsAt>
 GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::landing_at_zero(
     const GuardsAt& guards_at, double t0, GuardWatch<SeatSystem::kGuards>::Crossing found,
