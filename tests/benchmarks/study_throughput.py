@@ -14,6 +14,8 @@ Cases (--quick shrinks each to a smoke test of a second or so):
   grid          the paper's grid: one block (a = 0.5 m, b = 1 m, mu 0.6, e 0.6) under a one-cycle
                 cosine pulse of 2 s for 4 s, at 20,000 amplitudes from 0.3 to 1.5 g, one sample
                 each, one limit state (overturning), on one rank without mpirun
+  grid_engine   the same grid without the fit's bootstrap ("bootstrap_resamples": 0): what is
+                left is the engine, the sampling, the fit and writing the output
   example1e5    configs/example_study.json at 10,000 samples per level (100,000 scenes) on --ranks
   example1e6    the same at 100,000 samples per level (1,000,000 scenes)
   record_suite  configs/record_suite_study.json as it is (360 scenes) on --ranks
@@ -57,7 +59,7 @@ GRID_STUDY = {
     "checkpoint_interval_s": 600,
 }
 
-CASE_NAMES = ("grid", "example1e5", "example1e6", "record_suite")
+CASE_NAMES = ("grid", "grid_engine", "example1e5", "example1e6", "record_suite")
 
 
 class Case:
@@ -93,10 +95,13 @@ def make_cases(args, scratch):
     grid["intensity_measure"] = dict(GRID_STUDY["intensity_measure"], count=200 if args.quick else 20000)
     grid_path = scratch / "grid.json"
     grid_path.write_text(json.dumps(grid, indent=1))
+    grid_engine_path = scratch / "grid_engine.json"
+    grid_engine_path.write_text(json.dumps(dict(grid, bootstrap_resamples=0), indent=1))
     example = source / "configs" / "example_study.json"
     records = source / "configs" / "record_suite_study.json"
     cases = {
         "grid": Case("grid", grid_path, None, 1),
+        "grid_engine": Case("grid_engine", grid_engine_path, None, 1),
         "example1e5": Case("example1e5", example, 10 if args.quick else 10000, args.ranks),
         "example1e6": Case("example1e6", example, 100 if args.quick else 100000, args.ranks),
         "record_suite": Case("record_suite", records, 2 if args.quick else None, args.ranks),
