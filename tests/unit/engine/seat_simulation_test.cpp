@@ -349,6 +349,54 @@ TEST(SeatSimulation, BounceWithinOneStepLandsWhereTheFlatGroundsDoes) {
   EXPECT_NEAR(b.omega, a.omega, 1e-10);
 }
 
+// A block that comes to rest turned 3e-9 rad, on its right corner and the joint under its base,
+// its left corner 2e-9 R above the seat, is laid on the seat's line and rests on all three
+// (random-0193 of the flat-seat cross-check, at tolerance 1e-12). Rest's range found without the
+// left corner ended where lambda changed sign, 0.08 s before the flat ground's slide; the three
+// contacts, pinned, then swapped which one slips 10,000 times within 1e-7 s. As on the flat
+// ground, the block rests until lambda passes mu, slides, and comes to rest where the flat
+// ground's does.
+TEST(SeatSimulation, ACornerThatTouchesOnceTheBlockIsLaidAtRestCarriesItsRest) {
+  Scene scene;
+  scene.solver.tolerance = 1e-12;
+  scene.solver.max_events = 10000;
+  scene.polygon = PolygonBlock{{{0.0, 0.0},
+                                {0.6253816650201283, 0.0},
+                                {0.6408633225793829, 0.4109268430008947},
+                                {0.5787715441301624, 0.7627495035159608},
+                                {0.5057211460205957, 0.8864653603264506},
+                                {0.3581899321964068, 0.9075915668956723},
+                                {0.3010294539397952, 0.863128214096936},
+                                {0.2601533973500407, 0.8152296625325088},
+                                {0.10879424678960416, 0.5022604307056757}},
+                               1.0};
+  scene.contact = {0.835123361721928, 0.7348731807798762};
+  scene.ground_motion = RickerWavelet{-1.5851659329217218, 0.9271468997629193, std::nullopt};
+  scene.duration = 4.281440699288758;
+  const Summary flat = simulate(scene);
+  scene.seat =
+      Seat{{{-99.68730916748994, 0.0}, {0.490232889000023, 0.0}, {100.31269083251006, 0.0}}};
+  const Summary seat = simulate(scene);
+  ASSERT_EQ(flat.status, Status::ok) << flat.status_reason;
+  ASSERT_EQ(seat.status, Status::ok) << seat.status_reason;
+  // The flat ground's last slide, after its rest.
+  const auto slide_after = [](const Summary& s, double t) {
+    const auto it = std::find_if(s.modes.begin(), s.modes.end(), [&](const ModeChange& m) {
+      return m.time > t && m.mode == ModeKind::slide;
+    });
+    return it == s.modes.end() ? -1.0 : it->time;
+  };
+  const double flat_slide = slide_after(flat, 1.2);
+  ASSERT_GT(flat_slide, 1.26);
+  EXPECT_NEAR(slide_after(seat, 1.2), flat_slide, 1e-9);
+  const double R = scene_geometry(scene).size();
+  EXPECT_NEAR(seat.final_slide / R, flat.final_slide / R, 1e-8);
+  EXPECT_TRUE(seat.settled);
+  ASSERT_TRUE(seat.settle_time.has_value());
+  ASSERT_TRUE(flat.settle_time.has_value());
+  EXPECT_NEAR(*seat.settle_time, *flat.settle_time, 1e-7);
+}
+
 TEST(SeatSimulation, TypeBRestsSixtySeconds) {
   Scene scene = type_b(0.0, 60.0);
   scene.ground_motion = NoMotion{};
