@@ -94,28 +94,30 @@ SpectrumTally write_map(Hdf5Writer& file, const SpectrumConfig& config, const Re
 }
 
 template <typename T>
-void write_field(Hdf5Writer& file, const char* name, const std::vector<Bracket>& brackets,
-                 T (*value)(const Bracket&)) {
+void write_field(Hdf5Writer& file, const char* name, const std::vector<SpectrumBracket>& brackets,
+                 T (*value)(const SpectrumBracket&)) {
   std::vector<T> values;
   values.reserve(brackets.size());
-  for (const Bracket& bracket : brackets) values.push_back(value(bracket));
+  for (const SpectrumBracket& bracket : brackets) values.push_back(value(bracket));
   file.write_column(std::string("/boundary/") + name, values);
 }
 
 void write_boundary(Hdf5Writer& file, const SpectrumConfig& config,
-                    const std::vector<Bracket>& brackets, SpectrumTally& tally) {
+                    const std::vector<SpectrumBracket>& brackets, SpectrumTally& tally) {
   file.create_group("/boundary");
   write_field<std::int64_t>(file, "frequency_index", brackets,
-                            [](const Bracket& b) { return b.frequency_index; });
+                            [](const SpectrumBracket& b) { return b.frequency_index; });
   std::vector<double> frequency;
-  for (const Bracket& b : brackets)
+  for (const SpectrumBracket& b : brackets)
     frequency.push_back(config.frequency_ratio[static_cast<std::size_t>(b.frequency_index)]);
   file.write_column("/boundary/frequency_ratio", frequency);
   write_field<double>(file, "amplitude_ratio", brackets,
-                      [](const Bracket& b) { return b.midpoint(); });
-  write_field<double>(file, "amplitude_low", brackets, [](const Bracket& b) { return b.low; });
-  write_field<double>(file, "amplitude_high", brackets, [](const Bracket& b) { return b.high; });
-  write_field<std::int64_t>(file, "direction", brackets, [](const Bracket& b) {
+                      [](const SpectrumBracket& b) { return b.midpoint(); });
+  write_field<double>(file, "amplitude_low", brackets,
+                      [](const SpectrumBracket& b) { return b.low; });
+  write_field<double>(file, "amplitude_high", brackets,
+                      [](const SpectrumBracket& b) { return b.high; });
+  write_field<std::int64_t>(file, "direction", brackets, [](const SpectrumBracket& b) {
     return static_cast<std::int64_t>(b.direction());
   });
   file.set_attribute("/boundary/direction", "meaning",
@@ -123,12 +125,13 @@ void write_boundary(Hdf5Writer& file, const SpectrumConfig& config,
                                  "-1 the end of an overturning band (overturns below, stands "
                                  "above: the lower edge of a safe island)"));
   write_field<std::int64_t>(file, "verdict_low", brackets,
-                            [](const Bracket& b) { return b.verdict_low; });
+                            [](const SpectrumBracket& b) { return b.verdict_low; });
   write_field<std::int64_t>(file, "verdict_high", brackets,
-                            [](const Bracket& b) { return b.verdict_high; });
+                            [](const SpectrumBracket& b) { return b.verdict_high; });
   write_field<std::int64_t>(file, "iterations", brackets,
-                            [](const Bracket& b) { return b.iterations; });
-  write_field<std::int64_t>(file, "state", brackets, [](const Bracket& b) { return b.state; });
+                            [](const SpectrumBracket& b) { return b.iterations; });
+  write_field<std::int64_t>(file, "state", brackets,
+                            [](const SpectrumBracket& b) { return b.state; });
   file.set_attribute("/boundary/state", "meaning",
                      std::string("1 converged (amplitude_high - amplitude_low <= tolerance x "
                                  "amplitude_high), 2 stopped: a midpoint's scene failed, 3 stopped "
@@ -139,7 +142,7 @@ void write_boundary(Hdf5Writer& file, const SpectrumConfig& config,
   file.set_attribute("/boundary", "amplitude_ratio_is",
                      std::string("the midpoint of the final bracket [amplitude_low, "
                                  "amplitude_high], whose ends have verdict_low and verdict_high"));
-  for (const Bracket& b : brackets) {
+  for (const SpectrumBracket& b : brackets) {
     (b.direction() > 0 ? tally.onsets : tally.island_edges) += 1;
     tally.converged += b.state == static_cast<std::int64_t>(BracketState::converged) ? 1 : 0;
   }
@@ -149,7 +152,7 @@ void write_boundary(Hdf5Writer& file, const SpectrumConfig& config,
 
 SpectrumTally write_spectrum_output(const std::filesystem::path& path, const SpectrumConfig& config,
                                     const RecordSpool& spool,
-                                    const std::vector<Bracket>& brackets) {
+                                    const std::vector<SpectrumBracket>& brackets) {
   SpectrumTally tally;
   replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
     Hdf5Writer file(temporary);

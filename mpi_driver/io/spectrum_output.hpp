@@ -32,6 +32,7 @@ struct SpectrumTally {
 
 // The spool holds every map point's record; brackets are the final crossings.
 SpectrumTally write_spectrum_output(const std::filesystem::path& path, const SpectrumConfig& config,
-                                    const RecordSpool& spool, const std::vector<Bracket>& brackets);
+                                    const RecordSpool& spool,
+                                    const std::vector<SpectrumBracket>& brackets);
 
 }  // namespace blockfrag

@@ -18,7 +18,7 @@ using bytes::append;
 using bytes::read_at;
 
 // A bracket read back must be one the runner could have written.
-bool plausible(const Bracket& bracket, std::int64_t frequencies) {
+bool plausible(const SpectrumBracket& bracket, std::int64_t frequencies) {
   const auto verdict_ok = [](std::int64_t v) {
     return v >= 0 && v <= static_cast<std::int64_t>(SpectrumVerdict::rejected);
   };
@@ -32,12 +32,12 @@ bool plausible(const Bracket& bracket, std::int64_t frequencies) {
 
 std::string encode_bisection_state(const BisectionState& state) {
   std::string out;
-  out.reserve(bisection_header_size + state.brackets.size() * sizeof(Bracket) + 8);
+  out.reserve(bisection_header_size + state.brackets.size() * sizeof(SpectrumBracket) + 8);
   out.append(bisection_magic);
   append(out, state.config_hash);
   append(out, state.round);
   append(out, static_cast<std::int64_t>(state.brackets.size()));
-  for (const Bracket& bracket : state.brackets) append(out, bracket);
+  for (const SpectrumBracket& bracket : state.brackets) append(out, bracket);
   append(out, fnv1a64(out));
   return out;
 }
@@ -60,12 +60,13 @@ BisectionState decode_bisection_state(std::string_view bytes, const std::string&
   const auto count = read_at<std::int64_t>(bytes, bisection_magic.size() + 16);
   if (state.round < 0 || count < 0 || count > max_brackets ||
       bytes.size() !=
-          bisection_header_size + static_cast<std::size_t>(count) * sizeof(Bracket) + 8) {
+          bisection_header_size + static_cast<std::size_t>(count) * sizeof(SpectrumBracket) + 8) {
     throw fail("wrong length");
   }
   state.brackets.resize(static_cast<std::size_t>(count));
   for (std::size_t k = 0; k < state.brackets.size(); ++k) {
-    state.brackets[k] = read_at<Bracket>(bytes, bisection_header_size + k * sizeof(Bracket));
+    state.brackets[k] =
+        read_at<SpectrumBracket>(bytes, bisection_header_size + k * sizeof(SpectrumBracket));
     if (!plausible(state.brackets[k], frequencies)) throw fail("a bracket out of range");
   }
   return state;
@@ -81,7 +82,7 @@ std::optional<BisectionState> read_bisection_state(const std::filesystem::path& 
   std::error_code error;
   if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return std::nullopt;
   const std::size_t largest =
-      bisection_header_size + static_cast<std::size_t>(max_brackets) * sizeof(Bracket) + 8;
+      bisection_header_size + static_cast<std::size_t>(max_brackets) * sizeof(SpectrumBracket) + 8;
   try {
     return decode_bisection_state(read_input_file(path, {largest, false}), path.string(),
                                   max_brackets, frequencies);

@@ -23,7 +23,7 @@ namespace blockfrag {
 struct BisectionState {
   std::uint64_t config_hash = 0;
   std::int64_t round = 0;  // the round about to run
-  std::vector<Bracket> brackets;
+  std::vector<SpectrumBracket> brackets;
 };
 
 std::string encode_bisection_state(const BisectionState& state);

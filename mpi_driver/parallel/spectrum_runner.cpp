@@ -62,9 +62,9 @@ void for_each_record(const RecordSpool& spool, std::int64_t total,
 }
 
 // The brackets of every column of the finished map, in order of frequency, then amplitude.
-std::vector<Bracket> map_brackets(const SpectrumConfig& config, const RecordSpool& spool) {
+std::vector<SpectrumBracket> map_brackets(const SpectrumConfig& config, const RecordSpool& spool) {
   const std::size_t na = config.amplitude_ratio.size();
-  std::vector<Bracket> brackets;
+  std::vector<SpectrumBracket> brackets;
   std::vector<SpectrumVerdict> column(na);
   for_each_record(spool, config.map_points(), [&](std::int64_t index, const SampleRecord& record) {
     const auto j = static_cast<std::size_t>(index) % na;
@@ -120,8 +120,8 @@ BisectionState start_bisection(const SpectrumConfig& config, const RunSettings& 
 void finish_round(const SpectrumConfig& config, const SpectrumFiles& files, const SampleJob& job,
                   BisectionState& state) {
   const RecordSpool spool(files.round_records, job.hash, job.total, RecordSpool::Mode::resume);
-  std::vector<Bracket*> open;
-  for (Bracket& bracket : state.brackets) {
+  std::vector<SpectrumBracket*> open;
+  for (SpectrumBracket& bracket : state.brackets) {
     if (bracket.is_open()) open.push_back(&bracket);
   }
   if (static_cast<std::int64_t>(open.size()) != job.total)
@@ -180,7 +180,7 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
     std::int64_t header[2] = {0, 0};  // the round and its midpoints
     if (rank == 0) {
       points.clear();
-      for (const Bracket& bracket : state.brackets) {
+      for (const SpectrumBracket& bracket : state.brackets) {
         if (!bracket.is_open()) continue;
         points.push_back(config.frequency_ratio[static_cast<std::size_t>(bracket.frequency_index)]);
         points.push_back(bracket.midpoint());

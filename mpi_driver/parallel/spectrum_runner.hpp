@@ -37,10 +37,10 @@ struct SpectrumFiles {
 
 struct SpectrumRunResult {
   RunOutcome outcome = RunOutcome::completed;
-  RunResult map;                  // the map phase in this run
-  std::int64_t rounds = 0;        // bisection rounds run in this run
-  std::int64_t midpoints = 0;     // midpoints evaluated in this run
-  std::vector<Bracket> brackets;  // rank 0, when completed: every crossing, closed
+  RunResult map;                          // the map phase in this run
+  std::int64_t rounds = 0;                // bisection rounds run in this run
+  std::int64_t midpoints = 0;             // midpoints evaluated in this run
+  std::vector<SpectrumBracket> brackets;  // rank 0, when completed: every crossing, closed
 };
 
 // Collective over comm: the map (settings: its checkpoint, records, interval, log), then the

@@ -5,7 +5,7 @@
 namespace blockfrag {
 namespace {
 
-bool within_tolerance(const Bracket& bracket, double tolerance) {
+bool within_tolerance(const SpectrumBracket& bracket, double tolerance) {
   return bracket.high - bracket.low <= tolerance * bracket.high;
 }
 
@@ -31,16 +31,17 @@ SampleRecord evaluate_spectrum_point(const SpectrumConfig& config, double freque
                                evaluate);
 }
 
-std::vector<Bracket> column_brackets(std::int64_t frequency_index,
-                                     std::span<const double> amplitude_ratio,
-                                     std::span<const SpectrumVerdict> verdicts, double tolerance) {
+std::vector<SpectrumBracket> column_brackets(std::int64_t frequency_index,
+                                             std::span<const double> amplitude_ratio,
+                                             std::span<const SpectrumVerdict> verdicts,
+                                             double tolerance) {
   if (amplitude_ratio.size() != verdicts.size())
     throw ContractViolation("column_brackets: one verdict per amplitude ratio");
-  std::vector<Bracket> brackets;
+  std::vector<SpectrumBracket> brackets;
   for (std::size_t j = 1; j < verdicts.size(); ++j) {
     const SpectrumVerdict below = verdicts[j - 1], above = verdicts[j];
     if (!decided(below) || !decided(above) || overturned(below) == overturned(above)) continue;
-    Bracket bracket;
+    SpectrumBracket bracket;
     bracket.frequency_index = frequency_index;
     bracket.low = amplitude_ratio[j - 1];
     bracket.high = amplitude_ratio[j];
@@ -53,7 +54,8 @@ std::vector<Bracket> column_brackets(std::int64_t frequency_index,
   return brackets;
 }
 
-void narrow(Bracket& bracket, SpectrumVerdict at_midpoint, double tolerance, int max_iterations) {
+void narrow(SpectrumBracket& bracket, SpectrumVerdict at_midpoint, double tolerance,
+            int max_iterations) {
   if (!bracket.is_open()) throw ContractViolation("narrow: the bracket is not open");
   ++bracket.iterations;
   if (!decided(at_midpoint)) {

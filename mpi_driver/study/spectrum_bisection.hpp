@@ -35,7 +35,7 @@ enum class BracketState : std::int64_t {
 // One crossing of the boundary along a frequency: the verdict is overturned at one end and not at
 // the other. direction +1: the onset of overturning (stands below, overturns above); -1: the end of
 // an overturning band (overturns below, stands above: the lower edge of a safe island).
-struct Bracket {
+struct SpectrumBracket {
   std::int64_t frequency_index = 0;
   double low = 0.0, high = 0.0;  // amplitude ratios
   std::int64_t verdict_low = 0, verdict_high = 0;
@@ -46,17 +46,20 @@ struct Bracket {
   double midpoint() const { return 0.5 * (low + high); }
   bool is_open() const { return state == static_cast<std::int64_t>(BracketState::open); }
 };
-static_assert(sizeof(Bracket) == 7 * 8, "brackets are stored as raw bytes: no padding allowed");
+static_assert(sizeof(SpectrumBracket) == 7 * 8,
+              "brackets are stored as raw bytes: no padding allowed");
 
 // The brackets of one frequency's column of verdicts (one per amplitude ratio, increasing): every
 // pair of neighbours both decided (not failed) whose "overturned" differs, in increasing amplitude.
 // Each starts open, or converged when it is already within the tolerance.
-std::vector<Bracket> column_brackets(std::int64_t frequency_index,
-                                     std::span<const double> amplitude_ratio,
-                                     std::span<const SpectrumVerdict> verdicts, double tolerance);
+std::vector<SpectrumBracket> column_brackets(std::int64_t frequency_index,
+                                             std::span<const double> amplitude_ratio,
+                                             std::span<const SpectrumVerdict> verdicts,
+                                             double tolerance);
 
 // Narrows an open bracket with the verdict at its midpoint: the half whose ends still disagree,
 // then converged or capped; a failed midpoint leaves it failed.
-void narrow(Bracket& bracket, SpectrumVerdict at_midpoint, double tolerance, int max_iterations);
+void narrow(SpectrumBracket& bracket, SpectrumVerdict at_midpoint, double tolerance,
+            int max_iterations);
 
 }  // namespace blockfrag

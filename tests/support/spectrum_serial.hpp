@@ -14,8 +14,8 @@
 namespace blockfrag::testing {
 
 struct SerialSpectrum {
-  std::vector<SpectrumVerdict> map;  // [frequency index][amplitude index], row by row
-  std::vector<Bracket> brackets;     // in order of frequency, then amplitude
+  std::vector<SpectrumVerdict> map;       // [frequency index][amplitude index], row by row
+  std::vector<SpectrumBracket> brackets;  // in order of frequency, then amplitude
 
   SpectrumVerdict at(const SpectrumConfig& config, std::size_t i, std::size_t j) const {
     return map[i * config.amplitude_ratio.size() + j];
@@ -33,8 +33,9 @@ inline SerialSpectrum serial_spectrum(const SpectrumConfig& config) {
           evaluate_spectrum_point(config, config.frequency_ratio[i], a, index++, engine)));
     }
     out.map.insert(out.map.end(), column.begin(), column.end());
-    for (Bracket bracket : column_brackets(static_cast<std::int64_t>(i), config.amplitude_ratio,
-                                           column, config.bisection_tolerance)) {
+    for (SpectrumBracket bracket :
+         column_brackets(static_cast<std::int64_t>(i), config.amplitude_ratio, column,
+                         config.bisection_tolerance)) {
       while (bracket.is_open()) {
         const SampleRecord record = evaluate_spectrum_point(config, config.frequency_ratio[i],
                                                             bracket.midpoint(), 0, engine);

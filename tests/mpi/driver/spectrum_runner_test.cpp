@@ -76,8 +76,9 @@ RunFiles files_in(const TemporaryFolder& folder) {
   return run;
 }
 
-bool same_bits(const std::vector<Bracket>& a, const std::vector<Bracket>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Bracket)) == 0;
+bool same_bits(const std::vector<SpectrumBracket>& a, const std::vector<SpectrumBracket>& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(SpectrumBracket)) == 0;
 }
 
 TEST(SpectrumRunner, FindsEveryCrossingToTheTolerance) {
@@ -92,7 +93,7 @@ TEST(SpectrumRunner, FindsEveryCrossingToTheTolerance) {
   EXPECT_EQ(calls, 44 + result.midpoints);
   ASSERT_EQ(result.brackets.size(), 12u);  // three crossings at each of 4 frequencies
   for (std::size_t k = 0; k < result.brackets.size(); ++k) {
-    const Bracket& b = result.brackets[k];
+    const SpectrumBracket& b = result.brackets[k];
     const double f = config.frequency_ratio[static_cast<std::size_t>(b.frequency_index)];
     const double expected[] = {onset(f), island_start(f), second_onset(f)};
     EXPECT_EQ(b.frequency_index, static_cast<std::int64_t>(k / 3));
@@ -120,7 +121,7 @@ TEST(SpectrumRunner, FindsEveryCrossingToTheTolerance) {
 
 TEST(SpectrumRunner, ResumesAStoppedBisectionWithTheSameBrackets) {
   const SpectrumConfig config = small_spectrum();
-  std::vector<Bracket> straight;
+  std::vector<SpectrumBracket> straight;
   int straight_calls = 0;
   {
     TemporaryFolder folder;

@@ -47,7 +47,7 @@ TEST(SpectrumValidation, RectangularPulseThresholdsOfHousnersBlock) {
   const double expected[] = {1.151926, 1.583046, 2.564527};
   ASSERT_EQ(spectrum.brackets.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
-    const Bracket& b = spectrum.brackets[i];
+    const SpectrumBracket& b = spectrum.brackets[i];
     EXPECT_EQ(b.frequency_index, static_cast<std::int64_t>(i));
     EXPECT_EQ(b.direction(), +1);
     EXPECT_EQ(b.state, static_cast<std::int64_t>(BracketState::converged));
@@ -138,8 +138,8 @@ TEST(SpectrumValidation, PaperBlockHasASafeIslandAtPointSixThreeG) {
   EXPECT_EQ(verdict(8), SpectrumVerdict::stands);
   EXPECT_TRUE(overturned(verdict(9)));
   ASSERT_EQ(spectrum.brackets.size(), 3u);
-  const Bracket &onset = spectrum.brackets[0], &island_low = spectrum.brackets[1],
-                &island_high = spectrum.brackets[2];
+  const SpectrumBracket &onset = spectrum.brackets[0], &island_low = spectrum.brackets[1],
+                        &island_high = spectrum.brackets[2];
   // The minimum overturning amplitude lies between 0.59 and 0.60 g.
   EXPECT_EQ(onset.direction(), +1);
   EXPECT_GT(onset.midpoint(), 1.18);

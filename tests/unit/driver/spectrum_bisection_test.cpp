@@ -77,8 +77,8 @@ TEST(SpectrumBisection, ConvergesOnTheThresholdInTheStepsHalvingNeeds) {
     const auto verdict = [&](double a) {
       return (a >= threshold) == onset ? V::overturns_one_impact : V::stands;
     };
-    Bracket bracket = column_brackets(0, std::vector<double>{1.0, 1.5},
-                                      std::vector<V>{verdict(1.0), verdict(1.5)}, tolerance)[0];
+    SpectrumBracket bracket = column_brackets(
+        0, std::vector<double>{1.0, 1.5}, std::vector<V>{verdict(1.0), verdict(1.5)}, tolerance)[0];
     while (bracket.is_open()) narrow(bracket, verdict(bracket.midpoint()), tolerance, 60);
     EXPECT_EQ(bracket.state, static_cast<std::int64_t>(BracketState::converged));
     EXPECT_LE(bracket.low, threshold);
@@ -92,8 +92,8 @@ TEST(SpectrumBisection, ConvergesOnTheThresholdInTheStepsHalvingNeeds) {
 }
 
 TEST(SpectrumBisection, StopsAtAFailedMidpointOrTheCap) {
-  Bracket bracket = column_brackets(0, std::vector<double>{1.0, 2.0},
-                                    std::vector<V>{V::stands, V::overturns_no_impact}, 1e-9)[0];
+  SpectrumBracket bracket = column_brackets(
+      0, std::vector<double>{1.0, 2.0}, std::vector<V>{V::stands, V::overturns_no_impact}, 1e-9)[0];
   narrow(bracket, V::stands, 1e-9, 60);
   EXPECT_EQ(bracket.low, 1.5);
   narrow(bracket, V::failed, 1e-9, 60);
@@ -102,8 +102,8 @@ TEST(SpectrumBisection, StopsAtAFailedMidpointOrTheCap) {
   EXPECT_EQ(bracket.high, 2.0);
   EXPECT_THROW(narrow(bracket, V::stands, 1e-9, 60), ContractViolation);
 
-  Bracket capped = column_brackets(0, std::vector<double>{1.0, 2.0},
-                                   std::vector<V>{V::stands, V::overturns_no_impact}, 1e-9)[0];
+  SpectrumBracket capped = column_brackets(
+      0, std::vector<double>{1.0, 2.0}, std::vector<V>{V::stands, V::overturns_no_impact}, 1e-9)[0];
   for (int k = 0; k < 3; ++k) narrow(capped, V::stands, 1e-9, 3);
   EXPECT_EQ(capped.state, static_cast<std::int64_t>(BracketState::capped));
   EXPECT_EQ(capped.iterations, 3);
@@ -115,7 +115,7 @@ BisectionState some_bisection_state() {
   state.config_hash = 0x0123456789abcdefULL;
   state.round = 7;
   for (std::int64_t k = 0; k < 5; ++k) {
-    Bracket bracket;
+    SpectrumBracket bracket;
     bracket.frequency_index = k % 3;
     bracket.low = 1.0 + 0.1 * static_cast<double>(k) + 1e-17;
     bracket.high = bracket.low + std::ldexp(1.0, -40);
@@ -136,7 +136,7 @@ TEST(BisectionState, RoundTripsEveryBit) {
   EXPECT_EQ(back.round, state.round);
   ASSERT_EQ(back.brackets.size(), state.brackets.size());
   EXPECT_EQ(std::memcmp(back.brackets.data(), state.brackets.data(),
-                        state.brackets.size() * sizeof(Bracket)),
+                        state.brackets.size() * sizeof(SpectrumBracket)),
             0);
   BisectionState empty;
   EXPECT_TRUE(decode_bisection_state(encode_bisection_state(empty), "e", 100, 3).brackets.empty());
