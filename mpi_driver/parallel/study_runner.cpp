@@ -1,8 +1,6 @@
 #include "mpi_driver/parallel/study_runner.hpp"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstring>
 #include <deque>
 #include <memory>
@@ -13,6 +11,7 @@
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
+#include "mpi_driver/parallel/chunk_sizing.hpp"
 #include "mpi_driver/parallel/progress.hpp"
 #include "mpi_driver/parallel/signals.hpp"
 #include "mpi_driver/parallel/work_distribution.hpp"
@@ -41,14 +40,15 @@ struct ReportHeader {
 // Two chunks in hand or on the way: the next one is already there when the current one ends.
 constexpr int prefetch_depth = 2;
 
-// Chunks last about this long at the measured speed, so each worker asks rank 0 about 5 times a
-// second: 1,000 ranks send 5,000 requests/s, a fraction of what rank 0 serves
-// (docs/performance.md). The guided rule still shrinks the last chunks, so the ranks finish
-// together.
+// Chunks last about this long at the cost per sample rank 0 measured last (chunk_sizing.hpp), so
+// each worker asks rank 0 about 5 times a second: 1,000 ranks send 5,000 requests/s, a fraction of
+// what rank 0 serves (docs/performance.md). The guided rule still shrinks the last chunks, so the
+// ranks finish together.
 constexpr double kChunkSeconds = 0.2;
-// Chunks start at this size, before any speed is measured, and stay within these bounds. The
-// largest keeps the cheapest samples (a block that never moves: 3 us) to about 20 requests a
-// second a rank, so rank 0 serves 2,000 of them (docs/performance.md); it is a 1.7 MB message.
+// Chunks start at this size, before any sample is timed, and stay within these bounds. The
+// largest keeps the cheapest samples (a block that never moves: 1.4 to 3 us) to 20 to 45 requests
+// a second a rank, so rank 0 serves 1,000 to 2,000 such ranks (docs/performance.md); it is a
+// 1.7 MB message.
 constexpr std::int64_t kSmallestChunkLimit = 64;
 constexpr std::int64_t kLargestChunk = 16384;
 
@@ -153,7 +153,9 @@ class Coordinator {
       if (!interrupted_) {
         const IndexRange own = queue_->next_chunk(ranks_, 1);
         if (!own.empty()) {
+          const auto started = Clock::now();
           const SampleRecord record = job_.evaluate(own.first);
+          if (ranks_ > 1) sizer_.record(seconds_since(started));
           store({&record, 1});
           ++result_.computed;
         }
@@ -191,15 +193,11 @@ class Coordinator {
     done_.add({records.front().index, static_cast<std::int64_t>(records.size())});
   }
 
-  // The largest chunk to hand out: fixed by the settings, or kChunkSeconds of one rank's measured
-  // speed. Which samples a chunk holds never changes their records, only when they are computed.
+  // The largest chunk to hand out: fixed by the settings, or kChunkSeconds of work at the cost
+  // per sample rank 0 measured last. Which samples a chunk holds never changes their records,
+  // only when they are computed.
   std::int64_t chunk_limit() const {
-    if (settings_.max_chunk > 0) return settings_.max_chunk;
-    const double seconds = seconds_since(start_);
-    if (result_.computed == 0 || seconds <= 0) return kSmallestChunkLimit;
-    const double per_rank = static_cast<double>(result_.computed) / seconds / ranks_;
-    return std::clamp(static_cast<std::int64_t>(std::ceil(per_rank * kChunkSeconds)),
-                      kSmallestChunkLimit, kLargestChunk);
+    return settings_.max_chunk > 0 ? settings_.max_chunk : sizer_.limit();
   }
 
   void interrupt() {
@@ -269,7 +267,7 @@ class Coordinator {
   }
 
   MPI_Comm comm_;
-  Clock::time_point start_ = Clock::now();
+  ChunkSizer sizer_{kChunkSeconds, kSmallestChunkLimit, kLargestChunk};
   const SampleJob& job_;
   const RunSettings& settings_;
   int ranks_ = 1;
