@@ -46,14 +46,14 @@ double parabola_step(const CornerHeight::Sample& s, double acceleration, double 
   return best;
 }
 
-// Inside [lo, hi] (height(lo) > 0 >= height(hi)), each step goes to where the parabola through the
-// last sample (its height, rate and acceleration -g - omega^2 r_y: all exact) reaches the
-// ground. Over a flight's short brackets the height is that parabola up to a cubic term, so the
-// search converges cubically from either side, and from the top of a corner's arc too (where
-// Newton's tangent is flat and a micro-bounce's bracket took it ten halvings). A step that would
-// leave the bracket bisects it; one kept half a tolerance inside it ends a search that converges
-// from above by landing just past the crossing. Returns a time at or below the ground within the
-// time tolerance of the crossing, or within the height's rounding noise of it.
+// Inside [lo, hi] (height(lo) > 0 >= height(hi), sampled or bounded), each step goes to where the
+// parabola through the last sample (its height, rate and acceleration -g - omega^2 r_y: all exact)
+// reaches the ground. Over a flight's short brackets the height is that parabola up to a cubic
+// term, so the search converges cubically from either side, and from the top of a corner's arc too
+// (where Newton's tangent is flat and a micro-bounce's bracket took it ten halvings). A step that
+// would leave the bracket bisects it; one kept half a tolerance inside it ends a search that
+// converges from above by landing just past the crossing. Returns a time at or below the ground
+// within the time tolerance of the crossing, or within the height's rounding noise of it.
 double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight::Sample s,
                       double time_tolerance, double height_noise) {
   double x = lo;
@@ -86,9 +86,12 @@ double earliest_fall(double depth, double rate, double bound) {
 constexpr double kNoLanding = std::numeric_limits<double>::infinity();
 
 // One corner's first landing in (0, tau_max], from `now`, its sample at the start; kNoLanding if
-// none.
-double corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bound, double tau_max,
-                      double min_step, double time_tolerance, double height_noise,
+// none. Its height's second derivative lies in [-bound, -least]: the earliest fall under `bound`
+// is a step that cannot skip the ground. When least > 0 the height is concave over the whole
+// flight, so once it is above the ground it crosses it once, no later than its fall under
+// `least`: that bracket is searched at once, with no stepping towards it.
+double corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bound, double least,
+                      double tau_max, double min_step, double time_tolerance, double height_noise,
                       double sink_allowance) {
   double tau = 0.0;
   if (now.height <= 0.0) {
@@ -110,6 +113,12 @@ double corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bo
   while (tau < tau_max) {
     const double safe = earliest_fall(now.height, now.rate, bound);
     if (tau + safe > tau_max) return kNoLanding;  // it cannot reach the ground in time
+    if (least > 0) {
+      const double latest = tau + earliest_fall(now.height, now.rate, least);
+      if (latest <= tau_max) {
+        return locate_landing(h, tau, latest, now, time_tolerance, height_noise);
+      }
+    }
     const double next = std::min(tau + std::max(safe, min_step), tau_max);
     const CornerHeight::Sample then = h.at(next);
     if (then.height <= 0.0) {
@@ -125,7 +134,10 @@ double corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bo
 
 std::optional<double> first_landing(const BlockGeometry& geometry, const FlightStart& f, double g,
                                     double tau_max, double min_step) {
+  // A corner's height is y + r_y, and r_y turns at omega: its second derivative -g - omega^2 r_y
+  // lies within omega^2 R of -g.
   const double bound = g + f.omega * f.omega * geometry.size();
+  const double least = g - f.omega * f.omega * geometry.size();
   // While theta stays within the overturning range only a base corner can be the lowest point of
   // the block (BlockGeometry::overturn_angle), and where the block first touches the ground its
   // lowest point does: only the base corners need searching. theta is linear in time, so the
@@ -151,8 +163,8 @@ std::optional<double> first_landing(const BlockGeometry& geometry, const FlightS
     // A corner's height is y plus an arm of size R: its rounding error is a few ulps of their sum.
     const double height_noise =
         4 * std::numeric_limits<double>::epsilon() * (std::abs(f.y) + geometry.size());
-    first = std::min(first, corner_landing(h, now, bound, limit, min_step, tolerance, height_noise,
-                                           kLandingSinkAllowance * geometry.size()));
+    first = std::min(first, corner_landing(h, now, bound, least, limit, min_step, tolerance,
+                                           height_noise, kLandingSinkAllowance * geometry.size()));
   }
   if (first == kNoLanding) return std::nullopt;
   return first;

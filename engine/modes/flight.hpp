@@ -24,7 +24,9 @@ inline BlockState flight_pose(const FlightStart& f, double g, double tau) {
 // The first tau in (0, tau_max] at which a corner reaches the ground moving down, if any.
 // Conservative advancement: a corner's height has |h''| <= g + omega^2 R, so a step that keeps
 // h + h' dt - K dt^2 / 2 >= 0 cannot skip a touchdown; steps shorter than min_step are taken as
-// min_step, so a graze shallower than K min_step^2 / 8 may go unseen.
+// min_step, so a graze shallower than K min_step^2 / 8 may go unseen. A block turning slower than
+// sqrt(g / R) has every corner's height concave (h'' <= -(g - omega^2 R) < 0), which brackets a
+// corner's landing from any sample above the ground: no advancement, and no graze missed.
 std::optional<double> first_landing(const BlockGeometry& geometry, const FlightStart& f, double g,
                                     double tau_max, double min_step);
 

@@ -1,6 +1,9 @@
 #include "engine/modes/flight.hpp"
 
+#include <array>
 #include <cmath>
+#include <limits>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -63,6 +66,55 @@ TEST(Flight, ACornerStartingAtTheGroundMovingDownLandsBeforeItSinks) {
   const double base = flight_pose(FlightStart{y0, 0.0, vy, 0.0}, g, *landing).y - b;
   EXPECT_GT(base, -1.1e-12 * R - 1e-13 * R);
   EXPECT_LT(*landing, min_step / 10);
+}
+
+TEST(Flight, BouncesLandWhereAFineScanOfBothCornersFindsTheGround) {
+  // The lower base corner bouncing off the ground at 1e-5 to 1 m/s while the block turns slower
+  // than sqrt(g/R): the chattering that most flights are. Corner c's height after a turn phi = w t
+  // is its start height + vy t - g t^2/2 + r_x sin(phi) - 2 r_y sin^2(phi/2) (r its arm at the
+  // start), free of the cancellation in y + r_y. The reference scans both corners on 4,000 steps
+  // up to where the bouncing one must be down again (its height's curvature is at most
+  // -(g - w^2 R)), then bisects the first cell that reaches the ground. A landing time is defined
+  // to within the height's rounding (a few ulps of R) over the corner's speed there.
+  std::mt19937_64 rng(20261129);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const double a = 0.2 + 0.8 * unit(rng), b = 0.5 + 1.5 * unit(rng);
+    const BlockGeometry block(RectangularBlock{a, b, 1.0});
+    const double R = block.size();
+    const double theta0 = (unit(rng) - 0.5) * 0.2 * std::atan(a / b);
+    const double w = (2 * unit(rng) - 1) * 0.95 * std::sqrt(g / R);
+    const std::array<Vec2, 2> arm = {block.corner_at(0, theta0), block.corner_at(1, theta0)};
+    const int bouncing = arm[0].y < arm[1].y ? 0 : 1;
+    const double u_y = std::pow(10.0, -5.0 + 5.0 * unit(rng));
+    const FlightStart start{-arm[bouncing].y, theta0, u_y - w * arm[bouncing].x, w};
+    const auto height = [&](int c, double t) {
+      const double half_turn = std::sin(0.5 * w * t);
+      return (arm[c].y - arm[bouncing].y) + (start.vy * t - 0.5 * g * t * t) +
+             arm[c].x * std::sin(w * t) - 2.0 * arm[c].y * half_turn * half_turn;
+    };
+    const double window = 3.0 * 2.0 * u_y / (g - w * w * R);
+    double reference = std::numeric_limits<double>::infinity(), speed = 0.0;
+    for (int c = 0; c < 2; ++c) {
+      const double dt = window / 4000;
+      for (int k = 1; k <= 4000; ++k) {
+        if (height(c, k * dt) > 0) continue;
+        double lo = (k - 1) * dt, hi = k * dt;
+        ASSERT_GT(height(c, lo), 0) << "trial " << trial << ": the scan starts on the ground";
+        for (int i = 0; i < 200; ++i) (height(c, 0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+        if (hi < reference) {
+          reference = hi;
+          speed = std::abs(corner_kinematics(block, flight_pose(start, g, hi), c).u_y);
+        }
+        break;
+      }
+    }
+    ASSERT_TRUE(std::isfinite(reference)) << "trial " << trial;
+    const auto landing = first_landing(block, start, g, 10.0, 1e-5 * std::sqrt(R / g));
+    ASSERT_TRUE(landing.has_value()) << "trial " << trial;
+    const double resolution = 16 * std::numeric_limits<double>::epsilon() * (start.y + R) / speed;
+    EXPECT_NEAR(*landing, reference, 1e-15 + resolution) << "trial " << trial << " u_y " << u_y;
+  }
 }
 
 TEST(Flight, NoLandingWithinTheWindow) {
