@@ -14,9 +14,10 @@ namespace blockfrag {
 inline constexpr double kContactHeight = 1e-9;
 // A touching corner slower than this (over sqrt(g R)) rests or slips on the ground: no impact.
 inline constexpr double kRestingVelocity = 1e-9;
-// An impact slower than this (over sqrt(g R)) loses its bounce (e = 0), and one that would leave a
-// flat block rocking or bouncing lays it flat: ends Zeno sequences in finite time; the energy left
-// out is of the order of this velocity squared.
+// An impact whose rebound would be slower than this (over sqrt(g R)) loses its bounce (e = 0), and
+// one slower than this that would leave a flat block rocking or bouncing lays it flat: ends Zeno
+// sequences in finite time; the energy left out is of the order of this velocity squared. The
+// flat ground and a seat apply the same rules.
 inline constexpr double kSettleVelocity = 1e-6;
 // Impacts at one instant, one corner at a time, before the resolution gives up (a flat block's
 // two corners settle in a few rounds; more means the impact law does not converge).

@@ -148,7 +148,9 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
       lay_flat(s);
       return true;
     }
-    const double e = -fastest < settle_velocity_ ? 0.0 : e_;
+    // A bounce that would leave slower than the settling speed is one the rules above end at
+    // its next landing: the landing is plastic at once (a seat's rule too).
+    const double e = -fastest * e_ < settle_velocity_ ? 0.0 : e_;
     const BlockState start = s;
     // The paper's law at the corner that hits; when the block is flat and that would drive the
     // other corner into the ground (a flat landing), both corners take their impulses together.

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/contact/contact_resolution.hpp"
+#include "engine/tolerances.hpp"
 #include "tests/support/contact_states.hpp"
 #include "tests/support/paper_block.hpp"
 
@@ -74,6 +75,34 @@ TEST(ContactResolverImpact, AFlatBlockDroppedOnItsBaseBouncesStraightUpByNewtons
     EXPECT_NEAR(out.state.omega, 0.0, 1e-12);
     EXPECT_EQ(out.state.theta, 0.0);
     EXPECT_EQ(mode_kind(out.mode), e > 0 ? ModeKind::flight : ModeKind::rest);
+  }
+}
+
+TEST(ContactResolverImpact, ALandingWhoseReboundWouldBeSlowerThanTheSettlingSpeedIsPlastic) {
+  // Rocking back about the right corner, the left corner lands at 3 times the settling speed
+  // (kSettleVelocity sqrt(g R)). With e = 0.2 it would leave at 0.6 times that speed, a bounce
+  // the model ends anyway: the landing is plastic and the block rocks on about its left corner,
+  // at Housner's ratio (as with e = 0). With e = 0.5 it leaves at 1.5 times that speed: it bounces.
+  const double a = 0.5, b = 1.0, x = 3.0;
+  const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+  const double settle = kSettleVelocity * std::sqrt(g * geometry.size());
+  const double omega = 3.0 * settle / (2.0 * a);
+  const BlockState before = turning_about(a, b, 0.0, omega, x + a);
+  const double eta = 1.0 - 1.5 * a * a / (a * a + b * b);
+  {
+    const ContactOutcome out = ContactResolver(geometry, Contact{2.0, 0.2}, g).resolve(before, 0.0);
+    EXPECT_TRUE(out.impact);
+    const auto* rock = std::get_if<RockMode>(&out.mode);
+    ASSERT_NE(rock, nullptr) << mode_name(mode_kind(out.mode));
+    EXPECT_EQ(rock->pivot, Corner::left);
+    EXPECT_NEAR(out.state.omega, eta * omega, 1e-12 * omega);
+  }
+  {
+    const ContactOutcome out = ContactResolver(geometry, Contact{2.0, 0.5}, g).resolve(before, 0.0);
+    EXPECT_TRUE(out.impact);
+    EXPECT_EQ(mode_kind(out.mode), ModeKind::flight);
+    const CornerKinematics left = corner_kinematics(geometry, out.state, Corner::left);
+    EXPECT_NEAR(left.u_y, 0.5 * 3.0 * settle, 1e-9 * settle);
   }
 }
 
