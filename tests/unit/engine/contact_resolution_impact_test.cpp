@@ -106,6 +106,28 @@ TEST(ContactResolverImpact, ALandingWhoseReboundWouldBeSlowerThanTheSettlingSpee
   }
 }
 
+TEST(ContactResolverImpact, AFlatLandingSlowerThanTheSettlingSpeedEndsASlipSlowerThanItToo) {
+  // A flat block landing on both corners at half the settling speed is laid flat. Slipping at
+  // half that speed too, it is laid at rest, as a seat lays a block none of whose contacts moves
+  // faster than the settling speed; slipping at twice that speed, it goes on sliding.
+  const double a = 0.5, b = 1.0;
+  const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+  const ContactResolver resolver(geometry, Contact{0.4, 0.7}, g);  // mu < a/b: slides flat
+  const double settle = kSettleVelocity * std::sqrt(g * geometry.size());
+  for (const double slip : {0.5, 2.0}) {
+    SCOPED_TRACE(slip);
+    BlockState before = flat_state(b, 1.0);
+    before.vy = -0.5 * settle;
+    before.vx = slip * settle;
+    const ContactOutcome out = resolver.resolve(before, 0.0);
+    EXPECT_TRUE(out.impact);
+    EXPECT_EQ(out.state.vy, 0.0);
+    EXPECT_EQ(out.state.omega, 0.0);
+    EXPECT_EQ(mode_kind(out.mode), slip < 1.0 ? ModeKind::rest : ModeKind::slide);
+    EXPECT_EQ(out.state.vx, slip < 1.0 ? 0.0 : slip * settle);
+  }
+}
+
 // A fixed-seed source of uniforms that is the same on every platform: std::mt19937_64's output
 // sequence is fixed by the standard (unlike the std::*_distribution classes), its top 53 bits map
 // to [0, 1) exactly.
