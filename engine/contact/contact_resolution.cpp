@@ -56,8 +56,9 @@ ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& c
 void ContactResolver::lay_flat(BlockState& s) const {
   s.vx = 0.5 * (corner_kinematics(geometry_, s, Corner::left).u_x +
                 corner_kinematics(geometry_, s, Corner::right).u_x);
-  // A slip slower than the settling speed ends with the landing, as every corner velocity that
-  // slow does (a seat's rule too): left going, friction stopped it within a microsecond.
+  // A slip slower than the settling speed ends with the landing, as a seat ends it: below that
+  // speed the rules end every motion of the corners (left going, friction stopped it within a
+  // microsecond at the cross-check's mu, and its start was counted as the run's slide onset).
   if (std::abs(s.vx) <= settle_velocity_) s.vx = 0.0;
   s.theta = 0.0;
   s.y = geometry_.rest_height();
