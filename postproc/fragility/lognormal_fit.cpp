@@ -98,18 +98,24 @@ ProbitEvaluation evaluate(const std::vector<Level>& levels, double centre, Probi
   for (const auto& level : levels) {
     const double v = level.u - centre;
     const double eta = point.a + point.s * v;
-    const double log_p = log_normal_cdf(eta);
-    const double log_q = log_normal_cdf(-eta);
     const double misses = level.n - level.z;
-    const double hit_term = level.z > 0.0 ? level.z * log_p : 0.0;
-    const double miss_term = misses > 0.0 ? misses * log_q : 0.0;
+    // Mills ratios phi / Phi and phi / (1 - Phi) from logarithms: finite in both tails. Each is
+    // needed only where its count is not zero (a level of one trial needs one of the two).
+    const double log_density = -0.5 * eta * eta - log_sqrt_2pi;
+    double hit_term = 0.0, miss_term = 0.0, ratio_p = 0.0, ratio_q = 0.0;
+    if (level.z > 0.0) {
+      const double log_p = log_normal_cdf(eta);
+      hit_term = level.z * log_p;
+      ratio_p = std::exp(log_density - log_p);
+    }
+    if (misses > 0.0) {
+      const double log_q = log_normal_cdf(-eta);
+      miss_term = misses * log_q;
+      ratio_q = std::exp(log_density - log_q);
+    }
     e.kernel += hit_term + miss_term;
     e.kernel_scale -= hit_term + miss_term;  // both terms are <= 0
     e.log_likelihood += log_choose(level.n, level.z) + hit_term + miss_term;
-    // Mills ratios phi / Phi and phi / (1 - Phi) from logarithms: finite in both tails.
-    const double log_density = -0.5 * eta * eta - log_sqrt_2pi;
-    const double ratio_p = std::exp(log_density - log_p);
-    const double ratio_q = std::exp(log_density - log_q);
     const double slope = level.z * ratio_p - misses * ratio_q;
     const double weight = std::max(0.0, level.z * ratio_p * (eta + ratio_p)) +
                           std::max(0.0, misses * ratio_q * (ratio_q - eta));
