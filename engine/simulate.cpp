@@ -327,13 +327,17 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
   // Only the horizontal drift feels the ground motion, and it has a closed form too.
   const GroundDrift drift(piece, t0);
   const double x0 = state_.x, vx0 = state_.vx;
-  const auto pose = [&](double t) {
+  const auto pose_at = [&](double t) {
     BlockState s = flight_pose(start, g, t - t0);
     const GroundDrift::Integrals ground = drift.at(t);
     s.x = x0 + vx0 * (t - t0) + g * ground.second;
     s.vx = vx0 + g * ground.first;
     return s;
   };
+  // The end is asked for twice (the observer's last part, then the state the flight leaves): its
+  // pulse integrals are the dearest part of a chattering block's flight.
+  const BlockState end = pose_at(t_end);
+  const auto pose = [&](double t) { return t == t_end ? end : pose_at(t); };
   // The observer sees the flight in equal parts no longer than an integrator's step could be,
   // so it finds where x turns inside the flight as it does in the other modes.
   const auto forces_at = [](double) { return ContactForces{0.0, 0.0}; };
@@ -346,7 +350,6 @@ void Simulation::advance(const FlightMode&, const MotionPiece& piece, double t_s
       from = to;
     }
   }
-  const BlockState end = pose(t_end);
   if (overturns) {
     overturn_at(t_end, end);
     return;
