@@ -26,6 +26,12 @@ class SegmentObserver {
   }
 
   void observe_state(const BlockState& s) {
+    // An impact changes velocities only: the state after it is where the step into it ended,
+    // already looked at.
+    if (s.x == last_x_ && s.y == last_y_ && s.theta == last_theta_) return;
+    last_x_ = s.x;
+    last_y_ = s.y;
+    last_theta_ = s.theta;
     summary_.max_abs_theta = std::max(summary_.max_abs_theta, std::abs(s.theta));
     summary_.max_abs_slide = std::max(summary_.max_abs_slide, std::abs(s.x - x0_));
     const Rotation turn = geometry_.rotation(s.theta);
@@ -83,6 +89,9 @@ class SegmentObserver {
   const BlockGeometry& geometry_;
   double interval_, g_;
   double x0_ = 0.0;
+  // The pose last looked at (NaN: none yet).
+  double last_x_ = std::numeric_limits<double>::quiet_NaN(), last_y_ = last_x_,
+         last_theta_ = last_x_;
   double next_output_ = 0.0;
   long outputs_ = 0;
   std::vector<HistoryRow> history_;
