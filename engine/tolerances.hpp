@@ -16,9 +16,12 @@ inline constexpr double kContactHeight = 1e-9;
 inline constexpr double kRestingVelocity = 1e-9;
 // An impact whose rebound would be slower than this (over sqrt(g R)) loses its bounce (e = 0), and
 // one slower than this that would leave a flat block rocking or bouncing lays it flat: ends Zeno
-// sequences in finite time; the energy left out is of the order of this velocity squared. The
-// flat ground and a seat apply the same rules.
-inline constexpr double kSettleVelocity = 1e-6;
+// sequences in finite time. g is the gravity the block feels, g (1 + lambda_v). A corner leaving
+// the ground at v rises v^2 / (2 g): at this speed, within the contact height, so the bounces the
+// rule ends are ones whose flight no event could tell from touching. The energy left out is
+// below g kContactHeight R per unit mass.
+inline constexpr double kSettleVelocity = 4.47e-5;
+static_assert(kSettleVelocity * kSettleVelocity / 2 <= kContactHeight);
 // Impacts at one instant, one corner at a time, before the resolution gives up (a flat block's
 // two corners settle in a few rounds; more means the impact law does not converge).
 inline constexpr int kMaxImpactRounds = 64;

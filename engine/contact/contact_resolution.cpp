@@ -49,17 +49,16 @@ ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& c
       e_(contact.restitution),
       g_(g),
       height_tol_(kContactHeight * geometry.size()),
-      velocity_tol_(kRestingVelocity * std::sqrt(g * geometry.size())),
-      settle_velocity_(kSettleVelocity * std::sqrt(g * geometry.size())) {}
+      velocity_tol_(kRestingVelocity * std::sqrt(g * geometry.size())) {}
 
 // Keeps the base's slip velocity (a sticking base stays stuck), drops the rotation and bounce.
-void ContactResolver::lay_flat(BlockState& s) const {
+void ContactResolver::lay_flat(BlockState& s, double settle_velocity) const {
   s.vx = 0.5 * (corner_kinematics(geometry_, s, Corner::left).u_x +
                 corner_kinematics(geometry_, s, Corner::right).u_x);
   // A slip slower than the settling speed ends with the landing, as a seat ends it: below that
   // speed the rules end every motion of the corners (left going, friction stopped it within a
   // microsecond at the cross-check's mu, and its start was counted as the run's slide onset).
-  if (std::abs(s.vx) <= settle_velocity_) s.vx = 0.0;
+  if (std::abs(s.vx) <= settle_velocity) s.vx = 0.0;
   s.theta = 0.0;
   s.y = geometry_.rest_height();
   s.vy = 0.0;
@@ -135,7 +134,8 @@ bool ContactResolver::flat_impact(BlockState& s, double e) const {
   return false;
 }
 
-bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const {
+bool ContactResolver::resolve_impacts(BlockState& s, double settle_velocity,
+                                      ContactOutcome& out) const {
   const double M = 1.0, I = geometry_.inertia_per_mass();  // per unit mass
   for (int round = 0; round < kMaxImpactRounds; ++round) {
     const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
@@ -148,13 +148,13 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
     const double before = kinetic_energy(velocity_of(s), M, I);
     const bool flat = touches(kl) && touches(kr);
     const double fastest = std::min(left_hits ? kl.u_y : 0.0, right_hits ? kr.u_y : 0.0);
-    if (flat && -fastest < settle_velocity_) {
-      lay_flat(s);
+    if (flat && -fastest < settle_velocity) {
+      lay_flat(s, settle_velocity);
       return true;
     }
     // A bounce that would leave slower than the settling speed is one the rules above end at
     // its next landing: the landing is plastic at once (a seat's rule too).
-    const double e = -fastest * e_ < settle_velocity_ ? 0.0 : e_;
+    const double e = -fastest * e_ < settle_velocity ? 0.0 : e_;
     const BlockState start = s;
     // The paper's law at the corner that hits; when the block is flat and that would drive the
     // other corner into the ground (a flat landing), both corners take their impulses together.
@@ -170,7 +170,7 @@ bool ContactResolver::resolve_impacts(BlockState& s, ContactOutcome& out) const 
         const double gained = kinetic_energy(velocity_of(together), M, I) - before;
         if (gained > kImpactRounding * before) {
           together = start;
-          if (!flat_impact(together, 0.0)) lay_flat(together);
+          if (!flat_impact(together, 0.0)) lay_flat(together, settle_velocity);
         }
         s = together;
       }
@@ -208,8 +208,9 @@ bool ContactResolver::can_slide_rock(const BlockState& s, Corner pivot, int slip
   return other_corner_lift_acceleration(r, r_other, s.omega, k.theta_dd) > 0;
 }
 
-Mode ContactResolver::classify_flat(BlockState& s, double lambda, double gravity) const {
-  lay_flat(s);
+Mode ContactResolver::classify_flat(BlockState& s, double lambda, double gravity,
+                                    double settle_velocity) const {
+  lay_flat(s, settle_velocity);
   if (std::abs(s.vx) > velocity_tol_) {
     const int slip = sign_of(s.vx);
     if (mu_ <= geometry_.flat_slide_friction_limit(slip)) return SlideMode{slip};
@@ -302,21 +303,24 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
   ContactOutcome out;
   out.state = state;
   BlockState& s = out.state;
-  if (!resolve_impacts(s, out)) {
+  // The settling speed in the gravity the block feels: none where the ground falls faster than g.
+  const double settle_velocity =
+      kSettleVelocity * std::sqrt(std::max(g_ * gravity_factor, 0.0) * geometry_.size());
+  if (!resolve_impacts(s, settle_velocity, out)) {
     const bool flat = touches(corner_kinematics(geometry_, s, Corner::left)) &&
                       touches(corner_kinematics(geometry_, s, Corner::right));
     if (!flat) {
       throw SimulationFailure("impacts did not end after " + std::to_string(kMaxImpactRounds) +
                               " rounds");
     }
-    lay_flat(s);
+    lay_flat(s, settle_velocity);
   }
   const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
   const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
   // A flat block whose corners barely move off the ground would rock in ever smaller, ever faster
   // swings (Zeno): lay it flat, as the impacts below the settle velocity do.
   const bool settles =
-      touches(kl) && touches(kr) && std::max(std::abs(kl.u_y), std::abs(kr.u_y)) < settle_velocity_;
+      touches(kl) && touches(kr) && std::max(std::abs(kl.u_y), std::abs(kr.u_y)) < settle_velocity;
   const bool left = settles || (touches(kl) && kl.u_y <= velocity_tol_);
   const bool right = settles || (touches(kr) && kr.u_y <= velocity_tol_);
   // The ground falling faster than g carries no load: nothing holds the block to it.
@@ -326,7 +330,7 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
   }
   const double effective_lambda = lambda / gravity_factor, gravity = g_ * gravity_factor;
   if (left && right) {
-    out.mode = classify_flat(s, effective_lambda, gravity);
+    out.mode = classify_flat(s, effective_lambda, gravity, settle_velocity);
   } else if (left || right) {
     out.mode =
         classify_one_corner(s, left ? Corner::left : Corner::right, effective_lambda, gravity, out);

@@ -19,7 +19,8 @@ struct ContactOutcome {
 
 class ContactResolver {
  public:
-  // The contact tolerances (engine/tolerances.hpp) are scaled by the block's size R and sqrt(g R).
+  // The contact tolerances (engine/tolerances.hpp) are scaled by the block's size R and sqrt(g R),
+  // the settling speed by sqrt(g (1 + lambda_v) R).
   ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g);
 
   // gravity_factor: 1 + lambda_v, gravity in the ground's frame over g. Throws SimulationFailure
@@ -29,11 +30,11 @@ class ContactResolver {
  private:
   bool touches(const CornerKinematics& k) const { return k.height <= height_tol_; }
   // Impacts, one contact point at a time, until no corner approaches; false if it does not end.
-  bool resolve_impacts(BlockState& s, ContactOutcome& out) const;
+  bool resolve_impacts(BlockState& s, double settle_velocity, ContactOutcome& out) const;
   bool flat_impact(BlockState& s, double e) const;
-  void lay_flat(BlockState& s) const;
+  void lay_flat(BlockState& s, double settle_velocity) const;
   // lambda and gravity here are the effective ones: lambda g / g_v and g_v = g (1 + lambda_v).
-  Mode classify_flat(BlockState& s, double lambda, double gravity) const;
+  Mode classify_flat(BlockState& s, double lambda, double gravity, double settle_velocity) const;
   Mode classify_one_corner(BlockState& s, Corner pivot, double lambda, double gravity,
                            ContactOutcome& out) const;
   bool can_rock(const BlockState& s, Corner pivot, double lambda, double gravity,
@@ -43,7 +44,7 @@ class ContactResolver {
 
   const BlockGeometry& geometry_;
   double mu_, e_, g_;
-  double height_tol_, velocity_tol_, settle_velocity_;
+  double height_tol_, velocity_tol_;
 };
 
 }  // namespace blockfrag

@@ -95,21 +95,21 @@ TEST(HousnerRules, WithoutImpactLossesTheHandOverKeepsOmega) {
 
 TEST(HousnerRules, ALandingSlowerThanTheSettleVelocityLaysTheBlockFlat) {
   // The other corner lands at |omega| 2a; once slower than kSettleVelocity sqrt(g R) =
-  // 3.311784e-6 m/s (after the impact's 0.7) the block lies flat: omega = 4e-6 rad/s leaves
-  // 2.8e-6 m/s (flat, at rest under lambda = 0), 5e-6 leaves 3.5e-6 (rocks on). Without losses
-  // 4e-6 stays 4e-6: it rocks on. Flat under lambda = 0.6 > a/b it starts to rock again at once.
-  ASSERT_NEAR(kSettleVelocity * sqrt_gR, 3.311784e-6, 5e-13);
+  // 1.4803675e-4 m/s (after the impact's 0.7) the block lies flat: omega = 2e-4 rad/s leaves
+  // 1.4e-4 m/s (flat, at rest under lambda = 0), 2.2e-4 leaves 1.54e-4 (rocks on). Without losses
+  // 2e-4 stays 2e-4: it rocks on. Flat under lambda = 0.6 > a/b it starts to rock again at once.
+  ASSERT_NEAR(kSettleVelocity * sqrt_gR, 1.4803675e-4, 5e-12);
   const HousnerRules lossy(paper_block, true, g), lossless(paper_block, false, g);
   const auto after = [&](const HousnerRules& rules, double omega, double lambda) {
     return rules.impact(turning_about(a, b, 0.0, omega, a), Corner::right, lambda);
   };
-  const ContactOutcome settled = after(lossy, 4e-6, 0.0);
+  const ContactOutcome settled = after(lossy, 2e-4, 0.0);
   EXPECT_EQ(mode_kind(settled.mode), ModeKind::rest);
   EXPECT_EQ(settled.state.omega, 0.0);
   EXPECT_EQ(settled.state.y, b);
-  EXPECT_EQ(mode_kind(after(lossy, 5e-6, 0.0).mode), ModeKind::rock);
-  EXPECT_EQ(mode_kind(after(lossless, 4e-6, 0.0).mode), ModeKind::rock);
-  const ContactOutcome pushed = after(lossy, 4e-6, 0.6);
+  EXPECT_EQ(mode_kind(after(lossy, 2.2e-4, 0.0).mode), ModeKind::rock);
+  EXPECT_EQ(mode_kind(after(lossless, 2e-4, 0.0).mode), ModeKind::rock);
+  const ContactOutcome pushed = after(lossy, 2e-4, 0.6);
   const auto* rock = std::get_if<RockMode>(&pushed.mode);
   ASSERT_NE(rock, nullptr);
   EXPECT_EQ(rock->pivot, Corner::right);
