@@ -335,13 +335,13 @@ SeatMode SeatSimulation::resolve() {
   // landing, or leaving after the impact, slower than that speed settles the block): it ends a Zeno
   // sequence of ever smaller bounces in finite time. Whatever the landing's speed: a landing just
   // faster than the settling speed whose impact leaves the other contact slower would rock on in
-  // swings too small for the touch guard to see (rock_stocky, e = 0: in at 1.14 times the
-  // settling speed, out at 0.49 times it, an impact every microsecond without end). At e = 0 a
+  // swings too small for the touch guard to see (rock_stocky, e = 0: in at 1.13 times the
+  // settling speed, out at 0.47 times it, an impact every microsecond without end). At e = 0 a
   // block that still slides along the seat is laid on its contacts instead, as the flat ground's
-  // lay_flat keeps its slide: their normal velocities to zero, the least change in the
-  // kinetic metric (a block sliding at 1.4 m/s and rocking from corner to corner in swings of
-  // 1e-6 m/s, e = 0, made an impact every 1e-6 s without end: random-0796 of the flat-seat
-  // cross-check). With e > 0 it is left as it is: laid on the seat after a slow landing, a
+  // lay_flat keeps its slide: their normal velocities to zero, their slip kept (lay_on). Laid at
+  // rest, a block sliding at 1.4 m/s and rocking from corner to corner in ever smaller swings made
+  // an impact every microsecond without end (random-0796 of the flat-seat cross-check, e = 0).
+  // With e > 0 it is left as it is: laid on the seat after a slow landing, a
   // bouncing block ended its slide 0.4 R short of the flat ground's (random-0395).
   bool landed = impacted && pairs.size() >= 2, sliding = false;
   const double settle = settle_velocity();
@@ -475,12 +475,12 @@ Eigen::Vector3d SeatSimulation::least_kinetic_change(const Eigen::MatrixXd& j,
   return change;
 }
 
-// Sets the pairs' normal velocities to zero, changing their slip along the seat as little as
-// possible: the flat ground's lay_flat, which keeps the base's slip velocity. Taken with the least
-// change in the kinetic metric instead (the centre's velocity kept), a block rocking as it slid
-// slid on at the slip plus omega times its height: 6e-5 R further than on the flat ground
-// (SlidingBlockRockingAtZeroRestitutionIsLaidOnTheSeat). Of the changes that keep the slip as
-// well, the least in the kinetic metric (two distinct contact points leave none to choose).
+// Sets the pairs' normal velocities to zero with the least change in the kinetic metric, then,
+// among the changes that leave those velocities alone, brings the pairs' slip along the seat back
+// as near to what it was as they allow: on a flat seat, the flat ground's lay_flat, which keeps
+// the base's slip velocity. With the kinetic metric alone (the centre's velocity kept) a block
+// rocking as it slid went on at its slip plus omega times its height, 6e-5 R further than on the
+// flat ground (SlidingBlockRockingAtZeroRestitutionIsLaidOnTheSeat).
 void SeatSimulation::lay_on(const std::vector<SeatPair>& pairs, BlockState& s) const {
   const auto k = static_cast<Eigen::Index>(pairs.size());
   Eigen::MatrixXd normal(k, 3), tangent(k, 3);

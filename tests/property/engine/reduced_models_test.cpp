@@ -56,7 +56,7 @@ TEST(HousnerModel, EqualsTheFullModelForASlenderBlockWithHugeFriction) {
         if (!only_rests_and_rocks(full) || full.overturned) continue;
         const Summary housner = simulate(with(scene, kHousner));
         EXPECT_EQ(housner.model, Model::housner_rocking);
-        // The two step with different guard sets, so their steps differ; over up to ~300 impacts
+        // The two step with different guard sets, so their steps differ; over up to ~240 impacts
         // at tolerance 1e-10 per step the answers drift apart by ~1e-8 rad.
         expect_same_response(full, housner, 1e-7);
         rocked += full.impacts > 0;
