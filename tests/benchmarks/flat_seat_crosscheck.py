@@ -29,9 +29,8 @@ fraction of seat runs whose difference is at least x.
     /usr/bin/python3 tests/benchmarks/flat_seat_crosscheck.py --blockfrag build/mpi_driver/blockfrag \\
         --figure docs/flat_seat_crosscheck.png
 
-About 2.5 minutes on 2 cores for the suite and 1,000 random scenes, most of it in the seat runs
-stopped at the CPU-time limit. Each scene's files are written into a fresh temporary folder, removed
-after its runs.
+About 40 s on 2 idle cores for the suite and 1,000 random scenes, most of it in the seat runs.
+Each scene's files are written into a fresh temporary folder, removed after its runs.
 """
 
 import argparse
@@ -64,11 +63,11 @@ REFUSED = 2
 # Every run's event budget (solver.max_events, both engines), far below the default 1,000,000: a
 # block whose contact state keeps changing fails in seconds instead of minutes. The most events a
 # run that ended took over the suite and 1,000 random scenes: 3,473 on the flat ground (rest under
-# a ringing dam crest), 5,611 on a seat.
+# a ringing dam crest), 3,414 on a seat (random-0875, e = 0.95).
 EVENT_BUDGET = 10000
 # s of CPU time: a run that has used this much has no summary (a seat's storm of contact changes
-# among three contacts costs up to 10 ms an event); the slowest run that ended took 1.2 s on a seat
-# (5,611 events) and 0.07 s on the flat ground. CPU time, not wall time: a machine loaded by other
+# among three contacts costs up to 10 ms an event); the slowest run that ended took 0.26 s on a
+# seat (random-0108) and 0.02 s on the flat ground. CPU time, not wall time: a machine loaded by other
 # work slows a run's clock, not its work, and a limit on the clock turned slow runs into failures.
 DEFAULT_RUN_TIMEOUT = 6.0
 # A run that has not ended after this many times its CPU limit of wall time is stopped too: one
