@@ -29,6 +29,7 @@ class MpiSession {
 
  private:
   bool owner_ = false;
+  std::filesystem::path session_folder_;  // a singleton's own Open MPI session tree, if made
 };
 
 // BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S (seconds; 0 when unset): the test hook that pauses every
