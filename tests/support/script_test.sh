@@ -14,6 +14,10 @@ fail() {
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# Every temporary file of the test's runs, Open MPI's session folders too, in its scratch folder:
+# a run the test kills with SIGKILL leaves nothing behind in the machine's temporary directory.
+mkdir "$work/tmp"
+export TMPDIR="$work/tmp"
 
 # check NAME COMMAND...: one pass when COMMAND succeeds, one fail named NAME when it does not.
 check() {
