@@ -9,9 +9,6 @@ namespace blockfrag {
 
 namespace {
 
-// Relative to g: accelerations this close count as equal.
-constexpr double kForceTolerance = 1e-9;
-
 // The velocity-product terms of the contact's accelerations: the material point's centripetal
 // acceleration -omega^2 r, and for a seat point on a block edge the turning of the edge's normal,
 // -2 omega u_t (the gap n . (p - s) with n turning at omega: 2 n' . p' = -2 omega t . u).
@@ -42,8 +39,7 @@ ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelo
 PlanarForces resolve_contact_forces(const PlanarForcesInput& in, LcpSearch search) {
   const Eigen::Vector3d inverse_mass(1.0, 1.0, 1.0 / in.inertia_per_mass);
   const BodyAcceleration free{in.applied.x, in.applied.y, 0.0};
-  LcpProblem problem{{},        inverse_mass, in.friction, kForceTolerance * in.g,
-                     in.length, in.must_move};
+  LcpProblem problem{{}, inverse_mass, in.friction, in.tolerance * in.g, in.length, in.must_move};
   for (const PlanarContact& c : in.contacts) {
     const ContactAcceleration y = contact_acceleration(c, in.velocity, free);
     const double u_t = contact_velocity(c, in.velocity).tangent;

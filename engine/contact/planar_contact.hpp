@@ -70,8 +70,12 @@ struct PlanarForcesInput {
   double friction;          // mu
   // A contact whose |u_t| exceeds this slips (its friction is -sign(u_t) mu V): m/s.
   double slip_velocity;
-  double g;       // scales the tolerances (accelerations are compared to 1e-9 g)
+  double g;       // scales the tolerances (accelerations are compared to tolerance g)
   double length;  // R, m: theta'' is compared through R theta''
+  // Relative to g: accelerations this close count as equal, forces this far outside their cones
+  // as inside. Loose enough for the drift of an integrated state between events; a question asked
+  // of a state laid exactly on its contacts (where rest ends) can ask it tighter.
+  double tolerance = 1e-9;
   // The body may not stay put: choices that leave it no freedom are skipped (LcpProblem).
   bool must_move = false;
 };

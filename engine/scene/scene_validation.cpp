@@ -69,7 +69,7 @@ void validate_block(const Scene& scene) {
 }
 
 // The seat's points, its fit with the block at rest (engine/scene/seat.hpp), a block released
-// flat on it, and few enough vertices and points for the seat's guards (one each).
+// tilted clear of it, and few enough vertices and points for the seat's guards (one each).
 void validate_seat(const Scene& scene) {
   const auto& points = scene.seat->points;
   if (static_cast<double>(points.size()) > domain::kMaxSeatPoints) {
@@ -88,7 +88,12 @@ void validate_seat(const Scene& scene) {
         defect->point < 0 ? "" : " point " + std::to_string(defect->point) + ":";
     throw InvalidInput("invalid scene: seat:" + where + " " + defect->rule);
   }
-  require(scene.initial.theta == 0.0, "initial theta must be 0 on a seat (the block rests on it)");
+  if (scene.initial.theta != 0.0) {
+    if (const auto rule = tilt_defect(points, scene_block_vertices(scene), scene.initial.theta,
+                                      kContactHeight * geometry.size())) {
+      refuse("initial theta: " + *rule);
+    }
+  }
   require(model_named_by(scene.effects) == Model::full,
           "effects on a seat must be \"auto\" or the full model's (rocking, sliding, impact, "
           "flight): a seat's simulation has no reduced models");

@@ -130,6 +130,45 @@ bool weight_carried(const std::vector<RestContact>& contacts, Point centroid, do
   return false;
 }
 
+// The block where it is enters the seat: a vertex below it, a seat point inside the block, or a
+// block edge crossing a seat segment.
+std::optional<SeatDefect> overlap_defect(const std::vector<Vertex>& seat,
+                                         const std::vector<Vertex>& block, double tolerance) {
+  for (std::size_t j = 0; j < block.size(); ++j) {
+    const double x = block[j][0];
+    if (x < seat.front()[0] || x > seat.back()[0]) continue;
+    const double below = seat_height(seat, x) - block[j][1];
+    if (below > tolerance) {
+      return SeatDefect{-1, "block vertex " + std::to_string(j) + " lies " + format_number(below) +
+                                " m below the seat"};
+    }
+  }
+  for (std::size_t i = 0; i < seat.size(); ++i) {
+    const Point p = at(seat[i]);
+    if (inside(block, p) && distance_to_boundary(block, p) > tolerance) {
+      return SeatDefect{static_cast<int>(i), "lies inside the block"};
+    }
+  }
+  for (std::size_t i = 0; i + 1 < seat.size(); ++i) {
+    const Point a = at(seat[i]), b = at(seat[i + 1]);
+    for (std::size_t j = 0; j < block.size(); ++j) {
+      const Point c = at(block[j]), d = at(block[(j + 1) % block.size()]);
+      const double c_side = side(a, b, c), d_side = side(a, b, d);
+      const double a_side = side(c, d, a), b_side = side(c, d, b);
+      const bool crosses_seat = (c_side > tolerance && d_side < -tolerance) ||
+                                (c_side < -tolerance && d_side > tolerance);
+      const bool crosses_edge = (a_side > tolerance && b_side < -tolerance) ||
+                                (a_side < -tolerance && b_side > tolerance);
+      if (crosses_seat && crosses_edge) {
+        return SeatDefect{static_cast<int>(i), "the segment to the next point crosses block edge " +
+                                                   std::to_string(j) +
+                                                   " (the block is in the seat)"};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
@@ -178,38 +217,7 @@ std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
                         "right, a height over x)"};
     }
   }
-  for (std::size_t j = 0; j < block.size(); ++j) {
-    const double x = block[j][0];
-    if (x < seat.front()[0] || x > seat.back()[0]) continue;
-    const double below = seat_height(seat, x) - block[j][1];
-    if (below > tolerance) {
-      return SeatDefect{-1, "block vertex " + std::to_string(j) + " lies " + format_number(below) +
-                                " m below the seat"};
-    }
-  }
-  for (std::size_t i = 0; i < seat.size(); ++i) {
-    const Point p = at(seat[i]);
-    if (inside(block, p) && distance_to_boundary(block, p) > tolerance) {
-      return SeatDefect{static_cast<int>(i), "lies inside the block"};
-    }
-  }
-  for (std::size_t i = 0; i + 1 < seat.size(); ++i) {
-    const Point a = at(seat[i]), b = at(seat[i + 1]);
-    for (std::size_t j = 0; j < block.size(); ++j) {
-      const Point c = at(block[j]), d = at(block[(j + 1) % block.size()]);
-      const double c_side = side(a, b, c), d_side = side(a, b, d);
-      const double a_side = side(c, d, a), b_side = side(c, d, b);
-      const bool crosses_seat = (c_side > tolerance && d_side < -tolerance) ||
-                                (c_side < -tolerance && d_side > tolerance);
-      const bool crosses_edge = (a_side > tolerance && b_side < -tolerance) ||
-                                (a_side < -tolerance && b_side > tolerance);
-      if (crosses_seat && crosses_edge) {
-        return SeatDefect{static_cast<int>(i), "the segment to the next point crosses block edge " +
-                                                   std::to_string(j) +
-                                                   " (the block is in the seat)"};
-      }
-    }
-  }
+  if (auto defect = overlap_defect(seat, block, tolerance)) return defect;
   const std::vector<RestContact> contacts = rest_contacts(seat, block, tolerance);
   if (contacts.empty())
     return SeatDefect{-1, "does not touch the block (the block must rest on it)"};
@@ -226,6 +234,35 @@ std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
         "they touch balance its weight (the centre of mass must lie over its support)"};
   }
   return std::nullopt;
+}
+
+SeatTilt tilt_on_seat(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
+                      double theta, double tolerance) {
+  const std::vector<RestContact> contacts = rest_contacts(seat, block, tolerance);
+  const auto by_x = [](const RestContact& a, const RestContact& b) {
+    return a.point[0] < b.point[0];
+  };
+  const Vertex pivot = theta > 0 ? std::min_element(contacts.begin(), contacts.end(), by_x)->point
+                                 : std::max_element(contacts.begin(), contacts.end(), by_x)->point;
+  const double c = std::cos(theta), s = std::sin(theta);
+  const auto turned = [&](const Vertex& v) {
+    const double dx = v[0] - pivot[0], dy = v[1] - pivot[1];
+    return Vertex{pivot[0] + c * dx - s * dy, pivot[1] + s * dx + c * dy};
+  };
+  SeatTilt tilt{pivot, {}, turned(polygon_properties(block).centroid)};
+  for (const Vertex& v : block) tilt.vertices.push_back(turned(v));
+  return tilt;
+}
+
+std::optional<std::string> tilt_defect(const std::vector<Vertex>& seat,
+                                       const std::vector<Vertex>& block, double theta,
+                                       double tolerance) {
+  const auto defect =
+      overlap_defect(seat, tilt_on_seat(seat, block, theta, tolerance).vertices, tolerance);
+  if (!defect) return std::nullopt;
+  const std::string where =
+      defect->point < 0 ? "" : "seat point " + std::to_string(defect->point) + ": ";
+  return "the block released tilted by it would enter the seat: " + where + defect->rule;
 }
 
 std::vector<Vertex> scene_block_vertices(const Scene& scene) {

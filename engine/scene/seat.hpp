@@ -52,6 +52,24 @@ std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
 double seat_alpha(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
                   double tolerance);
 
+// Where the block resting on its seat is released from when it starts tilted by theta
+// (counter-clockwise > 0): turned about the leftmost point where it touches for theta > 0, the
+// rightmost for theta < 0, as the flat ground releases it on the base corner the tilt lowers.
+struct SeatTilt {
+  Vertex pivot;                  // the point it turns about, in the frame of the block's vertices
+  std::vector<Vertex> vertices;  // the block's vertices turned about it
+  Vertex centre;                 // its centre of mass turned about it
+};
+SeatTilt tilt_on_seat(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
+                      double theta, double tolerance);
+
+// Why the block resting on its seat cannot be released tilted by theta, as a rule's text: turned
+// about its pivot, it would enter the seat (a vertex below it, a seat point inside the block, an
+// edge crossing a segment: a face pressed into an incline next to it).
+std::optional<std::string> tilt_defect(const std::vector<Vertex>& seat,
+                                       const std::vector<Vertex>& block, double theta,
+                                       double tolerance);
+
 // The scene's block as vertices in its own frame: the polygon, or the rectangle's corners about
 // its centre, counter-clockwise from the base's left end.
 std::vector<Vertex> scene_block_vertices(const Scene& scene);

@@ -61,6 +61,10 @@ class SeatContacts {
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
                                  const std::optional<SeatPair>& left, int arrived) const;
 
+  // Whether seat point k can touch a block edge: an end of the seat, or a point where it bends
+  // (off the line through its neighbours by more than the contact height).
+  bool touches_edges(int k) const { return point_touches_edges_[static_cast<std::size_t>(k)]; }
+
   // Whether the seat's points lie on one line (a flat seat, within `tolerance` m).
   bool straight(double tolerance) const;
   // How far theta is from overturning (> 0 inside): on a straight seat the flat ground's rule (the
@@ -95,6 +99,7 @@ class SeatContacts {
   std::vector<Vec2> seat_;
   Vec2 centre_;
   bool straight_ = false;  // set from the block's size: see the constructor
+  std::vector<bool> point_touches_edges_;
 };
 
 }  // namespace blockfrag

@@ -9,6 +9,7 @@
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/polygon_properties.hpp"
 #include "engine/scene/seat.hpp"
+#include "engine/tolerances.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/dam_json.hpp"
 #include "mpi_driver/config/effects_json.hpp"
@@ -192,14 +193,20 @@ void check_polygon_tilt(const PolygonBlock& polygon, double theta, const JsonPoi
   }
 }
 
-// The seat (mpi_driver/config/seat_json.hpp), and the block released flat on it.
+// The seat (mpi_driver/config/seat_json.hpp), and the block released on it, clear of it if tilted.
 void read_scene_seat(ObjectReader& root, bool block_valid, const JsonPointer& path,
                      ConfigErrors& errors, Scene& scene) {
   const std::vector<Vertex> block = scene_block_vertices(scene);
+  const std::size_t errors_before = errors.size();
   scene.seat = Seat{
       read_seat(*root.raw("seat"), root.path_of("seat"), errors, block_valid ? &block : nullptr)};
-  if (scene.initial.theta != 0.0) {
-    errors.add(path / "initial" / "theta", "must be 0 with a seat (the block rests on it)");
+  // A tilt is checked against a seat the block fits at rest: turned about its pivot, it must stay
+  // clear of the seat.
+  if (scene.initial.theta != 0.0 && block_valid && errors.size() == errors_before) {
+    const double tolerance = kContactHeight * BlockGeometry(PolygonBlock{block, 1.0}).size();
+    if (const auto rule = tilt_defect(scene.seat->points, block, scene.initial.theta, tolerance)) {
+      errors.add(path / "initial" / "theta", *rule);
+    }
   }
   const Effects& e = scene.effects;
   if (!e.automatic && !(e.rocking && e.sliding && e.impact && e.flight)) {

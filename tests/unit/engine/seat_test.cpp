@@ -138,9 +138,23 @@ TEST(Seat, SceneWithASeatIsChecked) {
   EXPECT_NO_THROW(validate_scene(scene));
   scene.seat = Seat{{{-10, -0.9}, {10, -0.9}}};
   expect_scene_refused(scene, "seat: block vertex 0 lies");
+  // Released tilted, the block turns about the base corner the tilt lowers: clear of a flat seat,
+  // but not of an incline rising from its right corner steeper than its face turned clockwise
+  // about that corner.
   scene.seat = Seat{{{-10, -1}, {10, -1}}};
   scene.initial.theta = 0.1;
-  expect_scene_refused(scene, "initial theta must be 0 on a seat");
+  EXPECT_NO_THROW(validate_scene(scene));
+  scene.initial.theta = -0.1;
+  EXPECT_NO_THROW(validate_scene(scene));
+  scene.seat = Seat{{{-10, -1}, {0.5, -1}, {0.6, 0.0}}};
+  scene.initial.theta = 0.1;
+  EXPECT_NO_THROW(validate_scene(scene));  // turning about the left corner lifts the face
+  scene.initial.theta = -0.1;
+  expect_scene_refused(scene,
+                       "initial theta: the block released tilted by it would enter the seat");
+  scene.seat = Seat{{{-10, -1}, {0.5, -1}, {0.8, 1.0}}};
+  EXPECT_NO_THROW(validate_scene(scene));  // less steep than the turned face: clear of it
+  scene.initial.theta = 0.0;
   // The seat's simulation is the full model's: a reduced one named is refused, not ignored.
   scene.initial.theta = 0.0;
   scene.effects = Effects{false, true, false, true, false, false};  // Housner with impacts
