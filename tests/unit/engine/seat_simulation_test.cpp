@@ -370,6 +370,35 @@ TEST(SeatSimulation, ReleasedTiltedOnAFlatSeatAsOnTheFlatGround) {
   expect_flat_ground_on_both_seats(scene, 0.0, 0.13, -1.0, 1e-9);
 }
 
+// A landing slower than the settling speed while another corner touches lays the block on its
+// contacts, their slip kept where that adds no kinetic energy: kept whatever the energy (as the
+// flat ground's lay_flat keeps its base's slip), it added 0.49 of the landing's kinetic energy to
+// this block (random-0742 of the flat-seat cross-check, 79 impacts, at rest at 0.290 s).
+TEST(SeatSimulation, LayingALandingBlockOnItsContactsAddsNoEnergy) {
+  Scene scene;
+  scene.solver.method = Method::rk4;
+  scene.polygon = PolygonBlock{{{0.0, 0.0},
+                                {0.9622103174243927, 0.0},
+                                {0.7139981140383377, 0.2212870661197487},
+                                {0.6223876866202778, 0.29422730706073047},
+                                {0.3425365395522242, 0.49185786345283583},
+                                {0.19028478808778815, 0.5832902008901003},
+                                {0.035757831360301195, 0.6627508456232125},
+                                {-0.3091318460979166, 0.7600347185643057},
+                                {-0.434353273557835, 0.6716445686369872},
+                                {-0.36033876012732313, 0.4348696502768991}},
+                               1.0};
+  scene.contact = {0.5741579121246091, 0.7059017808922867};
+  scene.ground_motion = RectangularPulse{-0.5595904009699593, 0.15022514991705654};
+  scene.duration = 3.0;
+  scene.seat = Seat{{{-99.5188948412878, 0.0}, {100.4811051587122, 0.0}}};
+  const Summary s = simulate(scene);
+  ASSERT_EQ(s.status, Status::ok) << s.status_reason;
+  ASSERT_TRUE(s.settled);
+  EXPECT_GT(s.impacts, 50);
+  EXPECT_LE(s.max_impact_energy_gain, 1e-12);
+}
+
 // A bounce that lands within the RK4 step of the impact it left from (random-0246 of the flat-seat
 // cross-check: a flight of 4.9e-5 s inside a 2.5e-4 s step, rising 2e-9 R) lands where its
 // vertex comes back to the seat, as the flat ground's closed-form flight does. Its guard, not
