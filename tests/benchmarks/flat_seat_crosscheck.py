@@ -21,7 +21,10 @@ verdicts (overturned, fell, settled, and whether each onset time exists) exactly
 angles in rad, slides over R (the block's farthest corner from its centre of mass). The report
 gives the counts per group (the suite, the random scenes by solver: the agreement depends on it),
 the largest |difference| per field with its scene and seat and how many scenes exceed 1e-9 on
-either seat, the verdict differences, the runs without a result (refused by the seat's engine, or
+either seat, what the values over 1e-9 are made of (the flat ground runs twice more: with g changed
+in its 15th digit, which tells a chaotic value from a determined one, and for an adaptive scene
+at tolerance 1e-12, the reference both engines' errors are measured against), the verdict
+differences, the runs without a result (refused by the seat's engine, or
 stopped by the budgets: 10,000 events, 6 s of CPU time) and the bookkeeping fields the engines are not expected to share
 (what each counts as an impact or an event, the steps each takes). --figure draws, per field, the
 fraction of seat runs whose difference is at least x.
@@ -29,7 +32,7 @@ fraction of seat runs whose difference is at least x.
     /usr/bin/python3 tests/benchmarks/flat_seat_crosscheck.py --blockfrag build/mpi_driver/blockfrag \\
         --figure docs/flat_seat_crosscheck.png
 
-About 40 s on 2 idle cores for the suite and 1,000 random scenes, most of it in the seat runs.
+About 45 s on 2 idle cores for the suite and 1,000 random scenes, most of it in the seat runs.
 Each scene's files are written into a fresh temporary folder, removed after its runs.
 """
 
@@ -73,6 +76,20 @@ DEFAULT_RUN_TIMEOUT = 6.0
 # A run that has not ended after this many times its CPU limit of wall time is stopped too: one
 # that waits without working would never reach the CPU limit.
 WALL_LIMIT_FACTOR = 20
+
+# Two more runs of the flat ground tell what a seat's difference over the tolerance is made of:
+# - PERTURBED, g * (1 + G_PERTURBATION) (5 ulps of 9.81): a change of the input no engine's
+#   rounding could tell from none; a field it moves by more than SENSITIVE (a thousand times the
+#   change) is amplified chaotically, and two implementations' roundings part as far;
+# - TIGHT, an adaptive scene at tolerance TIGHT_TOLERANCE: the reference both engines' errors at
+#   the scene's tolerance are measured against. Two discretizations each that far from it differ
+#   by up to the sum of their errors, whatever the tolerance asked of their agreement.
+PERTURBED = "flat_perturbed"
+TIGHT = "flat_tight"
+DEFAULT_G = 9.81
+G_PERTURBATION = 1e-15
+SENSITIVE = 1e-12
+TIGHT_TOLERANCE = 1e-12
 
 VERDICTS = ("overturned", "fell", "settled")
 # Each compared field with its unit: "R" is divided by the block's size before comparing.
@@ -307,11 +324,28 @@ def simulate(blockfrag, scene, path, timeout):
         return {"error": f"exit {result.returncode}: {message}", "seconds": seconds, "cpu_seconds": cpu_seconds}
 
 
+def perturbed(scene):
+    """The scene with g changed in its 15th digit: a change no engine's rounding could tell."""
+    return dict(scene, g=scene.get("g", DEFAULT_G) * (1.0 + G_PERTURBATION))
+
+
+def tightened(scene):
+    """The scene at TIGHT_TOLERANCE if it is adaptive and looser, else None (its own run is the reference)."""
+    solver = scene.get("solver", {})
+    if solver.get("method", "adaptive") != "adaptive" or solver.get("tolerance", 1e-8) <= TIGHT_TOLERANCE:
+        return None
+    return dict(scene, solver=dict(solver, tolerance=TIGHT_TOLERANCE))
+
+
 def run_case(blockfrag, timeout, case):
     """The flat ground's summary and each seat's, in a fresh folder."""
     with tempfile.TemporaryDirectory(prefix="flat_seat_") as folder:
         folder = Path(folder)
         runs = {"flat": simulate(blockfrag, case["scene"], folder / "flat.json", timeout)}
+        runs[PERTURBED] = simulate(blockfrag, perturbed(case["scene"]), folder / "perturbed.json", timeout)
+        tight = tightened(case["scene"])
+        if tight is not None:
+            runs[TIGHT] = simulate(blockfrag, tight, folder / "tight.json", timeout)
         for seat, points in case["seats"].items():
             runs[seat] = simulate(blockfrag, dict(case["scene"], seat=points), folder / f"{seat}.json", timeout)
     return dict(case, runs=runs)
@@ -331,16 +365,64 @@ def compare(flat, seat, size):
     verdicts = [f"{field}: {flat.get(field)} flat, {seat.get(field)} seat"
                 for field in VERDICTS if flat.get(field) != seat.get(field)]
     differences = {}
-    for field, unit in COMPARED.items():
-        a, b = flat.get(field), seat.get(field)
-        differences[field] = None
-        if a is not None and b is not None:
-            differences[field] = abs(a - b) / (size if unit == "R" else 1.0)
-        elif a is not None or b is not None:
-            verdicts.append(f"{field}: {number(a)} flat, {number(b)} seat")
+    for field in COMPARED:
+        difference = field_difference(flat, seat, field, size)
+        differences[field] = None if difference == math.inf else difference
+        if difference == math.inf:
+            verdicts.append(f"{field}: {number(flat.get(field))} flat, {number(seat.get(field))} seat")
     bookkeeping = {field: abs(flat[field] - seat[field]) for field in BOOKKEEPING}
     bookkeeping["modes"] = [m for _, m in flat["modes"]] != [m for _, m in seat["modes"]]
     return differences, verdicts, bookkeeping
+
+
+def field_difference(a, b, field, size):
+    """|a - b| in the field's unit; infinite where only one run has the value, None where neither."""
+    x, y = a.get(field), b.get(field)
+    if x is None and y is None:
+        return None
+    if x is None or y is None:
+        return math.inf
+    return abs(x - y) / (size if COMPARED[field] == "R" else 1.0)
+
+
+def references(result, seat):
+    """Per field, the flat ground's sensitivity (|flat - flat with g changed in its 15th digit|), and
+    the flat ground's and the seat's errors (|run - flat at TIGHT_TOLERANCE|; None without that run)."""
+    runs, size = result["runs"], result["size"]
+    perturbed_run, tight = runs[PERTURBED], runs.get(TIGHT)
+
+    def error(run, field):
+        if tight is None:
+            return None
+        return field_difference(run, tight, field, size) if outcome(tight) == "ok" else math.inf
+
+    return {"flat_sensitivity": {field: field_difference(runs["flat"], perturbed_run, field, size)
+                                 if outcome(perturbed_run) == "ok" else math.inf for field in COMPARED},
+            "flat_error": {field: error(runs["flat"], field) for field in COMPARED},
+            "seat_error": {field: error(runs[seat], field) for field in COMPARED}}
+
+
+# What a seat's difference over the tolerance is made of, in the report's order.
+EXPLANATIONS = {
+    "chaotic": f"chaotic (the flat ground's own value moves by more than {SENSITIVE:g} when g changes in its "
+               "15th digit)",
+    "as accurate": "the seat as near the reference as the flat ground",
+    "within 10x": "the seat's error within 10 times the flat ground's",
+    "neither": "neither",
+}
+
+
+def explanation(record, field):
+    """One of EXPLANATIONS' keys for a seat run's field over the tolerance."""
+    sensitivity = record["flat_sensitivity"][field]
+    if sensitivity is not None and sensitivity > SENSITIVE:
+        return "chaotic"
+    flat_error, seat_error = record["flat_error"][field], record["seat_error"][field]
+    if flat_error is None or seat_error is None:
+        return "neither"
+    if seat_error <= flat_error:
+        return "as accurate"
+    return "within 10x" if seat_error <= 10 * flat_error else "neither"
 
 
 def outcome(run):
@@ -371,7 +453,8 @@ def comparisons(results):
                 unfinished.append(dict(where, flat_outcome=flat_outcome, seat_outcome=seat_outcome))
                 continue
             differences, verdicts, bookkeeping = compare(flat, run, result["size"])
-            compared.append(dict(where, differences=differences, verdicts=verdicts, bookkeeping=bookkeeping))
+            compared.append(dict(where, differences=differences, verdicts=verdicts, bookkeeping=bookkeeping,
+                                 **references(result, seat)))
     return compared, unfinished
 
 
@@ -471,6 +554,36 @@ def per_scene_lines(records, describe):
     return lines
 
 
+def explained_table(compared):
+    """Per group, the (seat run, field) values over the tolerance by what they are made of."""
+    header = ["scenes", "values over the tolerance"] + list(EXPLANATIONS.values())
+    rows = []
+    for group in GROUPS:
+        over = [(r, field) for r in by_group(compared, group) for field in COMPARED
+                if r["differences"][field] is not None and r["differences"][field] > TOLERANCE]
+        kinds = [explanation(r, field) for r, field in over]
+        cells = []
+        for kind in EXPLANATIONS:
+            mine = [r for (r, _), k in zip(over, kinds) if k == kind]
+            cells.append(f"{len(mine)} ({scenes_of(mine)} scenes)")
+        rows.append([group, f"{len(over)} ({scenes_of([r for r, _ in over])} scenes)"] + cells)
+    return markdown(header, rows)
+
+
+def unexplained_lines(compared):
+    lines = []
+    for r in compared:
+        for field in COMPARED:
+            d = r["differences"][field]
+            if d is not None and d > TOLERANCE and explanation(r, field) == "neither":
+                flat_error, seat_error = r["flat_error"][field], r["seat_error"][field]
+                lines.append(f"- {r['scene']} ({r['group']}, {r['seat'].replace('_', ' ')}): `{field}` {number(d)}; "
+                             f"the flat ground's sensitivity {number(r['flat_sensitivity'][field])}"
+                             + ("" if flat_error is None else
+                                f", errors: flat ground {number(flat_error)}, seat {number(seat_error)}"))
+    return lines or ["none"]
+
+
 def bookkeeping_table(compared):
     header = ["field"] + [f"{group}: max \\|d\\|" for group in GROUPS] + [f"{group}: scenes" for group in GROUPS]
     rows = []
@@ -487,10 +600,12 @@ def bookkeeping_table(compared):
 
 def timing_line(results, seconds, jobs):
     def summed(key, runs):
-        return sum(r["runs"][run][key] for r in results for run in runs)
+        return sum(r["runs"][run][key] for r in results for run in runs if run in r["runs"])
     return (f"{seconds:.0f} s with {jobs} jobs; runs' CPU time summed: flat ground "
-            f"{summed('cpu_seconds', ['flat']):.0f} s, seats {summed('cpu_seconds', SEATS):.0f} s "
-            f"(wall time {summed('seconds', ['flat']):.0f} s and {summed('seconds', SEATS):.0f} s)")
+            f"{summed('cpu_seconds', ['flat']):.0f} s, seats {summed('cpu_seconds', SEATS):.0f} s, the flat "
+            f"ground's reference runs {summed('cpu_seconds', [PERTURBED, TIGHT]):.0f} s "
+            f"(wall time {summed('seconds', ['flat']):.0f} s, {summed('seconds', SEATS):.0f} s and "
+            f"{summed('seconds', [PERTURBED, TIGHT]):.0f} s)")
 
 
 def report(results, compared, unfinished, seconds, jobs):
@@ -499,6 +614,11 @@ def report(results, compared, unfinished, seconds, jobs):
     lines += ["", f"Largest |difference| over the seat runs both engines ran to the end (seat against flat "
               f"ground; `> {TOLERANCE:g}`: scenes over it on either seat):", ""]
     lines += maxima_table(compared)
+    lines += ["", f"What the values over {TOLERANCE:g} are made of (a seat run's field each; g changed in "
+              f"its 15th digit: g (1 + {G_PERTURBATION:g}); errors, of an adaptive scene: against the flat "
+              f"ground at tolerance {TIGHT_TOLERANCE:g}):", ""]
+    lines += explained_table(compared)
+    lines += ["", "Neither:", ""] + unexplained_lines(compared)
     lines += ["", "Verdict differences (scenes, either seat; an onset time only one engine has counts):", ""]
     lines += verdict_kinds_table(compared)
     lines += [""] + per_scene_lines([r for r in compared if r["verdicts"]], lambda r: "; ".join(r["verdicts"]))
@@ -533,6 +653,14 @@ def draw_figure(compared, path):
                 axis.step(positive, fraction, where="post", color=colours[group], label=label)
             else:
                 axis.plot([], [], color=colours[group], label=label)
+        # The flat ground against itself with g changed in its 15th digit: how far a summary moves
+        # under a change no rounding could tell, over the random scenes (each scene once).
+        own = [r["flat_sensitivity"][field] for r in compared
+               if r["group"] != "suite" and r["seat"] == SEATS[0] and r["flat_sensitivity"][field] is not None]
+        if own:
+            positive = sorted((min(v, 10.0) for v in own if v > 0), reverse=True)
+            axis.step(positive, [(i + 1) / len(own) for i in range(len(positive))], where="post",
+                      color="grey", linestyle=":", label="flat ground, g (1 + 1e-15): random")
         axis.axvline(TOLERANCE, color="black", linestyle="--", linewidth=0.8)
         axis.set_xscale("log")
         axis.set_yscale("log")
