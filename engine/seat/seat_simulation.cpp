@@ -165,6 +165,11 @@ class SeatSimulation {
   // Where each block vertex that sticks on a seat segment stuck (its place along the segment, m),
   // kept while it sticks.
   std::vector<std::pair<SeatPair, double>> anchors_;
+  std::optional<double> anchor_of(const SeatPair& pair) const {
+    const auto it = std::find_if(anchors_.begin(), anchors_.end(),
+                                 [&](const auto& anchor) { return anchor.first == pair; });
+    return it == anchors_.end() ? std::nullopt : std::optional<double>(it->second);
+  }
   bool stopped_ = false;
   bool ended_by_event_ = false;  // the last integrated stretch ended at a guard's crossing
   // The contact whose force reached zero or its cone's edge, or that left its segment's or
@@ -568,9 +573,7 @@ void SeatSimulation::project_positions(const std::vector<ActiveContact>& active,
   std::vector<std::pair<SeatPair, double>> anchored;
   for (const ActiveContact& a : active) {
     if (a.state != ContactState::stick) continue;
-    const auto it = std::find_if(anchors_.begin(), anchors_.end(),
-                                 [&](const auto& anchor) { return anchor.first == a.pair; });
-    if (it != anchors_.end()) anchored.push_back(*it);
+    if (const auto place = anchor_of(a.pair)) anchored.emplace_back(a.pair, *place);
   }
   const auto k = static_cast<Eigen::Index>(active.size());
   const auto rows = k + static_cast<Eigen::Index>(anchored.size());
@@ -694,10 +697,7 @@ void SeatSimulation::enter(const SeatMode& next) {
   std::vector<std::pair<SeatPair, double>> anchors;
   for (const ActiveContact& a : mode_.active) {
     if (a.state != ContactState::stick || a.pair.kind != ContactKind::block_vertex) continue;
-    const auto it = std::find_if(anchors_.begin(), anchors_.end(),
-                                 [&](const auto& anchor) { return anchor.first == a.pair; });
-    anchors.emplace_back(a.pair,
-                         it != anchors_.end() ? it->second : contacts_.pose(a.pair, state_).along);
+    anchors.emplace_back(a.pair, anchor_of(a.pair).value_or(contacts_.pose(a.pair, state_).along));
   }
   anchors_ = std::move(anchors);
   const ModeKind now = kind_of(mode_);
