@@ -59,6 +59,13 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
     }
     point_touches_edges_.push_back(bends);
   }
+  for (std::size_t k = 0; k + 1 < seat_.size(); ++k) {
+    std::size_t start = k, end = k + 1;
+    while (!point_touches_edges_[start]) --start;
+    while (!point_touches_edges_[end]) ++end;
+    run_start_.push_back(static_cast<int>(start));
+    run_end_.push_back(static_cast<int>(end));
+  }
 }
 
 bool SeatContacts::straight(double tolerance) const {
@@ -76,6 +83,19 @@ double SeatContacts::overturn_margin(const BlockGeometry& geometry, double theta
 double SeatContacts::overturn_theta(const BlockGeometry& geometry, double direction) const {
   if (straight_) return geometry.overturn_theta(direction);
   return direction > 0 ? std::numbers::pi / 2 : -std::numbers::pi / 2;
+}
+
+SeatLine SeatContacts::segment_line(int k) const {
+  const Vec2 a = seat_[static_cast<std::size_t>(k)];
+  const SegmentFrame frame = segment_frame(a, seat_[static_cast<std::size_t>(k) + 1]);
+  return {frame.direction, frame.normal, dot(frame.normal, a)};
+}
+
+SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {
+  const auto at = static_cast<std::size_t>(k);
+  const Vec2 start = seat_[static_cast<std::size_t>(run_start_[at])];
+  const SegmentFrame run = segment_frame(start, seat_[static_cast<std::size_t>(run_end_[at])]);
+  return {dot(run.direction, minus(p, start)), run.length};
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {

@@ -4,6 +4,7 @@
 // vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <span>
 #include <vector>
@@ -21,6 +22,13 @@ struct SeatPair {
   ContactKind kind;
   int block, seat;
   bool operator==(const SeatPair&) const = default;
+};
+
+// The line through a seat segment: its unit direction (left to right), its upward normal, and the
+// offset of its points along that normal.
+struct SeatLine {
+  Vec2 direction, normal;
+  double offset;
 };
 
 // A pair at a pose: its gap (> 0 open), where its point lies along the segment or edge (0 at its
@@ -41,6 +49,9 @@ class SeatContacts {
   int vertex_count() const { return static_cast<int>(body_.size()); }
   int point_count() const { return static_cast<int>(seat_.size()); }
   Vec2 seat_point(int k) const { return seat_[static_cast<std::size_t>(k)]; }
+  // Block vertex i from the centre of mass, body frame.
+  Vec2 body_vertex(int i) const { return body_[static_cast<std::size_t>(i)]; }
+  SeatLine segment_line(int k) const;
   // Block vertex i in the world frame at the pose.
   Vec2 vertex_at(int i, const BlockState& s) const;
 
@@ -60,6 +71,15 @@ class SeatContacts {
   // it approaches faster: the one it came in through.
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
                                  const std::optional<SeatPair>& left, int arrived) const;
+
+  // Where p (on the line of seat segment k) lies along the straight run of seats segments k is
+  // part of (between the points either side of it that bend: see touches_edges), and the run's
+  // length: a vertex slipping along a flat seat given as several segments passes their joints as
+  // it would a long segment's middle.
+  struct RunPlace {
+    double along, length;
+  };
+  RunPlace place_on_run(int k, Vec2 p) const;
 
   // Whether seat point k can touch a block edge: an end of the seat, or a point where it bends
   // (off the line through its neighbours by more than the contact height).
@@ -100,6 +120,7 @@ class SeatContacts {
   Vec2 centre_;
   bool straight_ = false;  // set from the block's size: see the constructor
   std::vector<bool> point_touches_edges_;
+  std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
 };
 
 }  // namespace blockfrag

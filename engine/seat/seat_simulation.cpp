@@ -5,7 +5,9 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -18,7 +20,10 @@
 #include "engine/integrate/with_stepper.hpp"
 #include "engine/motion/scene_motion.hpp"
 #include "engine/scene/seat.hpp"
+#include "engine/seat/closed_form_flight.hpp"
+#include "engine/seat/seat_chart.hpp"
 #include "engine/seat/seat_system.hpp"
+#include "engine/sine_cosine.hpp"
 #include "engine/segment_observer.hpp"
 #include "engine/tolerances.hpp"
 
@@ -38,6 +43,9 @@ constexpr int kRestThresholdHalvings = 64;
 // block started to rock a few 1e-9 s after the flat ground's closed-form onset, which is
 // kOnsetMargin past its threshold.
 constexpr double kRestTolerance = 1e-13;
+// Two seat segments whose directions' cross product is within this of zero (and whose lines are
+// within the contact height) are on one line: a flat seat given as a polyline rounds to 1e-16.
+constexpr double kCollinearSine = 1e-12;
 
 bool is_slip(ContactState s) {
   return s == ContactState::slip_positive || s == ContactState::slip_negative;
@@ -145,9 +153,9 @@ class SeatSimulation {
   GuardWatch<SeatSystem::kGuards>::Crossing touch_before_an_end(const SeatSystem& system,
                                                                 const StateAt& state_at, double t0,
                                                                 double t1) const;
-  template <class Stepper>
-  void integrate_with(const SeatSystem& system, Stepper& stepper, const MotionPiece& piece,
-                      double t_stop);
+  template <class Ode, class Stepper>
+  void integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece, double t_stop);
+  SeatChart chart() const;
   bool at_rest_for_good() const { return mode_.rest && t_ >= excitation_end_; }
 
   const Scene& scene_;
@@ -215,6 +223,48 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
     if (!active) points.push_back(k);
   }
   return SeatSystem(context, mode_.active, vertices, points);
+}
+
+// The chart of the active contacts (engine/seat/seat_chart.hpp). Contacts of block vertices on
+// collinear segments (a flat seat's joint, which a vertex there touches on both sides) act as one
+// line: one vertex on it pivots or slips, two or more slide along it.
+SeatChart SeatSimulation::chart() const {
+  const std::vector<ActiveContact>& active = mode_.active;
+  if (active.empty()) return FlightChart{t_, state_.theta, state_.omega};
+  const ActiveContact& first = active.front();
+  const bool sticks = first.state == ContactState::stick;
+  if (active.size() == 1 && sticks && first.pair.kind == ContactKind::seat_point) {
+    const Vec2 p = contacts_.seat_point(first.pair.seat);
+    const SineCosine turn = sine_cosine(-state_.theta);
+    return PivotChart{p, rotate({p.x - state_.x, p.y - state_.y}, turn.cos, turn.sin)};
+  }
+  const bool one_line = std::all_of(active.begin(), active.end(), [&](const ActiveContact& a) {
+    if (a.pair.kind != ContactKind::block_vertex || (a.state == ContactState::stick) != sticks) {
+      return false;
+    }
+    const SeatLine line = contacts_.segment_line(a.pair.seat);
+    const SeatLine base = contacts_.segment_line(first.pair.seat);
+    const double cross =
+        line.direction.x * base.direction.y - line.direction.y * base.direction.x;
+    return std::abs(cross) <= kCollinearSine &&
+           std::abs(line.offset - base.offset) <= kContactHeight * R_;
+  });
+  if (!one_line) return FreeChart{};
+  const SeatLine line = contacts_.segment_line(first.pair.seat);
+  const bool one_vertex = std::all_of(active.begin(), active.end(), [&](const ActiveContact& a) {
+    return a.pair.block == first.pair.block;
+  });
+  const Vec2 body = contacts_.body_vertex(first.pair.block);
+  const Vec2 vertex = contacts_.vertex_at(first.pair.block, state_);
+  const double along = vertex.x * line.direction.x + vertex.y * line.direction.y;
+  if (one_vertex && sticks) {
+    return PivotChart{{along * line.direction.x + line.offset * line.normal.x,
+                       along * line.direction.y + line.offset * line.normal.y},
+                      body};
+  }
+  if (one_vertex) return SlipChart{line, body};
+  if (sticks) return FreeChart{};
+  return SlideChart{line, state_.x * line.normal.x + state_.y * line.normal.y, state_.theta};
 }
 
 std::vector<SeatPair> SeatSimulation::touching(const BlockState& s) const {
@@ -875,15 +925,16 @@ GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::landing_at_zero(
 
 // As the flat ground's modes: steps until a guard crosses zero or t_stop; a crossing is located on
 // the dense output and the state left just after it.
-template <class Stepper>
-void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
-                                    const MotionPiece& piece, double t_stop) {
-  auto q = system.coordinates(state_);
+template <class Ode, class Stepper>
+void SeatSimulation::integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece,
+                                    double t_stop) {
+  const SeatSystem& system = ode.system();
+  auto q = ode.coordinates(state_);
   double t = t_;
-  GuardWatch<SeatSystem::kGuards> watch(system.guards(t, q));
+  GuardWatch<SeatSystem::kGuards> watch(ode.guards(t, q));
   const double cap = step_cap(piece);
-  const auto forces_at = [&](double x) { return system.forces(x, stepper.dense(x)); };
-  const auto state_at = [&](double x) { return system.full(x, stepper.dense(x)); };
+  const auto forces_at = [&](double x) { return ode.forces(x, stepper.dense(x)); };
+  const auto state_at = [&](double x) { return ode.full(x, stepper.dense(x)); };
   long steps_counted = 0, rhs_counted = 0;
   constexpr bool kRetakesStepToEvent = requires { Stepper::kFixedStep; };
   double retake_until = std::numeric_limits<double>::infinity();
@@ -892,7 +943,7 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
     const double t0 = t;
     const auto q0 = q;
     const bool retaking = std::isfinite(retake_until);
-    stepper.step(system, t, q, std::min({t_stop - t, cap, retake_until - t}));
+    stepper.step(ode, t, q, std::min({t_stop - t, cap, retake_until - t}));
     retake_until = std::numeric_limits<double>::infinity();
     if (reached(t, t_stop)) t = t_stop;
     summary_.steps += stepper.steps() - steps_counted;
@@ -901,10 +952,10 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
     rhs_counted = stepper.rhs_evaluations();
     if ((summary_.steps & kBudgetCheckMask) == 0) check_budget();
 
-    const auto next = system.guards(t, q);
-    const auto guards_at = [&](double x) { return system.guards(x, stepper.dense(x)); };
+    const auto next = ode.guards(t, q);
+    const auto guards_at = [&](double x) { return ode.guards(x, stepper.dense(x)); };
     const auto least_at_ends = [&] {
-      return system.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
+      return ode.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
     };
     auto crossing = watch.first_crossing(guards_at, t0, t, next, least_at_ends);
     if (kind == ModeKind::flight && crossing.which >= 0 && !watch.armed(crossing.which) &&
@@ -925,7 +976,7 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
 
     const double kept = which < 0 ? t : t_event;
     if (system.active_count() > 0) {
-      const FixedStateForces f = system.solve(crossing.before, stepper.dense(crossing.before));
+      const FixedStateForces f = system.solve(crossing.before, state_at(crossing.before));
       for (int i = 0; i < system.active_count(); ++i) {
         const auto at = static_cast<std::size_t>(i);
         summary_.max_contact_violation = std::max(
@@ -969,13 +1020,13 @@ void SeatSimulation::integrate_with(const SeatSystem& system, Stepper& stepper,
     return;
   }
   t_ = t_stop;
-  state_ = system.full(t, q);
+  state_ = ode.full(t, q);
 }
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) const {
   if (mode_.rest) return false;
   const SeatSystem next = system(piece);
-  const auto guards = next.guards(t_, next.coordinates(state_));
+  const auto guards = next.guards(t_, state_);
   for (int i = 0; i < SeatSystem::kGuards; ++i) {
     const SeatEvent e = next.event(i);
     if ((e == SeatEvent::lift_off || e == SeatEvent::friction_limit) &&
@@ -1016,9 +1067,21 @@ void SeatSimulation::run() {
       advance_rest(t_stop);
     } else {
       const SeatSystem moving = system(piece);
-      with_scene_stepper<SeatSystem::N>(scene_.solver, moving.scale(), [&](auto& stepper) {
-        integrate_with(moving, stepper, piece, t_stop);
-      });
+      std::visit(
+          [&](const auto& chart) {
+            const SeatOde ode(moving, chart);
+            if constexpr (std::is_same_v<std::decay_t<decltype(chart)>, FlightChart>) {
+              if (vertical_.piece_at(t_).is_zero()) {
+                ClosedFormFlight flight(state_, piece, t_, scene_.g);
+                integrate_with(ode, flight, piece, t_stop);
+                return;
+              }
+            }
+            with_scene_stepper<decltype(ode)::N>(scene_.solver, ode.scale(), [&](auto& stepper) {
+              integrate_with(ode, stepper, piece, t_stop);
+            });
+          },
+          chart());
     }
     if (stopped_ || t_ >= t_end) break;
     if (t_ - stall_start_ > kSeatInstant * (1.0 + t_)) {
@@ -1065,7 +1128,7 @@ void SeatSimulation::finish() {
     forces = {-f.x, -f.y};
   } else if (!stopped_ && !mode_.active.empty()) {
     const SeatSystem now = system(motion_.piece_at(t_));
-    forces = now.forces(t_, now.coordinates(state_));
+    forces = now.forces(t_, state_);
   }
   observer_.finish(t_, state_, forces, kind_of(mode_));
 }

@@ -112,14 +112,7 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   }
 }
 
-OdeState<6> SeatSystem::scale() const {
-  const double R = c_.geometry->size();
-  const double v = std::sqrt(c_.g * R);
-  return {R, R, 1.0, v, v, v / R};
-}
-
-FixedStateForces SeatSystem::solve(double t, const OdeState<N>& q) const {
-  const BlockState s = full(t, q);
+FixedStateForces SeatSystem::solve(double t, const BlockState& s) const {
   std::array<PlanarContact, kMaxSeatContacts> contacts{};
   std::array<ContactState, kMaxSeatContacts> states{};
   for (int i = 0; i < count_; ++i) {
@@ -133,16 +126,10 @@ FixedStateForces SeatSystem::solve(double t, const OdeState<N>& q) const {
                             c_.geometry->inertia_per_mass(), c_.mu);
 }
 
-void SeatSystem::operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
-  const BodyAcceleration a = solve(t, q).acceleration;
-  dq = {q[3], q[4], q[5], a.x_dd, a.y_dd, a.theta_dd};
-}
-
-std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const OdeState<N>& q) const {
+std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s) const {
   std::array<double, kGuards> out;
   out.fill(1.0);
   const double R = c_.geometry->size();
-  const BlockState s = full(t, q);
   // Lying on another face is overturning over the seat; past its ends the block falls instead.
   const bool over_seat = s.x >= c_.contacts->seat_point(0).x &&
                          s.x <= c_.contacts->seat_point(c_.contacts->point_count() - 1).x;
@@ -152,7 +139,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const OdeSt
   out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
 
   if (count_ > 0) {
-    const FixedStateForces f = solve(t, q);
+    const FixedStateForces f = solve(t, s);
     const RigidVelocity v{s.vx, s.vy, s.omega};
     const double velocity_scale = std::sqrt(c_.g * R);
     for (int i = 0; i < count_; ++i) {
@@ -163,7 +150,12 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const OdeSt
       const int slip = slip_sign(active_[at].state);
       out[base + 1] = slip == 0 ? (c_.mu * f.normal[at] - std::abs(f.tangent[at])) / c_.g
                                 : slip * contact_velocity(p.contact, v).tangent / velocity_scale;
-      if (slip != 0) {
+      if (slip != 0 && active_[at].pair.kind == ContactKind::block_vertex) {
+        const SeatContacts::RunPlace run = c_.contacts->place_on_run(
+            active_[at].pair.seat, {s.x + p.contact.r.x, s.y + p.contact.r.y});
+        out[base + 2] = run.along / R;
+        out[base + 3] = (run.length - run.along) / R;
+      } else if (slip != 0) {
         out[base + 2] = p.along / R;
         out[base + 3] = (p.length - p.along) / R;
       }
@@ -177,17 +169,9 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const OdeSt
   return out;
 }
 
-BlockState SeatSystem::full(double, const OdeState<N>& q) const {
-  return {q[0], q[1], q[2], q[3], q[4], q[5]};
-}
-
-ContactForces SeatSystem::forces(double t, const OdeState<N>& q) const {
-  const FixedStateForces f = solve(t, q);
+ContactForces SeatSystem::forces(double t, const BlockState& s) const {
+  const FixedStateForces f = solve(t, s);
   return {f.total.x, f.total.y};
-}
-
-OdeState<6> SeatSystem::coordinates(const BlockState& b) const {
-  return {b.x, b.y, b.theta, b.vx, b.vy, b.omega};
 }
 
 }  // namespace blockfrag

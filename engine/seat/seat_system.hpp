@@ -1,6 +1,6 @@
 // A block moving on its seat with a fixed set of active contacts, each sticking or slipping one
-// way (or none: flight): the ODE of q = (x, y, theta, x', y', theta'), its contact forces, and the
-// guards whose zero ends the set (docs/physics.md, "Contact on a seat").
+// way (or none: flight): its contact forces and accelerations, the guards whose zero ends the set
+// (docs/physics.md, "Contact on a seat"), and its ODE in the coordinates of a chart.
 #pragma once
 
 #include <array>
@@ -60,7 +60,6 @@ struct SeatSystemContext {
 
 class SeatSystem {
  public:
-  static constexpr int N = 6;
   static constexpr int kGuards = kSeatGuards;
 
   // `watched_vertices` and `watched_points`: the vertices and points not in an active contact,
@@ -68,20 +67,10 @@ class SeatSystem {
   SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
              const std::vector<int>& watched_vertices, const std::vector<int>& watched_points);
 
-  OdeState<N> scale() const;
-  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const;
-  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const;
+  std::array<double, kGuards> guards(double t, const BlockState& s) const;
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
-  BlockState full(double, const OdeState<N>& q) const;
-  ContactForces forces(double t, const OdeState<N>& q) const;
-  OdeState<N> coordinates(const BlockState& b) const;
-  // No guard's least value over a step is known to be at an end: near zero, each is sampled.
-  template <class OneWay>
-  std::array<bool, kGuards> least_at_ends(const OdeState<N>&, const OdeState<N>&,
-                                          const OneWay&) const {
-    return {};
-  }
-  FixedStateForces solve(double t, const OdeState<N>& q) const;
+  ContactForces forces(double t, const BlockState& s) const;
+  FixedStateForces solve(double t, const BlockState& s) const;
   // The seat point a touching guard watches, or -1 (a block vertex's guard, or another guard).
   int watched_point(int guard) const {
     const int k = guard - kFirstClearanceGuard - static_cast<int>(watched_vertices_.size());
@@ -93,6 +82,8 @@ class SeatSystem {
   // The block vertices whose clearance is watched; vertex k of them has guard
   // kFirstClearanceGuard + k.
   const std::vector<int>& watched_vertices() const { return watched_vertices_; }
+  double length_scale() const { return c_.geometry->size(); }
+  double g() const { return c_.g; }
 
  private:
   SeatSystemContext c_;
@@ -100,6 +91,42 @@ class SeatSystem {
   int count_ = 0;
   std::vector<int> watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
+};
+
+// The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp).
+template <class Chart>
+class SeatOde {
+ public:
+  static constexpr int N = Chart::N;
+  static constexpr int kGuards = kSeatGuards;
+
+  SeatOde(const SeatSystem& system, const Chart& chart) : system_(&system), chart_(chart) {}
+
+  const SeatSystem& system() const { return *system_; }
+  OdeState<N> scale() const { return chart_.scale(system_->length_scale(), system_->g()); }
+  void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
+    const BlockState s = chart_.full(t, q);
+    dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
+  }
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
+    return system_->guards(t, chart_.full(t, q));
+  }
+  SeatEvent event(int guard) const { return system_->event(guard); }
+  BlockState full(double t, const OdeState<N>& q) const { return chart_.full(t, q); }
+  ContactForces forces(double t, const OdeState<N>& q) const {
+    return system_->forces(t, chart_.full(t, q));
+  }
+  OdeState<N> coordinates(const BlockState& b) const { return chart_.coordinates(b); }
+  // No guard's least value over a step is known to be at an end: near zero, each is sampled.
+  template <class OneWay>
+  std::array<bool, kGuards> least_at_ends(const OdeState<N>&, const OdeState<N>&,
+                                          const OneWay&) const {
+    return {};
+  }
+
+ private:
+  const SeatSystem* system_;
+  Chart chart_;
 };
 
 // The forces of the fixed states at the state s under the applied force per unit mass.

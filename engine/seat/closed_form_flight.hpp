@@ -1,0 +1,47 @@
+// A seat's flight without vertical ground motion in closed form, as the flat ground flies it
+// (engine/modes/flight.hpp, engine/motion/ground_drift.hpp), in place of a stepper: each "step" is
+// a stretch the guards are watched over, its end and its dense output exact. Integrated, a chain of
+// small bounces on a flat seat took 451 steps where the flat ground takes 65 for its other modes,
+// and each flight's landing came from the integrator's x instead of the exact one.
+#pragma once
+
+#include "engine/integrate/ode_state.hpp"
+#include "engine/modes/flight.hpp"
+#include "engine/motion/ground_drift.hpp"
+#include "engine/scene/block_state.hpp"
+
+namespace blockfrag {
+
+// The coordinates are FlightChart's: q = (x, vx, y, vy).
+class ClosedFormFlight {
+ public:
+  ClosedFormFlight(const BlockState& start, const MotionPiece& piece, double t0, double g)
+      : start_{start.y, start.theta, start.vy, start.omega},
+        drift_(piece, t0),
+        t0_(t0),
+        x0_(start.x),
+        vx0_(start.vx),
+        g_(g) {}
+
+  template <class Ode>
+  void step(const Ode&, double& t, OdeState<4>& q, double h_max) {
+    t += h_max;
+    q = dense(t);
+  }
+  OdeState<4> dense(double t) const {
+    const BlockState s = flight_pose(start_, g_, t - t0_);
+    const GroundDrift::Integrals ground = drift_.at(t);
+    return {x0_ + vx0_ * (t - t0_) + g_ * ground.second, vx0_ + g_ * ground.first, s.y, s.vy};
+  }
+  // No integration: no steps or right-hand sides to count.
+  long steps() const { return 0; }
+  long rhs_evaluations() const { return 0; }
+  bool moves_one_way(int) const { return false; }
+
+ private:
+  FlightStart start_;
+  GroundDrift drift_;
+  double t0_, x0_, vx0_, g_;
+};
+
+}  // namespace blockfrag
