@@ -12,15 +12,17 @@
 
 namespace blockfrag {
 
-// The coordinates are FlightChart's: q = (x, vx, y, vy).
+// The coordinates are FlightChart's: q = (x, vx, y, vy) from its origin; `start` is the flight's
+// start in them, `pose` its start.
 class ClosedFormFlight {
  public:
-  ClosedFormFlight(const BlockState& start, const MotionPiece& piece, double t0, double g)
-      : start_{start.y, start.theta, start.vy, start.omega},
+  ClosedFormFlight(const OdeState<4>& start, const BlockState& pose, const MotionPiece& piece,
+                   double t0, double g)
+      : start_{start[2], pose.theta, start[3], pose.omega},
         drift_(piece, t0),
         t0_(t0),
-        x0_(start.x),
-        vx0_(start.vx),
+        x0_(start[0]),
+        vx0_(start[1]),
         g_(g) {}
 
   template <class Ode>

@@ -2,9 +2,11 @@
 // hold exactly, as in the flat ground's modes (engine/modes/modes.hpp): pivoting on a sticking
 // contact, (theta, omega); a vertex slipping along a segment, (theta, omega, s, s') with s its
 // place along the segment's line; sliding on a line, (s, s'); flight, (x, x', y, y'). Other sets
-// take (x, y, theta) and their rates, the contacts held by projection at events. On a flat seat
-// each chart is the flat ground's mode's, with its scales: the adaptive integrator's error norm
-// (an RMS over the coordinates) then chooses the flat ground's steps. Integrated in (x, y, theta)
+// take (x, y, theta) and their rates, the contacts held by projection at events. Positions are
+// measured from an origin, the flat ground's: under the block's centre of mass at its release, at
+// the level of its base at rest. On a flat seat each chart is then the flat ground's mode's, with
+// its scales and values: the adaptive integrator's error norm (an RMS over the coordinates, each
+// against the tolerance times its scale plus its size) chooses the flat ground's steps. Integrated in (x, y, theta)
 // a rocking block's norm counted six errors where the flat ground counts two, its steps differed,
 // and its angles differed from the flat ground's by up to 10x the flat ground's own error.
 #pragma once
@@ -29,9 +31,10 @@ inline Vec2 turned(Vec2 body, double theta) {
 inline double along(Vec2 p, Vec2 direction) { return p.x * direction.x + p.y * direction.y; }
 }  // namespace seat_chart_detail
 
-// No contact: theta turns at its constant rate.  q = (x, vx, y, vy).
+// No contact: theta turns at its constant rate.  q = (x, vx, y, vy) from the origin.
 struct FlightChart {
   static constexpr int N = 4;
+  Vec2 origin;
   double t0, theta0, omega;
 
   OdeState<N> scale(double R, double g) const {
@@ -39,9 +42,11 @@ struct FlightChart {
     return {R, v, R, v};
   }
   BlockState full(double t, const OdeState<N>& q) const {
-    return {q[0], q[2], theta0 + omega * (t - t0), q[1], q[3], omega};
+    return {origin.x + q[0], origin.y + q[2], theta0 + omega * (t - t0), q[1], q[3], omega};
   }
-  OdeState<N> coordinates(const BlockState& b) const { return {b.x, b.vx, b.y, b.vy}; }
+  OdeState<N> coordinates(const BlockState& b) const {
+    return {b.x - origin.x, b.vx, b.y - origin.y, b.vy};
+  }
   OdeState<N> rates(const OdeState<N>& q, const BlockState&, const BodyAcceleration& a) const {
     return {q[1], a.x_dd, q[3], a.y_dd};
   }
@@ -65,9 +70,10 @@ struct PivotChart {
 };
 
 // A block vertex (`body`) slipping along a seat segment's line.  q = (theta, omega, s, s'), the
-// vertex at s along the line.
+// vertex at s along the line from the origin; `line`'s offset is from the origin too.
 struct SlipChart {
   static constexpr int N = 4;
+  Vec2 origin;
   SeatLine line;
   Vec2 body;
 
@@ -77,13 +83,15 @@ struct SlipChart {
   BlockState full(double, const OdeState<N>& q) const {
     const Vec2 r = seat_chart_detail::turned(body, q[0]);
     const Vec2 d = line.direction, n = line.normal;
-    const Vec2 p{q[2] * d.x + line.offset * n.x, q[2] * d.y + line.offset * n.y};
+    const Vec2 p{origin.x + q[2] * d.x + line.offset * n.x,
+                 origin.y + q[2] * d.y + line.offset * n.y};
     return {p.x - r.x, p.y - r.y, q[0], q[3] * d.x + q[1] * r.y, q[3] * d.y - q[1] * r.x, q[1]};
   }
   OdeState<N> coordinates(const BlockState& b) const {
     const Vec2 r = seat_chart_detail::turned(body, b.theta);
     const Vec2 d = line.direction;
-    return {b.theta, b.omega, seat_chart_detail::along({b.x + r.x, b.y + r.y}, d),
+    const Vec2 p{b.x - origin.x + r.x, b.y - origin.y + r.y};
+    return {b.theta, b.omega, seat_chart_detail::along(p, d),
             seat_chart_detail::along({b.vx - b.omega * r.y, b.vy + b.omega * r.x}, d)};
   }
   OdeState<N> rates(const OdeState<N>& q, const BlockState& s, const BodyAcceleration& a) const {
@@ -94,21 +102,22 @@ struct SlipChart {
   }
 };
 
-// Sliding without turning on one line: the centre of mass at s along the line's direction, at
-// `offset` along its normal.  q = (s, s').
+// Sliding without turning on one line: the centre of mass at s along the line's direction from the
+// origin, at `offset` along its normal.  q = (s, s').
 struct SlideChart {
   static constexpr int N = 2;
+  Vec2 origin;
   SeatLine line;
   double offset, theta;
 
   OdeState<N> scale(double R, double g) const { return {R, std::sqrt(g * R)}; }
   BlockState full(double, const OdeState<N>& q) const {
     const Vec2 d = line.direction, n = line.normal;
-    return {q[0] * d.x + offset * n.x, q[0] * d.y + offset * n.y, theta, q[1] * d.x, q[1] * d.y,
-            0.0};
+    return {origin.x + q[0] * d.x + offset * n.x, origin.y + q[0] * d.y + offset * n.y, theta,
+            q[1] * d.x, q[1] * d.y, 0.0};
   }
   OdeState<N> coordinates(const BlockState& b) const {
-    return {seat_chart_detail::along({b.x, b.y}, line.direction),
+    return {seat_chart_detail::along({b.x - origin.x, b.y - origin.y}, line.direction),
             seat_chart_detail::along({b.vx, b.vy}, line.direction)};
   }
   OdeState<N> rates(const OdeState<N>& q, const BlockState&, const BodyAcceleration& a) const {
@@ -116,19 +125,20 @@ struct SlideChart {
   }
 };
 
-// Any other set of contacts.  q = (x, y, theta, x', y', theta').
+// Any other set of contacts.  q = (x, y, theta, x', y', theta'), x and y from the origin.
 struct FreeChart {
   static constexpr int N = 6;
+  Vec2 origin;
 
   OdeState<N> scale(double R, double g) const {
     const double v = std::sqrt(g * R);
     return {R, R, 1.0, v, v, v / R};
   }
   BlockState full(double, const OdeState<N>& q) const {
-    return {q[0], q[1], q[2], q[3], q[4], q[5]};
+    return {origin.x + q[0], origin.y + q[1], q[2], q[3], q[4], q[5]};
   }
   OdeState<N> coordinates(const BlockState& b) const {
-    return {b.x, b.y, b.theta, b.vx, b.vy, b.omega};
+    return {b.x - origin.x, b.y - origin.y, b.theta, b.vx, b.vy, b.omega};
   }
   OdeState<N> rates(const OdeState<N>& q, const BlockState&, const BodyAcceleration& a) const {
     return {q[3], q[4], q[5], a.x_dd, a.y_dd, a.theta_dd};

@@ -189,6 +189,7 @@ class SeatSimulation {
   std::optional<ForceEvent> force_event_;
   bool rest_ended_ = false;  // the last stretch ended where lambda left rest's range
   int arrived_point_ = -1;   // the seat point that reached the block at the last event, if one did
+  Vec2 origin_{0.0, 0.0};    // the charts' (engine/seat/seat_chart.hpp)
   double rest_since_ = 0.0;
   double run_end_ = 0.0;
   int stalled_events_ = 0;
@@ -230,7 +231,7 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
 // line: one vertex on it pivots or slips, two or more slide along it.
 SeatChart SeatSimulation::chart() const {
   const std::vector<ActiveContact>& active = mode_.active;
-  if (active.empty()) return FlightChart{t_, state_.theta, state_.omega};
+  if (active.empty()) return FlightChart{origin_, t_, state_.theta, state_.omega};
   const ActiveContact& first = active.front();
   const bool sticks = first.state == ContactState::stick;
   if (active.size() == 1 && sticks && first.pair.kind == ContactKind::seat_point) {
@@ -249,8 +250,8 @@ SeatChart SeatSimulation::chart() const {
     return std::abs(cross) <= kCollinearSine &&
            std::abs(line.offset - base.offset) <= kContactHeight * R_;
   });
-  if (!one_line) return FreeChart{};
-  const SeatLine line = contacts_.segment_line(first.pair.seat);
+  if (!one_line) return FreeChart{origin_};
+  SeatLine line = contacts_.segment_line(first.pair.seat);
   const bool one_vertex = std::all_of(active.begin(), active.end(), [&](const ActiveContact& a) {
     return a.pair.block == first.pair.block;
   });
@@ -262,9 +263,12 @@ SeatChart SeatSimulation::chart() const {
                        along * line.direction.y + line.offset * line.normal.y},
                       body};
   }
-  if (one_vertex) return SlipChart{line, body};
-  if (sticks) return FreeChart{};
-  return SlideChart{line, state_.x * line.normal.x + state_.y * line.normal.y, state_.theta};
+  if (sticks) return FreeChart{origin_};
+  line.offset -= origin_.x * line.normal.x + origin_.y * line.normal.y;
+  if (one_vertex) return SlipChart{origin_, line, body};
+  const Vec2 centre{state_.x - origin_.x, state_.y - origin_.y};
+  return SlideChart{origin_, line, centre.x * line.normal.x + centre.y * line.normal.y,
+                    state_.theta};
 }
 
 std::vector<SeatPair> SeatSimulation::touching(const BlockState& s) const {
@@ -1051,6 +1055,7 @@ void SeatSimulation::run() {
     state_.y = turned[1];
     state_.theta = theta;
   }
+  origin_ = {state_.x, centre.y - geometry_.rest_height()};
   observer_.start(state_);
   enter(resolve());
   run_end_ = run_end_time(scene_, motion_, vertical_);
@@ -1072,7 +1077,7 @@ void SeatSimulation::run() {
             const SeatOde ode(moving, chart);
             if constexpr (std::is_same_v<std::decay_t<decltype(chart)>, FlightChart>) {
               if (vertical_.piece_at(t_).is_zero()) {
-                ClosedFormFlight flight(state_, piece, t_, scene_.g);
+                ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
                 integrate_with(ode, flight, piece, t_stop);
                 return;
               }
