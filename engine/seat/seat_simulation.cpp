@@ -420,13 +420,14 @@ SeatMode SeatSimulation::resolve() {
   // sequence of ever smaller bounces in finite time. Whatever the landing's speed: a landing just
   // faster than the settling speed whose impact leaves the other contact slower would rock on in
   // swings too small for the touch guard to see (rock_stocky, e = 0: in at 1.13 times the
-  // settling speed, out at 0.47 times it, an impact every microsecond without end). At e = 0 a
-  // block that still slides along the seat is laid on its contacts instead, as the flat ground's
-  // lay_flat keeps its slide: their normal velocities to zero, their slip kept (lay_on). Laid at
-  // rest, a block sliding at 1.4 m/s and rocking from corner to corner in ever smaller swings made
-  // an impact every microsecond without end (random-0796 of the flat-seat cross-check, e = 0).
-  // With e > 0 it is left as it is: laid on the seat after a slow landing, a
-  // bouncing block ended its slide 0.4 R short of the flat ground's (random-0395).
+  // settling speed, out at 0.47 times it, an impact every microsecond without end). A block that
+  // still slides along the seat is laid on its contacts instead, as the flat ground's lay_flat
+  // keeps its slide: their normal velocities to zero, their slip kept (lay_on). Laid at rest, a
+  // block sliding at 1.4 m/s and rocking from corner to corner in ever smaller swings made an
+  // impact every microsecond without end (random-0796 of the flat-seat cross-check, e = 0); left
+  // as it was, a block whose other corner lifted slower than the settling speed rocked on where
+  // the flat ground slides, and its slide ended 1.3e-5 R from the flat ground's (random-0395,
+  // e = 0.55).
   bool landed = impacted && pairs.size() >= 2, sliding = false;
   const double settle = settle_velocity();
   for (const SeatPair& pair : pairs) {
@@ -435,7 +436,7 @@ SeatMode SeatSimulation::resolve() {
     sliding = sliding || std::abs(u.tangent) > settle;
   }
   if (landed && !sliding) s.vx = s.vy = s.omega = 0.0;
-  if (landed && sliding && scene_.contact.restitution == 0.0) lay_on(pairs, s);
+  if (landed && sliding) lay_on(pairs, s);
   // The contacts that can carry force: touching and not leaving.
   std::vector<SeatPair> carrying;
   PlanarForcesInput in{{},

@@ -425,6 +425,30 @@ TEST(SeatSimulation, LayingALandingBlockOnItsContactsAddsNoEnergy) {
   EXPECT_LE(s.max_impact_energy_gain, 1e-12);
 }
 
+// A sliding block (e = 0.55) whose plastic landing leaves its other corner lifting slower than the
+// settling speed is laid on its contacts, its slide kept, as the flat ground lays it flat: left as
+// it was, it rocked on where the flat ground slides, and its slide ended 1.3e-5 R from the flat
+// ground's (random-0395 of the flat-seat cross-check, 250 impacts, the adaptive solver).
+TEST(SeatSimulation, ASlidingBlockLandingSlowlyIsLaidOnItsContactsWhateverItsRestitution) {
+  Scene scene;
+  scene.polygon = PolygonBlock{{{0.0, 0.0},
+                                {0.1685341446058689, 0.0},
+                                {0.08772053586116864, 0.08136562108666259},
+                                {0.06012893921289604, 0.10327044227841672},
+                                {0.03518752457120658, 0.12057019396054412},
+                                {-0.014429649961339677, 0.14615376602067143},
+                                {-0.03028506224936195, 0.15062737011916466},
+                                {-0.06679890753622092, 0.13442115254028578},
+                                {-0.06605848836002898, 0.11300890351846866},
+                                {-0.031866260972434585, 0.04230749555927104}},
+                               1.0};
+  scene.contact = {0.8210580323112115, 0.5507521970954008};
+  scene.ground_motion = RickerWavelet{1.4527729024776175, 0.6555881468673888, std::nullopt};
+  scene.duration = 3.4667644406021663;
+  expect_flat_ground_on_both_seats(scene, 0.5 * 0.1685341446058689, 0.11833011188539813, 0.0,
+                                   1e-9);
+}
+
 // A bounce that lands within the RK4 step of the impact it left from (random-0246 of the flat-seat
 // cross-check: a flight of 4.9e-5 s inside a 2.5e-4 s step, rising 2e-9 R) lands where its
 // vertex comes back to the seat, as the flat ground's closed-form flight does. Its guard, not
