@@ -22,8 +22,9 @@ angles in rad, slides over R (the block's farthest corner from its centre of mas
 gives the counts per group (the suite, the random scenes by solver: the agreement depends on it),
 the largest |difference| per field with its scene and seat and how many scenes exceed 1e-9 on
 either seat, what the values over 1e-9 are made of (the flat ground runs twice more: with g changed
-in its 15th digit, which tells a chaotic value from a determined one, and for an adaptive scene
-at tolerance 1e-12, the reference both engines' errors are measured against), the verdict
+in its 15th digit, which tells a chaotic value from a determined one, and nearer the converged
+motion, the reference both engines' errors are measured against: an adaptive scene at tolerance
+1e-12, an RK4 scene with a seat value over 1e-9 at a hundredth of its step), the verdict
 differences, the runs without a result (refused by the seat's engine, or
 stopped by the budgets: 10,000 events, 6 s of CPU time) and the bookkeeping fields the engines are not expected to share
 (what each counts as an impact or an event, the steps each takes). --figure draws, per field, the
@@ -81,15 +82,19 @@ WALL_LIMIT_FACTOR = 20
 # - PERTURBED, g * (1 + G_PERTURBATION) (5 ulps of 9.81): a change of the input no engine's
 #   rounding could tell from none; a field it moves by more than SENSITIVE (a thousand times the
 #   change) is amplified chaotically, and two implementations' roundings part as far;
-# - TIGHT, an adaptive scene at tolerance TIGHT_TOLERANCE: the reference both engines' errors at
-#   the scene's tolerance are measured against. Two discretizations each that far from it differ
-#   by up to the sum of their errors, whatever the tolerance asked of their agreement.
+# - TIGHT, an adaptive scene at tolerance TIGHT_TOLERANCE, an RK4 scene at its step over
+#   RK4_REFINEMENT: the reference both engines' errors at the scene's tolerance or step are
+#   measured against. Two discretizations each that far from it differ by up to the sum of their
+#   errors, whatever the tolerance asked of their agreement. An RK4 scene takes it only where a
+#   seat's value is over the tolerance: at a hundredth of the step it costs a hundred runs.
 PERTURBED = "flat_perturbed"
 TIGHT = "flat_tight"
 DEFAULT_G = 9.81
 G_PERTURBATION = 1e-15
 SENSITIVE = 1e-12
 TIGHT_TOLERANCE = 1e-12
+RK4_REFINEMENT = 100
+DEFAULT_RK4_STEP = 2.5e-4  # s: the scene's default (docs/scenes.md)
 
 VERDICTS = ("overturned", "fell", "settled")
 # Each compared field with its unit: "R" is divided by the block's size before comparing.
@@ -337,6 +342,28 @@ def tightened(scene):
     return dict(scene, solver=dict(solver, tolerance=TIGHT_TOLERANCE))
 
 
+def refined(scene):
+    """The scene at a step RK4_REFINEMENT times shorter if it is RK4, else None."""
+    solver = scene.get("solver", {})
+    if solver.get("method", "adaptive") != "rk4":
+        return None
+    return dict(scene, solver=dict(solver, dt=solver.get("dt", DEFAULT_RK4_STEP) / RK4_REFINEMENT))
+
+
+def over_tolerance(runs, seats, size):
+    """Whether a seat's field differs from the flat ground's by more than TOLERANCE."""
+    flat = runs["flat"]
+    if outcome(flat) != "ok":
+        return False
+    for seat in seats:
+        if outcome(runs[seat]) != "ok":
+            continue
+        differences = [field_difference(flat, runs[seat], field, size) for field in COMPARED]
+        if any(d is not None and d > TOLERANCE for d in differences):
+            return True
+    return False
+
+
 def run_case(blockfrag, timeout, case):
     """The flat ground's summary and each seat's, in a fresh folder."""
     with tempfile.TemporaryDirectory(prefix="flat_seat_") as folder:
@@ -348,6 +375,9 @@ def run_case(blockfrag, timeout, case):
             runs[TIGHT] = simulate(blockfrag, tight, folder / "tight.json", timeout)
         for seat, points in case["seats"].items():
             runs[seat] = simulate(blockfrag, dict(case["scene"], seat=points), folder / f"{seat}.json", timeout)
+        fine = refined(case["scene"])
+        if fine is not None and over_tolerance(runs, case["seats"], case["size"]):
+            runs[TIGHT] = simulate(blockfrag, fine, folder / "tight.json", timeout * RK4_REFINEMENT)
     return dict(case, runs=runs)
 
 
@@ -387,7 +417,7 @@ def field_difference(a, b, field, size):
 
 def references(result, seat):
     """Per field, the flat ground's sensitivity (|flat - flat with g changed in its 15th digit|), and
-    the flat ground's and the seat's errors (|run - flat at TIGHT_TOLERANCE|; None without that run)."""
+    the flat ground's and the seat's errors (|run - the flat ground's reference run|; None without it)."""
     runs, size = result["runs"], result["size"]
     perturbed_run, tight = runs[PERTURBED], runs.get(TIGHT)
 
@@ -615,8 +645,9 @@ def report(results, compared, unfinished, seconds, jobs):
               f"ground; `> {TOLERANCE:g}`: scenes over it on either seat):", ""]
     lines += maxima_table(compared)
     lines += ["", f"What the values over {TOLERANCE:g} are made of (a seat run's field each; g changed in "
-              f"its 15th digit: g (1 + {G_PERTURBATION:g}); errors, of an adaptive scene: against the flat "
-              f"ground at tolerance {TIGHT_TOLERANCE:g}):", ""]
+              f"its 15th digit: g (1 + {G_PERTURBATION:g}); errors: against the flat ground at tolerance "
+              f"{TIGHT_TOLERANCE:g} for an adaptive scene, at a {RK4_REFINEMENT}th of its step for an RK4 "
+              f"one):", ""]
     lines += explained_table(compared)
     lines += ["", "Neither:", ""] + unexplained_lines(compared)
     lines += ["", "Verdict differences (scenes, either seat; an onset time only one engine has counts):", ""]

@@ -1,36 +1,24 @@
 """tests/benchmarks/flat_seat_crosscheck.py small: a flat seat through the seat's engine against the flat ground.
 
-Three runs of the script (a few seconds each):
+Two runs of the script (a few seconds each):
 
 - the accuracy suite as given and 20 random scenes: exit 0, a row per compared field and the table
   of what the values over 1e-9 are made of; the suite's scenes released tilted run on both seats;
   every run ends, on the flat ground and on the seat; the flat ground's reference runs ran (g
-  changed in its 15th digit for every scene, tolerance 1e-12 for the adaptive ones); the verdicts
-  (overturned, fell, settled) are equal wherever both ended, and on the suite every onset time too
-  (present on both or on neither); on the random scenes that RK4 runs, the fields agree within the
-  tolerances below; the script's temporary folders are gone;
-- the suite with every adaptive scene at tolerance 1e-12: no verdict difference at all (every
-  onset time present on both or on neither) and the fields within the tolerances below;
-- the same through a blockfrag that adds 1e-7 rad to a seat run's max |theta|: those checks fail.
+  changed in its 15th digit for every scene, tolerance 1e-12 for the adaptive ones, a hundredth of
+  the step for an RK4 one with a seat value over 1e-9); the verdicts (overturned, fell, settled)
+  and the onset times' presence are equal wherever both ended; every field of every seat run is
+  within 1e-9 of the flat ground's (rad, s, R) unless it is chaotic: the flat ground's own value
+  moves by more than 1e-12 when g changes in its 15th digit (the suite's bounce_small_block_e08,
+  e = 0.8: where its chain of bounces ends, its settle time, moves 1.5e-3 s on the seat and as far
+  on the flat ground under that change of g); the script's temporary folders are gone;
+- the suite through a blockfrag that adds 1e-7 rad to a seat run's max |theta|: that check fails
+  for every seat run whose max |theta| is not chaotic.
 
-The tolerances are what the full run (the suite and 1,000 random scenes, docs/validation.md, "A flat
-seat against the flat ground") measured, with a margin, so they hold for any random scenes:
-
-- RK4: angles 9.0e-10 rad (random-0875; a settled block's final theta 4e-16; one still bouncing at
-  the end, e > 0.9, is chaotic: not compared); rock onsets 3.6e-13 s, overturn, first impact and
-  end times 1.1e-11 s; max |slide| 1.5e-8 R, a settled block's final slide 8.3e-6 R (random-0713,
-  after 525 impacts at e = 0.96: chaotic, as the flat ground's own run with g changed in its 15th
-  digit shows). Slide onsets and settle times are not compared: where a chaotic chain of bounces
-  ends, and a slip at its end, moves as far on the flat ground under that change of g (slide
-  onsets by up to 9.3e-4 s, random-0736; settle times 0.019 s, random-0713).
-- The suite at 1e-12: max |theta| 8.8e-12 rad, final theta and slide 6.3e-8 (bounce_cosine_e09, e =
-  0.9), max |slide| 8.9e-12 R, slide onset, first impact, overturn and end times 2.0e-10 s, rock
-  onsets 1.4e-13 s; settle times not compared (4.2e-4 s, bounce_small_block_e08).
-
-At the default tolerance (1e-8) the two engines are two discretizations each about that far from
-the converged motion (the seat's engine integrates x, y and theta and projects the block back onto
-its contacts at each event); the suite's fields differ by up to 9e-4 rad and 2.5e-3 s (a settle
-time), so only the verdicts are checked there.
+The full run (the suite and 1,000 random scenes, docs/validation.md, "A flat seat against the flat
+ground") finds one value over 1e-9 that is neither chaotic nor as near the converged motion as
+the flat ground's (random-0056: a landing the flat ground's lay_flat gives 5.5 % more kinetic
+energy, which the seat does not); these 20 scenes and the suite have none.
 
 Prints "N passed, M failed" last; exits non-zero on any failure.
 """
@@ -52,13 +40,8 @@ RANDOM_SCENES = 20
 SEED = 20261127
 FIELDS = ("max_abs_theta", "final_theta", "final_slide", "max_abs_slide", "rock_start_time", "slide_start_time",
           "first_impact_time", "overturn_time", "settle_time", "end_time")
-# Largest |seat - flat ground| allowed, per field (rad, s, or over R): see the docstring.
-RK4_TOLERANCES = {"max_abs_theta": 1e-9, "overturn_time": 1e-9, "first_impact_time": 1e-9, "end_time": 1e-9,
-                  "rock_start_time": 1e-9, "max_abs_slide": 1e-6}
-RK4_SETTLED_TOLERANCES = {"final_theta": 1e-9, "final_slide": 3e-5}
-TIGHT_SUITE_TOLERANCES = {"max_abs_theta": 1e-9, "final_theta": 1e-7, "final_slide": 1e-7, "max_abs_slide": 1e-9,
-                          "slide_start_time": 1e-9, "first_impact_time": 1e-9, "overturn_time": 1e-9,
-                          "end_time": 1e-9, "rock_start_time": 1e-9}
+TOLERANCE = 1e-9  # rad, s, or over R
+SENSITIVE = 1e-12  # the script's: a value the flat ground's own run moves more under g (1 + 1e-15) is chaotic
 PERTURBATION = 1e-7  # rad added to a seat run's max |theta| by the perturbing blockfrag
 
 # A blockfrag that runs the real one and adds PERTURBATION to max_abs_theta when the scene has a seat.
@@ -88,21 +71,15 @@ def run(blockfrag, scratch, output, *args):
     return result, data
 
 
-def beyond(records, tolerances):
-    """Every compared value over its tolerance, as 'scene (seat): field d'."""
-    return [f"{r['scene']} ({r['seat']}): {field} {r['differences'][field]:.3g} > {limit:g}"
-            for r in records for field, limit in tolerances.items()
-            if r["differences"][field] is not None and r["differences"][field] > limit]
+def chaotic(record, field):
+    sensitivity = record["flat_sensitivity"][field]
+    return sensitivity is not None and sensitivity > SENSITIVE
 
 
-def settled_on_flat_ground(data):
-    return {s["name"] for s in data["scenes"] if s["runs"]["flat"].get("settled")}
-
-
-def tight_suite_problems(data):
-    """What the suite at tolerance 1e-12 must not show: a verdict difference or a field past its tolerance."""
-    problems = [f"{r['scene']} ({r['seat']}): {'; '.join(r['verdicts'])}" for r in data["compared"] if r["verdicts"]]
-    return problems + beyond(data["compared"], TIGHT_SUITE_TOLERANCES)
+def unexplained(records):
+    """Every value over TOLERANCE that is not chaotic, as 'scene (seat): field d'."""
+    return [f"{r['scene']} ({r['seat']}): {field} {d:.3g}" for r in records for field, d in r["differences"].items()
+            if d is not None and d > TOLERANCE and not chaotic(r, field)]
 
 
 def released_tilted():
@@ -136,32 +113,25 @@ def main():
             assert data["unfinished"] == [], data["unfinished"]
 
         def reference_runs_ran():
+            over = {r["scene"] for r in data["compared"]
+                    if any(d is not None and d > TOLERANCE for d in r["differences"].values())}
             for scene in data["scenes"]:
                 runs = scene["runs"]
                 assert runs["flat_perturbed"].get("status") == "ok", scene["name"]
                 adaptive = scene["scene"].get("solver", {}).get("method", "adaptive") == "adaptive"
-                assert ("flat_tight" in runs) == adaptive, scene["name"]
-                if adaptive:
+                assert ("flat_tight" in runs) == (adaptive or scene["name"] in over), scene["name"]
+                if "flat_tight" in runs:
                     assert runs["flat_tight"].get("status") == "ok", scene["name"]
             assert all(r["flat_sensitivity"]["max_abs_theta"] is not None for r in data["compared"])
 
-        def verdicts_equal():
-            differing = [(r["scene"], r["seat"], v) for r in data["compared"] for v in r["verdicts"]
-                         if v.split(":")[0] in ("overturned", "fell", "settled")]
+        def verdicts_and_onsets_equal():
+            differing = [(r["scene"], r["seat"], v) for r in data["compared"] for v in r["verdicts"]]
             assert differing == [], differing
 
-        def suite_onsets_equal():
-            differing = [(r["scene"], r["seat"], v) for r in data["compared"] if r["group"] == "suite"
-                         for v in r["verdicts"]]
-            assert differing == [], differing
-
-        def rk4_within_tolerances():
-            rk4 = [r for r in data["compared"] if r["group"] == "random, rk4"]
-            assert len(rk4) >= 10, len(rk4)
-            settled = [r for r in rk4 if r["scene"] in settled_on_flat_ground(data)]
-            onsets = [(r["scene"], v) for r in rk4 for v in r["verdicts"] if not v.startswith("slide_start_time")]
-            problems = beyond(rk4, RK4_TOLERANCES) + beyond(settled, RK4_SETTLED_TOLERANCES)
-            assert onsets == [] and problems == [], (onsets, problems)
+        def within_tolerance_unless_chaotic():
+            assert len(data["compared"]) >= 2 * (41 + RANDOM_SCENES), len(data["compared"])
+            problems = unexplained(data["compared"])
+            assert problems == [], problems
 
         def temporary_folders_removed():
             assert list(scratch.iterdir()) == [], list(scratch.iterdir())
@@ -170,34 +140,22 @@ def main():
         check("the scenes released tilted run on both seats", runs_the_scenes_released_tilted)
         check("every run ends", every_run_ends)
         check("the flat ground's reference runs ran", reference_runs_ran)
-        check("overturned, fell and settled equal", verdicts_equal)
-        check("the suite's onset times present alike", suite_onsets_equal)
-        check("RK4 scenes within their tolerances", rk4_within_tolerances)
+        check("verdicts and onset times' presence equal", verdicts_and_onsets_equal)
+        check("every field within 1e-9 unless chaotic", within_tolerance_unless_chaotic)
         check("the temporary folders are removed", temporary_folders_removed)
-
-        tight_result, tight = run(BLOCKFRAG, scratch, work / "tight.json", "--random", "0",
-                                  "--adaptive-tolerance", "1e-12")
-
-        def tight_suite_agrees():
-            assert tight_result.returncode == 0, tight_result.stderr[-2000:]
-            assert len(tight["compared"]) >= 60, len(tight["compared"])
-            problems = tight_suite_problems(tight)
-            assert problems == [], problems
-
-        check("the suite at tolerance 1e-12 agrees", tight_suite_agrees)
 
         perturbing = work / "perturbing_blockfrag"
         perturbing.write_text(PERTURBING)
         perturbing.chmod(0o755)
-        _, perturbed = run(perturbing, scratch, work / "perturbed.json", "--random", "0", "--adaptive-tolerance",
-                           "1e-12")
+        _, perturbed = run(perturbing, scratch, work / "perturbed.json", "--random", "0")
 
-        def a_perturbed_seat_fails_the_checks():
-            problems = tight_suite_problems(perturbed)
-            assert len(problems) == len(perturbed["compared"]), problems
-            assert all(": max_abs_theta 1e-07 > 1e-09" in p for p in problems), problems
+        def a_perturbed_seat_fails_the_check():
+            expected = [r for r in perturbed["compared"] if not chaotic(r, "max_abs_theta")]
+            assert len(expected) >= 60, len(expected)
+            flagged = [p for p in unexplained(perturbed["compared"]) if ": max_abs_theta 1e-07" in p]
+            assert len(flagged) == len(expected), (len(flagged), len(expected))
 
-        check("a seat off by 1e-7 rad fails the checks", a_perturbed_seat_fails_the_checks)
+        check("a seat off by 1e-7 rad fails the check", a_perturbed_seat_fails_the_check)
 
     return summary()
 
