@@ -151,10 +151,10 @@ TEST(SeatSimulation, AdaptiveStepsOnAFlatSeatAreTheFlatGrounds) {
 
 // Random rectangles and polygons under random sine and cosine pulses, on a one-segment seat and on
 // two collinear segments meeting under the block, against the flat ground: verdicts exactly, the
-// rest to 1e-9 (R, rad, s). The engines integrate the same coordinates but solve
-// their contacts differently (a linear complementarity problem against closed forms), so they
-// agree to rounding amplified by the motion, not to the bit (the flat-seat cross-check,
-// docs/validation.md, measures how far over the suite and 1,000 scenes).
+// rest to 1e-9 (R, rad, s). The engines integrate the same coordinates but solve their contacts
+// differently (a linear complementarity problem against closed forms), so they agree to rounding
+// amplified by the motion, not to the bit (the flat-seat cross-check, docs/validation.md,
+// measures how far over the suite and 1,000 scenes).
 TEST(SeatSimulation, RandomFlatSeatsReproduceTheFlatGround) {
   PortableUniform unit(20261125);
   const int trials = testing::random_trials(24);
