@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -155,7 +156,7 @@ class SeatSimulation {
                                                                 double t1) const;
   template <class Ode, class Stepper>
   void integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece, double t_stop);
-  SeatChart chart() const;
+  SeatChart chart_of(const SeatMode& mode) const;
   bool at_rest_for_good() const { return mode_.rest && t_ >= excitation_end_; }
 
   const Scene& scene_;
@@ -229,8 +230,8 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
 // The chart of the active contacts (engine/seat/seat_chart.hpp). Contacts of block vertices on
 // collinear segments (a flat seat's joint, which a vertex there touches on both sides) act as one
 // line: one vertex on it pivots or slips, two or more slide along it.
-SeatChart SeatSimulation::chart() const {
-  const std::vector<ActiveContact>& active = mode_.active;
+SeatChart SeatSimulation::chart_of(const SeatMode& mode) const {
+  const std::vector<ActiveContact>& active = mode.active;
   if (active.empty()) return FlightChart{origin_, t_, state_.theta, state_.omega};
   const ActiveContact& first = active.front();
   const bool sticks = first.state == ContactState::stick;
@@ -266,9 +267,22 @@ SeatChart SeatSimulation::chart() const {
   if (sticks) return FreeChart{origin_};
   line.offset -= origin_.x * line.normal.x + origin_.y * line.normal.y;
   if (one_vertex) return SlipChart{origin_, line, body};
-  const Vec2 centre{state_.x - origin_.x, state_.y - origin_.y};
-  return SlideChart{origin_, line, centre.x * line.normal.x + centre.y * line.normal.y,
-                    state_.theta};
+  // Sliding, the block is turned so that its vertices on the line lie on it, and held there: its
+  // tilt and offset come from the geometry, not from the state the events' projections left,
+  // which is off by rounding (a flat base 1.8e-17 rad off level, where the flat ground lays it at
+  // 0 exactly; the rock that followed started at a tilt below the adaptive stepper's tolerance
+  // times its scale, and its first step underflowed at tolerance 1e-12: random-0499).
+  const auto second = std::find_if(active.begin(), active.end(), [&](const ActiveContact& a) {
+    return a.pair.block != first.pair.block;
+  });
+  const Vec2 other = contacts_.body_vertex(second->pair.block);
+  const Vec2 edge{other.x - body.x, other.y - body.y};
+  double theta = std::atan2(line.direction.y, line.direction.x) - std::atan2(edge.y, edge.x);
+  theta -= std::numbers::pi * std::round((theta - state_.theta) / std::numbers::pi);
+  const SineCosine turn = sine_cosine(theta);
+  const Vec2 r = rotate(body, turn.cos, turn.sin);
+  return SlideChart{origin_, line, line.offset - (r.x * line.normal.x + r.y * line.normal.y),
+                    theta};
 }
 
 std::vector<SeatPair> SeatSimulation::touching(const BlockState& s) const {
@@ -659,7 +673,12 @@ void SeatSimulation::project_positions(const std::vector<ActiveContact>& active,
 void SeatSimulation::project(const SeatMode& mode) {
   if (mode.active.empty()) return;
   project_positions(mode.active, state_);
-  if (mode.rest) return;
+  // A chart that holds the contacts takes only the rates they leave free (the flat ground's modes
+  // too: a rock takes theta' and drops a stopped slide's residual slip). Projected, that residual
+  // (5.7e-15 m/s, where the slide's stop was located) went into theta', the rock started turning
+  // at 5e-15 rad/s where the flat ground's starts at 0, and at tolerance 1e-10 the adaptive
+  // stepper's first step, scaled by the state over its derivative, underflowed (random-0499).
+  if (mode.rest || !std::holds_alternative<FreeChart>(chart_of(mode))) return;
   std::vector<Eigen::RowVector3d> rows;
   std::vector<double> velocities;
   for (const ActiveContact& a : mode.active) {
@@ -1087,7 +1106,7 @@ void SeatSimulation::run() {
               integrate_with(ode, stepper, piece, t_stop);
             });
           },
-          chart());
+          chart_of(mode_));
     }
     if (stopped_ || t_ >= t_end) break;
     if (t_ - stall_start_ > kSeatInstant * (1.0 + t_)) {

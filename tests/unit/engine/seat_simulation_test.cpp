@@ -450,6 +450,35 @@ TEST(SeatSimulation, ASlidingBlockLandingSlowlyIsLaidOnItsContactsWhateverItsRes
                                    1e-9);
 }
 
+// A stopped slide that starts a rock at tight tolerances, as the flat ground's: the block turns
+// from a tilt and rate of exactly 0, the tilt taken from the vertices sliding on the line and the
+// rate left as the slide's (a rock drops the stopped slide's residual slip, as the flat ground's
+// does). At 1.8e-17 rad (tolerance 1e-12) or 5e-15 rad/s (1e-10), as projections left them, the
+// adaptive stepper's first step, the state over its derivative, came below the resolution of t
+// and the run failed (random-0499 of the flat-seat cross-check). Compared to 1e-8 s: the flat
+// ground lands the last bounce before the slide, 165 us inside one step, 1e-12 R under the
+// ground, 1.9e-9 s after the seat, which lands it at zero (SeatSimulation::landing_at_zero).
+TEST(SeatSimulation, ARockFromAStoppedSlideStartsAtRestAsOnTheFlatGround) {
+  Scene scene;
+  scene.polygon = PolygonBlock{{{0.0, 0.0},
+                                {1.2019741910656059, 0.0},
+                                {0.8292221046943495, 1.3602670800882122},
+                                {0.36861723026367765, 2.432209193508457},
+                                {-0.24019062831954158, 2.355060824151513},
+                                {-0.25726036803264374, 2.051588630216343}},
+                               1.0};
+  scene.contact = {0.572553375619575, 0.12271804606135372};
+  scene.ground_motion = MakrisPulseC{-0.8813011659598821, 0.6482562111058255, 1};
+  scene.vertical_motion = CosinePulse{0.4016625703433603, 0.8559924906445675, 2.0};
+  scene.duration = 3.0;
+  for (const double tolerance : {1e-10, 1e-12}) {
+    SCOPED_TRACE(tolerance);
+    scene.solver.tolerance = tolerance;
+    expect_flat_ground_on_both_seats(scene, 0.5 * 1.2019741910656059, 0.341959396679001, 0.0,
+                                     1e-8);
+  }
+}
+
 // A bounce that lands within the RK4 step of the impact it left from (random-0246 of the flat-seat
 // cross-check: a flight of 4.9e-5 s inside a 2.5e-4 s step, rising 2e-9 R) lands where its
 // vertex comes back to the seat, as the flat ground's closed-form flight does. Its guard, not
