@@ -6,9 +6,10 @@
 // measured from an origin, the flat ground's: under the block's centre of mass at its release, at
 // the level of its base at rest. On a flat seat each chart is then the flat ground's mode's, with
 // its scales and values: the adaptive integrator's error norm (an RMS over the coordinates, each
-// against the tolerance times its scale plus its size) chooses the flat ground's steps. Integrated in (x, y, theta)
-// a rocking block's norm counted six errors where the flat ground counts two, its steps differed,
-// and its angles differed from the flat ground's by up to 10x the flat ground's own error.
+// against the tolerance times its scale plus its size) chooses the flat ground's steps. Integrated
+// in (x, y, theta), a rocking block's norm counted six errors where the flat ground counts two,
+// its steps differed, and its angles differed from the flat ground's by up to 10x the flat
+// ground's own error.
 #pragma once
 
 #include <cmath>
@@ -113,8 +114,12 @@ struct SlideChart {
   OdeState<N> scale(double R, double g) const { return {R, std::sqrt(g * R)}; }
   BlockState full(double, const OdeState<N>& q) const {
     const Vec2 d = line.direction, n = line.normal;
-    return {origin.x + q[0] * d.x + offset * n.x, origin.y + q[0] * d.y + offset * n.y, theta,
-            q[1] * d.x, q[1] * d.y, 0.0};
+    return {origin.x + q[0] * d.x + offset * n.x,
+            origin.y + q[0] * d.y + offset * n.y,
+            theta,
+            q[1] * d.x,
+            q[1] * d.y,
+            0.0};
   }
   OdeState<N> coordinates(const BlockState& b) const {
     return {seat_chart_detail::along({b.x - origin.x, b.y - origin.y}, line.direction),

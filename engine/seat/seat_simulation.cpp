@@ -24,8 +24,8 @@
 #include "engine/seat/closed_form_flight.hpp"
 #include "engine/seat/seat_chart.hpp"
 #include "engine/seat/seat_system.hpp"
-#include "engine/sine_cosine.hpp"
 #include "engine/segment_observer.hpp"
+#include "engine/sine_cosine.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
@@ -246,8 +246,7 @@ SeatChart SeatSimulation::chart_of(const SeatMode& mode) const {
     }
     const SeatLine line = contacts_.segment_line(a.pair.seat);
     const SeatLine base = contacts_.segment_line(first.pair.seat);
-    const double cross =
-        line.direction.x * base.direction.y - line.direction.y * base.direction.x;
+    const double cross = line.direction.x * base.direction.y - line.direction.y * base.direction.x;
     return std::abs(cross) <= kCollinearSine &&
            std::abs(line.offset - base.offset) <= kContactHeight * R_;
   });

@@ -446,8 +446,7 @@ TEST(SeatSimulation, ASlidingBlockLandingSlowlyIsLaidOnItsContactsWhateverItsRes
   scene.contact = {0.8210580323112115, 0.5507521970954008};
   scene.ground_motion = RickerWavelet{1.4527729024776175, 0.6555881468673888, std::nullopt};
   scene.duration = 3.4667644406021663;
-  expect_flat_ground_on_both_seats(scene, 0.5 * 0.1685341446058689, 0.11833011188539813, 0.0,
-                                   1e-9);
+  expect_flat_ground_on_both_seats(scene, 0.5 * 0.1685341446058689, 0.11833011188539813, 0.0, 1e-9);
 }
 
 // A stopped slide that starts a rock at tight tolerances, as the flat ground's: the block turns
@@ -474,8 +473,7 @@ TEST(SeatSimulation, ARockFromAStoppedSlideStartsAtRestAsOnTheFlatGround) {
   for (const double tolerance : {1e-10, 1e-12}) {
     SCOPED_TRACE(tolerance);
     scene.solver.tolerance = tolerance;
-    expect_flat_ground_on_both_seats(scene, 0.5 * 1.2019741910656059, 0.341959396679001, 0.0,
-                                     1e-8);
+    expect_flat_ground_on_both_seats(scene, 0.5 * 1.2019741910656059, 0.341959396679001, 0.0, 1e-8);
   }
 }
 
