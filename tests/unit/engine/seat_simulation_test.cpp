@@ -105,15 +105,18 @@ void expect_same(const Summary& flat, const Summary& seat, double R, double tole
   EXPECT_LE(seat.max_penetration, 1e-6);
 }
 
+// A case's two flat seats: one segment, and two meeting under the base 0.3 m from its left corner.
+std::vector<std::vector<std::array<double, 2>>> flat_seats(const FlatCase& c) {
+  const double x0 = c.scene.polygon ? 0.0 : -c.scene.block.half_width;
+  return {{{-50, c.base_y}, {50, c.base_y}},
+          {{-50, c.base_y}, {x0 + 0.3, c.base_y}, {50, c.base_y}}};
+}
+
 TEST(SeatSimulation, FlatSeatReproducesTheFlatGround) {
   for (const FlatCase& c : flat_cases()) {
     const Summary flat = simulate(c.scene);
     const double R = scene_geometry(c.scene).size();
-    const double x0 = c.scene.polygon ? 0.0 : -c.scene.block.half_width;
-    for (const std::vector<std::array<double, 2>>& seat :
-         {std::vector<std::array<double, 2>>{{-50, c.base_y}, {50, c.base_y}},
-          std::vector<std::array<double, 2>>{
-              {-50, c.base_y}, {x0 + 0.3, c.base_y}, {50, c.base_y}}}) {
+    for (const std::vector<std::array<double, 2>>& seat : flat_seats(c)) {
       Scene on_seat = c.scene;
       on_seat.seat = Seat{seat};
       const Summary s = simulate(on_seat);
@@ -134,11 +137,7 @@ TEST(SeatSimulation, AdaptiveStepsOnAFlatSeatAreTheFlatGrounds) {
     c.scene.solver.method = Method::adaptive;
     const Summary flat = simulate(c.scene);
     const double R = scene_geometry(c.scene).size();
-    const double x0 = c.scene.polygon ? 0.0 : -c.scene.block.half_width;
-    for (const std::vector<std::array<double, 2>>& seat :
-         {std::vector<std::array<double, 2>>{{-50, c.base_y}, {50, c.base_y}},
-          std::vector<std::array<double, 2>>{
-              {-50, c.base_y}, {x0 + 0.3, c.base_y}, {50, c.base_y}}}) {
+    for (const std::vector<std::array<double, 2>>& seat : flat_seats(c)) {
       Scene on_seat = c.scene;
       on_seat.seat = Seat{seat};
       const Summary s = simulate(on_seat);
