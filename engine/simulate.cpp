@@ -90,6 +90,14 @@ class Simulation {
   void enter(const ContactOutcome& outcome);
   void check_budget();
   double step_cap(const MotionPiece& piece) const;
+  // How far rest is inside its limits at t (friction and both tipping moments against gravity
+  // g (1 + lambda_v), and that gravity positive), in units of g, less kOnsetMargin: rest holds
+  // while it is positive.
+  double rest_margin(const MotionPiece& piece, const MotionPiece& vertical, double t) const;
+  // The |lambda| below which the resting block neither slides nor tips about a corner (at
+  // gravity g): Housner's block never slides and Newmark's never tips.
+  double rest_friction_limit() const;
+  double rest_tip_limit(Corner c) const;
   ContactForces resting_forces(const MotionPiece& piece, double t) const {
     return {-piece.lambda(t) * scene_.g, scene_.g * (1.0 + vertical_.lambda(t))};
   }
@@ -231,30 +239,40 @@ void Simulation::overturn_at(double t, const BlockState& s) {
   stopped_ = true;
 }
 
+double Simulation::rest_friction_limit() const {
+  return model_ == Model::housner_rocking ? std::numeric_limits<double>::infinity()
+                                          : scene_.contact.friction;
+}
+
+double Simulation::rest_tip_limit(Corner c) const {
+  return model_ == Model::newmark_sliding ? std::numeric_limits<double>::infinity()
+                                          : geometry_.tip_threshold(c);
+}
+
+// The exit is placed where lambda is past a threshold by kOnsetMargin, so the modes it leads to
+// see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
+double Simulation::rest_margin(const MotionPiece& piece, const MotionPiece& vertical,
+                               double t) const {
+  const double lambda = piece.lambda(t), factor = 1.0 + vertical.lambda(t);
+  return kOnsetMargin + std::min({rest_friction_limit() * factor - std::abs(lambda),
+                                  rest_tip_limit(Corner::right) * factor - lambda,
+                                  rest_tip_limit(Corner::left) * factor + lambda, factor});
+}
+
 void Simulation::advance(const RestMode&, const MotionPiece& piece, double t_stop) {
   const BlockState s = state_;
   const auto state_at = [&](double) { return s; };
   const auto forces_at = [&](double t) { return resting_forces(piece, t); };
-  // Rest holds while friction and both tipping moments hold against gravity g (1 + lambda_v), and
-  // that gravity is positive. Without vertical motion all depend on lambda alone, so its extremes
-  // and the stop time are the only places to look; with it, the sum of the two is also sampled
-  // at 1/64 of the faster one's time scale. Housner's block never slides and Newmark's never tips.
-  constexpr double kNever = std::numeric_limits<double>::infinity();
-  const double mu = model_ == Model::housner_rocking ? kNever : scene_.contact.friction;
-  const bool tips = model_ != Model::newmark_sliding;
-  const double tip_right = tips ? geometry_.tip_threshold(Corner::right) : kNever;
-  const double tip_left = tips ? geometry_.tip_threshold(Corner::left) : kNever;
-  // The exit is placed where lambda is past a threshold by kOnsetMargin, so the modes it leads to
-  // see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
+  // Without vertical motion rest's margin depends on lambda alone, so its extremes and the stop
+  // time are the only places to look; with it, the sum of the two is also sampled at 1/64 of the
+  // faster one's time scale.
   const MotionPiece& vertical = vertical_.piece_at(t_);
-  const auto margin = [&](double t) {
-    const double lambda = piece.lambda(t), factor = 1.0 + vertical.lambda(t);
-    return kOnsetMargin + std::min({mu * factor - std::abs(lambda), tip_right * factor - lambda,
-                                    tip_left * factor + lambda, factor});
-  };
+  const auto margin = [&](double t) { return rest_margin(piece, vertical, t); };
   if (vertical.is_zero() &&
       (piece.is_zero() ||
-       piece.max_abs_lambda() <= std::min({mu, tip_right, tip_left}) + kOnsetMargin)) {
+       piece.max_abs_lambda() <= std::min({rest_friction_limit(), rest_tip_limit(Corner::right),
+                                           rest_tip_limit(Corner::left)}) +
+                                     kOnsetMargin)) {
     observer_.observe_step(t_, t_stop, state_at, forces_at, ModeKind::rest);
     t_ = t_stop;
     return;
@@ -471,7 +489,9 @@ bool Simulation::mode_holds_under(const MotionPiece& piece) const {
   return with_system(piece, [&](const auto& system) {
     using S = std::decay_t<decltype(system)>;
     if constexpr (std::is_same_v<S, RestMode>) {
-      return false;  // rest is re-resolved: the next piece may start it moving
+      // A record's knot is not an event: rest goes on where the next piece keeps it inside its
+      // limits, as it does inside a piece.
+      return rest_margin(piece, vertical_.piece_at(t_), t_) > 0;
     } else if constexpr (std::is_same_v<S, FlightMode>) {
       return true;
     } else {
