@@ -4,6 +4,7 @@
 // the arithmetic, stall an integrator or ask for more work than a scene's budgets allow.
 #pragma once
 
+#include <cstddef>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -82,6 +83,11 @@ inline constexpr Domain mp_gamma{1.0, 100.0, false, true, ""};
 inline constexpr Domain mp_phase{-1e3, 1e3, true, true, "rad"};
 // A recorded motion's sample times.
 inline constexpr Domain record_time{0.0, 1e5, true, true, "s"};
+// A record has at most this many samples: 5.5 hours at 200 Hz, 50 times the longest real
+// strong-motion record. A scene holds about 120 bytes a sample (the samples and a motion piece
+// between each two), so one record costs at most about 500 MB, where the file size cap alone
+// would let a file of short lines ask for 20 GB.
+inline constexpr std::size_t kMaxRecordSamples = 4'000'000;
 
 // --- The dam crest ------------------------------------------------------------------------------
 inline constexpr Domain dam_period{1e-3, 10.0, true, true, "s"};

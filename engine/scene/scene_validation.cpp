@@ -142,6 +142,8 @@ void validate_motion(const GroundMotion& motion) {
         } else if constexpr (std::is_same_v<M, RecordedMotion>) {
           require(m.record != nullptr, "a recorded motion needs its samples");
           require_in(domain::record_scale, m.scale, "record scale");
+          require(m.record->times.size() <= domain::kMaxRecordSamples,
+                  "a record has at most " + std::to_string(domain::kMaxRecordSamples) + " samples");
           check_accelerogram(*m.record);
           require_in(domain::record_time, m.record->times.back(), "record's last sample time");
         } else if constexpr (std::is_same_v<M, CosinePulse> || std::is_same_v<M, SinePulse>) {

@@ -5,6 +5,9 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "engine/scene/parameter_domains.hpp"
 #include "mpi_driver/config/input_file.hpp"
@@ -13,43 +16,58 @@ namespace blockfrag {
 
 namespace {
 
-// A file's lines, numbered from 1, without their line ends (LF or CRLF). A record is text: a NUL
-// byte means a binary file or a damaged one.
-std::vector<std::string> read_lines(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  std::string content;
-  try {
-    content = read_input_file(file, {kMaxRecordBytes});
-  } catch (const InputFileError& error) {
-    // The reader's message starts with the file's name: keep only its reason.
-    const std::string what = error.what();
-    throw RecordError(name, 0, what.substr(std::min(what.size(), name.size() + 2)));
-  }
-  std::vector<std::string> lines;
-  // A UTF-8 byte order mark, which some spreadsheet programs write, is not part of the first line.
-  constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
-  std::size_t start = content.starts_with(byte_order_mark) ? byte_order_mark.size() : 0;
-  while (start < content.size()) {
-    std::size_t end = content.find('\n', start);
-    if (end == std::string::npos) end = content.size();
-    std::string line = content.substr(start, end - start);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find('\0') != std::string::npos) {
-      throw RecordError(name, lines.size() + 1, "contains a NUL byte (a record is a text file)");
+// A file's lines one at a time, numbered from 1, without their line ends (LF or CRLF): no copy of
+// the file's lines is kept, so a file of short lines costs no more memory than its bytes. A record
+// is text: a NUL byte means a binary file or a damaged one.
+class Lines {
+ public:
+  explicit Lines(const std::filesystem::path& file) : name_(file.string()) {
+    try {
+      content_ = read_input_file(file, {kMaxRecordBytes});
+    } catch (const InputFileError& error) {
+      // The reader's message starts with the file's name: keep only its reason.
+      const std::string what = error.what();
+      throw RecordError(name_, 0, what.substr(std::min(what.size(), name_.size() + 2)));
     }
-    lines.push_back(std::move(line));
-    start = end + 1;
+    // A UTF-8 byte order mark, which some spreadsheet programs write, is not part of the first
+    // line.
+    constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
+    if (content_.starts_with(byte_order_mark)) next_ = byte_order_mark.size();
   }
-  return lines;
-}
 
-std::vector<std::string> split(const std::string& line, const char* separators) {
+  const std::string& file() const { return name_; }
+  // The number of the line next() returned last (0 before the first).
+  std::size_t number() const { return number_; }
+
+  // The next line, or nothing at the end of the file.
+  std::optional<std::string_view> next() {
+    if (next_ >= content_.size()) return std::nullopt;
+    std::size_t end = content_.find('\n', next_);
+    if (end == std::string::npos) end = content_.size();
+    std::string_view line(content_.data() + next_, end - next_);
+    next_ = end + 1;
+    ++number_;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.find('\0') != std::string_view::npos) {
+      throw RecordError(name_, number_, "contains a NUL byte (a record is a text file)");
+    }
+    return line;
+  }
+
+ private:
+  std::string name_;
+  std::string content_;
+  std::size_t next_ = 0;
+  std::size_t number_ = 0;
+};
+
+std::vector<std::string> split(std::string_view line, const char* separators) {
   std::vector<std::string> tokens;
   std::size_t start = line.find_first_not_of(separators);
-  while (start != std::string::npos) {
+  while (start != std::string_view::npos) {
     const std::size_t end = line.find_first_of(separators, start);
-    tokens.push_back(line.substr(start, end - start));
-    start = end == std::string::npos ? end : line.find_first_not_of(separators, end);
+    tokens.emplace_back(line.substr(start, end - start));
+    start = end == std::string_view::npos ? end : line.find_first_not_of(separators, end);
   }
   return tokens;
 }
@@ -115,10 +133,14 @@ Header read_header_counts(const std::string& text, const std::string& file) {
             in_quotes(text));
   }
   const double count = parse_number(*npts, file, line);
-  // Each value takes at least two bytes ("0 "): no file under the size cap holds more.
-  if (!(count > 0) || count != std::floor(count) || count > kMaxRecordBytes / 2.0) {
+  if (!(count > 0) || count != std::floor(count)) {
     throw RecordError(file, line,
                       "NPTS must be a positive whole number (got " + in_quotes(*npts) + ")");
+  }
+  if (count > static_cast<double>(kMaxRecordSamples)) {
+    throw RecordError(file, line,
+                      "NPTS = " + in_quotes(*npts) + " is more than " +
+                          std::to_string(kMaxRecordSamples) + " samples");
   }
   const double step = parse_number(*dt, file, line);
   if (!(step > 0)) throw RecordError(file, line, "DT must be > 0 (got " + in_quotes(*dt) + ")");
@@ -130,41 +152,51 @@ Header read_header_counts(const std::string& text, const std::string& file) {
   return {static_cast<std::size_t>(count), step};
 }
 
-Accelerogram read_at2(const std::vector<std::string>& lines, const std::string& file) {
-  constexpr std::size_t header_lines = 4;
-  if (lines.size() < header_lines) {
-    throw RecordError(file, lines.size() + 1,
-                      "the file ends before header line " + std::to_string(lines.size() + 1) +
+// The next of the 4 header lines of a PEER .AT2 file.
+std::string header_line(Lines& lines) {
+  const std::optional<std::string_view> line = lines.next();
+  if (!line) {
+    throw RecordError(lines.file(), lines.number() + 1,
+                      "the file ends before header line " + std::to_string(lines.number() + 1) +
                           " of 4 (a PEER .AT2 file starts with 4 header lines)");
   }
+  return std::string(*line);
+}
+
+Accelerogram read_at2(Lines& lines) {
+  const std::string& file = lines.file();
+  header_line(lines);
+  header_line(lines);
   // Line 3 names the quantity and its units: a velocity or displacement file (.VT2, .DT2 renamed),
   // or an acceleration in cm/s^2, would be read as nonsense.
-  const std::string units = upper(lines[2]);
+  const std::string quantity = header_line(lines);
+  const std::string units = upper(quantity);
   const std::size_t g_at = units.find("UNITS OF G");
   const std::size_t after = g_at + std::string("UNITS OF G").size();
   if (units.find("ACCELERATION") == std::string::npos || g_at == std::string::npos ||
       (after < units.size() && std::isalnum(static_cast<unsigned char>(units[after])))) {
     throw RecordError(
-        file, 3, "expected \"ACCELERATION TIME SERIES IN UNITS OF G\", got " + in_quotes(lines[2]));
+        file, 3, "expected \"ACCELERATION TIME SERIES IN UNITS OF G\", got " + in_quotes(quantity));
   }
-  const Header header = read_header_counts(lines[3], file);
+  const Header header = read_header_counts(header_line(lines), file);
   if (header.points < 2) throw RecordError(file, 4, "a record needs at least 2 samples (NPTS = 1)");
 
   Accelerogram record;
-  // NPTS is the file's word: reserve no more than a plausible record before the values are read.
-  record.acceleration_g.reserve(std::min<std::size_t>(header.points, std::size_t{1} << 20));
-  for (std::size_t i = header_lines; i < lines.size(); ++i) {
-    for (const std::string& token : split(lines[i], " \t")) {
+  record.acceleration_g.reserve(header.points);
+  std::size_t last_line = 4;
+  while (const std::optional<std::string_view> line = lines.next()) {
+    last_line = lines.number();
+    for (const std::string& token : split(*line, " \t")) {
       if (record.acceleration_g.size() == header.points) {
-        throw RecordError(file, i + 1,
+        throw RecordError(file, last_line,
                           "more values than NPTS = " + std::to_string(header.points) +
                               " (the extra one is " + in_quotes(token) + ")");
       }
-      record.acceleration_g.push_back(parse_number(token, file, i + 1));
+      record.acceleration_g.push_back(parse_number(token, file, last_line));
     }
   }
   if (record.acceleration_g.size() < header.points) {
-    throw RecordError(file, lines.size(),
+    throw RecordError(file, last_line,
                       "the file ends after " + std::to_string(record.acceleration_g.size()) +
                           " values, fewer than NPTS = " + std::to_string(header.points));
   }
@@ -174,13 +206,18 @@ Accelerogram read_at2(const std::vector<std::string>& lines, const std::string& 
   return record;
 }
 
-Accelerogram read_two_columns(const std::vector<std::string>& lines, const std::string& file) {
+Accelerogram read_two_columns(Lines& lines) {
+  const std::string& file = lines.file();
   Accelerogram record;
   std::string previous_time;  // as written, for the message
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::size_t line = i + 1;
-    const auto tokens = split(lines[i], " \t,");
+  std::size_t last_line = 0;
+  while (const std::optional<std::string_view> text = lines.next()) {
+    const std::size_t line = last_line = lines.number();
+    const auto tokens = split(*text, " \t,");
     if (tokens.empty() || tokens.front().front() == '#') continue;
+    if (record.times.size() == kMaxRecordSamples) {
+      throw RecordError(file, line, "more than " + std::to_string(kMaxRecordSamples) + " samples");
+    }
     std::vector<double> values;
     for (const std::string& token : tokens) values.push_back(parse_number(token, file, line));
     if (values.size() != 2) {
@@ -206,7 +243,7 @@ Accelerogram read_two_columns(const std::vector<std::string>& lines, const std::
   }
   if (record.times.size() < 2) {
     throw RecordError(
-        file, std::max<std::size_t>(lines.size(), 1),
+        file, std::max<std::size_t>(last_line, 1),
         "a record needs at least 2 samples (found " + std::to_string(record.times.size()) + ")");
   }
   return record;
@@ -229,9 +266,9 @@ RecordError::RecordError(const std::string& file, std::size_t line, const std::s
     : InvalidInput(located(file, line, reason)), file_(file), reason_(reason), line_(line) {}
 
 Accelerogram read_accelerogram(const std::filesystem::path& file) {
-  const std::vector<std::string> lines = read_lines(file);
+  Lines lines(file);
   const bool at2 = upper(file.extension().string()) == ".AT2";
-  return at2 ? read_at2(lines, file.string()) : read_two_columns(lines, file.string());
+  return at2 ? read_at2(lines) : read_two_columns(lines);
 }
 
 }  // namespace blockfrag

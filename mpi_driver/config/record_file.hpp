@@ -7,6 +7,7 @@
 
 #include "engine/errors.hpp"
 #include "engine/motion/accelerogram.hpp"
+#include "engine/scene/parameter_domains.hpp"
 
 namespace blockfrag {
 
@@ -26,6 +27,8 @@ class RecordError : public InvalidInput {
 
 // A record file is at most this large: 256 MB, 17 hours of a 3-component 200 Hz record in text.
 inline constexpr std::size_t kMaxRecordBytes = 256u << 20;
+// A record has at most domain::kMaxRecordSamples samples (engine/scene/parameter_domains.hpp).
+inline constexpr std::size_t kMaxRecordSamples = domain::kMaxRecordSamples;
 
 // Reads a record, choosing the format by the extension: ".AT2" (any case) is PEER NGA (4 header
 // lines, the 4th giving NPTS and DT, then NPTS values in g, any number per line, sample k at k DT);

@@ -92,7 +92,7 @@ const std::map<std::string, Broken> broken = {
     {"hex_float.AT2", {5, "not a number: \"0x1p3\""}},
     {"nul_byte.AT2", {5, "contains a NUL byte (a record is a text file)"}},
     {"huge_dt.AT2", {4, "the record lasts (NPTS - 1) DT = inf s, more than 1e+05 s"}},
-    {"huge_npts.AT2", {4, "NPTS must be a positive whole number (got \"1000000000\")"}},
+    {"huge_npts.AT2", {4, "NPTS = \"1000000000\" is more than 4000000 samples"}},
     {"time_too_late.csv", {2, "time must be <= 1e+05 s (got 2e5)"}},
 };
 
