@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/scene/parameter_domains.hpp"
+
 namespace blockfrag {
 
 std::string method_label(Method method) {
@@ -79,8 +81,13 @@ SolverSetting parse_solver_setting(std::string_view text) {
     throw InvalidInput("setting \"" + std::string(text) +
                        "\": the value must be a positive number");
   }
-  if (setting.method != Method::rk4 && value > 0.1) {
-    throw InvalidInput("setting \"" + std::string(text) + "\": a tolerance must be <= 0.1");
+  // The ranges a scene's solver takes: a setting outside them would fail every scene later.
+  const bool rk4 = setting.method == Method::rk4;
+  const Domain& range = rk4 ? domain::rk4_step : domain::tolerance;
+  if (!range.contains(value)) {
+    throw InvalidInput("setting \"" + std::string(text) +
+                       "\": " + (rk4 ? "a step dt " : "a tolerance ") + range.rule() +
+                       (range.unit[0] ? std::string(" ") + range.unit : std::string()));
   }
   setting.parameter = value;
   return setting;

@@ -16,6 +16,10 @@
 
 namespace blockfrag {
 
+// A timed batch lasts at most this long: with every setting and scene of the full study, 10 s a
+// batch is already days of timing.
+inline constexpr double kMaxMinBatchMilliseconds = 1e4;
+
 struct AccuracyOptions {
   std::filesystem::path suite_path;
   std::vector<std::string> settings;  // METHOD:VALUE; empty: the full study

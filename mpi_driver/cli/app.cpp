@@ -114,9 +114,11 @@ void add_accuracy_command(CLI::App& app, std::function<int()>& command) {
       ->check(positive_finite_number("TOL"));
   accuracy
       ->add_option("--min-batch-ms", options->min_batch_ms,
-                   "Each scene is repeated until a timed batch takes at least this long")
+                   "Each scene is repeated until a timed batch takes at least this long (at "
+                   "most 10 s)")
       ->capture_default_str()
-      ->check(positive_finite_number("MS"));
+      ->check(positive_finite_number("MS"))
+      ->check(CLI::Range(0.0, kMaxMinBatchMilliseconds));
   accuracy
       ->add_option(
           "--fragility-study", options->fragility_study,
@@ -150,9 +152,9 @@ void add_bench_command(CLI::App& app, std::function<int()>& command) {
   bench->add_option("scene", options->scene_path, "Scene file (JSON)")
       ->required()
       ->check(CLI::ExistingFile);
-  bench->add_option("--repeat", options->repeat, "Timed runs")
+  bench->add_option("--repeat", options->repeat, "Timed runs (at most 1000000)")
       ->capture_default_str()
-      ->check(CLI::Range(1L, 1000000000L));
+      ->check(CLI::Range(1L, kMaxBenchRepeats));
   bench->callback(
       [options, &command] { command = [options] { return run_bench(*options, std::cout); }; });
 }
