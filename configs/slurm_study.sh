@@ -2,9 +2,10 @@
 # A blockfrag study across nodes under Slurm, resumed by resubmitting this same script.
 #
 #   sbatch configs/slurm_study.sh configs/dam_type_a_study.json [extra blockfrag run options]
+#   BLOCKFRAG_LAUNCHER=mpirun sbatch configs/slurm_study.sh ...   (Open MPI's mpirun, not srun)
 #
-# How the resume works: when the time limit comes, Slurm sends SIGTERM to every task (and, with
-# --signal below, early enough to finish). Each rank stops after its current scene, rank 0 writes
+# How the resume works: 120 s before the time limit Slurm sends SIGTERM to this batch shell
+# (--signal below), which asks the ranks to stop: each stops after its current scene, rank 0 writes
 # the checkpoint OUTPUT.checkpoint and every rank exits with code 4 ("interrupted"). This script
 # then requeues the job; the next run of the same command continues from the checkpoint, losing and
 # repeating nothing. A kill without warning (node failure) loses only the samples done since the
@@ -27,17 +28,27 @@ study=${1:?usage: sbatch slurm_study.sh STUDY.json [blockfrag run options]}
 shift
 blockfrag=${BLOCKFRAG:-blockfrag}
 
+# srun starts one rank per task, delivers a SIGTERM to all of them and returns their exit code.
+# Open MPI's mpirun forwards a SIGTERM too, but then returns 1 whatever the ranks return; it
+# forwards SIGUSR1 and returns the ranks' code, and blockfrag takes SIGUSR1 as it takes SIGTERM.
+case ${BLOCKFRAG_LAUNCHER:-srun} in
+  srun) launch=(srun --kill-on-bad-exit=0) stop_signal=TERM ;;
+  mpirun) launch=(mpirun) stop_signal=USR1 ;;
+  *)
+    echo "BLOCKFRAG_LAUNCHER must be srun or mpirun (got ${BLOCKFRAG_LAUNCHER})" >&2
+    exit 2
+    ;;
+esac
+
 # The batch shell receives the early SIGTERM (B: above); pass it on to the ranks and keep waiting
 # for them to write the checkpoint and exit.
 forward_term() {
   echo "$(date -Is) SIGTERM: asking the ranks to checkpoint and stop"
-  kill -TERM "$run_pid" 2>/dev/null
+  kill "-$stop_signal" "$run_pid" 2>/dev/null
 }
 trap forward_term TERM
 
-# srun starts one rank per task and delivers signals to all of them; mpirun works too
-# (mpirun "$blockfrag" run ...), Open MPI forwarding the SIGTERM to its ranks.
-srun --kill-on-bad-exit=0 "$blockfrag" run "$study" "$@" &
+"${launch[@]}" "$blockfrag" run "$study" "$@" &
 run_pid=$!
 # wait returns early when the trap fires; wait again for the ranks' own exit code.
 wait "$run_pid"

@@ -20,6 +20,7 @@ void install_interrupt_handlers() {
   action.sa_flags = 0;
   sigaction(SIGTERM, &action, nullptr);
   sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGUSR1, &action, nullptr);
 }
 
 bool interrupt_requested() { return requested_signal != 0; }

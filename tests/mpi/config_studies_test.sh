@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Every study in configs/ runs (with few samples per level, on 2 ranks) to a complete output; and
-# configs/slurm_study.sh, run with stand-ins for srun and scontrol, forwards a SIGTERM to the ranks,
-# requeues the interrupted job (exit 4), and on its resubmission finishes the study from the
-# checkpoint with the same output as an uninterrupted run. A study whose samples fail writes its
+# configs/slurm_study.sh, run with stand-ins for srun and scontrol and again with Open MPI's mpirun,
+# forwards a SIGTERM to the ranks, requeues the interrupted job (exit 4), and on its resubmission
+# finishes the study from the checkpoint with the same output as an uninterrupted run. A study whose samples fail writes its
 # output, names the first three failures with their reasons, and exits 3 past its allowed fraction.
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
@@ -113,6 +113,36 @@ code=$?
   fail "slurm script resubmitted: exit $code, $(tail -5 slurm.log)"
 "$BLOCKFRAG" run slurm.json --output reference.h5 --samples-per-level "$slurm_per_level" 2>/dev/null
 "$PYTHON" "$COMPARE" reference.h5 slurm.h5 >/dev/null && pass || fail "the requeued study differs from an uninterrupted run"
+
+# The same under Open MPI's real mpirun (BLOCKFRAG_LAUNCHER=mpirun): the script forwards SIGUSR1,
+# after which mpirun returns the ranks' 4 (after a SIGTERM of its own it would return 1). The
+# stand-in only fixes the rank count and execs mpirun, so the signal reaches mpirun itself.
+real_mpirun=$(command -v mpirun)
+cat >bin/mpirun <<SH
+#!/bin/bash
+exec "$real_mpirun" -n 2 --oversubscribe "\$@"
+SH
+chmod +x bin/mpirun
+: >scontrol.log
+slurm_args=(slurm.json --output slurm_mpirun.h5 --samples-per-level "$slurm_per_level")
+BLOCKFRAG_LAUNCHER=mpirun bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm_mpirun.log 2>&1 &
+script=$!
+for _ in $(seq 1 300); do
+  [[ -e slurm_mpirun.h5.checkpoint ]] && break
+  sleep 0.02
+done
+kill -TERM "$script"
+wait "$script"
+code=$?
+if [[ $code -eq 4 ]] && grep -q "requeue 4242" scontrol.log && [[ -e slurm_mpirun.h5.checkpoint && ! -e slurm_mpirun.h5 ]]; then
+  pass
+else
+  fail "slurm script under mpirun after SIGTERM: exit $code, requeue: $(cat scontrol.log 2>/dev/null), log: $(tail -5 slurm_mpirun.log)"
+fi
+BLOCKFRAG_LAUNCHER=mpirun bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm_mpirun.log 2>&1
+code=$?
+[[ $code -eq 0 ]] && "$PYTHON" "$COMPARE" reference.h5 slurm_mpirun.h5 >/dev/null && pass ||
+  fail "slurm script under mpirun resubmitted: exit $code, $(tail -5 slurm_mpirun.log)"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
