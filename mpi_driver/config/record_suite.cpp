@@ -47,7 +47,8 @@ std::size_t RecordSuite::record_of(std::uint32_t member, std::uint32_t per_level
 }
 
 std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
-                                             const std::filesystem::path& base_folder) {
+                                             const std::filesystem::path& base_folder,
+                                             std::size_t max_samples) {
   ArrayReader array = reader.required_array("records");
   if (!array.valid()) return std::nullopt;
   if (array.size() == 0 || array.size() > kMaxSuiteRecords) {
@@ -57,6 +58,7 @@ std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
   }
   const std::size_t errors_before = reader.errors().size();
   RecordSuite suite;
+  std::size_t samples = 0;
   for (std::size_t k = 0; k < array.size(); ++k) {
     SuiteRecord record;
     const nlohmann::json& raw = array.raw(k);
@@ -83,6 +85,13 @@ std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
     }
     record.record = read_file(record.file, file_path, errors, base_folder);
     if (!record.record || (!record.vertical_file.empty() && !record.vertical)) continue;
+    samples += record.record->times.size() + (record.vertical ? record.vertical->times.size() : 0);
+    if (samples > max_samples) {
+      errors.add(file_path, "the suite's records up to this one hold " + std::to_string(samples) +
+                                " samples, more than the " + std::to_string(max_samples) +
+                                " a suite may hold");
+      return std::nullopt;
+    }
     record.content_hash = record_content_hash(*record.record);
     if (record.vertical) {
       record.content_hash ^= record_content_hash(*record.vertical) * 0x9E3779B97F4A7C15ULL;

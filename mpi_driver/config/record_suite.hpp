@@ -48,11 +48,16 @@ std::uint64_t record_content_hash(const Accelerogram& record);
 
 // A suite has at most this many records; each weight is in (0, 1e6].
 inline constexpr std::size_t kMaxSuiteRecords = 10'000;
+// Every rank holds every record of its suite (16 bytes a sample): together at most this many
+// samples, 1.6 GB, ten thousand records of 40 s at 250 Hz.
+inline constexpr std::size_t kMaxSuiteSamples = 100'000'000;
 
 // Reads the suite at reader's object (the "records" array and "type"); errors name
-// /.../records/K and the record's file and line. nullopt after an error.
+// /.../records/K and the record's file and line. nullopt after an error, and at the first record
+// that takes the suite past max_samples samples (its vertical companions counted).
 std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
-                                             const std::filesystem::path& base_folder);
+                                             const std::filesystem::path& base_folder,
+                                             std::size_t max_samples = kMaxSuiteSamples);
 
 // The canonical form: each record as {"file", "vertical" (when given), "weight", "content_hash"}.
 nlohmann::json record_suite_to_json(const RecordSuite& suite);

@@ -16,6 +16,7 @@
 #include "engine/motion/ground_motion.hpp"
 #include "engine/motion/intensity_measures.hpp"
 #include "engine/scene/block_geometry.hpp"
+#include "mpi_driver/config/record_suite.hpp"
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/study/study_sample.hpp"
 
@@ -192,6 +193,29 @@ TEST(RecordSuiteStudy, BadSuitesAndMeasuresAreRefusedAtTheirPaths) {
                   three_records, {{"type", "pga"}, {"scaling", "none"}, {"levels", {0.2}}}, 2)),
               ::testing::ElementsAre(HasSubstr(
                   "/intensity_measure/levels: a cloud (\"scaling\": \"none\") has no levels")));
+}
+
+TEST(RecordSuite, ASuitePastItsSampleCapIsRefusedAtTheRecordThatCrossesIt) {
+  // Every rank holds every record: the cap bounds the suite's memory, whatever the file count.
+  const json document = {{"records", {"cosine_pulse.txt", "cosine_pulse.txt", "cosine_pulse.txt"}}};
+  ConfigErrors errors(study_file);
+  ObjectReader reader(document, JsonPointer{}, errors);
+  const std::optional<RecordSuite> uncapped = read_record_suite(reader, records_folder);
+  ASSERT_TRUE(uncapped);
+  const std::size_t per_record = uncapped->records[0].record->times.size();
+  ConfigErrors capped(study_file);
+  ObjectReader small(document, JsonPointer{}, capped);
+  EXPECT_FALSE(read_record_suite(small, records_folder, 2 * per_record + 1));
+  try {
+    capped.throw_if_any();
+    ADD_FAILURE() << "the capped suite was read without an error";
+  } catch (const ConfigError& error) {
+    EXPECT_THAT(error.messages(),
+                ::testing::ElementsAre(
+                    HasSubstr("study.json: /records/2: the suite's records up to this one hold " +
+                              std::to_string(3 * per_record) + " samples, more than the " +
+                              std::to_string(2 * per_record + 1) + " a suite may hold")));
+  }
 }
 
 TEST(RecordSuiteStudy, AnSaPeriodTooShortToStepIsRefusedAtItsPath) {
