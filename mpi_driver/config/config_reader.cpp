@@ -432,15 +432,17 @@ class DocumentBuilder final : public nlohmann::json_sax<json> {
     return true;
   }
 
-  bool parse_error(std::size_t position, const std::string& /*token*/,
+  bool parse_error(std::size_t position, const std::string& token,
                    const json::exception& error) override {
     error_position_ = position;
     error_ = error.what();
+    error_token_ = token;
     return false;
   }
 
   std::size_t error_position() const { return error_position_; }
   const std::string& error() const { return error_; }
+  const std::string& error_token() const { return error_token_; }
   const std::vector<JsonPointer>& duplicates() const { return duplicates_; }
 
  private:
@@ -482,6 +484,7 @@ class DocumentBuilder final : public nlohmann::json_sax<json> {
   std::string key_;
   std::size_t error_position_ = 0;
   std::string error_;
+  std::string error_token_;
   std::vector<JsonPointer> duplicates_;
 };
 
@@ -541,15 +544,21 @@ std::pair<std::size_t, std::size_t> line_and_column(std::string_view text,
   return {line, current.size() - static_cast<std::size_t>(continuation) + 1};
 }
 
-// "[json.exception.parse_error.101] parse error at line 2, column 8: syntax error ..." -> "syntax
-// error ..."
-std::string parse_error_reason(const std::string& what) {
+// "[json.exception.parse_error.101] parse error at line 2, column 8: syntax error ...; last read:
+// 'TOKEN'" -> "syntax error ...; last read: 'EXCERPT'" (and "number overflow parsing 'TOKEN'"
+// alike). The token is the file's own text (an unterminated string runs to the end of the file or
+// of its line): only a printable excerpt of it is quoted.
+std::string parse_error_reason(const std::string& what, const std::string& token) {
   std::string reason = what;
   if (const auto tag_end = reason.find("] "); tag_end != std::string::npos)
     reason.erase(0, tag_end + 2);
   if (reason.rfind("parse error", 0) == 0) {
     if (const auto colon = reason.find(": "); colon != std::string::npos)
       reason.erase(0, colon + 2);
+  }
+  const std::string quoted = "'" + token + "'";
+  if (const auto at = reason.find(quoted); at != std::string::npos) {
+    reason.replace(at, quoted.size(), "'" + printable_excerpt(token) + "'");
   }
   return reason;
 }
@@ -567,8 +576,9 @@ json parse_json_text(std::string_view text, const std::string& source) {
   DocumentBuilder builder(document);
   if (!json::sax_parse(text, &builder)) {
     const auto [line, column] = line_and_column(text, builder.error_position());
-    throw ConfigError({source + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                       ": malformed JSON: " + parse_error_reason(builder.error())});
+    throw ConfigError(
+        {source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+         ": malformed JSON: " + parse_error_reason(builder.error(), builder.error_token())});
   }
   ConfigErrors errors(source);
   for (const auto& path : builder.duplicates()) errors.add(path, "duplicate key");

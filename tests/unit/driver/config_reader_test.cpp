@@ -18,6 +18,7 @@ namespace {
 using nlohmann::json;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 // Every message the reading of `document` by `read` produced (empty when it was accepted).
 template <class Read>
@@ -296,6 +297,26 @@ TEST(ParseJsonText, MalformedTextGivesLineAndColumn) {
   EXPECT_THAT(parse_error_of("{\"a\": NaN}"), HasSubstr("doc.json:1:7: malformed JSON"));
   EXPECT_THAT(parse_error_of("{\"a\": 1e999}"),
               HasSubstr("malformed JSON: number overflow parsing '1e999'"));
+}
+
+TEST(ParseJsonText, QuotesAtMostAnExcerptOfTheTokenThatBrokeTheParse) {
+  // An unterminated string of 1 MB: the lexer's token is all of it.
+  const std::string unterminated = parse_error_of("{\"a\": \"" + std::string(1'000'000, 'x'));
+  EXPECT_THAT(unterminated, HasSubstr("malformed JSON: syntax error"));
+  EXPECT_THAT(unterminated, HasSubstr("last read: '\"" + std::string(59, 'x') + "...'"));
+  EXPECT_LT(unterminated.size(), 300u);
+  // A string broken by a newline: the token is the line up to it, the rest of the line unquoted.
+  const std::string broken =
+      parse_error_of("{\"a\": \"" + std::string(100, 'y') + "\nSECRET-REST\"}");
+  EXPECT_THAT(broken, HasSubstr("last read: '\"" + std::string(59, 'y') + "...'"));
+  EXPECT_THAT(broken, Not(HasSubstr("yyyyy<U+000A>")));
+  EXPECT_THAT(broken, Not(HasSubstr("SECRET")));
+  // A number too large for a double, written with 100,000 digits.
+  const std::string overflow = parse_error_of("{\"a\": 1" + std::string(100'000, '0') + "}");
+  EXPECT_THAT(overflow, HasSubstr("number overflow parsing '1" + std::string(59, '0') + "...'"));
+  EXPECT_LT(overflow.size(), 300u);
+  // A short token is quoted whole.
+  EXPECT_THAT(parse_error_of("{\"a\": \"ab\ncd\"}"), HasSubstr("last read: '\"ab<U+000A>'"));
 }
 
 TEST(ParseJsonText, DuplicateKeysAreErrorsWithTheirPaths) {
