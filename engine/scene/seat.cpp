@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "engine/errors.hpp"
 #include "engine/number_text.hpp"
 
 namespace blockfrag {
@@ -189,15 +190,35 @@ std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
   return contacts;
 }
 
-double seat_alpha(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
-                  double tolerance) {
-  const Point centre = at(polygon_properties(block).centroid);
+namespace {
+
+struct OutermostContacts {
+  Vertex left, right;
+};
+
+// The leftmost and the rightmost point where the block resting on its seat touches it. A block
+// that does not touch its seat has none: that scene breaks the seat's rule (seat_defect), and is
+// refused as validate_scene refuses it.
+OutermostContacts outermost_contacts(const std::vector<Vertex>& seat,
+                                     const std::vector<Vertex>& block, double tolerance) {
   const std::vector<RestContact> contacts = rest_contacts(seat, block, tolerance);
+  if (contacts.empty()) {
+    throw InvalidInput("invalid scene: seat: does not touch the block (the block must rest on it)");
+  }
   const auto by_x = [](const RestContact& a, const RestContact& b) {
     return a.point[0] < b.point[0];
   };
-  const Point left = at(std::min_element(contacts.begin(), contacts.end(), by_x)->point);
-  const Point right = at(std::max_element(contacts.begin(), contacts.end(), by_x)->point);
+  return {std::min_element(contacts.begin(), contacts.end(), by_x)->point,
+          std::max_element(contacts.begin(), contacts.end(), by_x)->point};
+}
+
+}  // namespace
+
+double seat_alpha(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
+                  double tolerance) {
+  const Point centre = at(polygon_properties(block).centroid);
+  const OutermostContacts outermost = outermost_contacts(seat, block, tolerance);
+  const Point left = at(outermost.left), right = at(outermost.right);
   return std::min(std::atan2(centre.x - left.x, centre.y - left.y),
                   std::atan2(right.x - centre.x, centre.y - right.y));
 }
@@ -238,12 +259,8 @@ std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
 
 SeatTilt tilt_on_seat(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
                       double theta, double tolerance) {
-  const std::vector<RestContact> contacts = rest_contacts(seat, block, tolerance);
-  const auto by_x = [](const RestContact& a, const RestContact& b) {
-    return a.point[0] < b.point[0];
-  };
-  const Vertex pivot = theta > 0 ? std::min_element(contacts.begin(), contacts.end(), by_x)->point
-                                 : std::max_element(contacts.begin(), contacts.end(), by_x)->point;
+  const OutermostContacts outermost = outermost_contacts(seat, block, tolerance);
+  const Vertex pivot = theta > 0 ? outermost.left : outermost.right;
   const double c = std::cos(theta), s = std::sin(theta);
   const auto turned = [&](const Vertex& v) {
     const double dx = v[0] - pivot[0], dy = v[1] - pivot[1];

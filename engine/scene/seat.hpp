@@ -48,13 +48,15 @@ std::vector<RestContact> rest_contacts(const std::vector<Vertex>& seat,
 // The tilt at which the block resting on its seat balances on its outermost support: the lesser
 // of the angles that turn its centre of mass over the leftmost and over the rightmost point where
 // it touches (about the leftmost counter-clockwise, about the rightmost clockwise). On a flat seat
-// these are the base's corners, and the angle is the flat ground's alpha.
+// these are the base's corners, and the angle is the flat ground's alpha. A block that does not
+// touch the seat (a scene seat_defect refuses) has no support: InvalidInput.
 double seat_alpha(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
                   double tolerance);
 
 // Where the block resting on its seat is released from when it starts tilted by theta
 // (counter-clockwise > 0): turned about the leftmost point where it touches for theta > 0, the
-// rightmost for theta < 0, as the flat ground releases it on the base corner the tilt lowers.
+// rightmost for theta < 0, as the flat ground releases it on the base corner the tilt lowers; as
+// seat_alpha, InvalidInput for a block that does not touch the seat.
 struct SeatTilt {
   Vertex pivot;                  // the point it turns about, in the frame of the block's vertices
   std::vector<Vertex> vertices;  // the block's vertices turned about it

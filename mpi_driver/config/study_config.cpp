@@ -146,6 +146,22 @@ json distribution_to_json(StudyInput input, const Distribution& distribution) {
       distribution);
 }
 
+// Why a study cannot draw the block's size, if it cannot: sampling draws a rectangle's sizes, so a
+// polygon keeps its shape (friction, restitution, period and direction still vary), and so does a
+// block on a seat, which fits one block at rest (another size would float above it or sink into
+// it).
+const char* fixed_geometry(const Scene& base) {
+  if (base.polygon) {
+    return "varies a rectangle's size, but /scene/block is a polygon (studies keep a polygon's "
+           "shape)";
+  }
+  if (base.seat) {
+    return "varies the block's size, but /scene/seat fixes the block's geometry (a seat fits one "
+           "block at rest)";
+  }
+  return nullptr;
+}
+
 void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, StudyConfig& config) {
   for (const StudyInput input : all_inputs) {
     const std::string key = input_key(input);
@@ -179,16 +195,10 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
                      "give the geometry either as half_width/half_height or as alpha/R, not both");
   }
   if (!scene_valid) return;
-  // Sampling draws a rectangle's sizes; a polygon block keeps its shape (friction, restitution,
-  // period and direction still vary).
-  if (base.polygon) {
+  if (const char* fixed = fixed_geometry(base)) {
     for (const StudyInput input :
          {StudyInput::half_width, StudyInput::half_height, StudyInput::alpha, StudyInput::R}) {
-      if (has(input)) {
-        reader.add_error(input_key(input),
-                         "varies a rectangle's size, but /scene/block is a polygon (studies keep "
-                         "a polygon's shape)");
-      }
+      if (has(input)) reader.add_error(input_key(input), fixed);
     }
   }
   const bool has_motion = config.suite || !std::holds_alternative<NoMotion>(base.ground_motion);
@@ -324,7 +334,8 @@ double largest_tan_alpha(const StudyConfig& config) {
     if (spec.input == StudyInput::half_height) b = low;
   }
   if (alpha) return std::tan(*alpha);
-  return config.base_scene.polygon ? std::tan(block_alpha(config.base_scene)) : a / b;
+  const bool fixed_shape = config.base_scene.polygon || config.base_scene.seat;
+  return fixed_shape ? std::tan(block_alpha(config.base_scene)) : a / b;
 }
 
 // Every record's measures (as recorded); stripes must reach every level with a scale of at most

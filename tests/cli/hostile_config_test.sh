@@ -9,6 +9,46 @@ source "$(dirname "$0")/../support/script_test.sh"
 source "$(dirname "$0")/../support/hostile_case.sh"
 cd "$work" || exit 1
 
+# no_files_left NAME FILE...: one pass when none of the files exists.
+no_files_left() {
+  local name=$1 file
+  shift
+  for file in "$@"; do
+    if [[ -e $file ]]; then
+      fail "$name left $file"
+      return
+    fi
+  done
+  pass
+}
+
+# --- A seat fixes the block's geometry ------------------------------------------------------------
+seat_study() {
+  "$PYTHON" - "$1" <<'PY'
+import json, sys
+study = {"scene": {"block": {"half_width": 0.5, "half_height": 1.0}, "seat": [[-2, -1], [2, -1]],
+                   "contact": {"friction": 0.7, "restitution": 0.7},
+                   "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 1.0, "cycles": 1}},
+         "inputs": json.loads(sys.argv[1]),
+         "intensity_measure": {"type": "pga", "levels": [0.5, 1.0]}, "samples_per_level": 10,
+         "limit_states": [{"name": "overturn", "type": "overturning"}], "seed": 1, "output": "seat.h5"}
+print(json.dumps(study))
+PY
+}
+seat_study '{"half_height": {"distribution": "uniform", "min": 0.5, "max": 2.0}}' >seat_height.json
+run_case seat_sampled_half_height 2 \
+  "seat_height.json: /inputs/half_height: varies the block's size, but /scene/seat fixes the block's geometry" \
+  "$B" run seat_height.json
+no_files_left seat_sampled_half_height seat.h5 seat.h5.lock seat.h5.records seat.h5.checkpoint
+seat_study '{"alpha": {"distribution": "uniform", "min": 0.3, "max": 0.6}, "R": {"distribution": "fixed", "value": 1.2}}' >seat_alpha.json
+run_case seat_sampled_alpha_R 2 "seat_alpha.json: /inputs/R: varies the block's size" "$B" run seat_alpha.json
+grep -qF "seat_alpha.json: /inputs/alpha: varies the block's size" seat_sampled_alpha_R.err && pass ||
+  fail "seat_sampled_alpha_R: /inputs/alpha not refused: $(head -c 300 seat_sampled_alpha_R.err)"
+no_files_left seat_sampled_alpha_R seat.h5 seat.h5.lock seat.h5.records
+# Friction still varies on a seat: the study runs.
+seat_study '{"friction": {"distribution": "uniform", "min": 0.6, "max": 0.9}}' >seat_friction.json
+run_case seat_sampled_friction 0 "wrote seat.h5" "$B" run seat_friction.json --samples-per-level 2
+
 # --- JSON syntax errors quote an excerpt of the broken token ---------------------------------------
 # An unterminated string of 1 MB: the lexer's token is all of it.
 "$PYTHON" -c "print('{\"block\": \"' + 'x' * 1000000)" >unterminated.json

@@ -233,6 +233,26 @@ TEST(StudyConfig, SceneErrorsCarryTheScenePrefix) {
   EXPECT_THAT(messages[0], HasSubstr("study.json: /scene/contact/restitution: must be in [0, 1]"));
 }
 
+// A seat fits one block at rest: a drawn size would leave the block floating above it (once a
+// segfault: no contact to measure alpha over) or sunk into it. Each sized input is refused at its
+// path; friction and the rest still vary.
+TEST(StudyConfig, ASeatFixesTheBlocksGeometry) {
+  json document = small_study();
+  document["scene"]["seat"] = {{-2, -1}, {2, -1}};
+  EXPECT_TRUE(messages_of(document).empty()) << ::testing::PrintToString(messages_of(document));
+  const std::string rule =
+      ": varies the block's size, but /scene/seat fixes the block's geometry (a seat fits one "
+      "block at rest)";
+  document["inputs"]["half_height"] = {{"distribution", "uniform"}, {"min", 0.5}, {"max", 2.0}};
+  EXPECT_EQ(messages_of(document),
+            std::vector<std::string>{"study.json: /inputs/half_height" + rule});
+  document["inputs"].erase("half_height");
+  document["inputs"]["alpha"] = {{"distribution", "uniform"}, {"min", 0.3}, {"max", 0.5}};
+  document["inputs"]["R"] = {{"distribution", "fixed"}, {"value", 1.2}};
+  EXPECT_EQ(messages_of(document), (std::vector<std::string>{"study.json: /inputs/alpha" + rule,
+                                                             "study.json: /inputs/R" + rule}));
+}
+
 // --- The sample-to-scene mapping
 // -------------------------------------------------------------------
 

@@ -85,6 +85,21 @@ TEST(Seat, AlphaIsTheTiltOverTheOutermostSupport) {
   EXPECT_NEAR(heel, 0.4328, 1e-4);
 }
 
+// A block above its seat (a study once drew a taller block over a seat fitted to another) touches
+// it nowhere: no support to measure alpha over or to tilt about, which is the scene's fault.
+TEST(Seat, ABlockThatDoesNotTouchItsSeatHasNoAlphaAndNoPivot) {
+  const std::vector<Vertex> seat = {{-2, -1.5}, {2, -1.5}};
+  EXPECT_THAT(defect_of(seat, kRectangle), HasSubstr("does not touch the block"));
+  try {
+    seat_alpha(seat, kRectangle, kTolerance);
+    FAIL() << "seat_alpha measured a block that does not touch its seat";
+  } catch (const InvalidInput& error) {
+    EXPECT_THAT(error.what(), HasSubstr("invalid scene: seat: does not touch the block"));
+  }
+  EXPECT_THROW(tilt_on_seat(seat, kRectangle, 0.1, kTolerance), InvalidInput);
+  EXPECT_THROW(tilt_on_seat(seat, kRectangle, -0.1, kTolerance), InvalidInput);
+}
+
 TEST(Seat, PointsMustRunLeftToRight) {
   EXPECT_THAT(defect_of({{-10, -1}}, kRectangle), HasSubstr("at least 2 points"));
   EXPECT_THAT(defect_of({{-10, -1}, {0, -1}, {0, -1}, {10, -1}}, kRectangle),
