@@ -10,7 +10,8 @@
 
 namespace blockfrag {
 
-// [[x, y], ...], left to right, at least 2 points, in the frame of the block's vertices. Every
+// [[x, y], ...], left to right, at least 2 points, at most kMaxSeatClearances
+// (engine/tolerances.hpp) with the block's vertices, in the frame of the block's vertices. Every
 // error is recorded at its path: a bad coordinate at /seat/2/1, a point out of order or inside the
 // block at /seat/2, a rule of the whole seat (a block vertex below it, its weight not carried) at
 // /seat. `block`: the block's vertices (engine/scene/seat.hpp, scene_block_vertices), or none when

@@ -49,6 +49,19 @@ no_files_left seat_sampled_alpha_R seat.h5 seat.h5.lock seat.h5.records
 seat_study '{"friction": {"distribution": "uniform", "min": 0.6, "max": 0.9}}' >seat_friction.json
 run_case seat_sampled_friction 0 "wrote seat.h5" "$B" run seat_friction.json --samples-per-level 2
 
+# A seat's simulation watches every seat point and block vertex, 38 at most: 40 points and the
+# rectangle's 4 corners are refused at /seat, by the reader.
+"$PYTHON" - <<'PY' >seat_40_points.json
+import json
+seat = [[-2 + 4 * k / 39, -1] for k in range(40)]
+print(json.dumps({"block": {"half_width": 0.5, "half_height": 1.0}, "seat": seat,
+                  "contact": {"friction": 0.6, "restitution": 0.6},
+                  "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 1.0}, "duration": 1.0}))
+PY
+run_case seat_40_points 2 \
+  "seat_40_points.json: /seat: has 40 points; with the block's 4 vertices they number 44, more than the 38" \
+  "$B" simulate seat_40_points.json
+
 # --- JSON syntax errors quote an excerpt of the broken token ---------------------------------------
 # An unterminated string of 1 MB: the lexer's token is all of it.
 "$PYTHON" -c "print('{\"block\": \"' + 'x' * 1000000)" >unterminated.json

@@ -75,6 +75,23 @@ TEST(SeatJson, EveryRuleAtItsPath) {
                         "flight) with a seat"));
 }
 
+// A seat's simulation watches every seat point and block vertex, 38 at most: a seat of 34 points
+// under a rectangle (4 vertices) is the most it takes, one more is refused at /seat, by the
+// reader, rather than as "invalid scene" by the engine without the file or the path.
+TEST(SeatJson, SeatPointsAndBlockVerticesNumberAtMostThoseTheSimulationWatches) {
+  const auto flat_seat = [](int points) {
+    json seat = json::array();
+    for (int k = 0; k < points; ++k) seat.push_back({-2.0 + 4.0 * k / (points - 1), -1.0});
+    return seat;
+  };
+  EXPECT_EQ(scene_errors(rectangle_on(flat_seat(34))), "(accepted)");
+  EXPECT_EQ(scene_errors(rectangle_on(flat_seat(35))),
+            "scene.json: /seat: has 35 points; with the block's 4 vertices they number 39, more "
+            "than the 38 a seat's simulation watches");
+  EXPECT_THAT(scene_errors(rectangle_on(flat_seat(40))),
+              HasSubstr("/seat: has 40 points; with the block's 4 vertices they number 44"));
+}
+
 // A block with errors of its own is not fitted to the seat (its vertices mean nothing).
 TEST(SeatJson, NoFitForABlockWithErrors) {
   json scene = rectangle_on(json::parse("[[-10, -5], [10, -5]]"));
