@@ -91,26 +91,36 @@ OscillatorState NigamJenningsStep::operator()(const OscillatorState& s, double a
           a21_ * s.q + a22_ * s.v + b21_ * a0 + b22_ * a1};
 }
 
+std::size_t dam_crest_nodes(const GroundMotionPieces& foundation, double period, double duration) {
+  std::size_t nodes = 1;
+  for (const MotionPiece& piece : foundation.pieces()) {
+    if (piece.start() >= duration) break;
+    if (piece.end() <= piece.start()) continue;
+    // + 1: a possible repeated node where the foundation jumps.
+    nodes += static_cast<std::size_t>(piece_grid(piece, duration, period).steps) + 1;
+  }
+  return nodes;
+}
+
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,
                                double duration, double g, bool until_quiet) {
   const double period = dam_period(dam);
   const double omega = 2 * std::numbers::pi / period;
   const double zeta = dam.damping, gamma_phi = dam.participation;
 
+  const std::size_t nodes = dam_crest_nodes(foundation, period, duration);
+  if (nodes > kMaxCrestNodes) {
+    std::ostringstream why;
+    why << "invalid scene: the dam's period (" << period << " s) is too short for the duration ("
+        << duration << " s): the crest motion would need " << nodes
+        << " nodes (one per period / 100), more than " << kMaxCrestNodes;
+    throw InvalidInput(why.str());
+  }
   std::vector<PieceGrid> grids;
-  std::size_t nodes = 1;
   for (const MotionPiece& piece : foundation.pieces()) {
     if (piece.start() >= duration) break;
     if (piece.end() <= piece.start()) continue;
     grids.push_back(piece_grid(piece, duration, period));
-    nodes += static_cast<std::size_t>(grids.back().steps) + 1;  // + 1: a possible repeated node
-    if (nodes > kMaxCrestNodes) {
-      std::ostringstream why;
-      why << "invalid scene: the dam's period (" << period << " s) is too short for the duration ("
-          << duration << " s): the crest motion would need more than " << kMaxCrestNodes
-          << " nodes (one per period / 100)";
-      throw InvalidInput(why.str());
-    }
   }
 
   CrestHistory h;

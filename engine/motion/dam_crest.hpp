@@ -67,6 +67,12 @@ struct CrestHistory {
 // scene's duration (period / 100 per node) is refused with InvalidInput.
 constexpr std::size_t kMaxCrestNodes = 2'000'000;
 
+// The nodes of the crest history up to `duration` under a dam of this period, counted without
+// building it (a ringing crest followed until_quiet may stop earlier, but is refused on this count
+// all the same): a config reader decides with it, before any work, what dam_crest_history would
+// refuse.
+std::size_t dam_crest_nodes(const GroundMotionPieces& foundation, double period, double duration);
+
 // Up to `duration`; with until_quiet, the history ends earlier once the foundation has stopped
 // and the crest's free ringing can no longer exceed kRingingEnd (engine/tolerances.hpp).
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,

@@ -33,15 +33,27 @@ GroundMotion upward(GroundMotion motion) {
   return motion;
 }
 
+// How far the crest is followed: the scene's duration, or a settling run's cap.
+double crest_horizon(const Scene& scene, const GroundMotionPieces& foundation) {
+  if (scene.duration) return *scene.duration;
+  return scene.max_duration.value_or(foundation.end_of_motion() + kSettleAllowance);
+}
+
 }  // namespace
 
 GroundMotionPieces scene_motion(const Scene& scene) {
   GroundMotionPieces foundation(fitted_to_solver(scene.ground_motion, scene.solver), scene.g);
   if (!scene.dam) return foundation;
-  if (scene.duration) return dam_crest_motion(foundation, *scene.dam, *scene.duration, scene.g);
   // Settling: the crest is followed until its ringing dies out, within the run's cap.
-  const double horizon = scene.max_duration.value_or(foundation.end_of_motion() + kSettleAllowance);
-  return dam_crest_motion(foundation, *scene.dam, horizon, scene.g, true);
+  return dam_crest_motion(foundation, *scene.dam, crest_horizon(scene, foundation), scene.g,
+                          !scene.duration);
+}
+
+CrestExtent scene_crest_extent(const Scene& scene) {
+  if (!scene.dam) return {};
+  const GroundMotionPieces foundation(fitted_to_solver(scene.ground_motion, scene.solver), scene.g);
+  const double horizon = crest_horizon(scene, foundation);
+  return {dam_crest_nodes(foundation, dam_period(*scene.dam), horizon), horizon};
 }
 
 double run_end_time(const Scene& scene, const GroundMotionPieces& motion,

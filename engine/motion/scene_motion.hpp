@@ -1,6 +1,8 @@
 // The ground motion a scene's block feels, as pieces the integrator can step through.
 #pragma once
 
+#include <cstddef>
+
 #include "engine/motion/ground_motion.hpp"
 #include "engine/scene/scene.hpp"
 
@@ -16,5 +18,13 @@ GroundMotionPieces scene_vertical_motion(const Scene& scene);
 // kSettleAllowance after the last of its motions ends.
 double run_end_time(const Scene& scene, const GroundMotionPieces& motion,
                     const GroundMotionPieces& vertical);
+
+// The crest history a scene's run needs: its nodes, which scene_motion refuses beyond
+// kMaxCrestNodes (engine/motion/dam_crest.hpp), and the time it covers (s). None without a dam.
+struct CrestExtent {
+  std::size_t nodes = 0;
+  double horizon = 0.0;
+};
+CrestExtent scene_crest_extent(const Scene& scene);
 
 }  // namespace blockfrag

@@ -2,6 +2,10 @@
 
 #include <string>
 
+#include "engine/motion/dam_crest.hpp"
+#include "engine/motion/scene_motion.hpp"
+#include "engine/number_text.hpp"
+
 namespace blockfrag {
 
 std::optional<DamCrest> read_dam(ObjectReader reader) {
@@ -44,6 +48,17 @@ nlohmann::json dam_to_json(const DamCrest& dam) {
     out["elastic_modulus"] = size.elastic_modulus;
   }
   return out;
+}
+
+std::optional<std::string> crest_history_problem(const Scene& scene) {
+  if (!scene.dam) return std::nullopt;
+  const CrestExtent crest = scene_crest_extent(scene);
+  if (crest.nodes <= kMaxCrestNodes) return std::nullopt;
+  return "the dam's period (" + format_number(dam_period(*scene.dam)) +
+         " s) is too short for the run (" + format_number(crest.horizon) +
+         " s): the crest motion would need " + std::to_string(crest.nodes) +
+         " nodes (one per period / 100), more than " + std::to_string(kMaxCrestNodes) +
+         "; give a longer period, or a duration or max_duration that ends the run sooner";
 }
 
 }  // namespace blockfrag

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -15,5 +16,10 @@ namespace blockfrag {
 // "participation" (1). An absent "dam" is no dam; errors are recorded at their paths.
 std::optional<DamCrest> read_dam(ObjectReader reader);
 nlohmann::json dam_to_json(const DamCrest& dam);
+
+// Why the scene's run cannot follow its dam's crest, if it cannot: the crest history it needs has
+// more than kMaxCrestNodes nodes (engine/motion/dam_crest.hpp: a dam period far shorter than the
+// run), which the engine would refuse only once the run starts. For a valid scene.
+std::optional<std::string> crest_history_problem(const Scene& scene);
 
 }  // namespace blockfrag

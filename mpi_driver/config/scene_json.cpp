@@ -277,6 +277,7 @@ Scene scene_from_json(const json& document, const std::string& source) {
 
 Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& errors,
                       const std::filesystem::path& base_folder) {
+  const std::size_t errors_before = errors.size();
   ObjectReader root(value, path, errors);
   Scene scene;
   scene.effects = read_effects(root.raw("effects"), root.path_of("effects"), errors);
@@ -308,6 +309,10 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
     check_polygon_tilt(*scene.polygon, scene.initial.theta, path / "initial" / "theta", errors);
   if (root.has("seat")) read_scene_seat(root, block_valid, path, errors, scene);
   root.finish();
+  // The dam's crest history is counted only for a scene that is otherwise valid.
+  if (errors.size() == errors_before) {
+    if (const auto problem = crest_history_problem(scene)) errors.add(path / "dam", *problem);
+  }
   return scene;
 }
 

@@ -13,6 +13,7 @@
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/output_name.hpp"
 #include "mpi_driver/config/scene_json.hpp"
+#include "mpi_driver/config/study_crest_check.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "sampling/validation.hpp"
 
@@ -44,21 +45,6 @@ const Domain& input_domain(StudyInput input) {
     case StudyInput::direction: break;
   }
   throw ContractViolation("a random sign has no domain");
-}
-
-// The interval the distribution's values can take: [low, high].
-std::pair<double, double> support_of(const Distribution& distribution) {
-  return std::visit(
-      [](const auto& d) -> std::pair<double, double> {
-        using T = std::decay_t<decltype(d)>;
-        if constexpr (std::is_same_v<T, Fixed>) return {d.value, d.value};
-        if constexpr (std::is_same_v<T, Uniform>) return {d.min, d.max};
-        if constexpr (std::is_same_v<T, Normal>)
-          return {d.lower.value_or(-infinity), d.upper.value_or(infinity)};
-        if constexpr (std::is_same_v<T, LogNormal>)
-          return {d.lower.value_or(0.0), d.upper.value_or(infinity)};
-      },
-      distribution);
 }
 
 // The distribution's support [low, high] inside the domain; an untruncated lognormal's support
@@ -471,6 +457,20 @@ json canonical_json(const StudyConfig& config) {
 
 }  // namespace
 
+std::pair<double, double> support_of(const Distribution& distribution) {
+  return std::visit(
+      [](const auto& d) -> std::pair<double, double> {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, Fixed>) return {d.value, d.value};
+        if constexpr (std::is_same_v<T, Uniform>) return {d.min, d.max};
+        if constexpr (std::is_same_v<T, Normal>)
+          return {d.lower.value_or(-infinity), d.upper.value_or(infinity)};
+        if constexpr (std::is_same_v<T, LogNormal>)
+          return {d.lower.value_or(0.0), d.upper.value_or(infinity)};
+      },
+      distribution);
+}
+
 const char* input_key(StudyInput input) {
   switch (input) {
     case StudyInput::friction: return "friction";
@@ -605,6 +605,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
                    std::to_string(kMaxCloudSamples) +
                    " whose per-sample fit rank 0 can hold; split it into several studies");
   }
+  if (errors.empty()) check_study_crest(config, errors);
   errors.throw_if_any();
 
   config.canonical = canonical_json(config);

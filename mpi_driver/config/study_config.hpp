@@ -29,6 +29,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -64,6 +65,10 @@ struct StudyInputSpec {
   // For direction: Fixed{+1 or -1}, or Uniform{-1, 1} for a random sign (the sign of the value).
   Distribution distribution;
 };
+
+// The interval [low, high] the distribution's values can take: an untruncated normal's is
+// unbounded, an untruncated lognormal's starts at 0.
+std::pair<double, double> support_of(const Distribution& distribution);
 
 enum class LimitStateKind {
   overturning,     // the block overturned

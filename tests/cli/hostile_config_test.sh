@@ -77,5 +77,46 @@ run_case string_broken_by_newline 2 "broken_string.json:1:224: malformed JSON: s
   "$B" simulate broken_string.json
 grep -q "PRIVATE-TAIL" string_broken_by_newline.err && fail "string_broken_by_newline echoed the line" || pass
 
+# --- A dam too stiff for every sample's run -------------------------------------------------------
+# A 0.001 s dam under a 10 s pulse, settling: 70 s of crest at 1e-5 s a node, 7,000,003 nodes.
+scene_with dam '{"period": 0.001}' >dam_stiff.json
+"$PYTHON" - dam_stiff.json <<'PY'
+import json, sys
+scene = json.load(open(sys.argv[1]))
+del scene["duration"]
+scene["ground_motion"]["period"] = 10.0
+json.dump(scene, open(sys.argv[1], "w"))
+PY
+run_case dam_period_0.001_pulse_10s 2 \
+  "dam_stiff.json: /dam: the dam's period (0.001 s) is too short for the run (70 s): the crest motion would need 7000003 nodes" \
+  "$B" simulate dam_stiff.json
+# The example study on that dam: its every sample's run is at least 60 s.
+study_with '{"scene": {"dam": {"period": 0.001}}}' >dam_study.json
+run_case dam_study_period_0.001 2 "dam_study.json: /scene/dam: the dam's period (0.001 s) is too short for the run" \
+  "$B" run dam_study.json
+no_files_left dam_study_period_0.001 out.h5 out.h5.lock out.h5.records out.h5.checkpoint
+# A 0.25 s dam under a 99,900 s record: 99,960 s of crest at 0.0025 s a node, as one record and as
+# a suite of it.
+printf '0 0\n0.5 0.1\n99900 0\n' >long_record.txt
+# dam_record_study GROUND_MOTION > file: the example study on a 0.25 s dam under that motion, its
+# geometry and contact fixed.
+dam_record_study() {
+  study_with "{\"scene\": {\"dam\": {\"period\": 0.25}, \"ground_motion\": $1}}" | "$PYTHON" -c '
+import json, sys
+study = json.load(sys.stdin)
+study["inputs"] = {}
+study["intensity_measure"] = {"type": "pga", "levels": [0.5, 1.0]}
+print(json.dumps(study))'
+}
+dam_record_study '{"type": "record", "file": "long_record.txt"}' >dam_record.json
+run_case dam_period_0.25_record_99900s 2 \
+  "dam_record.json: /scene/dam: the dam's period (0.25 s) is too short for the run (99960 s)" "$B" run dam_record.json
+no_files_left dam_period_0.25_record_99900s out.h5 out.h5.lock out.h5.records
+dam_record_study '{"type": "record_suite", "records": ["long_record.txt"]}' >dam_suite.json
+run_case dam_period_0.25_suite_99900s 2 \
+  "dam_suite.json: /scene/dam: no sample could run (each would be rejected): with the record long_record.txt: the dam's period (0.25 s) is too short for the run (99960 s)" \
+  "$B" run dam_suite.json
+no_files_left dam_period_0.25_suite_99900s out.h5 out.h5.lock out.h5.records
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

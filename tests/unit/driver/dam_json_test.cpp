@@ -14,6 +14,7 @@ namespace {
 
 using nlohmann::json;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 json scene_with_dam(const json& dam) {
   json scene = json::parse(R"({
@@ -77,6 +78,29 @@ TEST(DamJson, RefusesEachRuleAtItsPath) {
   EXPECT_THAT(scene_errors(scene_with_dam({{"period", 0.3}, {"dampng", 0.1}})),
               HasSubstr("/dam/dampng: unknown key; did you mean \"damping\"?"));
   EXPECT_THAT(scene_errors(scene_with_dam(0.3)), HasSubstr("/dam: must be an object"));
+}
+
+// The crest history is a node per period / 100 over the run, at most 2,000,000: a scene that
+// needs more is refused at /dam by the reader, before any work, and not by the engine once the run
+// starts without the file or the path. Counts by hand, at steps of 0.001 s / 100: a 10 s cosine
+// pulse and the 60 s a settling run allows after it, 1,000,000 + 6,000,000 steps, a node more for
+// each of the two pieces and one to start with; a fixed 3 s run, 300,000 steps.
+TEST(DamJson, RefusesACrestHistoryOfMoreNodesThanARunHolds) {
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.001}})), "(accepted)");
+  json settling = scene_with_dam({{"period", 0.001}});
+  settling.erase("duration");
+  settling["ground_motion"] = {{"type", "cosine_pulse"}, {"amplitude_g", 1.0}, {"period", 10.0}};
+  EXPECT_EQ(scene_errors(settling),
+            "scene.json: /dam: the dam's period (0.001 s) is too short for the run (70 s): the "
+            "crest motion would need 7000003 nodes (one per period / 100), more than 2000000; give "
+            "a longer period, or a duration or max_duration that ends the run sooner");
+  settling["max_duration"] = 20.0;
+  EXPECT_THAT(scene_errors(settling), HasSubstr("too short for the run (20 s)"));
+  settling["max_duration"] = 19.0;
+  EXPECT_EQ(scene_errors(settling), "(accepted)");
+  // Other errors first: the crest is counted only for an otherwise valid scene.
+  settling["contact"]["friction"] = -1;
+  EXPECT_THAT(scene_errors(settling), Not(HasSubstr("/dam")));
 }
 
 }  // namespace
