@@ -90,7 +90,7 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
 }
 
 // The block as a scene reads it: half_width/half_height (or a polygon, refused later) as given,
-// or alpha and R turned into them.
+// or alpha and R turned into them; none, after their errors, for alpha and R that cannot be used.
 std::optional<json> read_block(const json& document, ConfigErrors& errors) {
   if (!document.is_object() || !document.contains("block")) return std::nullopt;
   const json& block = document["block"];
@@ -109,13 +109,18 @@ std::optional<json> read_block(const json& document, ConfigErrors& errors) {
   reader.finish();
   if (!alpha || !R) return std::nullopt;
   const double a = *R * std::sin(*alpha), b = *R * std::cos(*alpha);
+  bool sizes_valid = true;
   for (const auto& [name, value] : {std::pair{"half_width", a}, std::pair{"half_height", b}}) {
     if (!domain::block_length.contains(value)) {
       reader.add_error("R", std::string("with this alpha gives the ") + name + " " +
                                 format_number(value) + " m, which " + domain::block_length.rule() +
                                 " m");
+      sizes_valid = false;
     }
   }
+  // Sizes out of their domain are reported here, at the keys the file has: the scene reader would
+  // report them again at /block/half_width, a key the file does not have.
+  if (!sizes_valid) return std::nullopt;
   return json{{"half_width", a}, {"half_height", b}, {"mass", mass}};
 }
 

@@ -118,5 +118,20 @@ run_case dam_period_0.25_suite_99900s 2 \
   "$B" run dam_suite.json
 no_files_left dam_period_0.25_suite_99900s out.h5 out.h5.lock out.h5.records
 
+# --- Spectra ---------------------------------------------------------------------------------------
+spectrum_with() {
+  "$PYTHON" - "$BLOCKFRAG_SOURCE_DIR/configs/paper_block_spectrum.json" "$1" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec.update(json.loads(sys.argv[2]))
+print(json.dumps(spec))
+PY
+}
+# alpha 1e-300 makes a half-width outside its domain: reported once, at the key the file has.
+spectrum_with '{"block": {"alpha": 1e-300, "R": 1.0}, "output": "tiny.h5"}' >spectrum_alpha.json
+run_case spectrum_alpha_1e-300 2 "spectrum_alpha.json: /block/R: with this alpha gives the half_width 1e-300 m" \
+  "$B" spectrum spectrum_alpha.json
+grep -q "/block/half_width" spectrum_alpha_1e-300.err && fail "spectrum_alpha_1e-300 named /block/half_width" || pass
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -21,6 +21,7 @@ namespace {
 
 using nlohmann::json;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 json paper_spectrum() {
   return json::parse(R"({
@@ -149,9 +150,16 @@ TEST(SpectrumConfig, RefusesBlocksItCannotMap) {
               HasSubstr("/block/half_width: give the block as alpha and R, or as half_width"));
   document["block"] = {{"alpha", 2}, {"R", 1}};
   EXPECT_THAT(spectrum_errors(document), HasSubstr("/block/alpha: must be in (0, pi/2)"));
+  // Sizes out of their domain are reported once, at the keys the file has: not again at
+  // /block/half_width, which the file does not have.
+  document["block"] = {{"alpha", 1e-300}, {"R", 1}};
+  EXPECT_EQ(spectrum_errors(document),
+            "spec.json: /block/R: with this alpha gives the half_width 1e-300 m, which must be in "
+            "[1e-04, 10000] m");
   document["block"] = {{"alpha", 1e-9}, {"R", 1}};
   EXPECT_THAT(spectrum_errors(document),
               HasSubstr("/block/R: with this alpha gives the half_width 1e-09 m"));
+  EXPECT_THAT(spectrum_errors(document), Not(HasSubstr("/block/half_width")));
   document.erase("block");
   EXPECT_THAT(spectrum_errors(document), HasSubstr("spec.json: /block: "));
 }
