@@ -16,6 +16,9 @@ namespace {
 
 // Records read from a spool at a time: 64k of them, a few MB.
 constexpr std::int64_t kBlock = 1 << 16;
+// What a spectrum's hash identifies, in the messages that refuse another spectrum's files.
+constexpr const char* kSpectrumSpec = "spectrum spec";
+constexpr const char* kSpec = "spec";
 
 // Runs `work` on rank 0 alone; every rank learns whether it failed, and then every rank throws:
 // rank 0 its own error (a refused file as StudyMismatchError), the others one of the same kind.
@@ -101,9 +104,8 @@ BisectionState start_bisection(const SpectrumConfig& config, const RunSettings& 
     if (state->config_hash != config.hash) {
       throw StudyMismatchError(
           "refusing to resume: the bisection state " + files.bisection.string() +
-          " belongs to a different spectrum config (config hash " +
-          hash_to_hex(state->config_hash) + ", this config " + hash_to_hex(config.hash) +
-          "); remove it to start the bisection over");
+          " belongs to a different spectrum spec (spec hash " + hash_to_hex(state->config_hash) +
+          ", this spec " + hash_to_hex(config.hash) + "); remove it to start the bisection over");
     }
     return std::move(*state);
   }
@@ -155,11 +157,16 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
   SpectrumRunResult result;
   const auto na = static_cast<std::int64_t>(config.amplitude_ratio.size());
   const SampleJob map_job{
-      config.hash, config.map_points(), [&](std::int64_t index) {
-        return evaluate_spectrum_point(
-            config, config.frequency_ratio[static_cast<std::size_t>(index / na)],
-            config.amplitude_ratio[static_cast<std::size_t>(index % na)], index, evaluate);
-      }};
+      .hash = config.hash,
+      .total = config.map_points(),
+      .evaluate =
+          [&](std::int64_t index) {
+            return evaluate_spectrum_point(
+                config, config.frequency_ratio[static_cast<std::size_t>(index / na)],
+                config.amplitude_ratio[static_cast<std::size_t>(index % na)], index, evaluate);
+          },
+      .config_name = kSpectrumSpec,
+      .config_word = kSpec};
   result.map = run_samples(comm, map_job, settings);
   if (interrupted_on_rank0(comm, result.map.outcome)) {
     result.outcome = RunOutcome::interrupted;
@@ -196,11 +203,16 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
       *settings.log << "bisection round " << header[0] + 1 << ": " << header[1]
                     << (header[1] == 1 ? " crossing" : " crossings") << " to narrow\n";
     }
-    const SampleJob job{round_hash(config.hash, header[0]), header[1], [&](std::int64_t k) {
-                          const auto at = static_cast<std::size_t>(2 * k);
-                          return evaluate_spectrum_point(config, points[at], points[at + 1], k,
-                                                         evaluate);
-                        }};
+    const SampleJob job{.hash = round_hash(config.hash, header[0]),
+                        .total = header[1],
+                        .evaluate =
+                            [&](std::int64_t k) {
+                              const auto at = static_cast<std::size_t>(2 * k);
+                              return evaluate_spectrum_point(config, points[at], points[at + 1], k,
+                                                             evaluate);
+                            },
+                        .config_name = kSpectrumSpec,
+                        .config_word = kSpec};
     const RunResult round = run_samples(comm, job, round_settings);
     result.midpoints += round.computed;
     if (interrupted_on_rank0(comm, round.outcome)) {

@@ -298,11 +298,13 @@ Restored restore(MPI_Comm comm, const SampleJob& job, const RunSettings& setting
     try {
       const std::optional<CheckpointState> checkpoint = read_checkpoint(settings.checkpoint);
       if (checkpoint && checkpoint->config_hash != job.hash) {
-        throw StudyMismatchError(
-            "refusing to resume: the checkpoint " + settings.checkpoint.string() +
-            " belongs to a different study config (checkpoint config hash " +
-            hash_to_hex(checkpoint->config_hash) + ", this config " + hash_to_hex(job.hash) +
-            "); run the original config to finish it, or remove the checkpoint to start over");
+        const std::string word = job.config_word;
+        throw StudyMismatchError("refusing to resume: the checkpoint " +
+                                 settings.checkpoint.string() + " belongs to a different " +
+                                 job.config_name + " (checkpoint " + word + " hash " +
+                                 hash_to_hex(checkpoint->config_hash) + ", this " + word + " " +
+                                 hash_to_hex(job.hash) + "); run the original " + word +
+                                 " to finish it, or remove the checkpoint to start over");
       }
       if (checkpoint && checkpoint->total_samples != job.total) {
         throw StudyMismatchError("refusing to resume: the checkpoint " +

@@ -76,6 +76,10 @@ struct SampleJob {
   // This run computes samples [0, run_until) only (0: all): a study that grows in batches runs
   // one prefix after another against one checkpoint and spool of `total` samples.
   std::int64_t run_until = 0;
+  // What the hash identifies, for the messages that refuse another's checkpoint ("a different
+  // study config") and name what to rerun ("the original config").
+  const char* config_name = "study config";
+  const char* config_word = "config";
 
   std::int64_t end() const { return run_until > 0 ? run_until : total; }
 };

@@ -133,5 +133,27 @@ run_case spectrum_alpha_1e-300 2 "spectrum_alpha.json: /block/R: with this alpha
   "$B" spectrum spectrum_alpha.json
 grep -q "/block/half_width" spectrum_alpha_1e-300.err && fail "spectrum_alpha_1e-300 named /block/half_width" || pass
 
+# Another spectrum's map checkpoint at the output's name: stopped in its map, then another spec.
+spectrum_with '{"frequency_ratio": {"from": 1, "to": 6, "count": 100}, "amplitude_ratio": {"from": 1, "to": 6, "count": 100}, "output": "map.h5", "checkpoint_interval_s": 0.05}' >map_a.json
+spectrum_with '{"frequency_ratio": {"from": 1, "to": 6, "count": 100}, "amplitude_ratio": {"from": 1, "to": 6, "count": 100}, "output": "map.h5", "contact": {"friction": 0.7, "restitution": 0.6}}' >map_b.json
+"$B" spectrum map_a.json >map_a.out 2>&1 &
+map_pid=$!
+for _ in $(seq 100); do
+  [[ -e map.h5.checkpoint ]] && break
+  sleep 0.1
+done
+kill -TERM "$map_pid"
+wait "$map_pid"
+map_code=$?
+if [[ $map_code -ne 4 || ! -e map.h5.checkpoint ]]; then
+  fail "spectrum_checkpoint_of_another_spec: the first spectrum exited $map_code without its checkpoint"
+else
+  run_case spectrum_checkpoint_of_another_spec 2 \
+    "refusing to resume: the checkpoint map.h5.checkpoint belongs to a different spectrum spec (checkpoint spec hash" \
+    "$B" spectrum map_b.json
+  grep -q "run the original spec to finish it" spectrum_checkpoint_of_another_spec.err && pass ||
+    fail "spectrum_checkpoint_of_another_spec: $(head -c 300 spectrum_checkpoint_of_another_spec.err)"
+fi
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -3,8 +3,9 @@
 // frequency): every crossing is found and bisected to the tolerance on the right side; a rerun over
 // the finished files computes nothing; a run stopped by an error in the middle of the bisection
 // resumes from its files and ends with the same brackets, bit for bit, computing nothing twice; a
-// bisection state of another spectrum is refused. Labelled mpi: Open MPI's allocations at MPI_Init
-// would count as leaks under the sanitizer's leak check.
+// bisection state or map checkpoint of another spectrum is refused as another spectrum spec's.
+// Labelled mpi: Open MPI's allocations at MPI_Init would count as leaks under the sanitizer's leak
+// check.
 #include "mpi_driver/parallel/spectrum_runner.hpp"
 
 #include <cmath>
@@ -160,9 +161,34 @@ TEST(SpectrumRunner, RefusesTheBisectionStateOfAnotherSpectrum) {
     run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files, stand_in(config));
     FAIL() << "accepted another spectrum's bisection state";
   } catch (const StudyMismatchError& error) {
-    EXPECT_NE(std::string(error.what()).find("belongs to a different spectrum config"),
+    EXPECT_NE(std::string(error.what()).find("belongs to a different spectrum spec"),
               std::string::npos)
         << error.what();
+  }
+}
+
+// The map's checkpoint of another spectrum (stopped in its map) is another spectrum spec's, not a
+// study's.
+TEST(SpectrumRunner, RefusesTheMapCheckpointOfAnotherSpectrumSpec) {
+  TemporaryFolder folder;
+  const RunFiles run = files_in(folder);
+  const SpectrumConfig other = small_spectrum(0.5);
+  int calls = 0;
+  EXPECT_THROW(
+      run_spectrum(MPI_COMM_WORLD, other, run.settings, run.files, stand_in(other, &calls, 10)),
+      std::runtime_error);
+  ASSERT_TRUE(std::filesystem::exists(run.settings.checkpoint));
+  const SpectrumConfig config = small_spectrum();
+  try {
+    run_spectrum(MPI_COMM_WORLD, config, run.settings, run.files, stand_in(config));
+    FAIL() << "accepted another spectrum's map checkpoint";
+  } catch (const StudyMismatchError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("belongs to a different spectrum spec (checkpoint spec hash"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("run the original spec to finish it"), std::string::npos) << what;
+    EXPECT_EQ(what.find("study config"), std::string::npos) << what;
   }
 }
 
