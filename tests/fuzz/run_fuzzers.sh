@@ -43,6 +43,8 @@ seeds() {
     two_column_record_fuzzer)
       find tests/data/records tests/data/bad_records -maxdepth 1 -type f \
         ! -iname '*.at2' ! -name '*.json' ! -name '*.py' ;;
+    spectrum_spec_fuzzer)
+      ls tests/data/spectrum_specs/*.json configs/*.json tests/data/bad_scenes/*.json ;;
     *)
       ls tests/data/bad_scenes/*.json tests/data/bad_studies/*.json tests/data/pulse_scenes/*.json \
         tests/data/records/*.json configs/*.json ;;

@@ -7,6 +7,7 @@
 #include "mpi_driver/config/spectrum_config.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -230,6 +231,28 @@ TEST(SpectrumConfig, PointSceneIsThePulseAtItsRatios) {
   const Scene ricker = spectrum_scene(parse_spectrum_config(document, "spec.json"), 1.0, 1.0);
   const double tp = std::get<RickerWavelet>(ricker.ground_motion).period;
   EXPECT_DOUBLE_EQ(*ricker.max_duration, 3 * tp + 200.0 / p);  // the window is 2 t0 = 3 Tp
+}
+
+// The specs of tests/data/spectrum_specs (the spectrum spec fuzzer's seeds beside configs/) read,
+// and read back from their canonical configs to the same hash: each family, axis form and block
+// form a seed stands for.
+TEST(SpectrumConfig, TheSeedSpecsReadAndRoundTrip) {
+  const std::filesystem::path folder =
+      std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/spectrum_specs";
+  int specs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const SpectrumConfig config = read_spectrum_config(entry.path());
+    const SpectrumConfig again = parse_spectrum_config(config.canonical, entry.path().string());
+    EXPECT_EQ(again.hash, config.hash) << entry.path();
+    EXPECT_EQ(again.canonical, config.canonical) << entry.path();
+    ++specs;
+  }
+  EXPECT_EQ(specs, 4);
+  const SpectrumConfig values = read_spectrum_config(folder / "alpha_r_sine_values.json");
+  EXPECT_EQ(values.pulse, SpectrumPulse::sine);
+  EXPECT_EQ(values.frequency_ratio, (std::vector<double>{1.5, 2.0, 3.5}));
+  EXPECT_NEAR(values.alpha(), 0.25, 1e-15);
+  EXPECT_EQ(read_spectrum_config(folder / "makris_c_gsl.json").makris_n, 2);
 }
 
 }  // namespace
