@@ -218,6 +218,22 @@ TEST(RecordSuite, ASuitePastItsSampleCapIsRefusedAtTheRecordThatCrossesIt) {
   }
 }
 
+// On a seat the dimensionless measure's alpha is the seat's (the tilt over its outermost support),
+// in the check of the largest scale as in each sample: the 0.4 x 1 block on a seat 0.6 m wide has
+// tan alpha 0.3, not a / b = 0.4. cosine_pulse.txt peaks at 0.4 g, so the level 120 needs a scale
+// of 120 x 0.3 / 0.4 = 90 there (with a / b it would be 120, more than 100).
+TEST(RecordSuiteStudy, OnASeatTheLargestScaleTakesTheSeatsAlpha) {
+  json study = suite_study({"cosine_pulse.txt"},
+                           {{"type", "pga_over_g_tan_alpha"}, {"levels", {1.0, 120.0}}}, 2);
+  study["inputs"].erase("half_width");
+  study["scene"]["seat"] = {{-0.3, -1.0}, {0.3, -1.0}};
+  EXPECT_THAT(suite_errors(study), ::testing::ElementsAre());
+  study["intensity_measure"]["levels"] = {1.0, 140.0};
+  EXPECT_THAT(suite_errors(study), ::testing::ElementsAre(::testing::AllOf(
+                                       HasSubstr("cosine_pulse.txt: reaching the level 140"),
+                                       HasSubstr("needs a scale of 105, more than 100"))));
+}
+
 TEST(RecordSuiteStudy, AnSaPeriodTooShortToStepIsRefusedAtItsPath) {
   EXPECT_THAT(
       suite_errors(
