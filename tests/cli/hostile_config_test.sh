@@ -23,6 +23,7 @@ no_files_left() {
 }
 
 # --- A seat fixes the block's geometry ------------------------------------------------------------
+# seat_study INPUTS_JSON > file: a study of a rectangle on a flat seat, drawing INPUTS_JSON.
 seat_study() {
   "$PYTHON" - "$1" <<'PY'
 import json, sys
