@@ -63,11 +63,15 @@ void check_study_crest(const StudyConfig& config, ConfigErrors& errors) {
     if (!problem) return;  // these samples run
     if (first.empty()) first = crest.what + ": " + *problem;
   }
+  const std::size_t others = cases.size() - 1;
+  std::string likewise;
+  if (others == 1) likewise = ", and likewise for the other motion the samples run";
+  if (others > 1) {
+    likewise =
+        ", and likewise for the " + std::to_string(others) + " other motions the samples run";
+  }
   errors.add(JsonPointer("/scene/dam"),
-             "no sample could run (each would be rejected): with " + first +
-                 (cases.size() > 1 ? ", and likewise for the " + std::to_string(cases.size() - 1) +
-                                         " other motions the samples run"
-                                   : std::string{}));
+             "no sample could run (each would be rejected): with " + first + likewise);
 }
 
 }  // namespace blockfrag

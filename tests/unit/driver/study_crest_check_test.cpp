@@ -54,13 +54,14 @@ TEST(StudyCrestCheck, APeriodRangeNoSampleCanRunIsRefusedAtTheDam) {
   EXPECT_THAT(messages_of(study, "study.json"), ElementsAre());
   // 200 to 300 s pulses: at least 260 s of run, 2,600,000 nodes and more.
   study["inputs"]["period"] = {{"distribution", "uniform"}, {"min", 200.0}, {"max", 300.0}};
-  EXPECT_THAT(messages_of(study, "study.json"),
-              ElementsAre("study.json: /scene/dam: no sample could run (each would be rejected): "
-                          "with the period 200 s: the dam's period (0.01 s) is too short for the "
-                          "run (260 s): the crest motion would need 2600003 nodes (one per period "
-                          "/ 100), more than 2000000; give a longer period, or a duration or "
-                          "max_duration that ends the run sooner, and likewise for the 1 other "
-                          "motions the samples run"));
+  EXPECT_THAT(
+      messages_of(study, "study.json"),
+      ElementsAre("study.json: /scene/dam: no sample could run (each would be rejected): "
+                  "with the period 200 s: the dam's period (0.01 s) is too short for the "
+                  "run (260 s): the crest motion would need 2600003 nodes (one per period "
+                  "/ 100), more than 2000000; give a longer period, or a duration or "
+                  "max_duration that ends the run sooner, and likewise for the other motion "
+                  "the samples run"));
   // From 100 s, 1,600,003 nodes: those samples run.
   study["inputs"]["period"]["min"] = 100.0;
   EXPECT_THAT(messages_of(study, "study.json"), ElementsAre());
