@@ -324,6 +324,17 @@ double largest_tan_alpha(const StudyConfig& config) {
   return fixed_shape ? std::tan(block_alpha(config.base_scene)) : a / b;
 }
 
+// A record's measure as recorded in the study's measure; the dimensionless one at the largest
+// tan(alpha) a sample's block can have, whose stripes need the largest scale.
+double record_unit_measure(const IntensityMeasure& measure, const SuiteRecord& record,
+                           double tan_alpha) {
+  double unit = record.measures.pga_g;
+  if (measure.type == ImType::pgv) unit = record.measures.pgv;
+  if (measure.type == ImType::sa) unit = record.measures.sa_g.front();
+  if (measure.type == ImType::pga_over_g_tan_alpha) unit /= tan_alpha;
+  return unit;
+}
+
 // Every record's measures (as recorded); stripes must reach every level with a scale of at most
 // kMaxRecordScale, and a record whose measure is 0 cannot be scaled at all.
 void measure_suite(StudyConfig& config, ConfigErrors& errors, bool single_record) {
@@ -342,10 +353,7 @@ void measure_suite(StudyConfig& config, ConfigErrors& errors, bool single_record
       errors.add(JsonPointer("/intensity_measure/period"), record.file + ": " + refused.what());
       return;
     }
-    double unit = record.measures.pga_g;
-    if (measure.type == ImType::pgv) unit = record.measures.pgv;
-    if (measure.type == ImType::sa) unit = record.measures.sa_g.front();
-    if (measure.type == ImType::pga_over_g_tan_alpha) unit /= tan_alpha;
+    const double unit = record_unit_measure(measure, record, tan_alpha);
     if (!(unit > 0)) {
       errors.add(where, record.file + ": its " + im_label(measure) +
                             " is 0, so no scale brings it to an intensity");
@@ -495,6 +503,26 @@ const char* limit_state_kind_name(LimitStateKind kind) {
 }
 
 std::string canonical_text(const json& canonical) { return canonical.dump(); }
+
+StripeCap stripe_cap(const StudyConfig& config) {
+  const IntensityMeasure& measure = config.intensity;
+  StripeCap cap{largest_level(measure.type), "the measure's largest level"};
+  if (!config.suite) return cap;
+  const double tan_alpha = largest_tan_alpha(config);
+  for (const SuiteRecord& record : config.suite->records) {
+    const double unit = record_unit_measure(measure, record, tan_alpha);
+    double level = kMaxRecordScale * unit;
+    if (!(level < cap.level)) continue;
+    // The refusal of a fixed level divides by the unit: the cap must pass that test exactly.
+    while (level / unit > kMaxRecordScale) level = std::nextafter(level, 0.0);
+    cap.level = level;
+    cap.reason = format_number(level) + " " + im_unit(measure.type) +
+                 ", the largest level a scale of " + format_number(kMaxRecordScale) + " gives " +
+                 record.file + " (its " + im_label(measure) + " is " + format_number(unit) + " " +
+                 im_unit(measure.type) + ")";
+  }
+  return cap;
+}
 
 StudyConfig parse_study_config(const json& document, const std::string& source,
                                const StudyOverrides& overrides) {

@@ -137,6 +137,16 @@ StudyConfig parse_study_config(const nlohmann::json& document, const std::string
 StudyConfig read_study_config(const std::filesystem::path& path,
                               const StudyOverrides& overrides = {});
 
+// The largest level a stripe of the study may have, and what sets it: the measure's own largest
+// (intensity_measure.hpp) or, with records, the level the record of the smallest measure reaches
+// with the largest scale a record may have. Fixed levels past it are refused; an adaptive study's
+// batches stop there.
+struct StripeCap {
+  double level;
+  std::string reason;  // "the measure's largest level", or the level, the record and its measure
+};
+StripeCap stripe_cap(const StudyConfig& config);
+
 // The canonical text (nlohmann's dump of the canonical config: sorted keys, shortest round-trip
 // numbers) that is hashed and stored in outputs.
 std::string canonical_text(const nlohmann::json& canonical);

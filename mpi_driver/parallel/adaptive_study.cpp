@@ -64,7 +64,7 @@ AdaptiveRun run_adaptive_study(MPI_Comm comm, const StudyConfig& config,
   run.history.level_batch.assign(config.intensity.levels.size(), 0);
   const std::int64_t capacity = adaptive_capacity(config);
   const std::int64_t batch_samples = 2 * static_cast<std::int64_t>(config.samples_per_level);
-  const double largest = largest_level(config.intensity.type);
+  const LevelBounds bounds = adaptive_level_bounds(config);
   AdaptiveCounts counts;
   RunResult sum;
   RunSettings batch_settings = settings;
@@ -93,7 +93,7 @@ AdaptiveRun run_adaptive_study(MPI_Comm comm, const StudyConfig& config,
       const FragilityCurve curve = counts.add_levels_and_fit(run.grown, spool);
       const BatchDecision next =
           decide_next_batch(*config.adaptive, curve, run.grown.intensity.levels,
-                            run.grown.total_samples(), batch_samples, largest);
+                            run.grown.total_samples(), batch_samples, bounds);
       run.history.samples.push_back(run.grown.total_samples());
       run.history.median.push_back(curve.median);
       run.history.beta.push_back(curve.beta);

@@ -1,15 +1,21 @@
 // Where an adaptive study's next batch goes: the pair placed where the fitted curve is the design's
 // p and 1 - p (the default and the D-optimal pair, found by maximising the probit's Fisher
 // information numerically), the median's interval width from its standard error, the stopping
-// rules, and the bracketing batches when there is no fit yet.
+// rules, the bracketing batches when there is no fit yet and the bounds every level keeps.
 #include "mpi_driver/study/adaptive_levels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
 #include <vector>
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "engine/number_text.hpp"
 #include "postproc/fragility/fragility_curve.hpp"
 
 namespace blockfrag {
@@ -33,6 +39,9 @@ AdaptiveDesign design_with(double target, std::int64_t budget) {
   design.max_samples = budget;
   return design;
 }
+
+// Bounds as a pulse study's: a thousandth of 0.2 up to `largest`.
+LevelBounds bounds_up_to(double largest) { return {2e-4, largest, "the measure's largest level"}; }
 
 // Counts that follow a lognormal curve exactly enough for its fit to exist.
 FragilityCurve lognormal_counts(double median, double beta, std::int64_t per_level) {
@@ -80,7 +89,8 @@ TEST(AdaptiveLevels, TheNextPairSitsWhereTheFitIsTheDesignsProbabilities) {
   EXPECT_NEAR(design.pair_probability, d_optimal, 1e-3);
   for (const double p : {d_optimal, 0.3}) {
     design.pair_probability = p;
-    const BatchDecision next = decide_next_batch(design, curve, curve.im, 2000, 800, 10.0);
+    const BatchDecision next =
+        decide_next_batch(design, curve, curve.im, 2000, 800, bounds_up_to(10.0));
     ASSERT_FALSE(next.stop);
     ASSERT_EQ(next.next_levels.size(), 2u);
     EXPECT_NEAR(fitted(next.next_levels[0]), p, 1e-12);
@@ -91,8 +101,8 @@ TEST(AdaptiveLevels, TheNextPairSitsWhereTheFitIsTheDesignsProbabilities) {
 
 TEST(AdaptiveLevels, LevelsStayBelowTheMeasuresLargest) {
   const FragilityCurve curve = lognormal_counts(1.3, 0.6, 400);
-  const BatchDecision next =
-      decide_next_batch(design_with(1e-6, 1'000'000), curve, curve.im, 2000, 800, 1.5);
+  const BatchDecision next = decide_next_batch(design_with(1e-6, 1'000'000), curve, curve.im, 2000,
+                                               800, bounds_up_to(1.5));
   ASSERT_FALSE(next.stop);
   EXPECT_LT(next.next_levels[0], 1.3);
   EXPECT_EQ(next.next_levels[1], 1.5);
@@ -101,16 +111,16 @@ TEST(AdaptiveLevels, LevelsStayBelowTheMeasuresLargest) {
 TEST(AdaptiveLevels, StopsAtTheTargetBeforeLookingAtTheBudget) {
   const FragilityCurve curve = lognormal_counts(1.3, 0.6, 400);
   const double width = median_relative_width(curve);
-  const BatchDecision reached =
-      decide_next_batch(design_with(width * 1.01, 2000), curve, curve.im, 2000, 800, 10.0);
+  const BatchDecision reached = decide_next_batch(design_with(width * 1.01, 2000), curve, curve.im,
+                                                  2000, 800, bounds_up_to(10.0));
   EXPECT_TRUE(reached.stop);
   EXPECT_EQ(reached.reason, "target reached");
-  const BatchDecision spent =
-      decide_next_batch(design_with(width * 0.99, 2799), curve, curve.im, 2000, 800, 10.0);
+  const BatchDecision spent = decide_next_batch(design_with(width * 0.99, 2799), curve, curve.im,
+                                                2000, 800, bounds_up_to(10.0));
   EXPECT_TRUE(spent.stop);
   EXPECT_EQ(spent.reason, "budget spent");
-  const BatchDecision fits =
-      decide_next_batch(design_with(width * 0.99, 2800), curve, curve.im, 2000, 800, 10.0);
+  const BatchDecision fits = decide_next_batch(design_with(width * 0.99, 2800), curve, curve.im,
+                                               2000, 800, bounds_up_to(10.0));
   EXPECT_FALSE(fits.stop);
 }
 
@@ -119,7 +129,7 @@ TEST(AdaptiveLevels, WithoutExceedancesTheBatchLooksFurtherUp) {
   const FragilityCurve curve = fragility_from_counts(levels, {100, 100}, {0, 0});
   ASSERT_NE(curve.fit_status, "ok");
   const BatchDecision next =
-      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, 5.0);
+      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, bounds_up_to(5.0));
   ASSERT_FALSE(next.stop);
   EXPECT_TRUE(std::isnan(next.relative_width));
   EXPECT_DOUBLE_EQ(next.next_levels[0], 0.8);
@@ -130,11 +140,11 @@ TEST(AdaptiveLevels, StopsWhenNothingExceedsAtTheLargestLevel) {
   const std::vector<double> levels{1.0, 2.5};
   const FragilityCurve curve = fragility_from_counts(levels, {100, 100}, {0, 0});
   const BatchDecision next =
-      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, 2.5);
+      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, bounds_up_to(2.5));
   EXPECT_TRUE(next.stop);
   EXPECT_EQ(next.reason, "no exceedance up to the measure's largest level");
   const BatchDecision below =
-      decide_next_batch(design_with(0.05, 10'000), curve, {1.0, 2.0}, 200, 200, 2.5);
+      decide_next_batch(design_with(0.05, 10'000), curve, {1.0, 2.0}, 200, 200, bounds_up_to(2.5));
   EXPECT_FALSE(below.stop);
   EXPECT_EQ(below.next_levels, (std::vector<double>{2.5, 2.5}));
 }
@@ -144,7 +154,7 @@ TEST(AdaptiveLevels, WhenEverythingExceededTheBatchLooksFurtherDown) {
   const FragilityCurve curve = fragility_from_counts(levels, {100, 100}, {100, 100});
   ASSERT_NE(curve.fit_status, "ok");
   const BatchDecision next =
-      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, 5.0);
+      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, bounds_up_to(5.0));
   ASSERT_FALSE(next.stop);
   EXPECT_DOUBLE_EQ(next.next_levels[0], 0.1);
   EXPECT_DOUBLE_EQ(next.next_levels[1], 0.2);
@@ -155,7 +165,7 @@ TEST(AdaptiveLevels, SeparatedDataAreSplitBetweenTheirLevels) {
   const FragilityCurve curve = fragility_from_counts(levels, {100, 100}, {0, 100});
   ASSERT_NE(curve.fit_status, "ok");
   const BatchDecision next =
-      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, 5.0);
+      decide_next_batch(design_with(0.05, 10'000), curve, levels, 200, 200, bounds_up_to(5.0));
   ASSERT_FALSE(next.stop);
   for (const double level : next.next_levels) {
     EXPECT_GT(level, 0.5);
@@ -163,6 +173,172 @@ TEST(AdaptiveLevels, SeparatedDataAreSplitBetweenTheirLevels) {
   }
   EXPECT_NEAR(next.next_levels[0], std::pow(0.5, 2.0 / 3.0) * std::pow(2.0, 1.0 / 3.0), 1e-12);
   EXPECT_NEAR(next.next_levels[1], std::pow(0.5, 1.0 / 3.0) * std::pow(2.0, 2.0 / 3.0), 1e-12);
+}
+
+// A study's batches against a limit state with `exceeded(level)` of 10 samples exceeding at each
+// level: the levels in the order they ran, and the decision that stopped it (or the last one).
+struct AdaptiveDrive {
+  std::vector<double> levels;
+  BatchDecision last;
+  int batches = 0;
+};
+
+AdaptiveDrive drive_batches(const AdaptiveDesign& design, std::vector<double> levels,
+                            const std::function<std::int64_t(double)>& exceeded,
+                            const LevelBounds& bounds, int max_batches) {
+  AdaptiveDrive drive;
+  drive.levels = std::move(levels);
+  for (; drive.batches < max_batches; ++drive.batches) {
+    std::vector<std::int64_t> trials, exceedances;
+    for (const double level : drive.levels) {
+      trials.push_back(10);
+      exceedances.push_back(exceeded(level));
+    }
+    const FragilityCurve curve = fragility_from_counts(drive.levels, trials, exceedances);
+    const auto samples = static_cast<std::int64_t>(10 * drive.levels.size());
+    drive.last = decide_next_batch(design, curve, drive.levels, samples, 20, bounds);
+    if (drive.last.stop) break;
+    drive.levels.insert(drive.levels.end(), drive.last.next_levels.begin(),
+                        drive.last.next_levels.end());
+  }
+  return drive;
+}
+
+// A limit state past at every level (a block released beyond it) looks down a factor 4 a batch,
+// then stops at the bounds' smallest level instead of halving the levels until they underflow.
+TEST(AdaptiveLevels, EveryLevelExceededStopsAtTheSmallestLevel) {
+  const AdaptiveDrive drive = drive_batches(
+      design_with(0.05, 1'000'000), {0.2, 0.4}, [](double) { return 10; }, bounds_up_to(5.0), 100);
+  ASSERT_TRUE(drive.last.stop);
+  EXPECT_EQ(drive.last.reason,
+            "every level exceeded down to 2e-04, a thousandth of the study's smallest level");
+  EXPECT_EQ(drive.batches, 5);  // batch 5 runs 0.0002, as 0.2 / 4^5 < 0.0002 <= 0.2 / 4^4
+  for (const double level : drive.levels) EXPECT_GE(level, 2e-4);
+  EXPECT_EQ(*std::min_element(drive.levels.begin(), drive.levels.end()), 2e-4);
+}
+
+// Nothing exceeds: the batches double up to the cap (a record's, below the measure's largest)
+// and stop there, naming it.
+TEST(AdaptiveLevels, NoExceedanceStopsAtTheCap) {
+  const LevelBounds bounds{2e-4, 18.5, "18.5 g, the largest level a scale of 100 gives a.csv"};
+  const AdaptiveDrive drive = drive_batches(
+      design_with(0.05, 1'000'000), {0.2, 0.4}, [](double) { return 0; }, bounds, 100);
+  ASSERT_TRUE(drive.last.stop);
+  EXPECT_EQ(drive.last.reason,
+            "no exceedance up to 18.5 g, the largest level a scale of 100 gives a.csv");
+  EXPECT_EQ(drive.levels, (std::vector<double>{0.2, 0.4, 0.8, 1.6, 3.2, 6.4, 12.8, 18.5}));
+}
+
+TEST(AdaptiveLevels, AFittedPairStaysWithinTheBounds) {
+  const FragilityCurve curve = lognormal_counts(1.3, 3.0, 400);
+  ASSERT_EQ(curve.fit_status, "ok");
+  const BatchDecision next = decide_next_batch(design_with(1e-6, 1'000'000), curve, curve.im, 2000,
+                                               800, {0.05, 4.0, "the measure's largest level"});
+  ASSERT_FALSE(next.stop);
+  EXPECT_EQ(next.next_levels, (std::vector<double>{0.05, 4.0}));
+}
+
+// Rocking onset is a step: no sample rocks below it, every one above. The batches narrow the gap
+// by thirds, never repeating a level, until it is within the target width.
+TEST(AdaptiveLevels, SeparatedDataNarrowTheGapUntilTheTarget) {
+  const double step = 0.52;
+  const AdaptiveDrive drive = drive_batches(
+      design_with(0.05, 1'000'000), {0.2, 0.4}, [&](double level) { return level < step ? 0 : 10; },
+      bounds_up_to(1000.0), 100);
+  ASSERT_TRUE(drive.last.stop);
+  EXPECT_THAT(drive.last.reason, ::testing::StartsWith("separated data: the median lies between "));
+  EXPECT_THAT(drive.last.reason, ::testing::EndsWith(", a gap within the target width"));
+  EXPECT_LE(drive.batches, 8);
+  std::vector<double> sorted = drive.levels;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a level repeats";
+  const double below = *(std::lower_bound(sorted.begin(), sorted.end(), step) - 1);
+  const double above = *std::lower_bound(sorted.begin(), sorted.end(), step);
+  EXPECT_LE((above - below) / std::sqrt(below * above), 0.05);
+  EXPECT_EQ(drive.last.reason, "separated data: the median lies between " + format_number(below) +
+                                   " and " + format_number(above) +
+                                   ", a gap within the target width");
+}
+
+// One level between the separated ones where some samples exceeded: each side's gap is halved, so
+// a batch whose levels told nothing is not placed again (the pair at x / sqrt(1.1) and
+// x sqrt(1.1) was, batch after batch).
+TEST(AdaptiveLevels, AMixedLevelAtTheSeparationHalvesEachSide) {
+  const double x = 0.54275;
+  std::vector<double> levels{0.5, x, 0.6};
+  std::vector<std::int64_t> exceedances{0, 5, 10};
+  const AdaptiveDesign design = design_with(0.01, 1'000'000);
+  for (int batch = 0; batch < 3; ++batch) {
+    const FragilityCurve curve =
+        fragility_from_counts(levels, std::vector<std::int64_t>(levels.size(), 10), exceedances);
+    ASSERT_EQ(curve.fit_status, "separated");
+    const BatchDecision next = decide_next_batch(design, curve, levels, 30, 20, bounds_up_to(5.0));
+    ASSERT_FALSE(next.stop);
+    const double below = levels[levels.size() - 2], above = levels.back();
+    const double low = batch == 0 ? 0.5 : below, high = batch == 0 ? 0.6 : above;
+    EXPECT_NEAR(next.next_levels[0], std::sqrt(low * x), 1e-15);
+    EXPECT_NEAR(next.next_levels[1], std::sqrt(x * high), 1e-15);
+    levels.insert(levels.end(), next.next_levels.begin(), next.next_levels.end());
+    exceedances.insert(exceedances.end(), {0, 10});
+  }
+}
+
+TEST(AdaptiveLevels, AGapTooNarrowToSplitStops) {
+  const std::vector<double> levels{1.0, std::nextafter(1.0, 2.0)};
+  const FragilityCurve curve = fragility_from_counts(levels, {10, 10}, {0, 10});
+  const BatchDecision next =
+      decide_next_batch(design_with(1e-300, 10'000), curve, levels, 20, 20, bounds_up_to(5.0));
+  EXPECT_TRUE(next.stop);
+  EXPECT_EQ(next.reason,
+            "separated data: the median lies between 1 and 1.0000000000000002, a gap too narrow to "
+            "split");
+}
+
+TEST(AdaptiveLevels, ACurveWithoutTrendStopsAtTheCapSayingSo) {
+  const std::vector<double> levels{1.0, 2.5};
+  const FragilityCurve curve = fragility_from_counts(levels, {10, 10}, {10, 0});
+  ASSERT_EQ(curve.fit_status, "no_trend");
+  const BatchDecision next =
+      decide_next_batch(design_with(0.05, 10'000), curve, levels, 20, 20, bounds_up_to(2.5));
+  EXPECT_TRUE(next.stop);
+  EXPECT_EQ(next.reason, "no fit (no_trend) up to the measure's largest level");
+}
+
+// The bounds of a study: a record's cap is the level it reaches with a scale of 100, the same rule
+// that refuses a fixed level just above it; a pulse's is the measure's largest level.
+TEST(AdaptiveLevels, TheBoundsAreTheStripeCapAndAThousandthOfTheSmallestLevel) {
+  const std::filesystem::path folder =
+      std::filesystem::path(BLOCKFRAG_SOURCE_DIR) / "tests/data/records";
+  const auto record_study = [](const nlohmann::json& levels) {
+    return nlohmann::json{{"scene",
+                           {{"block", {{"half_width", 0.4}, {"half_height", 1.0}}},
+                            {"contact", {{"friction", 0.7}, {"restitution", 0.5}}},
+                            {"ground_motion", {{"type", "record"}, {"file", "cosine_pulse.txt"}}}}},
+                          {"intensity_measure", {{"type", "pga"}, {"levels", levels}}},
+                          {"samples_per_level", 2},
+                          {"design", {{"adaptive", {{"max_samples", 100}}}}},
+                          {"limit_states", {{{"name", "overturn"}, {"type", "overturning"}}}},
+                          {"seed", 7}};
+  };
+  const std::string source = (folder / "study.json").string();
+  const StudyConfig config = parse_study_config(record_study({0.2, 0.4}), source);
+  const LevelBounds bounds = adaptive_level_bounds(config);
+  EXPECT_DOUBLE_EQ(bounds.smallest, 2e-4);
+  EXPECT_NEAR(bounds.largest, 40.0, 1e-9);  // cosine_pulse.txt peaks at 0.4 g
+  EXPECT_THAT(bounds.largest_reason, ::testing::StartsWith(format_number(bounds.largest) + " g"));
+  EXPECT_THAT(bounds.largest_reason,
+              ::testing::HasSubstr("the largest level a scale of 100 gives cosine_pulse.txt (its "
+                                   "PGA is "));
+  EXPECT_NO_THROW(parse_study_config(record_study({0.2, bounds.largest}), source));
+  EXPECT_THROW(parse_study_config(record_study({0.2, std::nextafter(bounds.largest, 1e3)}), source),
+               ConfigError);
+
+  nlohmann::json pulse_study = record_study({0.2, 0.4});
+  pulse_study["scene"]["ground_motion"] = {
+      {"type", "cosine_pulse"}, {"amplitude_g", 1.0}, {"period", 1.0}};
+  const LevelBounds pulse_bounds = adaptive_level_bounds(parse_study_config(pulse_study, source));
+  EXPECT_EQ(pulse_bounds.largest, 1000.0);
+  EXPECT_EQ(pulse_bounds.largest_reason, "the measure's largest level");
 }
 
 }  // namespace
