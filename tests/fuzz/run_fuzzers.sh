@@ -45,6 +45,8 @@ seeds() {
         ! -iname '*.at2' ! -name '*.json' ! -name '*.py' ;;
     spectrum_spec_fuzzer)
       ls tests/data/spectrum_specs/*.json configs/*.json tests/data/bad_scenes/*.json ;;
+    adaptive_design_fuzzer)
+      ls tests/data/adaptive_studies/*.json tests/data/bad_studies/*.json configs/*.json ;;
     *)
       ls tests/data/bad_scenes/*.json tests/data/bad_studies/*.json tests/data/pulse_scenes/*.json \
         tests/data/records/*.json configs/*.json ;;
