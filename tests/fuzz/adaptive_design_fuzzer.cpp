@@ -29,13 +29,16 @@ using namespace blockfrag;
 // (its logarithm, at most about 710, shrinks by 3 a batch), and few enough for a fast input.
 constexpr int kFuzzBatches = 48;
 
+// Whether the level ran before with all or none of its samples (of every batch that ran it)
+// exceeding.
 bool told_nothing(const FragilityCurve& curve, double level) {
+  std::int64_t trials = 0, exceedances = 0;
   for (std::size_t k = 0; k < curve.im.size(); ++k) {
-    if (curve.im[k] == level && curve.trials[k] > 0 &&
-        (curve.exceedances[k] == 0 || curve.exceedances[k] == curve.trials[k]))
-      return true;
+    if (curve.im[k] != level) continue;
+    trials += curve.trials[k];
+    exceedances += curve.exceedances[k];
   }
-  return false;
+  return trials > 0 && (exceedances == 0 || exceedances == trials);
 }
 
 void check_next_levels(const BatchDecision& next, const FragilityCurve& curve,

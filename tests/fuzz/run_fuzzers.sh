@@ -46,7 +46,7 @@ seeds() {
     spectrum_spec_fuzzer)
       ls tests/data/spectrum_specs/*.json configs/*.json tests/data/bad_scenes/*.json ;;
     adaptive_design_fuzzer)
-      ls tests/data/adaptive_studies/*.json tests/data/bad_studies/*.json configs/*.json ;;
+      ls tests/data/adaptive_studies/* tests/data/bad_studies/*.json configs/*.json ;;
     *)
       ls tests/data/bad_scenes/*.json tests/data/bad_studies/*.json tests/data/pulse_scenes/*.json \
         tests/data/records/*.json configs/*.json ;;
