@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <tuple>
 #include <utility>
 
 #include <gsl/gsl_cdf.h>
@@ -15,8 +14,6 @@
 
 namespace blockfrag {
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The bounds' smallest level, as a fraction of the study's smallest.
 constexpr double kSmallestLevelFraction = 1e-3;
@@ -29,7 +26,7 @@ std::vector<double> pair_around(double x, double spread) {
 // (high - low) / sqrt(low high), as the median's interval is measured against the median; infinite
 // when an end is unknown (0 or infinite).
 double relative_gap(double low, double high) {
-  if (!(low > 0.0) || !std::isfinite(high)) return kInfinity;
+  if (!(low > 0.0) || !std::isfinite(high)) return std::numeric_limits<double>::infinity();
   return (high - low) / std::sqrt(low * high);
 }
 
@@ -39,84 +36,131 @@ void stop_with(BatchDecision& decision, std::string reason) {
   decision.next_levels.clear();
 }
 
-// What the data say without a fit, for a stop reason at an end of the bounds.
-std::string without_fit(const FragilityCurve& curve) {
+// What the data say without a fit, for a stop reason at an end of the bounds: `side` is "fewer"
+// going up, "more" going down.
+std::string without_fit(const FragilityCurve& curve, const std::string& side) {
   if (curve.fit_status == "no_exceedances") return "no exceedance";
   if (curve.fit_status == "all_exceedances") return "every level exceeded";
+  if (curve.fit_status == "separated" || curve.fit_status == "single_level")
+    return side + " than half of the samples exceeded at every level";
   return "no fit (" + curve.fit_status + ")";
 }
 
-// The nearest level with trials on either side of x (0 and infinity where there is none).
-std::pair<double, double> neighbours(const FragilityCurve& curve, double x) {
-  double below = 0.0, above = kInfinity;
+// The nearest level with trials on either side of x (0 and infinity where there is none), and the
+// proportion of x's samples that exceeded, over every batch that ran it.
+struct AroundLevel {
+  double below = 0.0, above = std::numeric_limits<double>::infinity();
+  double proportion = 0.0;
+};
+AroundLevel around_level(const FragilityCurve& curve, double x) {
+  AroundLevel around;
+  std::int64_t trials = 0, exceedances = 0;
   for (std::size_t k = 0; k < curve.im.size(); ++k) {
     if (curve.trials[k] == 0) continue;
-    if (curve.im[k] < x) below = std::max(below, curve.im[k]);
-    if (curve.im[k] > x) above = std::min(above, curve.im[k]);
+    if (curve.im[k] < x) around.below = std::max(around.below, curve.im[k]);
+    if (curve.im[k] > x) around.above = std::min(around.above, curve.im[k]);
+    if (curve.im[k] == x) {
+      trials += curve.trials[k];
+      exceedances += curve.exceedances[k];
+    }
   }
-  return {below, above};
+  around.proportion = static_cast<double>(exceedances) / static_cast<double>(trials);
+  return around;
 }
 
-// Separated data (every level up to `low` without an exceedance, every one from `high` on all
-// exceedances) or one level x = low = high where some exceeded between such levels: the median
-// lies in the gap. Two levels split the gap in thirds (of its logarithm), or halve it on each side
-// of x (doubling or halving x where no level bounds that side yet), each strictly inside, so none
-// repeats a level that told nothing. A gap within the target width locates the median as closely
-// as a fit's interval would; one too narrow to split in doubles ends the study too.
-void split_separation(const AdaptiveDesign& design, const FragilityCurve& curve,
-                      const LevelBounds& bounds, BatchDecision& decision) {
-  const double low = curve.median_low, high = curve.median_high;
-  double below = low, above = high;
-  std::vector<double> next;
-  if (low < high) {
-    next = {std::exp((2.0 * std::log(low) + std::log(high)) / 3.0),
-            std::exp((std::log(low) + 2.0 * std::log(high)) / 3.0)};
-  } else {
-    std::tie(below, above) = neighbours(curve, low);
-    if (below == 0.0 && low <= bounds.smallest) below = low;  // nothing can go below
-    if (above == kInfinity && low >= bounds.largest) above = low;
-    next = {below == low  ? low
-            : below > 0.0 ? std::sqrt(below * low)
-                          : low / 2.0,
-            above == low           ? low
-            : std::isfinite(above) ? std::sqrt(low * above)
-                                   : 2.0 * low};
-    for (double& level : next) level = std::clamp(level, bounds.smallest, bounds.largest);
+// Where the data place the median without a fit: in (below, above), 0 and infinity where no level
+// bounds it; `at` > 0 when it is at that level, where half of the samples exceeded.
+struct MedianBracket {
+  double below, above, at = 0.0;
+};
+
+// The level nearest x (the fit gives its bracket's ends as exp(ln level), which need not be the
+// level to the last bit); 0 and infinity stay.
+double level_at(const FragilityCurve& curve, double x) {
+  if (!(x > 0.0) || !std::isfinite(x)) return x;
+  double nearest = x, distance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < curve.im.size(); ++k) {
+    if (curve.trials[k] == 0 || std::abs(std::log(curve.im[k] / x)) >= distance) continue;
+    distance = std::abs(std::log(curve.im[k] / x));
+    nearest = curve.im[k];
   }
-  const std::string gap = "separated data: the median lies between " + format_number(below) +
-                          " and " + format_number(above);
-  if (relative_gap(below, above) <= design.target_relative_width) {
+  return nearest;
+}
+
+// The fit's bracket, except that one level x between separated ones (every level below without
+// an exceedance, every one above all exceedances) gives the side of x the median lies on.
+MedianBracket median_bracket(const FragilityCurve& curve) {
+  const double low = level_at(curve, curve.median_low), high = level_at(curve, curve.median_high);
+  if (low != high) return {low, high};
+  const AroundLevel around = around_level(curve, low);
+  if (around.proportion < 0.5) return {low, around.above};
+  if (around.proportion > 0.5) return {around.below, low};
+  return {around.below, around.above, low};
+}
+
+// A gap between levels: two levels split it in thirds (of its logarithm), or, with the median at a
+// level x inside it, halve it on each side of x (doubling or halving x where no level bounds
+// that side yet), each strictly inside, so none repeats a level that told nothing. A gap within
+// the target width locates the median as closely as a fit's interval would; one too narrow to
+// split in doubles ends the study too.
+void split_gap(const AdaptiveDesign& design, MedianBracket bracket, const LevelBounds& bounds,
+               BatchDecision& decision) {
+  std::vector<double> next;
+  const double x = bracket.at;
+  if (x > 0.0) {
+    if (bracket.below == 0.0 && x <= bounds.smallest) bracket.below = x;  // nothing can go below
+    if (!std::isfinite(bracket.above) && x >= bounds.largest) bracket.above = x;
+    next = {bracket.below == x    ? x
+            : bracket.below > 0.0 ? std::sqrt(bracket.below * x)
+                                  : x / 2.0,
+            bracket.above == x             ? x
+            : std::isfinite(bracket.above) ? std::sqrt(x * bracket.above)
+                                           : 2.0 * x};
+    for (double& level : next) level = std::clamp(level, bounds.smallest, bounds.largest);
+  } else {
+    const double low = std::log(bracket.below), high = std::log(bracket.above);
+    next = {std::exp((2.0 * low + high) / 3.0), std::exp((low + 2.0 * high) / 3.0)};
+  }
+  const std::string gap = "separated data: the median lies between " +
+                          format_number(bracket.below) + " and " + format_number(bracket.above);
+  if (relative_gap(bracket.below, bracket.above) <= design.target_relative_width) {
     stop_with(decision, gap + ", a gap within the target width");
     return;
   }
-  const bool inside = low < high ? low < next[0] && next[0] < next[1] && next[1] < high
-                                 : (below == low || (below < next[0] && next[0] < low)) &&
-                                       (above == low || (low < next[1] && next[1] < above));
-  if (!inside) {
+  const auto inside = [&](double level, double low, double high) {
+    return low < level && level < high;
+  };
+  const bool split =
+      x > 0.0 ? (bracket.below == x || inside(next[0], bracket.below, x)) &&
+                    (bracket.above == x || inside(next[1], x, bracket.above))
+              : inside(next[0], bracket.below, next[1]) && inside(next[1], next[0], bracket.above);
+  if (!split) {
     stop_with(decision, gap + ", a gap too narrow to split");
     return;
   }
   decision.next_levels = next;
 }
 
-// Without a fit the batch brackets the median: further up when nothing exceeded (or nothing is
-// known), further down when everything did, inside the gap of separated data.
+// Without a fit the batch brackets the median: further up when it lies above every level, further
+// down when below, inside the gap between levels otherwise.
 void bracket_median(const AdaptiveDesign& design, const FragilityCurve& curve,
                     const std::vector<double>& levels, const LevelBounds& bounds,
                     BatchDecision& decision) {
   const auto [lowest, highest] = std::minmax_element(levels.begin(), levels.end());
-  if (!std::isfinite(curve.median_high)) {
+  const MedianBracket bracket = median_bracket(curve);
+  if (bracket.at == 0.0 && !std::isfinite(bracket.above)) {
     if (*highest >= bounds.largest) {
-      stop_with(decision, without_fit(curve) + " up to " + bounds.largest_reason);
+      stop_with(decision, without_fit(curve, "fewer") + " up to " + bounds.largest_reason);
       return;
     }
     decision.next_levels = {std::min(2.0 * *highest, bounds.largest),
                             std::min(4.0 * *highest, bounds.largest)};
     return;
   }
-  if (!(curve.median_low > 0.0)) {
+  if (bracket.at == 0.0 && !(bracket.below > 0.0)) {
     if (*lowest <= bounds.smallest) {
-      stop_with(decision, without_fit(curve) + " down to " + format_number(bounds.smallest) +
+      stop_with(decision, without_fit(curve, "more") + " down to " +
+                              format_number(bounds.smallest) +
                               ", a thousandth of the study's smallest level");
       return;
     }
@@ -124,7 +168,7 @@ void bracket_median(const AdaptiveDesign& design, const FragilityCurve& curve,
                             std::max(*lowest / 2.0, bounds.smallest)};
     return;
   }
-  split_separation(design, curve, bounds, decision);
+  split_gap(design, bracket, bounds, decision);
 }
 
 }  // namespace

@@ -341,5 +341,35 @@ TEST(AdaptiveLevels, TheBoundsAreTheStripeCapAndAThousandthOfTheSmallestLevel) {
   EXPECT_EQ(pulse_bounds.largest_reason, "the measure's largest level");
 }
 
+// One level between separated ones where fewer (more) than half of the samples exceeded places the
+// median above (below) it: the batch splits the gap on that side only, or looks further on when
+// no level bounds it, and stops at the bounds saying so.
+TEST(AdaptiveLevels, AMixedLevelPlacesTheMedianOnTheSideItsProportionSays) {
+  const AdaptiveDesign design = design_with(0.01, 1'000'000);
+  const std::vector<double> gap{0.5, 0.54, 0.6};
+  const FragilityCurve few = fragility_from_counts(gap, {10, 10, 10}, {0, 2, 10});
+  ASSERT_EQ(few.fit_status, "separated");
+  const BatchDecision above = decide_next_batch(design, few, gap, 30, 20, bounds_up_to(5.0));
+  ASSERT_FALSE(above.stop);
+  EXPECT_NEAR(above.next_levels[0], std::cbrt(0.54 * 0.54 * 0.6), 1e-15);
+  EXPECT_NEAR(above.next_levels[1], std::cbrt(0.54 * 0.6 * 0.6), 1e-15);
+
+  const std::vector<double> top{12.8, 18.5};
+  const FragilityCurve at_cap = fragility_from_counts(top, {10, 10}, {0, 1});
+  ASSERT_EQ(at_cap.fit_status, "separated");
+  const BatchDecision capped = decide_next_batch(design, at_cap, top, 20, 20, bounds_up_to(18.5));
+  EXPECT_TRUE(capped.stop);
+  EXPECT_EQ(capped.reason,
+            "fewer than half of the samples exceeded at every level up to the measure's largest "
+            "level");
+
+  const std::vector<double> bottom{1.0, 2.0};
+  const FragilityCurve most = fragility_from_counts(bottom, {10, 10}, {8, 10});
+  ASSERT_EQ(most.fit_status, "separated");
+  const BatchDecision below = decide_next_batch(design, most, bottom, 20, 20, bounds_up_to(5.0));
+  ASSERT_FALSE(below.stop);
+  EXPECT_EQ(below.next_levels, (std::vector<double>{0.25, 0.5}));
+}
+
 }  // namespace
 }  // namespace blockfrag
