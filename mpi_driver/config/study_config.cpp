@@ -7,8 +7,10 @@
 #include <limits>
 #include <type_traits>
 
+#include "engine/motion/ground_motion.hpp"
 #include "engine/motion/intensity_measures.hpp"
 #include "engine/scene/block_geometry.hpp"
+#include "engine/scene/parameter_domains.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/output_name.hpp"
@@ -335,6 +337,42 @@ double record_unit_measure(const IntensityMeasure& measure, const SuiteRecord& r
   return unit;
 }
 
+// A pulse's measure in the study's measure at unit amplitude (1 g, or 1 m/s for the
+// Mavroeidis-Papageorgiou pulse, which a velocity defines), as each sample measures its own; NaN
+// where it differs between samples (a sampled period) or cannot be measured.
+double pulse_unit_measure(const StudyConfig& config) {
+  const IntensityMeasure& measure = config.intensity;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (measure.type == ImType::pulse_amplitude) return 1.0;
+  for (const auto& spec : config.inputs) {
+    if (spec.input == StudyInput::period) return nan;
+  }
+  GroundMotion motion = config.base_scene.ground_motion;
+  std::visit(
+      [](auto& pulse) {
+        using T = std::decay_t<decltype(pulse)>;
+        if constexpr (std::is_same_v<T, MavroeidisPapageorgiouPulse>) {
+          pulse.velocity_amplitude = 1.0;
+        } else if constexpr (requires { pulse.amplitude_g; }) {
+          pulse.amplitude_g = 1.0;
+        }
+      },
+      motion);
+  try {
+    const GroundMotionPieces unit(motion, config.base_scene.g);
+    switch (measure.type) {
+      case ImType::pga: return peak_ground_acceleration_g(unit);
+      case ImType::pga_over_g_tan_alpha:
+        return peak_ground_acceleration_g(unit) / largest_tan_alpha(config);
+      case ImType::pgv: return peak_ground_velocity(unit, config.base_scene.g);
+      case ImType::sa: return spectral_acceleration_g(unit, measure.period, measure.damping);
+      case ImType::pulse_amplitude: break;
+    }
+  } catch (const InvalidInput&) {  // every sample's scene is refused alike
+  }
+  return nan;
+}
+
 // Every record's measures (as recorded); stripes must reach every level with a scale of at most
 // kMaxRecordScale, and a record whose measure is 0 cannot be scaled at all.
 void measure_suite(StudyConfig& config, ConfigErrors& errors, bool single_record) {
@@ -507,7 +545,27 @@ std::string canonical_text(const json& canonical) { return canonical.dump(); }
 StripeCap stripe_cap(const StudyConfig& config) {
   const IntensityMeasure& measure = config.intensity;
   StripeCap cap{largest_level(measure.type), "the measure's largest level"};
-  if (!config.suite) return cap;
+  if (!config.suite) {
+    // A sample scaled past its pulse's amplitude domain is refused (status 2), as at a fixed level.
+    const bool velocity =
+        std::holds_alternative<MavroeidisPapageorgiouPulse>(config.base_scene.ground_motion);
+    const Domain& amplitude = velocity ? domain::velocity_amplitude : domain::amplitude_g;
+    const double unit = pulse_unit_measure(config);
+    double level = amplitude.high * unit;
+    // A margin for the dimensionless measure, whose tan(alpha) each sample rounds on its own.
+    if (measure.type == ImType::pga_over_g_tan_alpha) level *= 1.0 - 1e-12;
+    while (level / unit > amplitude.high) level = std::nextafter(level, 0.0);
+    if (level < cap.level) {
+      cap.level = level;
+      cap.reason = format_number(level) + " " + im_unit(measure.type) +
+                   ", the largest level within the pulse's " +
+                   (velocity ? "velocity_amplitude" : "amplitude_g") + " domain (at most " +
+                   format_number(amplitude.high) + " " + amplitude.unit + "; its " +
+                   im_label(measure) + " is " + format_number(unit) + " " + im_unit(measure.type) +
+                   " at 1 " + amplitude.unit + ")";
+    }
+    return cap;
+  }
   const double tan_alpha = largest_tan_alpha(config);
   for (const SuiteRecord& record : config.suite->records) {
     const double unit = record_unit_measure(measure, record, tan_alpha);

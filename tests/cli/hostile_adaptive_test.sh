@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Adaptive studies whose data give the level chooser nothing to fit: a limit state past at every
-# level, a record no level can make exceed within the record-scale cap, and a step-like limit state
-# that separates the data. Each must end normally (exit 0, the output written) with the reason in
+# level, a record or a pulse no level within its scale's cap makes exceed, and a step-like limit
+# state that separates the data. Each must end normally (exit 0, the output written) with the reason in
 # the batch log and in /adaptive's stop_reason, every level within the caps fixed levels obey and
 # no level repeating one that told nothing; under the time and memory limits of hostile_case.sh.
 set -u
@@ -76,6 +76,19 @@ assert reason.startswith("no exceedance up to 18.48"), reason
 assert "the largest level a scale of 100 gives" in reason, reason
 assert f["samples/scale"][()].max() <= 100, f["samples/scale"][()].max()
 assert np.isclose(levels.max(), 100 * f["samples/pga_g"][0] / f["samples/scale"][0]), levels'
+
+# The same block under a Mavroeidis-Papageorgiou pulse, which its velocity defines: the batches
+# stop where the pulse reaches 100 m/s, the end of its domain (past it every sample was refused,
+# and the study exited 3).
+adaptive_study velocity_cap '{"block": {"half_width": 10.0, "half_height": 1.0},
+  "contact": {"friction": 1e4, "restitution": 0.5}, "duration": 3.0,
+  "ground_motion": {"type": "mavroeidis_papageorgiou", "velocity_amplitude": 0.5, "period": 1.0, "gamma": 2.0}}' \
+  '[0.2, 0.4]' '{"name": "overturn", "type": "overturning"}' 1000 >velocity_cap.json
+run_case pulse_velocity_cap 0 "the largest level within the pulse's velocity_amplitude domain" \
+  "$B" run velocity_cap.json
+adaptive_output_holds pulse_velocity_cap velocity_cap.h5 '
+assert reason.startswith("no exceedance up to 58.0"), reason
+assert (f["results/status"][()] == 0).all(), f["results/status"][()]'
 
 # Rocking past a thousandth of alpha starts at one amplitude for every friction: no sample rocks
 # below it, all above. The batches narrow the gap without repeating a level and stop when it is

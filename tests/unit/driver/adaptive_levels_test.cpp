@@ -16,6 +16,8 @@
 #include <gtest/gtest.h>
 
 #include "engine/number_text.hpp"
+#include "engine/scene/scene_validation.hpp"
+#include "mpi_driver/study/study_sample.hpp"
 #include "postproc/fragility/fragility_curve.hpp"
 
 namespace blockfrag {
@@ -369,6 +371,38 @@ TEST(AdaptiveLevels, AMixedLevelPlacesTheMedianOnTheSideItsProportionSays) {
   const BatchDecision below = decide_next_batch(design, most, bottom, 20, 20, bounds_up_to(5.0));
   ASSERT_FALSE(below.stop);
   EXPECT_EQ(below.next_levels, (std::vector<double>{0.25, 0.5}));
+}
+
+// A pulse given by its velocity reaches 100 m/s, the end of its domain, at a level of PGA its
+// shape sets: a sample at the bounds' largest level is a valid scene, one a little past it is
+// refused, as a sample at a fixed level would be.
+TEST(AdaptiveLevels, APulsesCapIsTheEndOfItsAmplitudesDomain) {
+  const nlohmann::json study{{"scene",
+                              {{"block", {{"half_width", 10.0}, {"half_height", 1.0}}},
+                               {"contact", {{"friction", 1e4}, {"restitution", 0.5}}},
+                               {"ground_motion",
+                                {{"type", "mavroeidis_papageorgiou"},
+                                 {"velocity_amplitude", 0.5},
+                                 {"period", 1.0},
+                                 {"gamma", 2.0}}}}},
+                             {"inputs", {{"direction", {{"distribution", "random_sign"}}}}},
+                             {"intensity_measure", {{"type", "pga"}, {"levels", {0.2, 0.4}}}},
+                             {"samples_per_level", 2},
+                             {"design", {{"adaptive", {{"max_samples", 100}}}}},
+                             {"limit_states", {{{"name", "overturn"}, {"type", "overturning"}}}},
+                             {"seed", 7}};
+  StudyConfig config = parse_study_config(study, "study.json");
+  const LevelBounds bounds = adaptive_level_bounds(config);
+  EXPECT_LT(bounds.largest, 1000.0);
+  EXPECT_THAT(bounds.largest_reason,
+              ::testing::HasSubstr("the largest level within the pulse's velocity_amplitude "
+                                   "domain (at most 100 m/s; its PGA is "));
+  config.intensity.levels = {bounds.largest, bounds.largest * (1.0 + 1e-9)};
+  StudySampler sampler(config);
+  for (std::int64_t index = 0; index < 2; ++index) {
+    EXPECT_NO_THROW(validate_scene(sampler.draw(index).scene));
+    EXPECT_THROW(validate_scene(sampler.draw(2 + index).scene), InvalidInput);
+  }
 }
 
 }  // namespace
