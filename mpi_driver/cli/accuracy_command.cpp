@@ -13,6 +13,8 @@
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/io/hdf5_file.hpp"
+#include "mpi_driver/io/output_target.hpp"
 
 namespace blockfrag {
 
@@ -23,6 +25,22 @@ namespace {
 std::vector<SolverSetting> default_fragility_settings() {
   return {{Method::rk4, 2.5e-4},    {Method::adaptive, 1e-4},  {Method::adaptive, 1e-6},
           {Method::adaptive, 1e-8}, {Method::gsl_rkf45, 1e-8}, {Method::gsl_rk8pd, 1e-8}};
+}
+
+// An earlier accuracy study's output: an HDF5 file with the reference's method at its root.
+bool is_accuracy_output(const std::filesystem::path& path) {
+  if (!file_starts_with(path, "\x89HDF\r\n\x1a\n")) return false;
+  try {
+    read_root_string_attribute(path, "reference_method");
+    return true;
+  } catch (const Hdf5Error&) {
+    return false;
+  }
+}
+
+// An earlier accuracy study's table (write_accuracy_table's first line).
+bool is_accuracy_table(const std::filesystem::path& path) {
+  return file_starts_with(path, "Reference: ", " scenes. Largest |check - reference|: ");
 }
 
 void write_fragility_sections(std::ostream& out, const AccuracyOptions& options,
@@ -53,10 +71,20 @@ void write_fragility_sections(std::ostream& out, const AccuracyOptions& options,
 
 int run_accuracy(const AccuracyOptions& options, std::ostream& out, std::ostream& log) {
   const AccuracySuite suite = read_accuracy_suite(options.suite_path);
-  // A bad study config is refused before the long part starts.
+  // A bad study config, and an output that must not be replaced, are refused before the long part
+  // starts.
   if (options.fragility_study) {
     parse_study_config(read_json_file(*options.fragility_study), options.fragility_study->string());
   }
+  std::vector<OutputTarget> targets = {
+      {options.output_path, "--output", "an accuracy study's HDF5 output", is_accuracy_output}};
+  if (options.table_path) {
+    targets.push_back(
+        {*options.table_path, "--table", "an accuracy study's table", is_accuracy_table});
+  }
+  std::vector<CommandInput> inputs = {{options.suite_path, "the suite"}};
+  if (options.fragility_study) inputs.push_back({*options.fragility_study, "the fragility study"});
+  check_output_targets(targets, inputs);
   AccuracyStudyOptions study_options;
   std::vector<SolverSetting> requested;
   for (const auto& text : options.settings) requested.push_back(parse_solver_setting(text));

@@ -9,23 +9,26 @@
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/fragility_export.hpp"
 #include "mpi_driver/io/fragility_fits.hpp"
+#include "mpi_driver/io/output_target.hpp"
 
 namespace blockfrag {
 namespace {
 
-// A file the export may write: its folder usable, not a folder itself, not the study's output.
-void check_target(const std::filesystem::path& target, const std::filesystem::path& results) {
-  std::error_code error;
-  if (std::filesystem::is_directory(target, error)) {
-    throw InvalidInput(target.string() + ": is a folder, not a file the export can write");
-  }
-  if (std::filesystem::equivalent(target, results, error)) {
-    throw InvalidInput(target.string() + ": is the study output " + results.string() +
-                       " itself; choose another --output");
-  }
-  if (const auto problem = folder_write_problem(target)) {
-    throw InvalidInput(target.string() + ": " + *problem);
-  }
+// What an earlier export wrote, the one kind of file at each name an export replaces.
+bool is_openquake_export(const std::filesystem::path& path) {
+  return file_starts_with(path,
+                          "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                          "<nrml xmlns=\"http://openquake.org/xmlns/nrml/0.5\">\n",
+                          "<description>blockfrag study ");
+}
+
+bool is_pelicun_csv_export(const std::filesystem::path& path) {
+  return file_starts_with(path,
+                          "ID,Incomplete,Demand-Type,Demand-Unit,Demand-Offset,Demand-Directional");
+}
+
+bool is_pelicun_json_export(const std::filesystem::path& path) {
+  return file_starts_with(path, "{\n", "\"ShortName\": \"blockfrag study ", 1 << 20);
 }
 
 // The pelicun folder: created if missing (its parent must exist), refused if something else.
@@ -64,14 +67,20 @@ int run_export(const ExportOptions& options, std::ostream& log) {
     prepare_folder(options.output);
     const auto csv = options.output / "fragility.csv";
     const auto json = options.output / "fragility.json";
-    check_target(csv, options.results);
-    check_target(json, options.results);
+    check_output_targets(
+        {{csv, "--output", "a pelicun fragility.csv blockfrag exported", is_pelicun_csv_export},
+         {json, "--output", "a pelicun fragility.json blockfrag exported", is_pelicun_json_export}},
+        {{options.results, "the study output"}});
     write_file_atomically(csv, model.csv);
     write_file_atomically(json, model.json);
     log << "wrote " << csv.string() << " and " << json.string();
   } else {
     const std::string model = openquake_fragility_model(fits, id);
-    check_target(options.output, options.results);
+    check_output_targets({{options.output, "--output",
+                           "an OpenQuake fragility model blockfrag "
+                           "exported",
+                           is_openquake_export}},
+                         {{options.results, "the study output"}});
     write_file_atomically(options.output, model);
     log << "wrote " << options.output.string();
   }

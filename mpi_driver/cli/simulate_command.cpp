@@ -10,6 +10,7 @@
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/io/history_csv.hpp"
+#include "mpi_driver/io/output_target.hpp"
 #include "mpi_driver/io/summary_json.hpp"
 
 namespace blockfrag {
@@ -90,6 +91,8 @@ int run_simulate(const SimulateOptions& options, std::ostream& out) {
                          fixed(kMaxHistoryRows) + " rows; choose at least " +
                          fixed(longest / kMaxHistoryRows) + " s"});
     }
+    check_output_targets({{*options.history_path, "--history", "a history CSV", is_history_csv}},
+                         {{options.scene_path, "the scene"}});
   }
   Summary summary;
   if (options.history_path) {

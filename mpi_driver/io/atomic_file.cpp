@@ -48,6 +48,17 @@ std::filesystem::path fresh_temporary_name(const std::filesystem::path& target) 
   return name;
 }
 
+// The commands check their targets before any work (output_target.hpp, claim_output); this is
+// the last look, just before the rename, for something put at the name since: a rename would
+// replace a link, a FIFO or a device node (/dev/null, as root) as readily as a file.
+void refuse_to_rename_over_special_file(const std::filesystem::path& path) {
+  struct stat status {};
+  if (::lstat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode)) {
+    throw FileError("refusing to replace " + path.string() +
+                    ": it is not a regular file (something was put there during the run)");
+  }
+}
+
 }  // namespace
 
 int create_exclusively(const std::filesystem::path& path) {
@@ -62,11 +73,16 @@ void replace_file_atomically(
     const AtomicWriteHooks& hooks) {
   const auto temporary = fresh_temporary_name(path);
   try {
-    write_temporary(temporary);
-    fsync_path(temporary, O_RDONLY | O_NOFOLLOW);
+    try {
+      write_temporary(temporary);
+      fsync_path(temporary, O_RDONLY | O_NOFOLLOW);
+    } catch (const FileFailure& failure) {
+      throw FileError("cannot write " + path.string() + ": " + failure.what());
+    }
     if (hooks.pause_before_rename_s > 0.0) {
       std::this_thread::sleep_for(std::chrono::duration<double>(hooks.pause_before_rename_s));
     }
+    refuse_to_rename_over_special_file(path);
     if (std::rename(temporary.c_str(), path.c_str()) != 0) {
       throw FileError(system_error_text("cannot rename " + temporary.string() + " to", path));
     }
@@ -88,13 +104,13 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
           const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
           if (wrote < 0 && errno == EINTR) continue;
           if (wrote < 0) {
-            const std::string why = system_error_text("cannot write", temporary);
+            const std::string why = temporary.string() + ": " + std::strerror(errno);
             ::close(fd);
             throw FileError(why);
           }
           done += static_cast<std::size_t>(wrote);
         }
-        if (::close(fd) != 0) throw FileError(system_error_text("cannot write", temporary));
+        if (::close(fd) != 0) throw FileError(temporary.string() + ": " + std::strerror(errno));
       },
       hooks);
 }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "mpi_driver/io/atomic_file.hpp"
+#include "mpi_driver/io/output_target.hpp"
 
 namespace blockfrag {
 
@@ -18,7 +19,7 @@ void write_number(std::ostream& out, double x) {
 }  // namespace
 
 void write_history_csv(std::ostream& out, const std::vector<HistoryRow>& rows) {
-  out << "t,x,y,theta,vx,vy,omega,mode,friction_per_weight,normal_per_weight\n";
+  out << kHistoryCsvHeader;
   for (const auto& row : rows) {
     for (const double x : {row.t, row.x, row.y, row.theta, row.vx, row.vy, row.omega}) {
       write_number(out, x);
@@ -30,6 +31,10 @@ void write_history_csv(std::ostream& out, const std::vector<HistoryRow>& rows) {
     write_number(out, row.normal_per_weight);
     out << '\n';
   }
+}
+
+bool is_history_csv(const std::filesystem::path& path) {
+  return file_starts_with(path, kHistoryCsvHeader);
 }
 
 void write_history_csv_file(const std::filesystem::path& path,

@@ -164,8 +164,9 @@ for interval in 0 -1 nan inf abc; do
   check "--history-interval $interval exits 2 (got $code)" test "$code" -eq 2
 done
 run simulate "$example" --history "$work/no/such/folder/h.csv"
-check "an unwritable history file exits 1 with a message (got $code)" \
-  test "$code" -eq 1 -a -s "$work/err"
+check "a history file in a missing folder exits 2 before the run (got $code)" test "$code" -eq 2
+check "a history file in a missing folder is named with the folder" \
+  grep -q "the folder $work/no/such/folder does not exist" "$work/err"
 run --version
 check "--version exits 0 and prints the version (got $code)" grep -qE "^blockfrag [0-9]+\.[0-9]+\.[0-9]+" "$work/out"
 run simulate --help

@@ -165,7 +165,7 @@ TEST(Checkpoint, ReadsOnlyARegularFileOfAPlausibleSize) {
 }
 
 // Nothing planted in the output's folder can redirect a write: the temporary file has a fresh
-// name and is created exclusively, and the rename replaces a link at the target, not its target.
+// name and is created exclusively, and a link at the target is neither followed nor replaced.
 TEST(AtomicFile, APlantedLinkIsNeverFollowed) {
   TemporaryFolder folder;
   const auto victim = folder.path() / "victim.txt";
@@ -175,11 +175,14 @@ TEST(AtomicFile, APlantedLinkIsNeverFollowed) {
   for (const char* name : {"out.h5.tmp", "out.h5.checkpoint.tmp"}) {
     std::filesystem::create_symlink(victim, folder.path() / name);
   }
-  std::filesystem::create_symlink(victim, target);
   write_file_atomically(target, "new content");
-  EXPECT_EQ(read_input_file(victim, {100}), "precious");
-  EXPECT_FALSE(std::filesystem::is_symlink(target));
   EXPECT_EQ(read_input_file(target, {100}), "new content");
+  std::filesystem::remove(target);
+  std::filesystem::create_symlink(victim, target);
+  EXPECT_THROW(write_file_atomically(target, "newer content"), FileError);
+  EXPECT_EQ(read_input_file(victim, {100}), "precious");
+  EXPECT_TRUE(std::filesystem::is_symlink(target));
+  EXPECT_EQ(files_in(folder.path()), 4u);  // no temporary left: victim, two links, target
   // A link to a file is never a leftover temporary: it is left alone.
   EXPECT_EQ(remove_stale_temporaries(folder.path() / "out.h5.tmp"), 0);
 }

@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# The files simulate, export and accuracy write: a regular file of their own kind or nothing at
+# each name (never a link, a FIFO, a device, one of their inputs or another output), refused with
+# exit code 2 before any work. Never the real /dev/null: the FIFOs, links and devices are made
+# here, in the scratch folder.
+set -u
+source "$(dirname "$0")/../support/script_test.sh"
+source "$(dirname "$0")/../support/hostile_case.sh"
+cd "$work" || exit 1
+
+# unchanged FILE CHECKSUM: the file's content is still what `md5sum` gave.
+unchanged() { [[ "$(md5sum <"$1")" == "$2" ]]; }
+
+scene="$BLOCKFRAG_SOURCE_DIR/configs/paper_example.json"
+cp "$scene" scene.json
+echo data >victim.txt
+victim_sum=$(md5sum <victim.txt)
+study_with '{"samples_per_level": 20}' >small.json
+"$B" run small.json --output study.h5 2>/dev/null
+study_sum=$(md5sum <study.h5)
+
+# --- simulate --history ----------------------------------------------------------------------------
+mkfifo fifo.csv
+run_case history_fifo 2 "fifo.csv (--history): is a FIFO" "$B" simulate scene.json --history fifo.csv
+[[ -p fifo.csv ]] && pass || fail "history_fifo: the FIFO was replaced"
+ln -s /dev/zero zero.csv
+run_case history_device_link 2 "zero.csv (--history): is a symbolic link" \
+  "$B" simulate scene.json --history zero.csv
+[[ "$(readlink zero.csv)" == /dev/zero ]] && pass || fail "history_device_link: the link was replaced"
+ln -s victim.txt victim.csv
+run_case history_link 2 "victim.csv (--history): is a symbolic link" \
+  "$B" simulate scene.json --history victim.csv
+[[ -L victim.csv ]] && unchanged victim.txt "$victim_sum" && pass || fail "history_link: replaced or followed"
+cp scene.json own.json
+scene_sum=$(md5sum <own.json)
+run_case history_is_the_scene 2 "own.json (--history): is this command's input, the scene" \
+  "$B" simulate own.json --history own.json
+unchanged own.json "$scene_sum" && pass || fail "history_is_the_scene: the scene was replaced"
+cp study.h5 study_copy1.h5
+run_case history_over_study_output 2 "is not a history CSV (a blockfrag study or spectrum output" \
+  "$B" simulate scene.json --history study_copy1.h5
+unchanged study_copy1.h5 "$study_sum" && pass || fail "history_over_study_output: the study output was replaced"
+run_case history_over_notes 2 "victim.txt (--history): refusing to replace an existing file" \
+  "$B" simulate scene.json --history victim.txt
+unchanged victim.txt "$victim_sum" && pass || fail "history_over_notes: the notes were replaced"
+run_case history_empty 2 "--history: must not be empty" "$B" simulate scene.json --history ""
+run_case history_written 0 "verdict:" "$B" simulate scene.json --history h.csv
+run_case history_rewritten 0 "verdict:" "$B" simulate scene.json --history h.csv
+
+# --- export --output -------------------------------------------------------------------------------
+mkfifo fifo.xml
+run_case export_fifo 2 "fifo.xml (--output): is a FIFO" \
+  "$B" export study.h5 --format openquake --output fifo.xml --fitted-only
+cp study.h5 other.h5
+run_case export_over_study_output 2 "other.h5 (--output): refusing to replace an existing file" \
+  "$B" export study.h5 --format openquake --output other.h5 --fitted-only
+unchanged other.h5 "$study_sum" && pass || fail "export_over_study_output: another study's output was replaced"
+run_case export_over_its_input 2 "is this command's input, the study output" \
+  "$B" export study.h5 --format openquake --output study.h5 --fitted-only
+mkdir dl
+ln -s ../victim.txt dl/fragility.json
+run_case export_pelicun_link 2 "dl/fragility.json (--output): is a symbolic link" \
+  "$B" export study.h5 --format pelicun --output dl --fitted-only
+unchanged victim.txt "$victim_sum" && [[ ! -e dl/fragility.csv ]] && pass ||
+  fail "export_pelicun_link: the link was followed or a file written"
+run_case export_empty 2 "--output: must not be empty" \
+  "$B" export study.h5 --format openquake --output "" --fitted-only
+run_case export_written 0 "wrote model.xml" \
+  "$B" export study.h5 --format openquake --output model.xml --fitted-only
+run_case export_rewritten 0 "wrote model.xml" \
+  "$B" export study.h5 --format openquake --output model.xml --fitted-only
+
+# --- accuracy --output and --table (each refused before the suite runs) ---------------------------
+"$PYTHON" - "$BLOCKFRAG_SOURCE_DIR/configs/accuracy_suite.json" <<'PY' >suite.json
+import json, sys
+suite = json.load(open(sys.argv[1]))
+print(json.dumps({"scenes": [s for s in suite["scenes"] if s["name"] == "rock_free_release"]}))
+PY
+mkfifo fifo.h5
+run_case accuracy_output_fifo 2 "fifo.h5 (--output): is a FIFO" \
+  "$B" accuracy suite.json --setting rk4:0.001 --output fifo.h5
+cp suite.json own_suite.json
+suite_sum=$(md5sum <own_suite.json)
+run_case accuracy_output_is_the_suite 2 "own_suite.json (--output): is this command's input, the suite" \
+  "$B" accuracy own_suite.json --setting rk4:0.001 --output own_suite.json
+unchanged own_suite.json "$suite_sum" && pass || fail "accuracy_output_is_the_suite: the suite was replaced"
+cp study.h5 study_copy2.h5
+run_case accuracy_output_over_study 2 "study_copy2.h5 (--output): refusing to replace an existing file" \
+  "$B" accuracy suite.json --setting rk4:0.001 --output study_copy2.h5
+unchanged study_copy2.h5 "$study_sum" && pass || fail "accuracy_output_over_study: the study output was replaced"
+ln -s victim.txt table_link.md
+run_case accuracy_table_link 2 "table_link.md (--table): is a symbolic link" \
+  "$B" accuracy suite.json --setting rk4:0.001 --output acc.h5 --table table_link.md
+[[ -L table_link.md && ! -e acc.h5 ]] && unchanged victim.txt "$victim_sum" && pass ||
+  fail "accuracy_table_link: the link was replaced or the study ran"
+run_case accuracy_output_empty 2 "--output: must not be empty" \
+  "$B" accuracy suite.json --setting rk4:0.001 --output ""
+run_case accuracy_table_empty 2 "--table: must not be empty" \
+  "$B" accuracy suite.json --setting rk4:0.001 --output acc.h5 --table ""
+run_case accuracy_same_file_twice 2 "names the same file as another of this command's outputs" \
+  "$B" accuracy suite.json --setting rk4:0.001 --output acc.h5 --table ./acc.h5
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]
