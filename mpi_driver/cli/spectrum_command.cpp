@@ -26,10 +26,7 @@ int finish_spectrum(const SpectrumConfig& config, const RunSettings& settings,
                             RecordSpool::Mode::resume);
     tally = write_spectrum_output(config.output, config, spool, result.brackets);
   }
-  for (const auto& file : {settings.checkpoint, settings.records, files.bisection,
-                           files.round_checkpoint, files.round_records}) {
-    std::filesystem::remove(file);
-  }
+  remove_spectrum_files(config, settings, files);
   std::cerr << "wrote " << config.output.string() << " (" << result.map.computed
             << " map points and " << result.midpoints
             << " bisection midpoints computed in this run, " << result.rounds

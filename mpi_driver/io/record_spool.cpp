@@ -147,6 +147,30 @@ void RecordSpool::sync() {
   if (::fsync(fd_) != 0) throw FileFailure(system_error("cannot sync " + path_.string()));
 }
 
+std::optional<std::uint64_t> read_record_spool_hash(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  const int fd = ::open(name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    if (errno == ENOENT) return std::nullopt;
+    if (errno == ELOOP) throw RecordSpoolError(name + ": a link, not blockfrag's records file");
+    throw FileFailure(system_error("cannot open " + name));
+  }
+  struct stat status {};
+  Header header{};
+  const bool regular = ::fstat(fd, &status) == 0 && S_ISREG(status.st_mode);
+  const bool read =
+      regular && ::pread(fd, &header, sizeof header, 0) == static_cast<ssize_t>(sizeof header);
+  ::close(fd);
+  if (!regular) throw RecordSpoolError(name + ": not a regular file; move it away");
+  if (status.st_size == 0) return std::nullopt;
+  if (!read || std::string_view(header.magic, sizeof header.magic) != magic) {
+    throw RecordSpoolError(name +
+                           ": not blockfrag's records file (wrong header); it is left as it is: "
+                           "move it away, or choose another --output");
+  }
+  return header.config_hash;
+}
+
 std::filesystem::path record_spool_path_for(const std::filesystem::path& output) {
   auto path = output;
   path += ".records";

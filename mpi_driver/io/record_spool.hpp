@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 
 #include "engine/errors.hpp"
@@ -51,6 +52,12 @@ class RecordSpool {
   std::int64_t total_ = 0;
   int fd_ = -1;
 };
+
+// The config hash in the header of the records file at path, without changing it; nullopt when
+// nothing is there, or an empty file (a run killed as it created it, which RecordSpool reuses).
+// Throws RecordSpoolError for what RecordSpool refuses: a link, anything but a regular file, a file
+// without a records file's header.
+std::optional<std::uint64_t> read_record_spool_hash(const std::filesystem::path& path);
 
 // OUTPUT.records, next to the output.
 std::filesystem::path record_spool_path_for(const std::filesystem::path& output);

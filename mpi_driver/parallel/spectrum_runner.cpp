@@ -94,21 +94,30 @@ void seal_map(const SpectrumConfig& config, const RunSettings& settings) {
                    settings.checkpoint_hooks);
 }
 
+std::int64_t max_brackets_of(const SpectrumConfig& config) {
+  return static_cast<std::int64_t>(config.frequency_ratio.size()) *
+         static_cast<std::int64_t>(config.amplitude_ratio.size() - 1);
+}
+
+// The bisection state at files.bisection, if there is one, checked against this spectrum: a
+// damaged file (CheckpointError) or another spectrum's (StudyMismatchError) is refused.
+std::optional<BisectionState> read_own_bisection_state(const SpectrumConfig& config,
+                                                       const SpectrumFiles& files) {
+  auto state = read_bisection_state(files.bisection, max_brackets_of(config),
+                                    static_cast<std::int64_t>(config.frequency_ratio.size()));
+  if (state && state->config_hash != config.hash) {
+    throw StudyMismatchError("refusing to resume: the bisection state " + files.bisection.string() +
+                             " belongs to a different spectrum spec (spec hash " +
+                             hash_to_hex(state->config_hash) + ", this spec " +
+                             hash_to_hex(config.hash) + "); remove it to start the bisection over");
+  }
+  return state;
+}
+
 // Rank 0: the bisection as it stood when the last run stopped, or its start from the map.
 BisectionState start_bisection(const SpectrumConfig& config, const RunSettings& settings,
                                const SpectrumFiles& files) {
-  const auto frequencies = static_cast<std::int64_t>(config.frequency_ratio.size());
-  const std::int64_t max_brackets =
-      frequencies * static_cast<std::int64_t>(config.amplitude_ratio.size() - 1);
-  if (auto state = read_bisection_state(files.bisection, max_brackets, frequencies)) {
-    if (state->config_hash != config.hash) {
-      throw StudyMismatchError(
-          "refusing to resume: the bisection state " + files.bisection.string() +
-          " belongs to a different spectrum spec (spec hash " + hash_to_hex(state->config_hash) +
-          ", this spec " + hash_to_hex(config.hash) + "); remove it to start the bisection over");
-    }
-    return std::move(*state);
-  }
+  if (auto state = read_own_bisection_state(config, files)) return std::move(*state);
   const RecordSpool spool(settings.records, config.hash, config.map_points(),
                           RecordSpool::Mode::resume);
   BisectionState state{config.hash, 0, map_brackets(config, spool)};
@@ -137,6 +146,22 @@ void finish_round(const SpectrumConfig& config, const SpectrumFiles& files, cons
   write_bisection_state(files.bisection, state);
 }
 
+// Rank 0, before the map: the bisection's files, checked as the map's are, so that a file the
+// spectrum cannot use is refused before hours of map and not after. A round's checkpoint belongs
+// to the round the bisection state is at; with no state, no round has started.
+void check_bisection_files(const SpectrumConfig& config, const SpectrumFiles& files) {
+  const auto state = read_own_bisection_state(config, files);
+  const auto round = read_checkpoint(files.round_checkpoint);
+  if (round && (!state || round->config_hash != round_hash(config.hash, state->round))) {
+    throw StudyMismatchError("refusing to resume: the round checkpoint " +
+                             files.round_checkpoint.string() + " (config hash " +
+                             hash_to_hex(round->config_hash) +
+                             ") is not of this spectrum's current bisection round; remove it to "
+                             "start the round over");
+  }
+  read_record_spool_hash(files.round_records);
+}
+
 }  // namespace
 
 SpectrumFiles SpectrumFiles::for_output(const std::filesystem::path& output) {
@@ -145,8 +170,8 @@ SpectrumFiles SpectrumFiles::for_output(const std::filesystem::path& output) {
     path += suffix;
     return path;
   };
-  return {bisection_state_path_for(output), next_to(".round.checkpoint"),
-          next_to(".round.records")};
+  return {bisection_state_path_for(output), next_to(".round-checkpoint"),
+          next_to(".round-records")};
 }
 
 SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
@@ -155,6 +180,7 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   SpectrumRunResult result;
+  on_rank0(comm, [&] { check_bisection_files(config, files); });
   const auto na = static_cast<std::int64_t>(config.amplitude_ratio.size());
   const SampleJob map_job{
       .hash = config.hash,
@@ -224,6 +250,35 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
   }
   result.brackets = std::move(state.brackets);
   return result;
+}
+
+void remove_spectrum_files(const SpectrumConfig& config, const RunSettings& settings,
+                           const SpectrumFiles& files) {
+  const auto state = read_own_bisection_state(config, files);
+  const auto own_round = [&](std::uint64_t hash) {
+    for (std::int64_t round = 0; state && round <= state->round; ++round) {
+      if (hash == round_hash(config.hash, round)) return true;
+    }
+    return false;
+  };
+  // A file that cannot be read as this spectrum's is someone else's, and stays.
+  const auto remove_if = [](const std::filesystem::path& path, const auto& read_hash,
+                            const auto& own) {
+    try {
+      if (const auto hash = read_hash(path); hash && own(*hash)) std::filesystem::remove(path);
+    } catch (const InvalidInput&) {
+    }
+  };
+  const auto checkpoint_hash = [](const std::filesystem::path& path) {
+    const auto checkpoint = read_checkpoint(path);
+    return checkpoint ? std::optional<std::uint64_t>(checkpoint->config_hash) : std::nullopt;
+  };
+  const auto own_map = [&](std::uint64_t hash) { return hash == config.hash; };
+  remove_if(settings.checkpoint, checkpoint_hash, own_map);
+  remove_if(settings.records, read_record_spool_hash, own_map);
+  remove_if(files.round_checkpoint, checkpoint_hash, own_round);
+  remove_if(files.round_records, read_record_spool_hash, own_round);
+  if (state) std::filesystem::remove(files.bisection);
 }
 
 }  // namespace blockfrag

@@ -5,7 +5,7 @@
 //    Its records end in the map's record spool (OUTPUT.records), checkpointed in OUTPUT.checkpoint.
 // 2. The boundaries: rank 0 finds every bracket in the map's columns (spectrum_bisection.hpp) and
 //    then runs rounds: each round is one job of the midpoints of every open bracket, evaluated in
-//    parallel (its own spool and checkpoint, OUTPUT.round.records and OUTPUT.round.checkpoint),
+//    parallel (its own spool and checkpoint, OUTPUT.round-records and OUTPUT.round-checkpoint),
 //    after which rank 0 narrows the brackets. The brackets at the start of each round are in
 //    OUTPUT.bisection, written before the round runs; a killed run resumes the round it was in
 //    (from its checkpoint) or the one before.
@@ -31,7 +31,8 @@ struct SpectrumFiles {
   std::filesystem::path round_checkpoint;  // the running round's checkpoint
   std::filesystem::path round_records;     // and its records
 
-  // OUTPUT.bisection, OUTPUT.round.checkpoint and OUTPUT.round.records, next to the output.
+  // OUTPUT.bisection, OUTPUT.round-checkpoint and OUTPUT.round-records, next to the output
+  // (endings no output's own files have: mpi_driver/config/output_name.hpp).
   static SpectrumFiles for_output(const std::filesystem::path& output);
 };
 
@@ -43,13 +44,19 @@ struct SpectrumRunResult {
   std::vector<SpectrumBracket> brackets;  // rank 0, when completed: every crossing, closed
 };
 
-// Collective over comm: the map (settings: its checkpoint, records, interval, log), then the
-// bisection rounds. When completed, settings.records holds every map point's record and rank 0's
-// result the final brackets. Throws StudyMismatchError (on every rank) when a checkpoint or the
-// bisection state belongs to another spectrum or is damaged, FileFailure when a file cannot be
-// written.
+// Collective over comm: first rank 0 checks the bisection's files (a damaged or foreign one is
+// refused before the map starts), then the map (settings: its checkpoint, records, interval, log),
+// then the bisection rounds. When completed, settings.records holds every map point's record and
+// rank 0's result the final brackets. Throws StudyMismatchError (on every rank) when a checkpoint
+// or the bisection state belongs to another spectrum or is damaged, FileFailure when a file cannot
+// be written.
 SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
                                const RunSettings& settings, const SpectrumFiles& files,
                                const SceneEvaluator& evaluate);
+
+// Rank 0, once the output is written: removes the spectrum's files, each only when its hash says it
+// is this spectrum's (the map's, or one of its bisection rounds'); anything else is left alone.
+void remove_spectrum_files(const SpectrumConfig& config, const RunSettings& settings,
+                           const SpectrumFiles& files);
 
 }  // namespace blockfrag

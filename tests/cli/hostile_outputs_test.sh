@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The files simulate, export and accuracy write: a regular file of their own kind or nothing at
-# each name (never a link, a FIFO, a device, one of their inputs or another output), refused with
-# exit code 2 before any work. Never the real /dev/null: the FIFOs, links and devices are made
-# here, in the scratch folder.
+# The files every command writes, replaces or removes: a regular file of its own or nothing at
+# each name (never a link, a FIFO, a device, one of its inputs or another output, refused with exit
+# code 2 before any work), side files no other output's can share, and only provably own files
+# removed. Never the real /dev/null: the FIFOs, links and devices are made here, in the scratch
+# folder.
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
 source "$(dirname "$0")/../support/hostile_case.sh"
@@ -44,6 +45,8 @@ run_case history_over_notes 2 "victim.txt (--history): refusing to replace an ex
   "$B" simulate scene.json --history victim.txt
 unchanged victim.txt "$victim_sum" && pass || fail "history_over_notes: the notes were replaced"
 run_case history_empty 2 "--history: must not be empty" "$B" simulate scene.json --history ""
+run_case history_side_file_name 2 'must not end in ".checkpoint"' \
+  "$B" simulate scene.json --history study.h5.checkpoint
 run_case history_written 0 "verdict:" "$B" simulate scene.json --history h.csv
 run_case history_rewritten 0 "verdict:" "$B" simulate scene.json --history h.csv
 
@@ -99,6 +102,54 @@ run_case accuracy_table_empty 2 "--table: must not be empty" \
   "$B" accuracy suite.json --setting rk4:0.001 --output acc.h5 --table ""
 run_case accuracy_same_file_twice 2 "names the same file as another of this command's outputs" \
   "$B" accuracy suite.json --setting rk4:0.001 --output acc.h5 --table ./acc.h5
+
+# --- run: names no other output's files can take ---------------------------------------------------
+run_case run_output_side_file_name 2 'must not end in ".records"' "$B" run small.json --output x.h5.records
+
+# --- spectrum: another run's files, and its own checked before the map -----------------------------
+# spectrum_with AMPLITUDE_FROM AMPLITUDE_TO > file: a 4 x 5 spectrum of the paper's block.
+spectrum_with() {
+  cat <<JSON
+{"block": {"half_width": 0.5, "half_height": 1.0}, "contact": {"friction": 0.6, "restitution": 0.6},
+ "pulse": {"type": "cosine_pulse"}, "frequency_ratio": {"from": 0.8, "to": 2.0, "count": 4},
+ "amplitude_ratio": {"from": $1, "to": $2, "count": 5}, "bisection": {"tolerance": 1e-2},
+ "output": "X.h5"}
+JSON
+}
+# A study X.h5.round interrupted (its checkpoint and records kept), then a spectrum X.h5 that finds
+# no crossing to bisect and so finishes at once: the study's files are not the spectrum's.
+study_with '{"samples_per_level": 1000, "checkpoint_interval_s": 0.01}' >long.json
+"$B" run long.json --output X.h5.round 2>long.err &
+long_run=$!
+for _ in $(seq 200); do [[ -e X.h5.round.checkpoint ]] && break; sleep 0.02; done
+kill -TERM "$long_run"
+wait "$long_run"
+long_code=$?
+if [[ $long_code -eq 4 && -e X.h5.round.checkpoint && -e X.h5.round.records ]]; then
+  checkpoint_sum=$(md5sum <X.h5.round.checkpoint)
+  records_sum=$(md5sum <X.h5.round.records)
+  spectrum_with 0.1 0.5 >safe_spectrum.json
+  run_case spectrum_beside_round_study 0 "wrote X.h5" "$B" spectrum safe_spectrum.json
+  unchanged X.h5.round.checkpoint "$checkpoint_sum" && unchanged X.h5.round.records "$records_sum" &&
+    pass || fail "spectrum_beside_round_study: the study's checkpoint or records were removed or changed"
+  run_case round_study_resumes 0 "resumed from X.h5.round.checkpoint" "$B" run long.json --output X.h5.round
+else
+  fail "the study to interrupt: exit $long_code, $(tail -c 300 long.err)"
+fi
+# A bisection state that is not this spectrum's is refused before the map, not after it.
+spectrum_with 1.0 3.0 >spectrum.json
+sed 's/"X.h5"/"S.h5"/' spectrum.json >s_spectrum.json
+printf 'someone else' >S.h5.bisection
+run_case spectrum_foreign_bisection 2 "S.h5.bisection: not a usable blockfrag bisection state" \
+  "$B" spectrum s_spectrum.json
+[[ ! -e S.h5.records && ! -e S.h5.checkpoint ]] && pass ||
+  fail "spectrum_foreign_bisection: the map ran before the bisection state was checked"
+rm S.h5.bisection
+mkfifo S.h5.round-records
+run_case spectrum_round_records_fifo 2 "S.h5.round-records: not a regular file" \
+  "$B" spectrum s_spectrum.json
+[[ -p S.h5.round-records && ! -e S.h5.records ]] && pass ||
+  fail "spectrum_round_records_fifo: the FIFO was replaced or the map ran"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

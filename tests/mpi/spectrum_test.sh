@@ -108,7 +108,7 @@ wait_for s.h5.bisection
 kill_job
 [[ $landed -eq 1 && -e s.h5.bisection && ! -e s.h5 ]] && pass || fail "the second kill missed the bisection"
 start_job
-wait_for s.h5.round.checkpoint
+wait_for s.h5.round-checkpoint
 kill_job
 [[ $landed -eq 1 && ! -e s.h5 ]] && pass || fail "the third kill missed the bisection"
 start_job
