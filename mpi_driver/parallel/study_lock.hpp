@@ -1,7 +1,10 @@
 // One run per output at a time: two runs of the same study (a resubmitted batch job while the old
 // one still runs) would overwrite each other's checkpoints. Rank 0 holds an advisory lock (flock)
 // on OUTPUT.lock for the whole run; the kernel releases it when the process ends in any way,
-// kill -9 included, so a stale lock never blocks a resume.
+// kill -9 included, so a stale lock never blocks a resume. A run that ends removes the lock file
+// while it still holds it; one that opened the name just before then holds a lock on a file no
+// longer there, which it notices (the name now leads to another file or none) and opens the name
+// again: two runs never both hold the lock.
 //
 // The lock file is named after the output's canonical folder (symbolic links and ".." resolved),
 // so two spellings of one output take one lock; it is opened without following a link, so a link
