@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "mpi_driver/io/hdf5_handle.hpp"
+#include "mpi_driver/io/hdf5_temporary_driver.hpp"
 
 namespace blockfrag {
 namespace {
@@ -89,25 +90,37 @@ Handle utf8_string_type() {
 
 }  // namespace
 
-Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : name_(path.string()) {
+Hdf5Writer::Hdf5Writer(const std::filesystem::path& path)
+    : name_(path.string()), state_(std::make_unique<hdf5::TemporaryFileState>()) {
   hdf5::silence_error_printing();
   const auto properties = creation_properties(H5P_FILE_CREATE, name_);
+  const Handle access(hdf5::temporary_file_access(state_.get()), H5Pclose,
+                      "create file access properties for " + name_);
   // Exclusive: the file must not exist (atomic_file.hpp gives a fresh name), so nothing planted
   // there, a link included, is ever opened.
-  file_ = H5Fcreate(name_.c_str(), H5F_ACC_EXCL, properties.get(), H5P_DEFAULT);
-  if (file_ < 0) throw Hdf5Error("HDF5: cannot create " + name_);
+  file_ = H5Fcreate(name_.c_str(), H5F_ACC_EXCL, properties.get(), access.get());
+  if (file_ < 0) throw Hdf5Error("HDF5: cannot create " + name_ + hdf5::system_reason());
 }
 
 Hdf5Writer::~Hdf5Writer() {
-  if (file_ >= 0) H5Fclose(file_);
+  if (file_ < 0) return;
+  state_->closing = true;
+  H5Fclose(file_);
 }
 
 void Hdf5Writer::close() {
   if (file_ < 0) return;
   const hid_t file = file_;
   file_ = -1;
-  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush " + name_);
-  check(H5Fclose(file), "close " + name_);
+  // The flush reports a failure as an error; the close that follows then succeeds whatever
+  // happens (hdf5_temporary_driver.hpp).
+  const bool flushed = H5Fflush(file, H5F_SCOPE_LOCAL) >= 0;
+  state_->closing = true;
+  const bool closed = H5Fclose(file) >= 0;
+  if (!state_->failure.empty()) {
+    throw Hdf5Error("HDF5: cannot write " + name_ + " (" + state_->failure + ")");
+  }
+  if (!flushed || !closed) throw Hdf5Error("HDF5: cannot close " + name_);
 }
 
 void Hdf5Writer::create_group(const std::string& path) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,6 +14,10 @@
 #include "engine/errors.hpp"
 
 namespace blockfrag {
+
+namespace hdf5 {
+struct TemporaryFileState;
+}
 
 class Hdf5Error : public FileFailure {
  public:
@@ -54,12 +59,15 @@ class Hdf5Writer {
   void set_attribute(const std::string& object, const std::string& name,
                      const std::vector<double>& values);
 
-  // Flushes and closes; the destructor closes too but cannot report a failure.
+  // Flushes and closes, and throws Hdf5Error if any write failed; the destructor closes too but
+  // cannot report a failure. Either close succeeds even on a full disk, which gives up the file's
+  // content (mpi_driver/io/hdf5_temporary_driver.hpp): HDF5 is left holding no file.
   void close();
 
  private:
   std::int64_t file_ = -1;  // hid_t
   std::string name_;
+  std::unique_ptr<hdf5::TemporaryFileState> state_;  // the file's driver's, at a fixed address
 };
 
 // The variable-length UTF-8 string attribute `name` of the file's root (h5py reads it as str);

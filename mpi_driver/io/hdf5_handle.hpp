@@ -10,11 +10,32 @@
 
 namespace blockfrag::hdf5 {
 
+// The operating system's reason for the failure HDF5 just reported ("No space left on device"),
+// which its file drivers put in their entry of the error stack, as " (reason)"; empty if none.
+inline std::string system_reason() {
+  std::string reason;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_DOWNWARD,
+      [](unsigned, const H5E_error2_t* error, void* found) -> herr_t {
+        const std::string text = error->desc ? error->desc : "";
+        const std::string marker = "error message = '";
+        const auto start = text.find(marker);
+        auto& reason = *static_cast<std::string*>(found);
+        if (start != std::string::npos && reason.empty()) {
+          const auto from = start + marker.size();
+          reason = text.substr(from, text.find('\'', from) - from);
+        }
+        return 0;
+      },
+      &reason);
+  return reason.empty() ? reason : " (" + reason + ")";
+}
+
 // Owns one HDF5 identifier and closes it with the matching H5*close.
 class Handle {
  public:
   Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw Hdf5Error("HDF5: cannot " + what);
+    if (id_ < 0) throw Hdf5Error("HDF5: cannot " + what + system_reason());
   }
   ~Handle() {
     if (id_ >= 0) close_(id_);
@@ -30,7 +51,7 @@ class Handle {
 };
 
 inline void check(herr_t status, const std::string& what) {
-  if (status < 0) throw Hdf5Error("HDF5: cannot " + what);
+  if (status < 0) throw Hdf5Error("HDF5: cannot " + what + system_reason());
 }
 
 // Errors are reported by exceptions; HDF5's own printing of its error stack would only add noise.

@@ -174,8 +174,10 @@ class Coordinator {
     if (interrupted_) {
       write_checkpoint_now();
       result_.outcome = RunOutcome::interrupted;
-    } else if (job_.run_until > 0 && job_.run_until < job_.total) {
-      write_checkpoint_now();  // a finished batch of a growing study: its next batch starts here
+    } else {
+      // A finished job too: a growing study's next batch starts here, and an output that cannot be
+      // written (a full disk) is written by the rerun from the records, computing nothing again.
+      write_checkpoint_now();
     }
     return std::move(result_);
   }

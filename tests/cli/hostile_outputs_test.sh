@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The files every command writes, replaces or removes: a regular file of its own or nothing at
 # each name (never a link, a FIFO, a device, one of its inputs or another output, refused with exit
-# code 2 before any work), side files no other output's can share, and only provably own files
-# removed. Never the real /dev/null: the FIFOs, links and devices are made here, in the scratch
-# folder.
+# code 2 before any work), side files no other output's can share, only provably own files
+# removed, and a full disk reported (exit code 1) with the checkpoint kept. Never the real
+# /dev/null: the FIFOs, links and devices are made here, in the scratch folder.
 set -u
 source "$(dirname "$0")/../support/script_test.sh"
 source "$(dirname "$0")/../support/hostile_case.sh"
@@ -150,6 +150,35 @@ run_case spectrum_round_records_fifo 2 "S.h5.round-records: not a regular file" 
   "$B" spectrum s_spectrum.json
 [[ -p S.h5.round-records && ! -e S.h5.records ]] && pass ||
   fail "spectrum_round_records_fifo: the FIFO was replaced or the map ran"
+
+# --- a full disk during the final write ------------------------------------------------------------
+# 1,000 samples: 120 kB of records, a 236 kB output. The output cannot be written: exit code 1 with
+# the reason, the checkpoint and records kept, and the rerun, with room, writes the output from them
+# without computing a sample.
+full_disk_case() {
+  local name=$1 folder=$2
+  shift 2
+  run_case "$name" 1 "cannot write $folder/full.h5: HDF5: " "$@" \
+    "$B" run "$BLOCKFRAG_SOURCE_DIR/configs/example_study.json" --samples-per-level 100 \
+    --output "$folder/full.h5"
+  grep -qE "No space left on device|File too large" "$name.err" && [[ ! -e $folder/full.h5 ]] &&
+    pass || fail "$name: no reason given, or an output left: $(head -c 300 "$name.err")"
+  mkdir "$name.roomy"
+  cp "$folder/full.h5.checkpoint" "$folder/full.h5.records" "$name.roomy/" || true
+  run_case "$name.rerun" 0 "resumed from $name.roomy/full.h5.checkpoint: 1000 of 1000 samples" \
+    "$B" run "$BLOCKFRAG_SOURCE_DIR/configs/example_study.json" --samples-per-level 100 \
+    --output "$name.roomy/full.h5"
+}
+# Each write past 200 kB fails with EFBIG (SIGXFSZ ignored), as on a disk that is full.
+mkdir limited
+full_disk_case full_disk_file_size_limit limited bash -c 'trap "" XFSZ; ulimit -f 200; exec "$@"' --
+# A real full disk where a tmpfs can be mounted (as root).
+mkdir full
+trap 'umount "$work/full" 2>/dev/null; rm -rf "$work"' EXIT
+if mount -t tmpfs -o size=256k tmpfs full 2>/dev/null; then
+  full_disk_case full_disk_tmpfs full
+  umount full
+fi
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
