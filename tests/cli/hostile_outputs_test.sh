@@ -172,6 +172,15 @@ full_disk_case() {
 # Each write past 200 kB fails with EFBIG (SIGXFSZ ignored), as on a disk that is full.
 mkdir limited
 full_disk_case full_disk_file_size_limit limited bash -c 'trap "" XFSZ; ulimit -f 200; exec "$@"' --
+# A spectrum: 2 kB of map records, a 16 kB output; the rerun computes no point again.
+mkdir limited_spectrum
+sed 's/"X.h5"/"limited_spectrum\/sp.h5"/' spectrum.json >limited_spectrum.json
+run_case full_disk_spectrum 1 "cannot write limited_spectrum/sp.h5: HDF5: " \
+  bash -c 'trap "" XFSZ; ulimit -f 8; exec "$@"' -- "$B" spectrum limited_spectrum.json
+[[ -e limited_spectrum/sp.h5.checkpoint && -e limited_spectrum/sp.h5.bisection ]] && pass ||
+  fail "full_disk_spectrum: the checkpoint or the bisection state is gone"
+run_case full_disk_spectrum.rerun 0 "(0 map points and 0 bisection midpoints computed in this run" \
+  "$B" spectrum limited_spectrum.json
 # A real full disk where a tmpfs can be mounted (as root).
 mkdir full
 trap 'umount "$work/full" 2>/dev/null; rm -rf "$work"' EXIT
