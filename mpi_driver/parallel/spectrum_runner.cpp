@@ -262,8 +262,8 @@ void remove_spectrum_files(const SpectrumConfig& config, const RunSettings& sett
     return false;
   };
   // A file that cannot be read as this spectrum's is someone else's, and stays.
-  const auto remove_if = [](const std::filesystem::path& path, const auto& read_hash,
-                            const auto& own) {
+  const auto remove_when_own = [](const std::filesystem::path& path, const auto& read_hash,
+                                  const auto& own) {
     try {
       if (const auto hash = read_hash(path); hash && own(*hash)) std::filesystem::remove(path);
     } catch (const InvalidInput&) {
@@ -274,10 +274,10 @@ void remove_spectrum_files(const SpectrumConfig& config, const RunSettings& sett
     return checkpoint ? std::optional<std::uint64_t>(checkpoint->config_hash) : std::nullopt;
   };
   const auto own_map = [&](std::uint64_t hash) { return hash == config.hash; };
-  remove_if(settings.checkpoint, checkpoint_hash, own_map);
-  remove_if(settings.records, read_record_spool_hash, own_map);
-  remove_if(files.round_checkpoint, checkpoint_hash, own_round);
-  remove_if(files.round_records, read_record_spool_hash, own_round);
+  remove_when_own(settings.checkpoint, checkpoint_hash, own_map);
+  remove_when_own(settings.records, read_record_spool_hash, own_map);
+  remove_when_own(files.round_checkpoint, checkpoint_hash, own_round);
+  remove_when_own(files.round_records, read_record_spool_hash, own_round);
   if (state) std::filesystem::remove(files.bisection);
 }
 
