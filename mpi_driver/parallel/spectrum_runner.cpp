@@ -154,7 +154,7 @@ void check_bisection_files(const SpectrumConfig& config, const SpectrumFiles& fi
   const auto round = read_checkpoint(files.round_checkpoint);
   if (round && (!state || round->config_hash != round_hash(config.hash, state->round))) {
     throw StudyMismatchError("refusing to resume: the round checkpoint " +
-                             files.round_checkpoint.string() + " (config hash " +
+                             files.round_checkpoint.string() + " (spec hash " +
                              hash_to_hex(round->config_hash) +
                              ") is not of this spectrum's current bisection round; remove it to "
                              "start the round over");
