@@ -26,15 +26,6 @@ class Descriptor {
   int fd_;
 };
 
-std::string kind_of(mode_t mode) {
-  if (S_ISDIR(mode)) return "a folder";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 }  // namespace
 
 std::string read_input_file(const std::filesystem::path& path, const InputFileRules& rules) {
@@ -56,7 +47,7 @@ std::string read_input_file(const std::filesystem::path& path, const InputFileRu
     throw InputFileError(name + ": cannot be examined (" + std::strerror(errno) + ")");
   }
   if (!S_ISREG(status.st_mode)) {
-    throw InputFileError(name + ": is " + kind_of(status.st_mode) + ", not a regular file");
+    throw InputFileError(name + ": is " + file_kind(status.st_mode) + ", not a regular file");
   }
   const auto size = static_cast<std::size_t>(status.st_size);
   if (size > rules.max_bytes) {
@@ -85,6 +76,16 @@ std::string printable_excerpt(std::string_view text, std::size_t limit) {
   }
   if (text.size() > limit) out += "...";
   return out;
+}
+
+std::string file_kind(mode_t mode) {
+  if (S_ISLNK(mode)) return "a symbolic link";
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
 }
 
 }  // namespace blockfrag

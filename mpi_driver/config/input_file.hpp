@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include <sys/types.h>
+
 #include "engine/errors.hpp"
 
 namespace blockfrag {
@@ -29,6 +31,9 @@ struct InputFileRules {
 // The file's whole content. Opened with O_NONBLOCK (a FIFO cannot hang the open) and checked with
 // fstat on the opened descriptor (no race between the check and the read).
 std::string read_input_file(const std::filesystem::path& path, const InputFileRules& rules);
+
+// What a file that is not a regular file is, for a message: "a FIFO", "a symbolic link", ...
+std::string file_kind(mode_t mode);
 
 // At most `limit` characters of `text` for a message: control characters and bytes outside
 // printable ASCII become '?', and a longer text ends in "...". A file's content can be anything (a

@@ -21,16 +21,6 @@ namespace {
 
 constexpr std::string_view kHdf5Signature = "\x89HDF\r\n\x1a\n";
 
-std::string special_kind(mode_t mode) {
-  if (S_ISLNK(mode)) return "a symbolic link";
-  if (S_ISDIR(mode)) return "a folder";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 // What a file that is not the target's kind is, when blockfrag can tell: another output of its own.
 std::string what_else_it_is(const std::filesystem::path& path) {
   if (!file_starts_with(path, kHdf5Signature)) return {};
@@ -61,7 +51,7 @@ void check_one(const OutputTarget& target, const std::vector<InputFile>& inputs)
     throw InvalidInput(prefix + "cannot be examined (" + std::strerror(errno) + ")");
   }
   if (!S_ISREG(status.st_mode)) {
-    throw InvalidInput(prefix + "is " + special_kind(status.st_mode) +
+    throw InvalidInput(prefix + "is " + file_kind(status.st_mode) +
                        "; blockfrag replaces only regular files it wrote itself" + choose);
   }
   for (const auto& input : inputs) {

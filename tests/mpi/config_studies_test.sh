@@ -91,58 +91,49 @@ slurm_per_level=2000
 sed -e 's/"checkpoint_interval_s": [0-9.]*/"checkpoint_interval_s": 0.1/' \
   "$BLOCKFRAG_SOURCE_DIR/configs/example_study.json" >slurm.json
 export BLOCKFRAG BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=0.2
-slurm_args=(slurm.json --output slurm.h5 --samples-per-level "$slurm_per_level")
-# The script itself in the background (not a subshell around it), so the signal reaches its trap.
-bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm.log 2>&1 &
-script=$!
-for _ in $(seq 1 300); do
-  [[ -e slurm.h5.checkpoint ]] && break
-  sleep 0.02
-done
-kill -TERM "$script"
-wait "$script"
-code=$?
-if [[ $code -eq 4 ]] && grep -q "requeue 4242" scontrol.log && [[ -e slurm.h5.checkpoint && ! -e slurm.h5 ]]; then
-  pass
-else
-  fail "slurm script after SIGTERM: exit $code, requeue: $(cat scontrol.log 2>/dev/null), log: $(tail -5 slurm.log)"
-fi
-bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm.log 2>&1
-code=$?
-[[ $code -eq 0 ]] && grep -q "resumed from slurm.h5.checkpoint" slurm.log && pass ||
-  fail "slurm script resubmitted: exit $code, $(tail -5 slurm.log)"
 "$BLOCKFRAG" run slurm.json --output reference.h5 --samples-per-level "$slurm_per_level" 2>/dev/null
-"$PYTHON" "$COMPARE" reference.h5 slurm.h5 >/dev/null && pass || fail "the requeued study differs from an uninterrupted run"
 
-# The same under Open MPI's real mpirun (BLOCKFRAG_LAUNCHER=mpirun): the script forwards SIGUSR1,
-# after which mpirun returns the ranks' 4 (after a SIGTERM of its own it would return 1). The
-# stand-in only fixes the rank count and execs mpirun, so the signal reaches mpirun itself.
+# interrupt_and_resume LAUNCHER NAME: the script with BLOCKFRAG_LAUNCHER=LAUNCHER writes NAME.h5;
+# a SIGTERM to it once the checkpoint exists requeues the job (exit 4, checkpoint kept, no output),
+# and its resubmission finishes the study from the checkpoint as the uninterrupted run did.
+interrupt_and_resume() {
+  local launcher=$1 name=$2 script code
+  local args=(slurm.json --output "$name.h5" --samples-per-level "$slurm_per_level")
+  : >scontrol.log
+  # The script itself in the background (not a subshell around it), so the signal reaches its trap.
+  BLOCKFRAG_LAUNCHER=$launcher bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${args[@]}" >>"$name.log" 2>&1 &
+  script=$!
+  for _ in $(seq 1 300); do
+    [[ -e $name.h5.checkpoint ]] && break
+    sleep 0.02
+  done
+  kill -TERM "$script"
+  wait "$script"
+  code=$?
+  if [[ $code -eq 4 ]] && grep -q "requeue 4242" scontrol.log && [[ -e $name.h5.checkpoint && ! -e $name.h5 ]]; then
+    pass
+  else
+    fail "slurm script ($launcher) after SIGTERM: exit $code, requeue: $(cat scontrol.log 2>/dev/null), log: $(tail -5 "$name.log")"
+  fi
+  BLOCKFRAG_LAUNCHER=$launcher bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${args[@]}" >>"$name.log" 2>&1
+  code=$?
+  [[ $code -eq 0 ]] && grep -q "resumed from $name.h5.checkpoint" "$name.log" && pass ||
+    fail "slurm script ($launcher) resubmitted: exit $code, $(tail -5 "$name.log")"
+  "$PYTHON" "$COMPARE" reference.h5 "$name.h5" >/dev/null && pass ||
+    fail "the study requeued under $launcher differs from an uninterrupted run"
+}
+interrupt_and_resume srun slurm
+
+# The same under Open MPI's real mpirun: the script forwards SIGUSR1, after which mpirun returns
+# the ranks' 4 (after a SIGTERM of its own it would return 1). The stand-in only fixes the rank
+# count and execs mpirun, so the signal reaches mpirun itself.
 real_mpirun=$(command -v mpirun)
 cat >bin/mpirun <<SH
 #!/bin/bash
 exec "$real_mpirun" -n 2 --oversubscribe "\$@"
 SH
 chmod +x bin/mpirun
-: >scontrol.log
-slurm_args=(slurm.json --output slurm_mpirun.h5 --samples-per-level "$slurm_per_level")
-BLOCKFRAG_LAUNCHER=mpirun bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm_mpirun.log 2>&1 &
-script=$!
-for _ in $(seq 1 300); do
-  [[ -e slurm_mpirun.h5.checkpoint ]] && break
-  sleep 0.02
-done
-kill -TERM "$script"
-wait "$script"
-code=$?
-if [[ $code -eq 4 ]] && grep -q "requeue 4242" scontrol.log && [[ -e slurm_mpirun.h5.checkpoint && ! -e slurm_mpirun.h5 ]]; then
-  pass
-else
-  fail "slurm script under mpirun after SIGTERM: exit $code, requeue: $(cat scontrol.log 2>/dev/null), log: $(tail -5 slurm_mpirun.log)"
-fi
-BLOCKFRAG_LAUNCHER=mpirun bash "$BLOCKFRAG_SOURCE_DIR/configs/slurm_study.sh" "${slurm_args[@]}" >>slurm_mpirun.log 2>&1
-code=$?
-[[ $code -eq 0 ]] && "$PYTHON" "$COMPARE" reference.h5 slurm_mpirun.h5 >/dev/null && pass ||
-  fail "slurm script under mpirun resubmitted: exit $code, $(tail -5 slurm_mpirun.log)"
+interrupt_and_resume mpirun slurm_mpirun
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
