@@ -52,7 +52,7 @@ void prepare_folder(const std::filesystem::path& folder) {
 
 }  // namespace
 
-int run_export(const ExportOptions& options, std::ostream& log) {
+int run_export(const ExportOptions& options, std::ostream& out, std::ostream& log) {
   const FragilityFits all = read_fragility_fits(options.results);
   std::vector<std::string> left_out;
   const FragilityFits fits = exportable_fits(all, options.fitted_only, left_out);
@@ -68,15 +68,16 @@ int run_export(const ExportOptions& options, std::ostream& log) {
     check_target(json, options.results);
     write_file_atomically(csv, model.csv);
     write_file_atomically(json, model.json);
-    log << "wrote " << csv.string() << " and " << json.string();
+    out << "wrote " << csv.string() << " and " << json.string();
   } else {
     const std::string model = openquake_fragility_model(fits, id);
     check_target(options.output, options.results);
     write_file_atomically(options.output, model);
-    log << "wrote " << options.output.string();
+    out << "wrote " << options.output.string();
   }
-  log << " (" << id << ": " << fits.states.size() << " limit state"
+  out << " (" << id << ": " << fits.states.size() << " limit state"
       << (fits.states.size() == 1 ? "" : "s") << ", least severe first)\n";
+  out.flush();
   const auto exported = [&](const std::string& name) {
     return std::any_of(fits.states.begin(), fits.states.end(),
                        [&](const FragilityFit& state) { return state.name == name; });

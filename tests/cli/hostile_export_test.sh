@@ -53,6 +53,9 @@ with altered("beta_40.h5") as f:
     f["fragility/overturn"].attrs["beta"] = 40.0
 with altered("beta_denormal.h5") as f:
     f["fragility/overturn"].attrs["beta"] = 5e-324
+with altered("pulse.h5") as f:
+    f["fragility"].attrs["im_name"] = "pulse_amplitude"
+    f["fragility"].attrs["im_label"] = "pulse amplitude"
 # Flipped bytes in slide_5cm's object header: its link is there, the object is not readable.
 with h5py.File("small.h5", "r") as f:
     address = h5py.h5o.get_info(f["fragility/slide_5cm"].id).addr
@@ -126,6 +129,14 @@ nothing_written beta_denormal beta_denormal.h5
 run_case truncated 2 "truncated.h5: HDF5 cannot open it" "$B" export truncated.h5 "${oq[@]}" truncated.xml
 run_case flipped_bytes 2 "flipped.h5: HDF5 cannot open /fragility/slide_5cm" \
   "$B" export flipped.h5 "${oq[@]}" flipped.xml
+
+# --- Messages and streams --------------------------------------------------------------------------
+run_case pulse_amplitude 2 "pulse.h5: its intensity measure is the pulse amplitude, which neither" \
+  "$B" export pulse.h5 "${oq[@]}" pulse.xml
+grep -qF "(pulse amplitude)" pulse_amplitude.err && fail "pulse_amplitude: $(cat pulse_amplitude.err)" || pass
+run_case success_on_stdout 0 "wrote small.xml (BF.BLOCK." "$B" export small.h5 "${oq[@]}" small.xml
+grep -q "^wrote small.xml" success_on_stdout.out && ! grep -q "wrote" success_on_stdout.err && pass ||
+  fail "success_on_stdout: stdout '$(cat success_on_stdout.out)', stderr '$(cat success_on_stdout.err)'"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -386,8 +386,16 @@ TEST(FragilityExport, RefusesMeasuresTheToolsDoNotKnow) {
   expect_export_refused([&] { pelicun_damage_model(fits, "B"); },
                         {"study.h5", "PGA/(g tan alpha)", "dimensionless", "pelicun"});
   expect_export_refused([&] { openquake_fragility_model(fits, "B"); }, {"study.h5", "OpenQuake"});
-  expect_export_refused([&] { openquake_fragility_model(some_fits("pulse_amplitude", "g"), "B"); },
-                        {"pulse amplitude"});
+  auto pulse = some_fits("pulse_amplitude", "g");
+  pulse.im_label = "pulse amplitude";
+  try {
+    openquake_fragility_model(pulse, "B");
+    ADD_FAILURE() << "the pulse amplitude is exported";
+  } catch (const InvalidInput& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("is the pulse amplitude, which neither"), std::string::npos) << message;
+    EXPECT_EQ(message.find("(pulse amplitude)"), std::string::npos) << message;
+  }
   expect_export_refused([&] { pelicun_damage_model(some_fits("pga", "m/s"), "B"); }, {"m/s"});
   auto sa = some_fits("sa", "g");
   sa.im_period_s = 1.0;
