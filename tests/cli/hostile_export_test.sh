@@ -138,5 +138,11 @@ run_case success_on_stdout 0 "wrote small.xml (BF.BLOCK." "$B" export small.h5 "
 grep -q "^wrote small.xml" success_on_stdout.out && ! grep -q "wrote" success_on_stdout.err && pass ||
   fail "success_on_stdout: stdout '$(cat success_on_stdout.out)', stderr '$(cat success_on_stdout.err)'"
 
+# --- Adaptive pairs far in the tails ---------------------------------------------------------------
+study_with '{"samples_per_level": 10, "design": {"adaptive": {"pair_probability": 1e-300, "max_samples": 1000}}}' >pair.json
+run_case pair_probability_1e-300 2 "pair.json: /design/adaptive/pair_probability: must be in [0.01, 0.49]" \
+  "$B" run pair.json
+[[ ! -e out.h5 ]] && pass || fail "pair_probability_1e-300 wrote out.h5"
+
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]
