@@ -27,9 +27,18 @@ void require(herr_t status, const Hdf5ReadError& error) {
   if (status < 0) throw error;
 }
 
+// One of HDF5's standard integer or IEEE float types. HDF5 converts any integer or float layout the
+// file describes, and its conversion of a malformed one (a precision or offset past the type's
+// size) reads outside its buffers: only the layouts writers use are read.
 bool numeric(hid_t type) {
-  const H5T_class_t type_class = H5Tget_class(type);
-  return type_class == H5T_FLOAT || type_class == H5T_INTEGER;
+  for (const hid_t standard :
+       {H5T_IEEE_F64LE, H5T_IEEE_F64BE, H5T_IEEE_F32LE, H5T_IEEE_F32BE, H5T_STD_I64LE,
+        H5T_STD_I64BE,  H5T_STD_I32LE,  H5T_STD_I32BE,  H5T_STD_I16LE,  H5T_STD_I16BE,
+        H5T_STD_I8LE,   H5T_STD_I8BE,   H5T_STD_U64LE,  H5T_STD_U64BE,  H5T_STD_U32LE,
+        H5T_STD_U32BE,  H5T_STD_U16LE,  H5T_STD_U16BE,  H5T_STD_U8LE,   H5T_STD_U8BE}) {
+    if (H5Tequal(type, standard) > 0) return true;
+  }
+  return false;
 }
 
 const char* link_kind(H5L_type_t type) {

@@ -27,7 +27,15 @@ cmake --build "$build" --target blockfrag_fuzzers -j "$(nproc)"
 
 targets=("$@")
 if ((${#targets[@]} == 0)); then
-  for source in tests/fuzz/*_fuzzer.cpp; do targets+=("$(basename "$source" .cpp)"); done
+  for source in tests/fuzz/*_fuzzer.cpp; do
+    target=$(basename "$source" .cpp)
+    # hdf5_reader_fuzzer needs BLOCKFRAG_BUILD_DRIVER, which the default fuzz build leaves off.
+    if [ ! -x "$build/tests/fuzz/$target" ] && [ "$target" = hdf5_reader_fuzzer ]; then
+      echo "== $target is not built in $build (it needs BLOCKFRAG_BUILD_DRIVER=ON): skipped"
+      continue
+    fi
+    targets+=("$target")
+  done
 fi
 
 keep_work=${FUZZ_WORK:+yes}
@@ -43,6 +51,8 @@ seeds() {
     two_column_record_fuzzer)
       find tests/data/records tests/data/bad_records -maxdepth 1 -type f \
         ! -iname '*.at2' ! -name '*.json' ! -name '*.py' ;;
+    hdf5_reader_fuzzer)
+      ls tests/data/study_outputs/*.h5 ;;
     *)
       ls tests/data/bad_scenes/*.json tests/data/bad_studies/*.json tests/data/pulse_scenes/*.json \
         tests/data/records/*.json configs/*.json ;;
@@ -51,6 +61,7 @@ seeds() {
 dictionary() {
   case "$1" in
     *_record_fuzzer) echo tests/fuzz/records.dict ;;
+    hdf5_reader_fuzzer) echo tests/fuzz/hdf5.dict ;;
     *) echo tests/fuzz/json.dict ;;
   esac
 }
@@ -63,6 +74,7 @@ run_target() {
   local rc=0
   # TMPDIR: each target's private record folder (tests/fuzz/fuzz_support.hpp) is made in there.
   TMPDIR="$tmp" UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp" \
     "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -dict="$(dictionary "$target")" -artifact_prefix="$artifacts" -print_final_stats=1 \
     ${FUZZ_ARGS:-} "$corpus" >"$work/$target.log" 2>&1 || rc=$?

@@ -7,6 +7,7 @@
 
 #include <hdf5.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -133,6 +134,31 @@ TEST(Hdf5Reader, RefusesMoreThanTheCallerAccepts) {
   expect_read_refused([&] { reader.string_attribute("/g", "text", 11); },
                       {"extent.h5", "attribute text of /g", "more than 11"});
   EXPECT_EQ(reader.string_attribute("/g", "text", 12), "twelve chars");
+}
+
+// HDF5 converts any integer layout a file describes to double, and reads outside its buffers for a
+// malformed one (found by tests/fuzz/hdf5_reader_fuzzer.cpp): only standard layouts are read.
+TEST(Hdf5Reader, ReadsOnlyStandardNumberTypes) {
+  TemporaryFolder folder;
+  const auto path = folder.path() / "types.h5";
+  write_base(path);
+  {
+    const RawFile raw(path);
+    const hid_t type = H5Tcopy(H5T_STD_I32LE);
+    H5Tset_precision(type, 20);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attribute = H5Acreate_by_name(raw.id(), "/g", "odd", type, space, H5P_DEFAULT,
+                                              H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(attribute, 0);
+    const std::int32_t value = 5;
+    H5Awrite(attribute, H5T_NATIVE_INT32, &value);
+    H5Aclose(attribute);
+    H5Sclose(space);
+    H5Tclose(type);
+  }
+  const Hdf5Reader reader(path);
+  expect_read_refused([&] { reader.number_attribute("/g", "odd"); },
+                      {"types.h5", "attribute odd of /g is not a number"});
 }
 
 TEST(Hdf5Reader, RefusesFilesHdf5CannotOpen) {
