@@ -7,17 +7,16 @@
 #include <vector>
 
 #include "engine/errors.hpp"
-#include "mpi_driver/cli/exit_codes.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/fragility_export.hpp"
 #include "mpi_driver/io/fragility_fits.hpp"
-#include "mpi_driver/io/read_deadline.hpp"
+#include "mpi_driver/io/isolated_fits.hpp"
 
 namespace blockfrag {
 namespace {
 
 // Reading a study's fits takes a fraction of a second; a file HDF5 is still reading after this
-// long is a damaged one it loops on (mpi_driver/io/read_deadline.hpp).
+// long is a damaged one it loops on (mpi_driver/io/read_in_child.hpp).
 constexpr std::chrono::milliseconds read_limit{10'000};
 
 // A file the export may write: its folder usable, not a folder itself, not the study's output.
@@ -60,10 +59,7 @@ void prepare_folder(const std::filesystem::path& folder) {
 }  // namespace
 
 int run_export(const ExportOptions& options, std::ostream& out, std::ostream& log) {
-  const FragilityFits all = [&] {
-    const ReadDeadline deadline(options.results.string(), read_limit, exit_code_bad_input);
-    return read_fragility_fits(options.results);
-  }();
+  const FragilityFits all = read_fragility_fits_isolated(options.results, read_limit);
   std::vector<std::string> left_out;
   const FragilityFits fits = exportable_fits(all, options.fitted_only, left_out);
   const std::string id = options.id ? *options.id : default_export_id(fits);

@@ -127,10 +127,15 @@ nothing_written beta_denormal beta_denormal.h5
 
 # --- Damaged files ---------------------------------------------------------------------------------
 run_case truncated 2 "truncated.h5: HDF5 cannot open it" "$B" export truncated.h5 "${oq[@]}" truncated.xml
-# HDF5 1.10 loops forever on this file's global heap (found by tests/fuzz/hdf5_reader_fuzzer.cpp).
+# HDF5 1.10 loops forever on the first file's global heap and reads freed memory iterating the
+# second's attributes (found by tests/fuzz/hdf5_reader_fuzzer.cpp): export reads in a child.
+findings=$BLOCKFRAG_SOURCE_DIR/tests/data/fuzz_findings
 run_case global_heap_loop 2 "hdf5_global_heap_loop.h5: still not read after 10 s: a damaged file" \
-  "$B" export "$BLOCKFRAG_SOURCE_DIR/tests/data/fuzz_findings/hdf5_global_heap_loop.h5" "${oq[@]}" loop.xml
+  "$B" export "$findings/hdf5_global_heap_loop.h5" "${oq[@]}" loop.xml
 nothing_written global_heap_loop loop.h5
+run_case attribute_use_after_free 2 "hdf5_attribute_use_after_free.h5: " \
+  "$B" export "$findings/hdf5_attribute_use_after_free.h5" "${oq[@]}" freed.xml
+nothing_written attribute_use_after_free freed.h5
 run_case flipped_bytes 2 "flipped.h5: HDF5 cannot open /fragility/slide_5cm" \
   "$B" export flipped.h5 "${oq[@]}" flipped.xml
 

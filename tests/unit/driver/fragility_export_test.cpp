@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,7 @@
 #include "mpi_driver/io/fragility_fits.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
 #include "mpi_driver/io/hdf5_reader.hpp"
+#include "mpi_driver/io/isolated_fits.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace blockfrag {
@@ -172,6 +174,41 @@ TEST(FragilityFits, ReadsTheStatesInSeverityOrder) {
   EXPECT_EQ(fits.crossing_pairs[0].first, "overturn");
   EXPECT_EQ(fits.crossing_pairs[0].second, "rock_half");
   EXPECT_EQ(slide.im, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
+}
+
+// Export reads in a child process; the fits come back as they are read, NaN and all.
+TEST(FragilityFits, ReadInAChildTheSame) {
+  TemporaryFolder folder;
+  const auto path = folder.path() / "study.h5";
+  auto states = three_states;
+  states.push_back({"a_never", "residual_slide", 0.5, nan, nan, "no_exceedances"});
+  write_fits_file(path, states, "slide_5cm,rock_half,overturn");
+  const FragilityFits direct = read_fragility_fits(path);
+  const FragilityFits isolated = read_fragility_fits_isolated(path, std::chrono::seconds(10));
+  EXPECT_EQ(isolated.source, direct.source);
+  EXPECT_EQ(isolated.config_hash, direct.config_hash);
+  EXPECT_EQ(isolated.im_label, direct.im_label);
+  EXPECT_EQ(isolated.im_period_s, direct.im_period_s);
+  EXPECT_EQ(isolated.crossing_pairs, direct.crossing_pairs);
+  ASSERT_EQ(isolated.states.size(), direct.states.size());
+  for (std::size_t k = 0; k < direct.states.size(); ++k) {
+    const auto& a = isolated.states[k];
+    const auto& b = direct.states[k];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.type, b.type);
+    EXPECT_EQ(a.fit_status, b.fit_status);
+    EXPECT_EQ(a.threshold, b.threshold);
+    EXPECT_TRUE(a.median == b.median || (std::isnan(a.median) && std::isnan(b.median))) << a.name;
+    EXPECT_TRUE(a.beta == b.beta || (std::isnan(a.beta) && std::isnan(b.beta))) << a.name;
+    EXPECT_EQ(a.deviance, b.deviance);
+    EXPECT_EQ(a.gof_p_value, b.gof_p_value);
+    EXPECT_EQ(a.overturned_exceeds, b.overturned_exceeds);
+    EXPECT_EQ(a.im, b.im);
+  }
+  write_fits_file(folder.path() / "twice.h5", three_states, "overturn,overturn");
+  expect_export_refused(
+      [&] { read_fragility_fits_isolated(folder.path() / "twice.h5", std::chrono::seconds(10)); },
+      {"twice.h5", "twice"});
 }
 
 TEST(FragilityFits, WithoutSeverityOrderSortsByMedianUnfittedLast) {

@@ -1,0 +1,18 @@
+// A study output's fits read in a child process (read_in_child.hpp): HDF5 is not safe on a
+// damaged file, so `blockfrag export` reads the file where a crash or an endless loop of the
+// library cannot touch its own memory, and gets the fits back as JSON.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+
+#include "mpi_driver/io/fragility_fits.hpp"
+
+namespace blockfrag {
+
+// read_fragility_fits(path), and its refusals; also InvalidInput naming the file when reading it
+// crashes HDF5 or takes longer than `limit`.
+FragilityFits read_fragility_fits_isolated(const std::filesystem::path& path,
+                                           std::chrono::milliseconds limit);
+
+}  // namespace blockfrag

@@ -1,0 +1,83 @@
+// read_in_child: the child's text comes back; its refusal comes back as InvalidInput and any other
+// exception as Error; a child that crashes or does not finish in time is a damaged file, named;
+// and nothing the child does reaches the parent's memory.
+#include "mpi_driver/io/read_in_child.hpp"
+
+#include <chrono>
+#include <csignal>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "engine/errors.hpp"
+
+namespace blockfrag {
+namespace {
+
+using namespace std::chrono_literals;
+
+// Expects `call` to throw InvalidInput whose message holds the fragment.
+template <typename Call>
+void expect_refused(Call call, const std::string& fragment) {
+  try {
+    call();
+    ADD_FAILURE() << "no InvalidInput";
+  } catch (const InvalidInput& error) {
+    EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos) << error.what();
+  }
+}
+
+TEST(ReadInChild, GivesBackTheChildsTextAndNothingElse) {
+  int touched = 0;
+  const std::string text = read_in_child("f.h5", 5000ms, [&] {
+    touched = 1;
+    std::string answer(100003, 'x');
+    answer.replace(100000, 3, "end");
+    return answer;
+  });
+  EXPECT_EQ(text.size(), 100003u);
+  EXPECT_EQ(text.substr(100000), "end");
+  EXPECT_EQ(touched, 0);  // the child's memory is its own
+}
+
+TEST(ReadInChild, RefusalsAndFailuresComeBack) {
+  expect_refused(
+      [] {
+        read_in_child("f.h5", 5000ms, []() -> std::string { throw InvalidInput("f.h5: bad"); });
+      },
+      "f.h5: bad");
+  try {
+    read_in_child("f.h5", 5000ms, []() -> std::string { throw std::runtime_error("no memory"); });
+    ADD_FAILURE() << "no Error";
+  } catch (const InvalidInput&) {
+    ADD_FAILURE() << "a failure became a refusal";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(), "no memory");
+  }
+}
+
+TEST(ReadInChild, ACrashOrAHangIsADamagedFile) {
+  expect_refused(
+      [] {
+        read_in_child("crash.h5", 5000ms, []() -> std::string {
+          std::raise(SIGSEGV);
+          return "";
+        });
+      },
+      "crash.h5: reading it crashed HDF5 (Segmentation fault): a damaged file");
+  const auto start = std::chrono::steady_clock::now();
+  expect_refused(
+      [] {
+        read_in_child("loop.h5", 300ms, []() -> std::string {
+          std::this_thread::sleep_for(30s);
+          return "";
+        });
+      },
+      "loop.h5: still not read after 0.3 s: a damaged file");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, 5s);
+}
+
+}  // namespace
+}  // namespace blockfrag
