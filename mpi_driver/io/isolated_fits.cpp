@@ -112,8 +112,9 @@ FragilityFits json_fits(const Json& json, const std::string& source) {
 
 FragilityFits read_fragility_fits_isolated(const std::filesystem::path& path,
                                            std::chrono::milliseconds limit) {
-  const std::string answer = read_in_child(
-      path.string(), limit, [&] { return fits_json(read_fragility_fits(path)).dump(); });
+  const std::string answer = read_in_child(path.string(), limit, fits_memory_bytes, [&] {
+    return fits_json(read_fragility_fits(path)).dump();
+  });
   return json_fits(Json::parse(answer), path.string());
 }
 

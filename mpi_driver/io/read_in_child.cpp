@@ -7,7 +7,9 @@
 #include <csignal>
 #include <cstring>
 #include <exception>
+#include <new>
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include "engine/errors.hpp"
@@ -32,10 +34,18 @@ void send_answer(int fd, const std::string& text) {
   }
 }
 
-[[noreturn]] void answer_and_exit(int fd, const std::function<std::string()>& read) {
+[[noreturn]] void answer_and_exit(int fd, const std::string& name, std::size_t memory_bytes,
+                                  const std::function<std::string()>& read) {
+  if (child_memory_limited) {
+    const rlimit memory{memory_bytes, memory_bytes};
+    ::setrlimit(RLIMIT_AS, &memory);
+  }
   std::string answer;
   try {
     answer = answer_ok + read();
+  } catch (const std::bad_alloc&) {
+    answer = answer_refused + name + ": reading it takes more than " +
+             std::to_string(memory_bytes) + " bytes of memory: a damaged file";
   } catch (const InvalidInput& error) {
     answer = answer_refused + std::string(error.what());
   } catch (const std::exception& error) {
@@ -72,17 +82,17 @@ class Pipe {
 }  // namespace
 
 std::string read_in_child(const std::string& file, std::chrono::milliseconds limit,
-                          const std::function<std::string()>& read) {
+                          std::size_t memory_bytes, const std::function<std::string()>& read) {
+  const std::string name = printable_excerpt(file, 200);
   Pipe pipe;
   const pid_t child = ::fork();
   if (child < 0)
     throw Error(std::string("cannot fork to read ") + file + ": " + std::strerror(errno));
   if (child == 0) {
     ::close(pipe.read_end());
-    answer_and_exit(pipe.write_end(), read);
+    answer_and_exit(pipe.write_end(), name, memory_bytes, read);
   }
   pipe.close_write_end();
-  const std::string name = printable_excerpt(file, 200);
   const auto deadline = std::chrono::steady_clock::now() + limit;
   std::string answer;
   bool finished = false;

@@ -7,16 +7,33 @@
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <functional>
 #include <string>
 
 namespace blockfrag {
 
-// Runs `read` in a forked child and returns the text it returned. An InvalidInput the child
-// throws is thrown again here with its message, another exception as Error; a child killed by a
-// signal, or still reading after `limit`, is an InvalidInput naming `file`. Call it before any
-// thread or MPI is started (fork copies only the calling thread).
+// Whether the child's address space is limited: AddressSanitizer reserves terabytes of it for its
+// shadow memory, so a sanitized build runs the child without the limit.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool child_memory_limited = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool child_memory_limited = false;
+#else
+inline constexpr bool child_memory_limited = true;
+#endif
+#else
+inline constexpr bool child_memory_limited = true;
+#endif
+
+// Runs `read` in a forked child, its address space limited to `memory_bytes` (a damaged file can
+// make HDF5 allocate what the file declares: 6 GB for a 17 kB file), and returns the text it
+// returned. An InvalidInput the child throws is thrown again here with its message, another
+// exception as Error; a child killed by a signal, out of memory, or still reading after `limit`
+// is an InvalidInput naming `file`. Call it before any thread or MPI is started (fork copies only
+// the calling thread).
 std::string read_in_child(const std::string& file, std::chrono::milliseconds limit,
-                          const std::function<std::string()>& read);
+                          std::size_t memory_bytes, const std::function<std::string()>& read);
 
 }  // namespace blockfrag

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -17,6 +18,8 @@ namespace blockfrag {
 namespace {
 
 using namespace std::chrono_literals;
+
+constexpr std::size_t memory = std::size_t{1} << 30;
 
 // Expects `call` to throw InvalidInput whose message holds the fragment.
 template <typename Call>
@@ -31,7 +34,7 @@ void expect_refused(Call call, const std::string& fragment) {
 
 TEST(ReadInChild, GivesBackTheChildsTextAndNothingElse) {
   int touched = 0;
-  const std::string text = read_in_child("f.h5", 5000ms, [&] {
+  const std::string text = read_in_child("f.h5", 5000ms, memory, [&] {
     touched = 1;
     std::string answer(100003, 'x');
     answer.replace(100000, 3, "end");
@@ -45,11 +48,13 @@ TEST(ReadInChild, GivesBackTheChildsTextAndNothingElse) {
 TEST(ReadInChild, RefusalsAndFailuresComeBack) {
   expect_refused(
       [] {
-        read_in_child("f.h5", 5000ms, []() -> std::string { throw InvalidInput("f.h5: bad"); });
+        read_in_child("f.h5", 5000ms, memory,
+                      []() -> std::string { throw InvalidInput("f.h5: bad"); });
       },
       "f.h5: bad");
   try {
-    read_in_child("f.h5", 5000ms, []() -> std::string { throw std::runtime_error("no memory"); });
+    read_in_child("f.h5", 5000ms, memory,
+                  []() -> std::string { throw std::runtime_error("no memory"); });
     ADD_FAILURE() << "no Error";
   } catch (const InvalidInput&) {
     ADD_FAILURE() << "a failure became a refusal";
@@ -61,7 +66,7 @@ TEST(ReadInChild, RefusalsAndFailuresComeBack) {
 TEST(ReadInChild, ACrashOrAHangIsADamagedFile) {
   expect_refused(
       [] {
-        read_in_child("crash.h5", 5000ms, []() -> std::string {
+        read_in_child("crash.h5", 5000ms, memory, []() -> std::string {
           std::raise(SIGSEGV);
           return "";
         });
@@ -70,13 +75,25 @@ TEST(ReadInChild, ACrashOrAHangIsADamagedFile) {
   const auto start = std::chrono::steady_clock::now();
   expect_refused(
       [] {
-        read_in_child("loop.h5", 300ms, []() -> std::string {
+        read_in_child("loop.h5", 300ms, memory, []() -> std::string {
           std::this_thread::sleep_for(30s);
           return "";
         });
       },
       "loop.h5: still not read after 0.3 s: a damaged file");
   EXPECT_LT(std::chrono::steady_clock::now() - start, 5s);
+}
+
+TEST(ReadInChild, MoreMemoryThanItsLimitIsADamagedFile) {
+  if (!child_memory_limited) GTEST_SKIP() << "a sanitized build does not limit the child's memory";
+  expect_refused(
+      [] {
+        read_in_child("big.h5", 5000ms, std::size_t{1} << 30, [] {
+          std::vector<char> huge(std::size_t{2} << 30, 'x');
+          return std::string(1, huge.back());
+        });
+      },
+      "big.h5: reading it takes more than 1073741824 bytes of memory: a damaged file");
 }
 
 }  // namespace
