@@ -184,7 +184,7 @@ void add_export_command(CLI::App& app, std::function<int()>& command) {
                     "refusing a limit state without a fit");
   export_->callback([options, format, &command] {
     options->format = *format == "openquake" ? ExportFormat::openquake : ExportFormat::pelicun;
-    command = [options] { return run_export(*options, std::cerr); };
+    command = [options] { return run_export(*options, std::cout, std::cerr); };
   });
 }
 

@@ -1,6 +1,7 @@
 #include "mpi_driver/cli/export_command.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <system_error>
 #include <vector>
@@ -9,10 +10,15 @@
 #include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/io/fragility_export.hpp"
 #include "mpi_driver/io/fragility_fits.hpp"
+#include "mpi_driver/io/isolated_fits.hpp"
 #include "mpi_driver/io/output_target.hpp"
 
 namespace blockfrag {
 namespace {
+
+// Reading a study's fits takes a fraction of a second; a file HDF5 is still reading after this
+// long is a damaged one it loops on (mpi_driver/io/read_in_child.hpp).
+constexpr std::chrono::milliseconds read_limit{10'000};
 
 // What an earlier export wrote, the one kind of file at each name an export replaces.
 bool is_openquake_export(const std::filesystem::path& path) {
@@ -55,8 +61,8 @@ void prepare_folder(const std::filesystem::path& folder) {
 
 }  // namespace
 
-int run_export(const ExportOptions& options, std::ostream& log) {
-  const FragilityFits all = read_fragility_fits(options.results);
+int run_export(const ExportOptions& options, std::ostream& out, std::ostream& log) {
+  const FragilityFits all = read_fragility_fits_isolated(options.results, read_limit);
   std::vector<std::string> left_out;
   const FragilityFits fits = exportable_fits(all, options.fitted_only, left_out);
   const std::string id = options.id ? *options.id : default_export_id(fits);
@@ -73,7 +79,7 @@ int run_export(const ExportOptions& options, std::ostream& log) {
         {{options.results, "the study output"}});
     write_file_atomically(csv, model.csv);
     write_file_atomically(json, model.json);
-    log << "wrote " << csv.string() << " and " << json.string();
+    out << "wrote " << csv.string() << " and " << json.string();
   } else {
     const std::string model = openquake_fragility_model(fits, id);
     check_output_targets({{options.output, "--output",
@@ -82,10 +88,11 @@ int run_export(const ExportOptions& options, std::ostream& log) {
                            is_openquake_export}},
                          {{options.results, "the study output"}});
     write_file_atomically(options.output, model);
-    log << "wrote " << options.output.string();
+    out << "wrote " << options.output.string();
   }
-  log << " (" << id << ": " << fits.states.size() << " limit state"
+  out << " (" << id << ": " << fits.states.size() << " limit state"
       << (fits.states.size() == 1 ? "" : "s") << ", least severe first)\n";
+  out.flush();
   const auto exported = [&](const std::string& name) {
     return std::any_of(fits.states.begin(), fits.states.end(),
                        [&](const FragilityFit& state) { return state.name == name; });

@@ -24,9 +24,10 @@ struct ExportOptions {
   bool fitted_only = false;
 };
 
-// Returns 0 and reports what it wrote on `log`. Throws InvalidInput for a file that is not a
-// study output with fits, a measure or limit state that cannot be exported, or an output path that
-// cannot be used; FileError when a file cannot be written.
-int run_export(const ExportOptions& options, std::ostream& log);
+// Returns 0 and reports what it wrote on `out`, its notes (fits that cross, states left out) on
+// `log`. Throws InvalidInput for a file that is not a study output with fits, a measure or limit
+// state that cannot be exported, or an output path that cannot be used; FileError when a file
+// cannot be written.
+int run_export(const ExportOptions& options, std::ostream& out, std::ostream& log);
 
 }  // namespace blockfrag

@@ -9,8 +9,8 @@ AdaptiveDesign read_adaptive_design(ObjectReader reader) {
   design.limit_state = reader.string_or("limit_state", "");
   design.target_relative_width = reader.number_or(
       "target_relative_width", design.target_relative_width, Range::left_open(0.0, 2.0));
-  design.pair_probability =
-      reader.number_or("pair_probability", design.pair_probability, Range::open(0.0, 0.5));
+  design.pair_probability = reader.number_or("pair_probability", design.pair_probability,
+                                             Range::closed(kMinPairProbability, 0.49));
   design.max_samples =
       reader
           .required_integer("max_samples",

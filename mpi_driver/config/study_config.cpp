@@ -201,9 +201,11 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
   }
 }
 
+}  // namespace
+
 // An HDF5 group name of its own: starts with a letter, digit or '_' ("." and ".." name the group
 // itself and its parent), then letters, digits, '_', '-' and '.'.
-bool valid_group_name(const std::string& name) {
+bool valid_limit_state_name(const std::string& name) {
   if (name.empty() || !(std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_'))
     return false;
   for (const char c : name) {
@@ -213,6 +215,8 @@ bool valid_group_name(const std::string& name) {
   return true;
 }
 
+namespace {
+
 void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& config) {
   if (array.valid() && array.size() == 0)
     root.add_error("limit_states", "must name at least one limit state");
@@ -221,7 +225,7 @@ void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& confi
     if (!reader.valid()) continue;
     LimitState state;
     const auto name = reader.required_string("name");
-    if (name && !valid_group_name(*name)) {
+    if (name && !valid_limit_state_name(*name)) {
       reader.add_error(
           "name",
           "must start with a letter, digit or '_', then letters, digits, '_', '-' or '.' (got \"" +

@@ -86,6 +86,9 @@ struct LimitState {
 };
 
 const char* limit_state_kind_name(LimitStateKind kind);
+// The rule of a limit state's name (it names the HDF5 group /fragility/<name>): a letter, digit
+// or '_', then letters, digits, '_', '-' and '.'.
+bool valid_limit_state_name(const std::string& name);
 
 struct StudyConfig {
   // Its ground motion is a pulse, or a recorded motion; with a record suite, `suite` holds the

@@ -76,9 +76,8 @@ ToolMeasure tool_measure(const FragilityFits& fits, const std::string& tool) {
     measure = {"Peak Spectral Acceleration|" + period, "g", "SA(" + period + ")", "g", 1.0};
   } else if (fits.im_name == "pulse_amplitude") {
     throw refuse(
-        "its intensity measure is the pulse amplitude (" + fits.im_label +
-        "), which neither pelicun nor OpenQuake knows; name \"pga\", \"pgv\" or \"sa\" in the "
-        "study's intensity_measure");
+        "its intensity measure is the pulse amplitude, which neither pelicun nor OpenQuake knows; "
+        "name \"pga\", \"pgv\" or \"sa\" in the study's intensity_measure");
   } else if (fits.im_name == "pga_over_g_tan_alpha") {
     throw refuse("its intensity measure " + fits.im_label +
                  " is dimensionless (PGA scaled by the block's own g tan alpha), which neither "

@@ -9,6 +9,12 @@
 //                      (0 or 1); dataset im (levels)
 // A file without severity_order has its groups ordered by fitted median (unfitted ones last, by
 // name); groups that severity_order does not name follow the ones it names.
+// Nothing is trusted: every member of /fragility is a limit state name by the study's rule, every
+// text read is printable ASCII of a bounded length, config_hash is 16 hexadecimal digits, im holds
+// at most a study's number of levels (checked before it is read), each finite and > 0, a
+// max_rotation's or residual_slide's threshold is finite and > 0, and a fit with status "ok" has a
+// median in [1e-6, 1e6] (the measure's unit) and a beta in [1e-6, 10]. Objects are reached through
+// hard links only (hdf5_reader.hpp).
 #pragma once
 
 #include <filesystem>
@@ -51,9 +57,9 @@ struct FragilityFits {
   std::vector<std::pair<std::string, std::string>> crossing_pairs;
 };
 
-// Throws InvalidInput naming the file when it is missing, not a regular file, not HDF5, not a
-// blockfrag study output, has no /fragility, or breaks the layout above (a fit with status "ok"
-// must have a finite median > 0 and beta > 0); Hdf5Error when HDF5 cannot open it.
+// Throws InvalidInput naming the file (and the object) when it is missing, not a regular file, not
+// HDF5, truncated or damaged, not a blockfrag study output, has no /fragility, or breaks the
+// layout and rules above; a quoted text is a short printable excerpt.
 FragilityFits read_fragility_fits(const std::filesystem::path& path);
 
 }  // namespace blockfrag

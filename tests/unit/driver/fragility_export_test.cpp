@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,7 @@
 #include "mpi_driver/io/fragility_fits.hpp"
 #include "mpi_driver/io/hdf5_file.hpp"
 #include "mpi_driver/io/hdf5_reader.hpp"
+#include "mpi_driver/io/isolated_fits.hpp"
 #include "tests/support/temporary_folder.hpp"
 
 namespace blockfrag {
@@ -55,15 +57,17 @@ struct StateSpec {
 
 // A study output's root marks and /fragility, as study_output.cpp lays them out.
 void write_fits_file(const std::filesystem::path& path, const std::vector<StateSpec>& states,
-                     const std::string& severity_order, bool fragility = true) {
+                     const std::string& severity_order, bool fragility = true,
+                     const std::string& config_hash = "00000000deadbeef",
+                     const std::string& im_label = "PGA") {
   Hdf5Writer file(path);
   file.set_attribute("/", "config", std::string("{\"seed\": 7}"));
-  file.set_attribute("/", "config_hash", std::string("00000000deadbeef"));
+  file.set_attribute("/", "config_hash", config_hash);
   if (fragility) {
     file.create_group("/fragility");
     file.set_attribute("/fragility", "im_name", std::string("pga"));
     file.set_attribute("/fragility", "im_units", std::string("g"));
-    file.set_attribute("/fragility", "im_label", std::string("PGA"));
+    file.set_attribute("/fragility", "im_label", im_label);
     if (!severity_order.empty()) {
       file.set_attribute("/fragility", "severity_order", severity_order);
     }
@@ -109,12 +113,12 @@ TEST(Hdf5Reader, ReadsWhatTheWriterWrites) {
   }
   EXPECT_TRUE(Hdf5Reader::is_hdf5(path));
   const Hdf5Reader reader(path);
-  EXPECT_EQ(reader.string_attribute("/", "text"), "caf\xc3\xa9, 5 %");
+  EXPECT_EQ(reader.string_attribute("/", "text", 64), "caf\xc3\xa9, 5 %");
   EXPECT_EQ(reader.number_attribute("/", "count"), 42.0);
   EXPECT_EQ(reader.number_attribute("/g", "x"), 0.1);
-  EXPECT_EQ(reader.number_dataset("/g/values"), (std::vector<double>{1.5, -2.25, 1e-300}));
-  EXPECT_EQ(reader.number_dataset("/g/counts"), (std::vector<double>{3.0, 4.0}));
-  EXPECT_TRUE(reader.number_dataset("/g/empty").empty());
+  EXPECT_EQ(reader.number_dataset("/g/values", 3), (std::vector<double>{1.5, -2.25, 1e-300}));
+  EXPECT_EQ(reader.number_dataset("/g/counts", 2), (std::vector<double>{3.0, 4.0}));
+  EXPECT_TRUE(reader.number_dataset("/g/empty", 0).empty());
   EXPECT_EQ(reader.member_names("/g"),
             (std::vector<std::string>{"counts", "empty", "inner", "values"}));
   EXPECT_TRUE(reader.has_object("/"));
@@ -126,9 +130,9 @@ TEST(Hdf5Reader, ReadsWhatTheWriterWrites) {
   EXPECT_TRUE(reader.has_attribute("/g", "x"));
   EXPECT_FALSE(reader.has_attribute("/g", "y"));
   EXPECT_FALSE(reader.has_attribute("/missing", "x"));
-  EXPECT_THROW(reader.number_attribute("/", "text"), Hdf5Error);
-  EXPECT_THROW(reader.string_attribute("/", "count"), Hdf5Error);
-  EXPECT_THROW(reader.number_dataset("/g/missing"), Hdf5Error);
+  EXPECT_THROW(reader.number_attribute("/", "text"), Hdf5ReadError);
+  EXPECT_THROW(reader.string_attribute("/", "count", 64), Hdf5ReadError);
+  EXPECT_THROW(reader.number_dataset("/g/missing", 1), Hdf5ReadError);
 }
 
 TEST(Hdf5Reader, TellsHdf5FromOtherFiles) {
@@ -136,7 +140,7 @@ TEST(Hdf5Reader, TellsHdf5FromOtherFiles) {
   std::ofstream(folder.path() / "text.h5") << "not HDF5\n";
   EXPECT_FALSE(Hdf5Reader::is_hdf5(folder.path() / "text.h5"));
   EXPECT_FALSE(Hdf5Reader::is_hdf5(folder.path() / "absent.h5"));
-  EXPECT_THROW(Hdf5Reader(folder.path() / "text.h5"), Hdf5Error);
+  EXPECT_THROW(Hdf5Reader(folder.path() / "text.h5"), Hdf5ReadError);
 }
 
 TEST(FragilityFits, ReadsTheStatesInSeverityOrder) {
@@ -170,6 +174,41 @@ TEST(FragilityFits, ReadsTheStatesInSeverityOrder) {
   EXPECT_EQ(fits.crossing_pairs[0].first, "overturn");
   EXPECT_EQ(fits.crossing_pairs[0].second, "rock_half");
   EXPECT_EQ(slide.im, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
+}
+
+// Export reads in a child process; the fits come back as they are read, NaN and all.
+TEST(FragilityFits, ReadInAChildTheSame) {
+  TemporaryFolder folder;
+  const auto path = folder.path() / "study.h5";
+  auto states = three_states;
+  states.push_back({"a_never", "residual_slide", 0.5, nan, nan, "no_exceedances"});
+  write_fits_file(path, states, "slide_5cm,rock_half,overturn");
+  const FragilityFits direct = read_fragility_fits(path);
+  const FragilityFits isolated = read_fragility_fits_isolated(path, std::chrono::seconds(10));
+  EXPECT_EQ(isolated.source, direct.source);
+  EXPECT_EQ(isolated.config_hash, direct.config_hash);
+  EXPECT_EQ(isolated.im_label, direct.im_label);
+  EXPECT_EQ(isolated.im_period_s, direct.im_period_s);
+  EXPECT_EQ(isolated.crossing_pairs, direct.crossing_pairs);
+  ASSERT_EQ(isolated.states.size(), direct.states.size());
+  for (std::size_t k = 0; k < direct.states.size(); ++k) {
+    const auto& a = isolated.states[k];
+    const auto& b = direct.states[k];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.type, b.type);
+    EXPECT_EQ(a.fit_status, b.fit_status);
+    EXPECT_EQ(a.threshold, b.threshold);
+    EXPECT_TRUE(a.median == b.median || (std::isnan(a.median) && std::isnan(b.median))) << a.name;
+    EXPECT_TRUE(a.beta == b.beta || (std::isnan(a.beta) && std::isnan(b.beta))) << a.name;
+    EXPECT_EQ(a.deviance, b.deviance);
+    EXPECT_EQ(a.gof_p_value, b.gof_p_value);
+    EXPECT_EQ(a.overturned_exceeds, b.overturned_exceeds);
+    EXPECT_EQ(a.im, b.im);
+  }
+  write_fits_file(folder.path() / "twice.h5", three_states, "overturn,overturn");
+  expect_export_refused(
+      [&] { read_fragility_fits_isolated(folder.path() / "twice.h5", std::chrono::seconds(10)); },
+      {"twice.h5", "twice"});
 }
 
 TEST(FragilityFits, WithoutSeverityOrderSortsByMedianUnfittedLast) {
@@ -211,6 +250,79 @@ TEST(FragilityFits, RefusesWhatIsNotAStudyOutputWithFits) {
   write_fits_file(dir / "nan.h5", {{"overturn", "overturning", 0.0, nan, 0.3}}, "overturn");
   expect_export_refused([&] { read_fragility_fits(dir / "nan.h5"); },
                         {"nan.h5", "/fragility/overturn"});
+}
+
+// What the exported files would carry: a limit-state name that splits OpenQuake's <limitStates>
+// or breaks the XML, a text with control characters, a config hash that is not one, a fit whose
+// OpenQuake moments overflow or underflow, levels that are not levels. Each is refused naming the
+// file and the object, quoting no more than a short printable excerpt.
+TEST(FragilityFits, RefusesWhatWouldMakeAnInvalidExport) {
+  TemporaryFolder folder;
+  const auto& dir = folder.path();
+  const auto refused = [&](const std::string& file, const std::vector<StateSpec>& states,
+                           const std::string& order, const std::vector<std::string>& fragments,
+                           const std::string& hash = "00000000deadbeef",
+                           const std::string& label = "PGA") {
+    write_fits_file(dir / file, states, order, true, hash, label);
+    expect_export_refused([&] { read_fragility_fits(dir / file); }, fragments);
+  };
+  // The name as the message quotes it: bytes outside printable ASCII become '?'.
+  for (const auto& [name, shown] :
+       {std::pair{"over turn", "over turn"}, std::pair{"over\nturn", "over?turn"},
+        std::pair{"over\x01turn", "over?turn"}, std::pair{"over\xffturn", "over?turn"}}) {
+    refused(
+        "name.h5", {{name, "overturning", 0.0, 1.5, 0.25}}, name,
+        {"name.h5", "/fragility has a member \"" + std::string(shown) + "\"", "limit state name"});
+    std::filesystem::remove(dir / "name.h5");
+  }
+  refused("beta_40.h5", {{"overturn", "overturning", 0.0, 1.5, 40.0}}, "overturn",
+          {"beta_40.h5", "/fragility/overturn", "beta 40", "[1e-06, 10]"});
+  refused("beta_denormal.h5", {{"overturn", "overturning", 0.0, 1.5, 5e-324}}, "overturn",
+          {"beta_denormal.h5", "beta 5e-324"});
+  refused("median_huge.h5", {{"overturn", "overturning", 0.0, 1e300, 0.3}}, "overturn",
+          {"median_huge.h5", "median 1e+300"});
+  refused("threshold.h5", {{"slide", "residual_slide", nan, 1.5, 0.3}}, "slide",
+          {"threshold.h5", "/fragility/slide", "threshold nan"});
+  refused("hash.h5", three_states, "", {"hash.h5", "config_hash", "\"=cmd|x\"", "16 hexadecimal"},
+          "=cmd|x");
+  refused("long_hash.h5", three_states, "", {"long_hash.h5", "config_hash", "more than 64"},
+          std::string(1000, 'a'));
+  refused("label.h5", three_states, "", {"label.h5", "im_label", "\"PGA?<x\""}, "00000000deadbeef",
+          "PGA\n<x");
+  const std::string long_type(60'000, 'x');
+  refused("type.h5", {{"overturn", long_type, 0.0, 1.5, 0.3}}, "overturn",
+          {"type.h5", "attribute type of /fragility/overturn", "60000 bytes long"});
+  try {
+    read_fragility_fits(dir / "type.h5");
+  } catch (const InvalidInput& error) {
+    EXPECT_LT(std::string(error.what()).size(), 300u);
+  }
+  refused("pairs.h5", {{"overturn", "overturning", 0.0, 1.5, 0.25}}, "overturn",
+          {"pairs.h5", "crossing_pairs", "\"overturn,rock_half\"", "not two of its limit states"});
+}
+
+TEST(FragilityFits, RefusesLevelsThatAreNotLevels) {
+  TemporaryFolder folder;
+  const auto path = folder.path() / "levels.h5";
+  {
+    Hdf5Writer file(path);
+    file.set_attribute("/", "config", std::string("{}"));
+    file.set_attribute("/", "config_hash", std::string("00000000deadbeef"));
+    file.create_group("/fragility");
+    for (const char* name : {"im_name", "im_units", "im_label"}) {
+      file.set_attribute("/fragility", name, std::string("pga"));
+    }
+    file.create_group("/fragility/overturn");
+    file.set_attribute("/fragility/overturn", "type", std::string("overturning"));
+    file.set_attribute("/fragility/overturn", "fit_status", std::string("ok"));
+    for (const char* name : {"threshold", "median", "beta"}) {
+      file.set_attribute("/fragility/overturn", name, 0.5);
+    }
+    file.write_column("/fragility/overturn/im", std::vector<double>{0.5, 0.0, 1.0});
+    file.close();
+  }
+  expect_export_refused([&] { read_fragility_fits(path); },
+                        {"levels.h5", "/fragility/overturn/im", "the level 0"});
 }
 
 FragilityFits some_fits(const std::string& im_name, const std::string& units) {
@@ -311,8 +423,16 @@ TEST(FragilityExport, RefusesMeasuresTheToolsDoNotKnow) {
   expect_export_refused([&] { pelicun_damage_model(fits, "B"); },
                         {"study.h5", "PGA/(g tan alpha)", "dimensionless", "pelicun"});
   expect_export_refused([&] { openquake_fragility_model(fits, "B"); }, {"study.h5", "OpenQuake"});
-  expect_export_refused([&] { openquake_fragility_model(some_fits("pulse_amplitude", "g"), "B"); },
-                        {"pulse amplitude"});
+  auto pulse = some_fits("pulse_amplitude", "g");
+  pulse.im_label = "pulse amplitude";
+  try {
+    openquake_fragility_model(pulse, "B");
+    ADD_FAILURE() << "the pulse amplitude is exported";
+  } catch (const InvalidInput& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("is the pulse amplitude, which neither"), std::string::npos) << message;
+    EXPECT_EQ(message.find("(pulse amplitude)"), std::string::npos) << message;
+  }
   expect_export_refused([&] { pelicun_damage_model(some_fits("pga", "m/s"), "B"); }, {"m/s"});
   auto sa = some_fits("sa", "g");
   sa.im_period_s = 1.0;
