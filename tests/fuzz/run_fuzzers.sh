@@ -80,10 +80,12 @@ mode_args() {
 }
 
 # Replays TARGET's saved inputs; each is blockfrag's finding (an escaped exception, or a report
-# whose innermost frame in either libhdf5 or blockfrag's code is blockfrag's), HDF5's, or not
+# whose innermost frame in either libhdf5 or blockfrag's code is blockfrag's), HDF5's, an
+# out-of-memory or a hang whose report holds no frame of either (the reader's own allocations are
+# bounded by the schema's caps, so such a report is set apart, not counted as blockfrag's), or not
 # reproduced alone. Prints the tally; fails when one is blockfrag's.
 triage() {
-  local target=$1 ours=0 library=0 gone=0 input report frame
+  local target=$1 ours=0 library=0 unplaced=0 gone=0 input report frame
   for input in "$work/artifacts/$target"/*; do
     [ -e "$input" ] || continue
     report=$(TMPDIR="$work/tmp/$target" LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp" \
@@ -93,15 +95,23 @@ triage() {
     elif ! grep -qE "ERROR|SUMMARY" <<<"$report"; then
       gone=$((gone + 1))
     else
+      # An out-of-memory past the RSS limit lists the live allocations, largest first: the largest
+      # is the culprit, and a smaller one of blockfrag's beside it is not.
+      if grep -q "Live Heap Allocations" <<<"$report"; then
+        report=$(awk '/byte\(s\) \(/ { n++ } n == 1' <<<"$report")
+      fi
       frame=$(grep -E '^ +#[0-9]+ ' <<<"$report" | grep -E 'libhdf5|blockfrag::' | head -1)
       if [[ $frame == *libhdf5* ]]; then
         library=$((library + 1))
+      elif [[ -z $frame ]] && grep -qE "out-of-memory|timeout|byte\(s\) \(" <<<"$report"; then
+        unplaced=$((unplaced + 1)) && echo "without a frame: $input"
       else
         ours=$((ours + 1)) && echo "blockfrag's: $input"
       fi
     fi
   done
-  echo "$target: saved inputs: $library in libhdf5, $gone not reproduced alone, $ours blockfrag's"
+  echo "$target: saved inputs: $library in libhdf5, $unplaced out-of-memory or hangs without a" \
+    "frame of either, $gone not reproduced alone, $ours blockfrag's"
   ((ours == 0))
 }
 
