@@ -7,6 +7,7 @@
 
 #include "engine/contact/contact_dynamics.hpp"
 #include "engine/contact/impact.hpp"
+#include "engine/contact/settling.hpp"
 #include "engine/errors.hpp"
 #include "engine/tolerances.hpp"
 
@@ -303,9 +304,7 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
   ContactOutcome out;
   out.state = state;
   BlockState& s = out.state;
-  // The settling speed in the gravity the block feels: none where the ground falls faster than g.
-  const double settle_velocity =
-      kSettleVelocity * std::sqrt(std::max(g_ * gravity_factor, 0.0) * geometry_.size());
+  const double settle_velocity = settling_speed(g_ * gravity_factor, geometry_.size());
   if (!resolve_impacts(s, settle_velocity, out)) {
     const bool flat = touches(corner_kinematics(geometry_, s, Corner::left)) &&
                       touches(corner_kinematics(geometry_, s, Corner::right));

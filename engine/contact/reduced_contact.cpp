@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "engine/contact/settling.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
@@ -17,7 +18,7 @@ double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot) {
 HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g)
     : geometry_(geometry),
       impacts_lose_energy_(impacts_lose_energy),
-      settle_velocity_(kSettleVelocity * std::sqrt(g * geometry.size())) {}
+      settle_velocity_(settling_speed(g, geometry.size())) {}
 
 ContactOutcome HousnerRules::rock_on(BlockState s, Corner pivot) const {
   const Vec2 r = geometry_.base_corner_at(pivot, s.theta);

@@ -15,6 +15,7 @@
 
 #include "engine/contact/contact_lcp.hpp"
 #include "engine/contact/planar_impact.hpp"
+#include "engine/contact/settling.hpp"
 #include "engine/errors.hpp"
 #include "engine/integrate/guard_crossing.hpp"
 #include "engine/integrate/root_finding.hpp"
@@ -102,11 +103,8 @@ class SeatSimulation {
 
  private:
   double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
-  // The settling speed now, in the gravity the block feels: none where the ground falls faster
-  // than g.
-  double settle_velocity() const {
-    return kSettleVelocity * std::sqrt(std::max(scene_.g * gravity_factor(t_), 0.0) * R_);
-  }
+  // The settling speed now, in the gravity the block feels.
+  double settle_velocity() const { return settling_speed(scene_.g * gravity_factor(t_), R_); }
   Vec2 applied(double t) const {
     return {motion_.lambda(t) * scene_.g, -scene_.g * gravity_factor(t)};
   }
