@@ -50,7 +50,7 @@ ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& c
       e_(contact.restitution),
       g_(g),
       height_tol_(kContactHeight * geometry.size()),
-      velocity_tol_(kRestingVelocity * std::sqrt(g * geometry.size())) {}
+      velocity_tol_(resting_speed(g, geometry.size())) {}
 
 // Keeps the base's slip velocity (a sticking base stays stuck), drops the rotation and bounce.
 void ContactResolver::lay_flat(BlockState& s, double settle_velocity) const {
@@ -154,8 +154,8 @@ bool ContactResolver::resolve_impacts(BlockState& s, double settle_velocity,
       return true;
     }
     // A bounce that would leave slower than the settling speed is one the rules above end at
-    // its next landing: the landing is plastic at once (a seat's rule too).
-    const double e = -fastest * e_ < settle_velocity ? 0.0 : e_;
+    // its next landing: the landing is plastic at once.
+    const double e = landing_restitution(e_, fastest, settle_velocity);
     const BlockState start = s;
     // The paper's law at the corner that hits; when the block is flat and that would drive the
     // other corner into the ground (a flat landing), both corners take their impulses together.

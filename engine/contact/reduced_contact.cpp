@@ -65,7 +65,7 @@ ContactOutcome HousnerRules::impact(const BlockState& state, Corner pivot, doubl
 }
 
 NewmarkRules::NewmarkRules(const BlockGeometry& geometry, double mu, double g)
-    : mu_(mu), velocity_tol_(kRestingVelocity * std::sqrt(g * geometry.size())) {}
+    : mu_(mu), velocity_tol_(resting_speed(g, geometry.size())) {}
 
 ContactOutcome NewmarkRules::resolve(const BlockState& state, double lambda) const {
   ContactOutcome out;

@@ -88,7 +88,7 @@ class SeatSimulation {
         vertical_(scene_vertical_motion(scene)),
         excitation_end_(std::max(motion_.end_of_motion(), vertical_.end_of_motion())),
         R_(geometry_.size()),
-        velocity_tol_(kRestingVelocity * std::sqrt(scene.g * R_)),
+        velocity_tol_(resting_speed(scene.g, R_)),
         observer_(summary_, geometry_, output_interval, scene.g),
         log_impacts_(output_interval > 0) {
     summary_.model = std::holds_alternative<NoMotion>(scene.vertical_motion) ? Model::full
@@ -116,7 +116,6 @@ class SeatSimulation {
   // Impacts at the contacts that approach, one at a time as on the flat ground, until none does.
   // impacted: some contact approached.
   bool resolve_impacts(BlockState& s, const std::vector<SeatPair>& touching, bool& impacted);
-  bool plastic(double landing_normal_velocity) const;
   bool plastic_landing(const std::vector<SeatPair>& pairs) const;
   SeatMode resolve();
   SeatMode logged_mode(const SeatMode& mode, std::size_t logged);
@@ -335,7 +334,7 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
     if (laid) {
       lay_on(pairs, s);
     } else {
-      const double e = plastic(fastest) ? 0.0 : scene_.contact.restitution;
+      const double e = landing_restitution(scene_.contact.restitution, fastest, settle_velocity());
       const PlanarImpactInput one{
           {all[static_cast<std::size_t>(first)]}, velocity_of(s), k2, mu, e, R_};
       PlanarImpact impact = resolve_contact_impact(one);
@@ -373,24 +372,19 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
   return false;
 }
 
-// Whether a contact landing at u_n < 0 takes e = 0: where it would bounce off slower than the
-// settling speed, e |u_n| (the flat ground's rule for a corner landing, or leaving after the
-// impact, that slowly): bounces that small end in a time the event location cannot resolve. A fold
-// vertex of the type B block, sliding and turning in flight, bounced at e = 0.3 in flights of 2e-6
-// s, was found 1e-11 m inside the seat after each and landed again as fast as before, without end
-// (record suite sample 116).
-bool SeatSimulation::plastic(double landing_normal_velocity) const {
-  return -landing_normal_velocity * scene_.contact.restitution < settle_velocity();
-}
-
-// Whether the fastest of the pairs that approach the seat lands plastically (none approaching: no).
+// Whether the fastest of the pairs that approach the seat lands plastically (none approaching: no):
+// where it would bounce off slower than the settling speed (settling.hpp), as on the flat ground. A
+// fold vertex of the type B block, sliding and turning in flight, bounced at e = 0.3 in flights of
+// 2e-6 s, was found 1e-11 m inside the seat after each and landed again as fast as before, without
+// end (record suite sample 116).
 bool SeatSimulation::plastic_landing(const std::vector<SeatPair>& pairs) const {
   double fastest = 0.0;
   for (const SeatPair& pair : pairs) {
     fastest =
         std::min(fastest, contact_velocity(contact_of(pair, state_), velocity_of(state_)).normal);
   }
-  return fastest < -velocity_tol_ && plastic(fastest);
+  return fastest < -velocity_tol_ &&
+         lands_plastically(scene_.contact.restitution, fastest, settle_velocity());
 }
 
 SeatMode SeatSimulation::resolve() {
