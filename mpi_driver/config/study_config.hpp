@@ -140,18 +140,6 @@ StudyConfig parse_study_config(const nlohmann::json& document, const std::string
 StudyConfig read_study_config(const std::filesystem::path& path,
                               const StudyOverrides& overrides = {});
 
-// The largest level a stripe of the study may have, and what sets it: the measure's own largest
-// (intensity_measure.hpp); with records, the level the record of the smallest measure reaches
-// with the largest scale a record may have (fixed levels past it are refused); with a pulse, the
-// level it reaches at the end of its amplitude's domain (samples past it are refused, status 2),
-// unless a sampled period makes that differ between samples. An adaptive study's batches stop
-// there.
-struct StripeCap {
-  double level;
-  std::string reason;  // "the measure's largest level", or the level and what reaches it there
-};
-StripeCap stripe_cap(const StudyConfig& config);
-
 // The canonical text (nlohmann's dump of the canonical config: sorted keys, shortest round-trip
 // numbers) that is hashed and stored in outputs.
 std::string canonical_text(const nlohmann::json& canonical);

@@ -10,6 +10,7 @@
 
 #include "engine/errors.hpp"
 #include "engine/number_text.hpp"
+#include "mpi_driver/config/stripe_scale.hpp"
 #include "postproc/fragility/fragility_curve.hpp"
 
 namespace blockfrag {
