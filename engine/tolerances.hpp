@@ -124,14 +124,12 @@ inline constexpr long kDefaultMaxEvents = 1'000'000;
 // The step budget is checked every this many steps (and at every event): a power of two minus
 // one, masked.
 inline constexpr long kBudgetCheckMask = 1023;
-// Contact changes at one instant before the scene fails with "no progress".
-inline constexpr int kMaxStalledEvents = 100;
-// On a seat, contact changes within this (s, relative to 1 + t) are at one instant: a block held
-// by several contacts, whose forces the contact problem cannot tell apart, can flip between its
-// equally valid force distributions 4e-11 s apart, each a new time, at a millisecond of CPU each.
-// Most such storms end within a few thousand changes; kMaxSeatInstantEvents fails the sample at
-// 100 s of CPU at most.
-inline constexpr double kSeatInstant = 1e-6;
-inline constexpr int kMaxSeatInstantEvents = 100'000;
+// Contact changes within this (s, relative to 1 + t) are at one instant: a block held by several
+// contacts, whose forces the contact problem cannot tell apart, can flip between its equally valid
+// force distributions 4e-11 s apart, each a new time, at a millisecond of CPU each. Most such
+// storms end within a few thousand changes; kMaxInstantEvents fails the scene ("no progress") at
+// 100 s of CPU at most (engine/no_progress.hpp).
+inline constexpr double kInstant = 1e-6;
+inline constexpr int kMaxInstantEvents = 100'000;
 
 }  // namespace blockfrag

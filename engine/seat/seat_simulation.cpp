@@ -17,6 +17,7 @@
 #include "engine/contact/planar_impact.hpp"
 #include "engine/contact/settling.hpp"
 #include "engine/errors.hpp"
+#include "engine/event_loop.hpp"
 #include "engine/integrate/guard_crossing.hpp"
 #include "engine/integrate/root_finding.hpp"
 #include "engine/integrate/with_stepper.hpp"
@@ -78,30 +79,46 @@ ModeKind kind_of(const SeatMode& mode) {
   return slipping > 0 ? ModeKind::slide_rock : ModeKind::rock;
 }
 
-class SeatSimulation {
+class SeatSimulation : public EventLoop<SeatSimulation> {
  public:
   SeatSimulation(const Scene& scene, double output_interval)
-      : scene_(scene),
-        geometry_(scene_geometry(scene)),
+      : EventLoop(scene, output_interval),
         contacts_(scene_block_vertices(scene), scene.seat->points),
-        motion_(scene_motion(scene)),
-        vertical_(scene_vertical_motion(scene)),
-        excitation_end_(std::max(motion_.end_of_motion(), vertical_.end_of_motion())),
         R_(geometry_.size()),
-        velocity_tol_(resting_speed(scene.g, R_)),
-        observer_(summary_, geometry_, output_interval, scene.g),
-        log_impacts_(output_interval > 0) {
+        velocity_tol_(resting_speed(scene.g, R_)) {
     summary_.model = std::holds_alternative<NoMotion>(scene.vertical_motion) ? Model::full
                                                                              : Model::full_vertical;
   }
 
-  void run();
-  void finish();
-  Summary& summary() { return summary_; }
-  std::vector<HistoryRow>& history() { return observer_.history(); }
-  std::vector<ImpactRecord>& impact_log() { return impact_log_; }
-
  private:
+  friend class EventLoop<SeatSimulation>;
+  using Crossing = GuardWatch<SeatSystem::kGuards>::Crossing;
+
+  // The ground's part of the event loop (engine/event_loop.hpp).
+  void place_at_start();
+  void resolve_and_enter() { enter(resolve()); }
+  void advance(const MotionPiece& piece, double t_stop);
+  bool ended_by_event() const { return ended_by_event_; }
+  bool holds_under(const MotionPiece& piece) const;
+  bool at_rest() const { return mode_.rest; }
+  void observe(const BlockState& s);
+  ContactForces forces_now() const;
+  ModeKind mode_kind_now() const { return kind_of(mode_); }
+  // The observer measures depth below a flat ground at y = 0; on a seat it is the seat's.
+  void finish_summary() { summary_.max_penetration = deepest_ / R_; }
+  template <class Ode, class GuardsAt, class StateAt>
+  Crossing refine_crossing(const Ode& ode, const GuardWatch<SeatSystem::kGuards>& watch,
+                           const GuardsAt& guards_at, const StateAt& state_at, double t0, double t1,
+                           Crossing found, ModeKind kind) const;
+  template <class Ode, class StateAt, class ForcesAt>
+  void note_contact_violation(const Ode& ode, double t, const StateAt& state_at, const ForcesAt&);
+  template <class StateAt>
+  void stepped(const StateAt& state_at, double t) {
+    deepest_ = std::max(deepest_, contacts_.penetration(state_at(t)));
+  }
+  template <class Ode>
+  void on_event(const Ode& ode, int which, double t_event, const BlockState& at_event);
+
   double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
   // The settling speed now, in the gravity the block feels.
   double settle_velocity() const { return settling_speed(scene_.g * gravity_factor(t_), R_); }
@@ -132,10 +149,6 @@ class SeatSimulation {
   // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
   double rest_margin(double t, const MotionPiece& piece, const MotionPiece& vertical) const;
   void enter(const SeatMode& mode);
-  void check_budget();
-  double step_cap(const MotionPiece& piece) const;
-  bool holds_under(const MotionPiece& piece) const;
-  void observe(const BlockState& s);
   void stop_at(double t, const BlockState& s, SeatEvent why);
   void advance_rest(double t_stop);
   // The rounding noise of a vertex's clearance over R near the block's pose s.
@@ -144,29 +157,15 @@ class SeatSimulation {
            (1.0 + (std::abs(s.x) + std::abs(s.y)) / R_);
   }
   template <class GuardsAt>
-  static GuardWatch<SeatSystem::kGuards>::Crossing landing_at_zero(
-      const GuardsAt& guards_at, double t0, GuardWatch<SeatSystem::kGuards>::Crossing found,
-      double noise);
+  static Crossing landing_at_zero(const GuardsAt& guards_at, double t0, Crossing found,
+                                  double noise);
   template <class StateAt>
-  GuardWatch<SeatSystem::kGuards>::Crossing touch_before_an_end(const SeatSystem& system,
-                                                                const StateAt& state_at, double t0,
-                                                                double t1) const;
-  template <class Ode, class Stepper>
-  void integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece, double t_stop);
+  Crossing touch_before_an_end(const SeatSystem& system, const StateAt& state_at, double t0,
+                               double t1) const;
   SeatChart chart_of(const SeatMode& mode) const;
-  bool at_rest_for_good() const { return mode_.rest && t_ >= excitation_end_; }
 
-  const Scene& scene_;
-  BlockGeometry geometry_;
   SeatContacts contacts_;
-  GroundMotionPieces motion_;
-  GroundMotionPieces vertical_;
-  double excitation_end_;
   double R_, velocity_tol_;
-  Summary summary_;
-  SegmentObserver observer_;
-  double t_ = 0.0;
-  BlockState state_;
   SeatMode mode_;
   // Where each block vertex that sticks on a seat segment stuck (its place along the segment, m),
   // kept while it sticks.
@@ -176,7 +175,6 @@ class SeatSimulation {
                                  [&](const auto& anchor) { return anchor.first == pair; });
     return it == anchors_.end() ? std::nullopt : std::optional<double>(it->second);
   }
-  bool stopped_ = false;
   bool ended_by_event_ = false;  // the last integrated stretch ended at a guard's crossing
   // The contact whose force reached zero or its cone's edge, or that left its segment's or
   // edge's end, at the last event, if one did.
@@ -188,13 +186,7 @@ class SeatSimulation {
   bool rest_ended_ = false;  // the last stretch ended where lambda left rest's range
   int arrived_point_ = -1;   // the seat point that reached the block at the last event, if one did
   Vec2 origin_{0.0, 0.0};    // the charts' (engine/seat/seat_chart.hpp)
-  double rest_since_ = 0.0;
-  double run_end_ = 0.0;
-  int stalled_events_ = 0;
-  double stall_start_ = 0.0;  // the first event of the instant the latest events are in
-  double deepest_ = 0.0;      // m: the block's largest penetration of the seat seen
-  bool log_impacts_;
-  std::vector<ImpactRecord> impact_log_;
+  double deepest_ = 0.0;     // m: the block's largest penetration of the seat seen
 };
 
 SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
@@ -740,7 +732,6 @@ double SeatSimulation::rest_margin(double t, const MotionPiece& piece,
 }
 
 void SeatSimulation::enter(const SeatMode& next) {
-  ++summary_.events;
   const bool first = summary_.modes.empty();
   const ModeKind before = kind_of(mode_);
   mode_ = next;
@@ -765,35 +756,7 @@ void SeatSimulation::enter(const SeatMode& next) {
     anchors.emplace_back(a.pair, anchor_of(a.pair).value_or(contacts_.pose(a.pair, state_).along));
   }
   anchors_ = std::move(anchors);
-  const ModeKind now = kind_of(mode_);
-  if (now == ModeKind::rest && (first || before != ModeKind::rest)) rest_since_ = t_;
-  if (first || now != before) summary_.modes.push_back({t_, now});
-  if ((now == ModeKind::rock || now == ModeKind::slide_rock) && !summary_.rock_start_time) {
-    summary_.rock_start_time = t_;
-  }
-  if ((now == ModeKind::slide || now == ModeKind::slide_rock) && !summary_.slide_start_time) {
-    summary_.slide_start_time = t_;
-  }
-  observe(state_);
-  check_budget();
-}
-
-void SeatSimulation::check_budget() {
-  const SolverSettings& solver = scene_.solver;
-  if (summary_.steps > solver.max_steps) {
-    throw SimulationFailure("step budget exceeded (" + std::to_string(solver.max_steps) +
-                            " steps)");
-  }
-  if (summary_.events > solver.max_events) {
-    throw SimulationFailure("event budget exceeded (" + std::to_string(solver.max_events) +
-                            " events): the contact state keeps changing");
-  }
-}
-
-double SeatSimulation::step_cap(const MotionPiece& piece) const {
-  const double block_time = std::sqrt(R_ / scene_.g);
-  return std::min({kMaxStepOverBlockTime * block_time, piece.time_scale() / kStepsPerPieceTimeScale,
-                   vertical_.piece_at(t_).time_scale() / kStepsPerPieceTimeScale});
+  entered(before, kind_of(mode_), first, false);
 }
 
 void SeatSimulation::observe(const BlockState& s) {
@@ -817,51 +780,20 @@ void SeatSimulation::stop_at(double t, const BlockState& s, SeatEvent why) {
 }
 
 // At rest the block does not move; rest ends where lambda leaves the rest range (by the onset
-// margin), looked for at lambda's extremes and, with vertical motion, at samples.
+// margin).
 void SeatSimulation::advance_rest(double t_stop) {
   const MotionPiece& piece = motion_.piece_at(t_);
   const MotionPiece& vertical = vertical_.piece_at(t_);
-  const BlockState s = state_;
-  const auto state_at = [&](double) { return s; };
   const auto forces_at = [&](double t) {
     const Vec2 f = applied(t);
     return ContactForces{-f.x, -f.y};
   };
-  std::vector<double> checks = piece.extrema_between(t_, t_stop);
-  if (!vertical.is_zero()) {
-    const std::vector<double> more = vertical.extrema_between(t_, t_stop);
-    checks.insert(checks.end(), more.begin(), more.end());
-    const double spacing =
-        std::min(piece.time_scale(), vertical.time_scale()) / kRestChecksPerTimeScale;
-    if (std::isfinite(spacing)) {
-      for (double t = t_ + spacing; t < t_stop; t += spacing) checks.push_back(t);
-    }
-    std::sort(checks.begin(), checks.end());
+  if (EventLoop::advance_rest(
+          piece, t_stop, false, [&](double t) { return rest_margin(t, piece, vertical); },
+          forces_at)) {
+    ended_by_event_ = true;
+    rest_ended_ = true;
   }
-  checks.push_back(t_stop);
-  const auto margin = [&](double t) { return rest_margin(t, piece, vertical); };
-  double previous = t_, previous_margin = margin(t_);
-  for (const double t : checks) {
-    const double m = margin(t);
-    if (m < 0) {
-      const double t_event =
-          previous_margin < 0
-              ? previous
-              : locate_crossing(margin, previous, t,
-                                std::max(previous_margin, std::numeric_limits<double>::min()), m,
-                                kEventTimeTolerance * (1.0 + t))
-                    .after;
-      observer_.observe_step(t_, t_event, state_at, forces_at, ModeKind::rest);
-      t_ = t_event;
-      ended_by_event_ = true;
-      rest_ended_ = true;
-      return;
-    }
-    previous = t;
-    previous_margin = m;
-  }
-  observer_.observe_step(t_, t_stop, state_at, forces_at, ModeKind::rest);
-  t_ = t_stop;
 }
 
 // A watched vertex's clearance is its height over the seat between the seat's ends and its distance
@@ -873,9 +805,10 @@ void SeatSimulation::advance_rest(double t_stop) {
 // watched vertex passes an end in the step, its height just inside the end says whether it went
 // under the line there; if it did, its touch is located on that height, before the end.
 template <class StateAt>
-GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::touch_before_an_end(
-    const SeatSystem& system, const StateAt& state_at, double t0, double t1) const {
-  GuardWatch<SeatSystem::kGuards>::Crossing found;
+SeatSimulation::Crossing SeatSimulation::touch_before_an_end(const SeatSystem& system,
+                                                             const StateAt& state_at, double t0,
+                                                             double t1) const {
+  Crossing found;
   const double first = contacts_.seat_point(0).x;
   const double last = contacts_.seat_point(contacts_.point_count() - 1).x;
   const double time_tolerance = kEventTimeTolerance * (1.0 + t1);
@@ -915,7 +848,7 @@ GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::touch_before_an_end(
 // flat ground's by 1e-8 of sqrt(g R). Where the vertex rose above the seat (by more than its
 // clearance's rounding noise) before the crossing, its landing is where it comes back to zero.
 template <class GuardsAt>
-GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::landing_at_zero(
+SeatSimulation::Crossing SeatSimulation::landing_at_zero(
     const GuardsAt& guards_at, double t0, GuardWatch<SeatSystem::kGuards>::Crossing found,
     double noise) {
   const auto i = static_cast<std::size_t>(found.which);
@@ -938,108 +871,73 @@ GuardWatch<SeatSystem::kGuards>::Crossing SeatSimulation::landing_at_zero(
   return found;
 }
 
-// As the flat ground's modes: steps until a guard crosses zero or t_stop; a crossing is located on
-// the dense output and the state left just after it.
-template <class Ode, class Stepper>
-void SeatSimulation::integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece,
-                                    double t_stop) {
+// Where a flight's bounce lands at zero clearance, or a vertex passing a seat's end went under the
+// seat's line first, the crossing the guards found is moved there.
+template <class Ode, class GuardsAt, class StateAt>
+SeatSimulation::Crossing SeatSimulation::refine_crossing(
+    const Ode& ode, const GuardWatch<SeatSystem::kGuards>& watch, const GuardsAt& guards_at,
+    const StateAt& state_at, double t0, double t1, Crossing found, ModeKind kind) const {
   const SeatSystem& system = ode.system();
-  auto q = ode.coordinates(state_);
-  double t = t_;
-  GuardWatch<SeatSystem::kGuards> watch(ode.guards(t, q));
-  const double cap = step_cap(piece);
-  const auto forces_at = [&](double x) { return ode.forces(x, stepper.dense(x)); };
-  const auto state_at = [&](double x) { return ode.full(x, stepper.dense(x)); };
-  long steps_counted = 0, rhs_counted = 0;
-  constexpr bool kRetakesStepToEvent = requires { Stepper::kFixedStep; };
-  double retake_until = std::numeric_limits<double>::infinity();
-  const ModeKind kind = kind_of(mode_);
-  while (!reached(t, t_stop)) {
-    const double t0 = t;
-    const auto q0 = q;
-    const bool retaking = std::isfinite(retake_until);
-    stepper.step(ode, t, q, std::min({t_stop - t, cap, retake_until - t}));
-    retake_until = std::numeric_limits<double>::infinity();
-    if (reached(t, t_stop)) t = t_stop;
-    summary_.steps += stepper.steps() - steps_counted;
-    summary_.rhs_evaluations += stepper.rhs_evaluations() - rhs_counted;
-    steps_counted = stepper.steps();
-    rhs_counted = stepper.rhs_evaluations();
-    if ((summary_.steps & kBudgetCheckMask) == 0) check_budget();
+  if (kind == ModeKind::flight && found.which >= 0 && !watch.armed(found.which) &&
+      system.event(found.which) == SeatEvent::touches) {
+    found = landing_at_zero(guards_at, t0, found, clearance_noise(state_));
+  }
+  const Crossing under = touch_before_an_end(system, state_at, t0, t1);
+  if (under.which >= 0 && under.after < found.after) found = under;
+  return found;
+}
 
-    const auto next = ode.guards(t, q);
-    const auto guards_at = [&](double x) { return ode.guards(x, stepper.dense(x)); };
-    const auto least_at_ends = [&] {
-      return ode.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
-    };
-    auto crossing = watch.first_crossing(guards_at, t0, t, next, least_at_ends);
-    if (kind == ModeKind::flight && crossing.which >= 0 && !watch.armed(crossing.which) &&
-        system.event(crossing.which) == SeatEvent::touches) {
-      crossing = landing_at_zero(guards_at, t0, crossing, clearance_noise(state_));
-    }
-    const auto under = touch_before_an_end(system, state_at, t0, t);
-    if (under.which >= 0 && under.after < crossing.after) crossing = under;
-    const int which = crossing.which;
-    const double t_event = crossing.after;
-    if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {
-      retake_until = t_event + kRetakeOvershoot * (t - t_event);
-      t = t0;
-      q = q0;
-      continue;
-    }
-    watch.advance(next);
+template <class Ode, class StateAt, class ForcesAt>
+void SeatSimulation::note_contact_violation(const Ode& ode, double t, const StateAt& state_at,
+                                            const ForcesAt&) {
+  const SeatSystem& system = ode.system();
+  if (system.active_count() == 0) return;
+  const FixedStateForces f = system.solve(t, state_at(t));
+  for (int i = 0; i < system.active_count(); ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    summary_.max_contact_violation =
+        std::max({summary_.max_contact_violation, -f.normal[at] / scene_.g,
+                  (std::abs(f.tangent[at]) - scene_.contact.friction * f.normal[at]) / scene_.g});
+  }
+}
 
-    const double kept = which < 0 ? t : t_event;
-    if (system.active_count() > 0) {
-      const FixedStateForces f = system.solve(crossing.before, state_at(crossing.before));
-      for (int i = 0; i < system.active_count(); ++i) {
-        const auto at = static_cast<std::size_t>(i);
-        summary_.max_contact_violation = std::max(
-            {summary_.max_contact_violation, -f.normal[at] / scene_.g,
-             (std::abs(f.tangent[at]) - scene_.contact.friction * f.normal[at]) / scene_.g});
-      }
+template <class Ode>
+void SeatSimulation::on_event(const Ode& ode, int which, double t_event,
+                              const BlockState& at_event) {
+  const SeatSystem& system = ode.system();
+  SeatEvent event = system.event(which);
+  arrived_point_ = event == SeatEvent::touches ? system.watched_point(which) : -1;
+  // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
+  // top corner at theta = pi/2): that is overturning, whichever guard rounding put first. The
+  // tilt is read with every touching contact put back on the seat: the active ones have drifted
+  // (by the integrator's error, far more than 1e-9 rad at an adaptive tolerance of 1e-8), and a
+  // pivot sunk into the seat lets the face's far corner touch before the tilt is reached.
+  if (event == SeatEvent::touches) {
+    std::vector<ActiveContact> landed;
+    for (const SeatPair& pair : touching(at_event)) landed.push_back({pair, ContactState::stick});
+    BlockState on_seat = at_event;
+    project_positions(landed, on_seat);
+    if (contacts_.overturn_margin(geometry_, on_seat.theta) <= kContactHeight) {
+      event = SeatEvent::overturns;
+      arrived_point_ = -1;
     }
-    observer_.observe_step(t0, kept, state_at, forces_at, kind);
-    deepest_ = std::max(deepest_, contacts_.penetration(state_at(kept)));
-    if (which < 0) continue;
-    const BlockState at_event = state_at(t_event);
-    SeatEvent event = system.event(which);
-    arrived_point_ = event == SeatEvent::touches ? system.watched_point(which) : -1;
-    // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
-    // top corner at theta = pi/2): that is overturning, whichever guard rounding put first. The
-    // tilt is read with every touching contact put back on the seat: the active ones have drifted
-    // (by the integrator's error, far more than 1e-9 rad at an adaptive tolerance of 1e-8), and a
-    // pivot sunk into the seat lets the face's far corner touch before the tilt is reached.
-    if (event == SeatEvent::touches) {
-      std::vector<ActiveContact> landed;
-      for (const SeatPair& pair : touching(at_event)) landed.push_back({pair, ContactState::stick});
-      BlockState on_seat = at_event;
-      project_positions(landed, on_seat);
-      if (contacts_.overturn_margin(geometry_, on_seat.theta) <= kContactHeight) {
-        event = SeatEvent::overturns;
-        arrived_point_ = -1;
-      }
-    }
-    if (event == SeatEvent::lift_off || event == SeatEvent::friction_limit ||
-        event == SeatEvent::leaves_end) {
-      const auto contact = static_cast<std::size_t>((which - 2) / kSeatContactGuards);
-      force_event_ = ForceEvent{mode_.active[contact].pair, event};
-    }
-    if (event == SeatEvent::overturns || event == SeatEvent::falls) {
-      stop_at(t_event, at_event, event);
-      return;
-    }
-    t_ = t_event;
-    state_ = at_event;
-    ended_by_event_ = true;
+  }
+  if (event == SeatEvent::lift_off || event == SeatEvent::friction_limit ||
+      event == SeatEvent::leaves_end) {
+    const auto contact = static_cast<std::size_t>((which - 2) / kSeatContactGuards);
+    force_event_ = ForceEvent{mode_.active[contact].pair, event};
+  }
+  if (event == SeatEvent::overturns || event == SeatEvent::falls) {
+    stop_at(t_event, at_event, event);
     return;
   }
-  t_ = t_stop;
-  state_ = ode.full(t, q);
+  t_ = t_event;
+  state_ = at_event;
+  ended_by_event_ = true;
 }
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) const {
-  if (mode_.rest) return false;
+  if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
   const SeatSystem next = system(piece);
   const auto guards = next.guards(t_, state_);
   for (int i = 0; i < SeatSystem::kGuards; ++i) {
@@ -1052,7 +950,7 @@ bool SeatSimulation::holds_under(const MotionPiece& piece) const {
   return true;
 }
 
-void SeatSimulation::run() {
+void SeatSimulation::place_at_start() {
   const Vec2 centre = contacts_.rest_centre();
   state_.x = centre.x;
   state_.y = centre.y;
@@ -1067,101 +965,53 @@ void SeatSimulation::run() {
     state_.theta = theta;
   }
   origin_ = {state_.x, centre.y - geometry_.rest_height()};
-  observer_.start(state_);
-  enter(resolve());
-  run_end_ = run_end_time(scene_, motion_, vertical_);
-  const double t_end = run_end_;
-  while (!stopped_ && t_ < t_end) {
-    if (!scene_.duration && at_rest_for_good()) break;
-    const MotionPiece& piece = motion_.piece_at(t_);
-    const double t_stop = std::min({t_end, piece.end(), vertical_.piece_at(t_).end()});
-    ended_by_event_ = false;
-    force_event_.reset();
-    rest_ended_ = false;
-    arrived_point_ = -1;
-    if (mode_.rest) {
-      advance_rest(t_stop);
-    } else {
-      const SeatSystem moving = system(piece);
-      std::visit(
-          [&](const auto& chart) {
-            const SeatOde ode(moving, chart);
-            if constexpr (std::is_same_v<std::decay_t<decltype(chart)>, FlightChart>) {
-              if (vertical_.piece_at(t_).is_zero()) {
-                ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
-                integrate_with(ode, flight, piece, t_stop);
-                return;
-              }
-            }
-            with_scene_stepper<decltype(ode)::N>(scene_.solver, ode.scale(), [&](auto& stepper) {
-              integrate_with(ode, stepper, piece, t_stop);
-            });
-          },
-          chart_of(mode_));
-    }
-    if (stopped_ || t_ >= t_end) break;
-    if (t_ - stall_start_ > kSeatInstant * (1.0 + t_)) {
-      stall_start_ = t_;
-      stalled_events_ = 0;
-    } else {
-      ++stalled_events_;
-    }
-    if (stalled_events_ > kMaxSeatInstantEvents) {
-      throw SimulationFailure(
-          "no progress: " + std::to_string(kMaxSeatInstantEvents) +
-          " contact changes within 1e-6 (1 + t) s of t = " + std::to_string(t_) + " s");
-    }
-    const bool at_piece_end = t_ == t_stop && !ended_by_event_;
-    if (at_piece_end) {
-      const MotionPiece& next = motion_.piece_at(t_);
-      if (mode_.rest ? rest_margin(t_, next, vertical_.piece_at(t_)) > 0 : holds_under(next)) {
-        continue;
-      }
-    }
-    enter(resolve());
-  }
-  finish();
 }
 
-void SeatSimulation::finish() {
-  summary_.end_time = t_;
-  const bool final_fate = summary_.overturned || summary_.fell;
-  summary_.settled = summary_.status == Status::ok && (final_fate || at_rest_for_good());
-  if (summary_.overturned) {
-    summary_.settle_time = summary_.overturn_time;
-  } else if (summary_.fell) {
-    summary_.settle_time = summary_.fell_time;
-  } else if (summary_.settled) {
-    summary_.settle_time = rest_since_;
+void SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
+  ended_by_event_ = false;
+  force_event_.reset();
+  rest_ended_ = false;
+  arrived_point_ = -1;
+  if (mode_.rest) {
+    advance_rest(t_stop);
+    return;
   }
-  summary_.final_theta = state_.theta;
-  summary_.final_slide = state_.x - observer_.x0();
-  // The observer measures depth below a flat ground at y = 0; on a seat it is the seat's.
-  summary_.max_penetration = deepest_ / R_;
-  ContactForces forces{0.0, 0.0};
+  const SeatSystem moving = system(piece);
+  const ModeKind kind = kind_of(mode_);
+  std::visit(
+      [&](const auto& chart) {
+        const SeatOde ode(moving, chart);
+        if constexpr (std::is_same_v<std::decay_t<decltype(chart)>, FlightChart>) {
+          if (vertical_.piece_at(t_).is_zero()) {
+            ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
+            integrate_with(ode, flight, piece, t_stop, kind);
+            return;
+          }
+        }
+        with_scene_stepper<decltype(ode)::N>(scene_.solver, ode.scale(), [&](auto& stepper) {
+          integrate_with(ode, stepper, piece, t_stop, kind);
+        });
+      },
+      chart_of(mode_));
+}
+
+ContactForces SeatSimulation::forces_now() const {
   if (!stopped_ && mode_.rest) {
     const Vec2 f = applied(t_);
-    forces = {-f.x, -f.y};
-  } else if (!stopped_ && !mode_.active.empty()) {
-    const SeatSystem now = system(motion_.piece_at(t_));
-    forces = now.forces(t_, state_);
+    return {-f.x, -f.y};
   }
-  observer_.finish(t_, state_, forces, kind_of(mode_));
+  if (!stopped_ && !mode_.active.empty()) {
+    const SeatSystem now = system(motion_.piece_at(t_));
+    return now.forces(t_, state_);
+  }
+  return {0.0, 0.0};
 }
 
 }  // namespace
 
 SimulationWithHistory simulate_on_seat(const Scene& scene, double output_interval) {
   SeatSimulation simulation(scene, output_interval);
-  try {
-    simulation.run();
-  } catch (const SimulationFailure& failure) {
-    simulation.summary().status = Status::failed;
-    simulation.summary().status_reason = failure.what();
-    simulation.finish();
-  }
-  return {std::move(simulation.summary()), std::move(simulation.history()),
-          std::move(simulation.impact_log())};
+  return run_to_end(simulation);
 }
 
 }  // namespace blockfrag
