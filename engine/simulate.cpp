@@ -175,9 +175,9 @@ void FlatGroundSimulation::enter(const ContactOutcome& outcome) {
     }
     ++summary_.impacts;
     if (!summary_.first_impact_time) summary_.first_impact_time = t_;
-    summary_.max_impact_energy_gain =
-        std::max(summary_.max_impact_energy_gain, outcome.impact_energy_gain);
   }
+  summary_.max_impact_energy_gain =
+      std::max(summary_.max_impact_energy_gain, outcome.impact_energy_gain);
   const bool first = summary_.modes.empty();
   const ModeKind before = mode_kind(mode_);
   const bool was_rocking =

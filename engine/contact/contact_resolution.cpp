@@ -42,6 +42,13 @@ bool solve3(std::array<std::array<double, 4>, 3> m, std::array<double, 3>& z) {
   return true;
 }
 
+// The relative kinetic-energy change of one velocity change at the event (an impact round, a
+// laying), kept if it is the largest.
+void note_energy_change(double before, double after, ContactOutcome& out) {
+  if (before > 0)
+    out.impact_energy_gain = std::max(out.impact_energy_gain, (after - before) / before);
+}
+
 }  // namespace
 
 ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g)
@@ -52,10 +59,20 @@ ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& c
       height_tol_(kContactHeight * geometry.size()),
       velocity_tol_(resting_speed(g, geometry.size())) {}
 
-// Keeps the base's slip velocity (a sticking base stays stuck), drops the rotation and bounce.
+// Drops the rotation and bounce and keeps the base's slip velocity (a sticking base stays stuck)
+// where that adds no kinetic energy (keeps_slip); otherwise the centre's horizontal velocity, the
+// least change in the kinetic metric that zeroes both corners' normal velocities.
 void ContactResolver::lay_flat(BlockState& s, double settle_velocity) const {
-  s.vx = 0.5 * (corner_kinematics(geometry_, s, Corner::left).u_x +
-                corner_kinematics(geometry_, s, Corner::right).u_x);
+  const double slip = 0.5 * (corner_kinematics(geometry_, s, Corner::left).u_x +
+                             corner_kinematics(geometry_, s, Corner::right).u_x);
+  BlockState with_slip = s;
+  with_slip.vx = slip;
+  with_slip.vy = 0.0;
+  with_slip.omega = 0.0;
+  if (keeps_slip(kinetic_energy_per_mass(geometry_, s),
+                 kinetic_energy_per_mass(geometry_, with_slip))) {
+    s.vx = slip;
+  }
   // A slip slower than the settling speed ends with the landing, as a seat ends it: below that
   // speed the rules end every motion of the corners (left going, friction stopped it within a
   // microsecond at the cross-check's mu, and its start was counted as the run's slide onset).
@@ -151,6 +168,7 @@ bool ContactResolver::resolve_impacts(BlockState& s, double settle_velocity,
     const double fastest = std::min(left_hits ? kl.u_y : 0.0, right_hits ? kr.u_y : 0.0);
     if (flat && -fastest < settle_velocity) {
       lay_flat(s, settle_velocity);
+      note_energy_change(before, kinetic_energy(velocity_of(s), M, I), out);
       return true;
     }
     // A bounce that would leave slower than the settling speed is one the rules above end at
@@ -176,9 +194,7 @@ bool ContactResolver::resolve_impacts(BlockState& s, double settle_velocity,
         s = together;
       }
     }
-    const double after = kinetic_energy(velocity_of(s), M, I);
-    if (before > 0)
-      out.impact_energy_gain = std::max(out.impact_energy_gain, (after - before) / before);
+    note_energy_change(before, kinetic_energy(velocity_of(s), M, I), out);
   }
   return false;
 }
@@ -312,7 +328,9 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
       throw SimulationFailure("impacts did not end after " + std::to_string(kMaxImpactRounds) +
                               " rounds");
     }
+    const double before = kinetic_energy_per_mass(geometry_, s);
     lay_flat(s, settle_velocity);
+    note_energy_change(before, kinetic_energy_per_mass(geometry_, s), out);
   }
   const CornerKinematics kl = corner_kinematics(geometry_, s, Corner::left);
   const CornerKinematics kr = corner_kinematics(geometry_, s, Corner::right);
@@ -329,7 +347,9 @@ ContactOutcome ContactResolver::resolve(const BlockState& state, double lambda,
   }
   const double effective_lambda = lambda / gravity_factor, gravity = g_ * gravity_factor;
   if (left && right) {
+    const double before = kinetic_energy_per_mass(geometry_, s);
     out.mode = classify_flat(s, effective_lambda, gravity, settle_velocity);
+    note_energy_change(before, kinetic_energy_per_mass(geometry_, s), out);
   } else if (left || right) {
     out.mode =
         classify_one_corner(s, left ? Corner::left : Corner::right, effective_lambda, gravity, out);

@@ -13,8 +13,10 @@ struct ContactOutcome {
   Mode mode = FlightMode{};
   BlockState state;  // after impacts, projected onto the mode's constraints
   bool impact = false;
-  bool painleve = false;            // a Painleve jump to stick was applied
-  double impact_energy_gain = 0.0;  // largest relative kinetic-energy change over the impacts
+  bool painleve = false;  // a Painleve jump to stick was applied
+  // The largest relative kinetic-energy change of the velocity changes at the event: each impact
+  // round and each laying of the block on its contacts.
+  double impact_energy_gain = 0.0;
 };
 
 class ContactResolver {

@@ -1,8 +1,8 @@
 // The speeds at which contacts rest and settle, rules of both grounds' contact resolution (the flat
 // ground's, the reduced models' and the seat's): a touching contact slower than the resting speed
 // rests or slips, with no impact; a rebound slower than the settling speed loses its bounce, and a
-// landing that leaves every contact slower than it is laid on its contacts (engine/tolerances.hpp,
-// kRestingVelocity and kSettleVelocity).
+// landing that leaves every contact slower than it is laid on its contacts, keeping their slip
+// where that adds no kinetic energy (engine/tolerances.hpp, kRestingVelocity and kSettleVelocity).
 #pragma once
 
 #include <algorithm>
@@ -36,6 +36,16 @@ inline bool lands_plastically(double restitution, double landing_normal_velocity
 inline double landing_restitution(double restitution, double landing_normal_velocity,
                                   double settle_speed) {
   return lands_plastically(restitution, landing_normal_velocity, settle_speed) ? 0.0 : restitution;
+}
+
+// Whether a landing block laid on its contacts (their normal velocities taken to zero) keeps their
+// slip along the ground: only where that adds no kinetic energy. Kept regardless, a tall block
+// turning as it lands would slide off at its centre's speed plus omega times its height, up to
+// twice the landing's energy; otherwise the block takes the least change of its velocity, in the
+// kinetic metric, that zeroes the normal velocities (which never adds energy). Energies per unit
+// mass, before laying and laid with the slip kept.
+inline bool keeps_slip(double energy_before, double energy_with_slip) {
+  return energy_with_slip <= energy_before;
 }
 
 }  // namespace blockfrag

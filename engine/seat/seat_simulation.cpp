@@ -433,7 +433,15 @@ SeatMode SeatSimulation::resolve() {
     sliding = sliding || std::abs(u.tangent) > settle;
   }
   if (landed && !sliding) s.vx = s.vy = s.omega = 0.0;
-  if (landed && sliding) lay_on(pairs, s);
+  if (landed && sliding) {
+    const double before = kinetic_energy_per_mass(geometry_, s);
+    lay_on(pairs, s);
+    if (before > 0) {
+      summary_.max_impact_energy_gain =
+          std::max(summary_.max_impact_energy_gain,
+                   (kinetic_energy_per_mass(geometry_, s) - before) / before);
+    }
+  }
   // The contacts that can carry force: touching and not leaving.
   std::vector<SeatPair> carrying;
   PlanarForcesInput in{{},
@@ -596,11 +604,7 @@ void SeatSimulation::lay_on(const std::vector<SeatPair>& pairs, BlockState& s) c
     const Eigen::MatrixXd slip_change = tangent * free;
     dv += free * slip_change.completeOrthogonalDecomposition().solve(-tangent * dv);
   }
-  // Taking the slip back can add kinetic energy (a tall block turning as it lands: its base slips
-  // at its centre's speed plus omega times its height, kept as the speed of the whole block); the
-  // least change in the kinetic metric never does, and is taken then. The flat ground's lay_flat
-  // keeps the slip whatever the energy (0.49 of the landing's kinetic energy added in random-0742
-  // of the flat-seat cross-check, below the settling speed).
+  // Taking the slip back can add kinetic energy; the least change never does (keeps_slip).
   const BlockState before = s;
   const auto apply = [&](const Eigen::Vector3d& change) {
     s = before;
@@ -609,7 +613,8 @@ void SeatSimulation::lay_on(const std::vector<SeatPair>& pairs, BlockState& s) c
     s.omega += change(2);
   };
   apply(dv);
-  if (kinetic_energy_per_mass(geometry_, s) > kinetic_energy_per_mass(geometry_, before)) {
+  if (!keeps_slip(kinetic_energy_per_mass(geometry_, before),
+                  kinetic_energy_per_mass(geometry_, s))) {
     apply(least);
   }
 }
