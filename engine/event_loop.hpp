@@ -6,17 +6,19 @@
 //
 // What a Ground supplies (called through the derived class, so no call goes through a virtual
 // function):
+//   struct EventReport;                    // what ended a stretch: ended_by_event(), and what the
+//                                          // resolution at the event needs to know of it
 //   void place_at_start();                 // state_ at t = 0
-//   void resolve_and_enter();              // resolves the contact at t_ and enters its mode
-//   void advance(const MotionPiece&, double t_stop);  // integrates the mode to an event or t_stop
-//   bool ended_by_event() const;           // the last advance ended at an event
+//   void resolve_and_enter(const EventReport&);  // resolves the contact at t_, enters its mode
+//   EventReport advance(const MotionPiece&, double t_stop);  // the mode to an event or t_stop
 //   bool holds_under(const MotionPiece&) const;  // the mode goes on under the next piece
 //   bool at_rest() const;                  // the block rests
 //   void observe(const BlockState&);       // a state the run passed through
 //   ContactForces forces_now() const;      // the contact forces at t_ (per unit mass)
 //   ModeKind mode_kind_now() const;
 //   void finish_summary();                 // the ground's own summary fields
-//   and, for integrate_with: refine_crossing, note_contact_violation, stepped and on_event.
+//   and, for integrate_with: refine_crossing, note_contact_violation, stepped and on_event (which
+//   returns the EventReport of a guard's crossing).
 #pragma once
 
 #include <algorithm>
@@ -78,8 +80,9 @@ class EventLoop {
                     const Margin& margin, const ForcesAt& forces_at);
   // Steps until a guard crosses zero or t_stop; a crossing is located on the dense output and the
   // state is left just after it, where the next mode's conditions hold (the ground's on_event).
+  // Returns the Ground::EventReport of what ended the stretch (none at t_stop).
   template <class Ode, class Stepper>
-  void integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece, double t_stop,
+  auto integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece, double t_stop,
                       ModeKind kind);
 
   const Scene& scene_;
@@ -120,7 +123,7 @@ void EventLoop<Ground>::run() {
   Ground& ground = self();
   ground.place_at_start();
   observer_.start(state_);
-  ground.resolve_and_enter();
+  ground.resolve_and_enter(typename Ground::EventReport{});
   run_end_ = run_end_time(scene_, motion_, vertical_);
   const double t_end = run_end_;
   while (!stopped_ && t_ < t_end) {
@@ -128,16 +131,16 @@ void EventLoop<Ground>::run() {
     if (!scene_.duration && at_rest_for_good()) break;
     const MotionPiece& piece = motion_.piece_at(t_);
     const double t_stop = std::min({t_end, piece.end(), vertical_.piece_at(t_).end()});
-    ground.advance(piece, t_stop);
+    const auto report = ground.advance(piece, t_stop);
     if (stopped_ || t_ >= t_end) break;
     no_progress_.count_event(t_);
     // A piece boundary is not an event: a mode whose contact forces still hold under the next
     // piece goes on. Re-resolving there would lay a block that has only just lifted flat again
     // (its corners are still slower than the settling speed), so a finely tabulated motion
     // could never start it rocking.
-    const bool at_piece_end = t_ == t_stop && !ground.ended_by_event();
+    const bool at_piece_end = t_ == t_stop && !report.ended_by_event();
     if (at_piece_end && ground.holds_under(motion_.piece_at(t_))) continue;
-    ground.resolve_and_enter();
+    ground.resolve_and_enter(report);
   }
   finish();
 }
@@ -250,8 +253,9 @@ bool EventLoop<Ground>::advance_rest(const MotionPiece& piece, double t_stop, bo
 
 template <class Ground>
 template <class Ode, class Stepper>
-void EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece,
+auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece,
                                        double t_stop, ModeKind kind) {
+  using EventReport = typename Ground::EventReport;
   Ground& ground = self();
   auto q = ode.coordinates(state_);
   double t = t_;
@@ -304,11 +308,11 @@ void EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
     observer_.observe_step(t0, kept, state_at, forces_at, kind);
     ground.stepped(state_at, kept);
     if (which < 0) continue;
-    ground.on_event(ode, which, t_event, state_at(t_event));
-    return;
+    return ground.on_event(ode, which, t_event, state_at(t_event));
   }
   t_ = t_stop;
   state_ = ode.full(t, q);
+  return EventReport{};
 }
 
 }  // namespace blockfrag

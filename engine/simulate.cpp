@@ -68,13 +68,15 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   }
 
   // The ground's part of the event loop (engine/event_loop.hpp).
+  struct EventReport {
+    std::optional<GuardEvent> event;  // the guard's event that ended the stretch, if one did
+    bool ended_by_event() const { return event.has_value(); }
+  };
   void place_at_start() { state_ = initial_state(); }
-  void resolve_and_enter() { enter(resolve_contact()); }
-  void advance(const MotionPiece& piece, double t_stop) {
-    last_event_.reset();
-    with_system(piece, [&](const auto& system) { advance(system, piece, t_stop); });
+  void resolve_and_enter(const EventReport& report) { enter(resolve_contact(report)); }
+  EventReport advance(const MotionPiece& piece, double t_stop) {
+    return with_system(piece, [&](const auto& system) { return advance(system, piece, t_stop); });
   }
-  bool ended_by_event() const { return last_event_.has_value(); }
   bool holds_under(const MotionPiece& piece) const;
   bool at_rest() const { return std::holds_alternative<RestMode>(mode_); }
   void observe(const BlockState& s) { observer_.observe_state(s); }
@@ -97,10 +99,10 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   template <class StateAt>
   void stepped(const StateAt&, double) {}
   template <class System>
-  void on_event(const System&, int which, double t_event, const BlockState& at_event);
+  EventReport on_event(const System&, int which, double t_event, const BlockState& at_event);
 
   BlockState initial_state() const;
-  ContactOutcome resolve_contact() const;
+  ContactOutcome resolve_contact(const EventReport& report) const;
   void enter(const ContactOutcome& outcome);
   // How far rest is inside its limits at t (friction and both tipping moments against gravity
   // g (1 + lambda_v), and that gravity positive), in units of g, less kOnsetMargin: rest holds
@@ -115,18 +117,17 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   }
   void overturn_at(double t, const BlockState& s);
 
-  void advance(const RestMode&, const MotionPiece& piece, double t_stop);
+  EventReport advance(const RestMode&, const MotionPiece& piece, double t_stop);
   // Flight without vertical motion: theta, y and x in closed form.
-  void advance(const FlightMode&, const MotionPiece& piece, double t_stop);
+  EventReport advance(const FlightMode&, const MotionPiece& piece, double t_stop);
   template <class System>
-  void advance(const System& system, const MotionPiece& piece, double t_stop);
+  EventReport advance(const System& system, const MotionPiece& piece, double t_stop);
 
   Model model_;
   ContactResolver resolver_;
   HousnerRules housner_;
   NewmarkRules newmark_;
   Mode mode_ = RestMode{};
-  std::optional<GuardEvent> last_event_;  // what ended the last integrated stretch, if a guard did
 };
 
 BlockState FlatGroundSimulation::initial_state() const {
@@ -143,13 +144,13 @@ BlockState FlatGroundSimulation::initial_state() const {
   return s;
 }
 
-ContactOutcome FlatGroundSimulation::resolve_contact() const {
+ContactOutcome FlatGroundSimulation::resolve_contact(const EventReport& report) const {
   const double lambda = motion_.lambda(t_);
   switch (model_) {
     case Model::newmark_sliding: return newmark_.resolve(state_, lambda);
     case Model::housner_rocking:
       if (const auto* rock = std::get_if<RockMode>(&mode_)) {
-        if (last_event_ == GuardEvent::corner_lands) {
+        if (report.event == GuardEvent::corner_lands) {
           return housner_.impact(state_, rock->pivot, lambda);
         }
         ContactOutcome carry_on;
@@ -217,7 +218,9 @@ double FlatGroundSimulation::rest_margin(const MotionPiece& piece, const MotionP
                                   rest_tip_limit(Corner::left) * factor + lambda, factor});
 }
 
-void FlatGroundSimulation::advance(const RestMode&, const MotionPiece& piece, double t_stop) {
+FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const RestMode&,
+                                                                const MotionPiece& piece,
+                                                                double t_stop) {
   const MotionPiece& vertical = vertical_.piece_at(t_);
   const bool holds_throughout =
       vertical.is_zero() &&
@@ -228,9 +231,12 @@ void FlatGroundSimulation::advance(const RestMode&, const MotionPiece& piece, do
   advance_rest(
       piece, t_stop, holds_throughout, [&](double t) { return rest_margin(piece, vertical, t); },
       [&](double t) { return resting_forces(piece, t); });
+  return {};
 }
 
-void FlatGroundSimulation::advance(const FlightMode&, const MotionPiece& piece, double t_stop) {
+FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode&,
+                                                                const MotionPiece& piece,
+                                                                double t_stop) {
   const double g = scene_.g;
   const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
   const double t0 = t_;
@@ -288,30 +294,36 @@ void FlatGroundSimulation::advance(const FlightMode&, const MotionPiece& piece, 
   }
   if (overturns) {
     overturn_at(t_end, end);
-    return;
+    return {};
   }
   t_ = t_end;
   state_ = end;
+  return {};
 }
 
 template <class System>
-void FlatGroundSimulation::advance(const System& system, const MotionPiece& piece, double t_stop) {
+FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const System& system,
+                                                                const MotionPiece& piece,
+                                                                double t_stop) {
+  EventReport report;
   with_scene_stepper<System::N>(scene_.solver, system.scale(), [&](auto& stepper) {
-    integrate_with(system, stepper, piece, t_stop, mode_kind(mode_));
+    report = integrate_with(system, stepper, piece, t_stop, mode_kind(mode_));
   });
+  return report;
 }
 
 template <class System>
-void FlatGroundSimulation::on_event(const System&, int which, double t_event,
-                                    const BlockState& at_event) {
+FlatGroundSimulation::EventReport FlatGroundSimulation::on_event(const System&, int which,
+                                                                 double t_event,
+                                                                 const BlockState& at_event) {
   const GuardEvent event = System::kEvents[static_cast<std::size_t>(which)];
   if (event == GuardEvent::overturns) {
     overturn_at(t_event, at_event);
-    return;
+    return {};
   }
   t_ = t_event;
   state_ = at_event;
-  last_event_ = event;
+  return {event};
 }
 
 bool FlatGroundSimulation::holds_under(const MotionPiece& piece) const {

@@ -94,11 +94,25 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   friend class EventLoop<SeatSimulation>;
   using Crossing = GuardWatch<SeatSystem::kGuards>::Crossing;
 
+  // A contact whose force reached zero or its cone's edge, or that left its segment's or edge's
+  // end.
+  struct ForceEvent {
+    SeatPair pair;
+    SeatEvent event;
+  };
+  // What ended an integrated stretch, for the resolution at its end.
+  struct EventReport {
+    bool by_event = false;            // a guard's crossing, or lambda leaving rest's range
+    std::optional<ForceEvent> force;  // the contact whose guard ended it, if one did
+    bool rest_ended = false;          // lambda left rest's range
+    int arrived_point = -1;           // the seat point that reached the block, if one did
+    bool ended_by_event() const { return by_event; }
+  };
+
   // The ground's part of the event loop (engine/event_loop.hpp).
   void place_at_start();
-  void resolve_and_enter() { enter(resolve()); }
-  void advance(const MotionPiece& piece, double t_stop);
-  bool ended_by_event() const { return ended_by_event_; }
+  void resolve_and_enter(const EventReport& report) { enter(resolve(report), report); }
+  EventReport advance(const MotionPiece& piece, double t_stop);
   bool holds_under(const MotionPiece& piece) const;
   bool at_rest() const { return mode_.rest; }
   void observe(const BlockState& s);
@@ -117,7 +131,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     deepest_ = std::max(deepest_, contacts_.penetration(state_at(t)));
   }
   template <class Ode>
-  void on_event(const Ode& ode, int which, double t_event, const BlockState& at_event);
+  EventReport on_event(const Ode& ode, int which, double t_event, const BlockState& at_event);
 
   double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
   // The settling speed now, in the gravity the block feels.
@@ -129,12 +143,13 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   PlanarContact contact_of(const SeatPair& pair, const BlockState& s) const {
     return contacts_.pose(pair, s).contact;
   }
-  std::vector<SeatPair> touching(const BlockState& s) const;
+  // The pairs touching at s, after a stretch that ended as `report` says.
+  std::vector<SeatPair> touching(const BlockState& s, const EventReport& report) const;
   // Impacts at the contacts that approach, one at a time as on the flat ground, until none does.
   // impacted: some contact approached.
   bool resolve_impacts(BlockState& s, const std::vector<SeatPair>& touching, bool& impacted);
   bool plastic_landing(const std::vector<SeatPair>& pairs) const;
-  SeatMode resolve();
+  SeatMode resolve(const EventReport& report);
   SeatMode logged_mode(const SeatMode& mode, std::size_t logged);
   std::vector<Eigen::RowVector3d> fixed_rows(const std::vector<SeatPair>& pairs,
                                              const std::vector<ContactState>& states,
@@ -148,9 +163,9 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   void set_rest_thresholds(SeatMode& mode) const;
   // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
   double rest_margin(double t, const MotionPiece& piece, const MotionPiece& vertical) const;
-  void enter(const SeatMode& mode);
+  void enter(const SeatMode& mode, const EventReport& report);
   void stop_at(double t, const BlockState& s, SeatEvent why);
-  void advance_rest(double t_stop);
+  EventReport advance_rest(double t_stop);
   // The rounding noise of a vertex's clearance over R near the block's pose s.
   double clearance_noise(const BlockState& s) const {
     return 8 * std::numeric_limits<double>::epsilon() *
@@ -175,18 +190,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
                                  [&](const auto& anchor) { return anchor.first == pair; });
     return it == anchors_.end() ? std::nullopt : std::optional<double>(it->second);
   }
-  bool ended_by_event_ = false;  // the last integrated stretch ended at a guard's crossing
-  // The contact whose force reached zero or its cone's edge, or that left its segment's or
-  // edge's end, at the last event, if one did.
-  struct ForceEvent {
-    SeatPair pair;
-    SeatEvent event;
-  };
-  std::optional<ForceEvent> force_event_;
-  bool rest_ended_ = false;  // the last stretch ended where lambda left rest's range
-  int arrived_point_ = -1;   // the seat point that reached the block at the last event, if one did
-  Vec2 origin_{0.0, 0.0};    // the charts' (engine/seat/seat_chart.hpp)
-  double deepest_ = 0.0;     // m: the block's largest penetration of the seat seen
+  Vec2 origin_{0.0, 0.0};  // the charts' (engine/seat/seat_chart.hpp)
+  double deepest_ = 0.0;   // m: the block's largest penetration of the seat seen
 };
 
 SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
@@ -273,12 +278,14 @@ SeatChart SeatSimulation::chart_of(const SeatMode& mode) const {
                     theta};
 }
 
-std::vector<SeatPair> SeatSimulation::touching(const BlockState& s) const {
+std::vector<SeatPair> SeatSimulation::touching(const BlockState& s,
+                                               const EventReport& report) const {
   const double tight = kContactHeight * R_;
   std::vector<SeatPair> out;
   std::optional<SeatPair> left;
-  if (force_event_ && force_event_->event == SeatEvent::leaves_end) left = force_event_->pair;
-  for (const SeatPair& pair : contacts_.touching(s, kSeatContactDrift * R_, left, arrived_point_)) {
+  if (report.force && report.force->event == SeatEvent::leaves_end) left = report.force->pair;
+  for (const SeatPair& pair :
+       contacts_.touching(s, kSeatContactDrift * R_, left, report.arrived_point)) {
     const bool was_active = std::any_of(mode_.active.begin(), mode_.active.end(),
                                         [&](const ActiveContact& a) { return a.pair == pair; });
     // Another pair touches when it is closer than a new contact's tolerance, or in the seat (a
@@ -379,8 +386,8 @@ bool SeatSimulation::plastic_landing(const std::vector<SeatPair>& pairs) const {
          lands_plastically(scene_.contact.restitution, fastest, settle_velocity());
 }
 
-SeatMode SeatSimulation::resolve() {
-  const std::vector<SeatPair> pairs = touching(state_);
+SeatMode SeatSimulation::resolve(const EventReport& report) {
+  const std::vector<SeatPair> pairs = touching(state_, report);
   // Between events the contacts hold only at the acceleration level: the integrator lets their
   // gaps and velocities drift, to its tolerance. The contact problem at the event reads contact
   // velocities against 1e-9 sqrt(gR), well below an adaptive solver's drift, so it is solved on the
@@ -470,7 +477,7 @@ SeatMode SeatSimulation::resolve() {
   // the gravity factor 1 + lambda_v, the contact problem's tolerance is of the accelerations: with
   // a factor below 1 the problem at the event could still find rest, and the block went back to
   // rest, past its range, at every event (random-0126 of the flat-seat cross-check, at 0.87 g).
-  if (still && holds_at_rest(forces, in.tolerance) && !force_event_ && !rest_ended_) {
+  if (still && holds_at_rest(forces, in.tolerance) && !report.force && !report.rest_ended) {
     // At rest every touching contact is kept: where rest ends is found on all of them.
     mode.rest = true;
     for (const SeatPair& pair : carrying) mode.active.push_back({pair, ContactState::stick});
@@ -491,9 +498,9 @@ SeatMode SeatSimulation::resolve() {
     // contact problem's own tolerance a block with mu = b / h exactly (the suite's
     // mu_equals_a_over_b) took a rock its sticking pivot's friction could not hold, 1e-12 g
     // outside its cone, and slipped 4e-13 s later; the flat ground's closed forms slide it.
-    if (rest_ended_) in.tolerance = kRestTolerance;
+    if (report.rest_ended) in.tolerance = kRestTolerance;
     PlanarForces moving = resolve_contact_forces(in);
-    if (moving.determinacy == Determinacy::inconsistent && rest_ended_) {
+    if (moving.determinacy == Determinacy::inconsistent && report.rest_ended) {
       in.tolerance = PlanarForcesInput{}.tolerance;
       moving = resolve_contact_forces(in);
     }
@@ -505,12 +512,12 @@ SeatMode SeatSimulation::resolve() {
     // guard that said the force left it, it can still choose the old state. The guard's crossing
     // decides then, as the flat ground's closed forms do: the contact lifts off, or slips against
     // its friction.
-    if (force_event_ && force_event_->pair == carrying[i]) {
+    if (report.force && report.force->pair == carrying[i]) {
       const auto before =
           std::find_if(mode_.active.begin(), mode_.active.end(),
                        [&](const ActiveContact& a) { return a.pair == carrying[i]; });
       if (before != mode_.active.end() && before->state == state) {
-        if (force_event_->event == SeatEvent::lift_off) {
+        if (report.force->event == SeatEvent::lift_off) {
           state = ContactState::off;
         } else if (state == ContactState::stick) {
           state = forces.tangent[i] > 0 ? ContactState::slip_negative : ContactState::slip_positive;
@@ -736,7 +743,7 @@ double SeatSimulation::rest_margin(double t, const MotionPiece& piece,
          std::min({mode_.rest_high * factor - lambda, lambda - mode_.rest_low * factor, factor});
 }
 
-void SeatSimulation::enter(const SeatMode& next) {
+void SeatSimulation::enter(const SeatMode& next, const EventReport& report) {
   const bool first = summary_.modes.empty();
   const ModeKind before = kind_of(mode_);
   mode_ = next;
@@ -748,7 +755,7 @@ void SeatSimulation::enter(const SeatMode& next) {
     // Rest's range is found on every contact it rests on; found without the left corner, it ended
     // when lambda changed sign, and the three contacts, pinned, swapped which one slips 10,000
     // times within 1e-7 s.
-    for (const SeatPair& pair : touching(state_)) {
+    for (const SeatPair& pair : touching(state_, report)) {
       const bool active = std::any_of(mode_.active.begin(), mode_.active.end(),
                                       [&](const ActiveContact& a) { return a.pair == pair; });
       if (!active) mode_.active.push_back({pair, ContactState::stick});
@@ -786,19 +793,21 @@ void SeatSimulation::stop_at(double t, const BlockState& s, SeatEvent why) {
 
 // At rest the block does not move; rest ends where lambda leaves the rest range (by the onset
 // margin).
-void SeatSimulation::advance_rest(double t_stop) {
+SeatSimulation::EventReport SeatSimulation::advance_rest(double t_stop) {
   const MotionPiece& piece = motion_.piece_at(t_);
   const MotionPiece& vertical = vertical_.piece_at(t_);
   const auto forces_at = [&](double t) {
     const Vec2 f = applied(t);
     return ContactForces{-f.x, -f.y};
   };
+  EventReport report;
   if (EventLoop::advance_rest(
           piece, t_stop, false, [&](double t) { return rest_margin(t, piece, vertical); },
           forces_at)) {
-    ended_by_event_ = true;
-    rest_ended_ = true;
+    report.by_event = true;
+    report.rest_ended = true;
   }
+  return report;
 }
 
 // A watched vertex's clearance is its height over the seat between the seat's ends and its distance
@@ -907,11 +916,13 @@ void SeatSimulation::note_contact_violation(const Ode& ode, double t, const Stat
 }
 
 template <class Ode>
-void SeatSimulation::on_event(const Ode& ode, int which, double t_event,
-                              const BlockState& at_event) {
+SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, double t_event,
+                                                     const BlockState& at_event) {
   const SeatSystem& system = ode.system();
   SeatEvent event = system.event(which);
-  arrived_point_ = event == SeatEvent::touches ? system.watched_point(which) : -1;
+  EventReport report;
+  report.by_event = true;
+  report.arrived_point = event == SeatEvent::touches ? system.watched_point(which) : -1;
   // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
   // top corner at theta = pi/2): that is overturning, whichever guard rounding put first. The
   // tilt is read with every touching contact put back on the seat: the active ones have drifted
@@ -919,26 +930,28 @@ void SeatSimulation::on_event(const Ode& ode, int which, double t_event,
   // pivot sunk into the seat lets the face's far corner touch before the tilt is reached.
   if (event == SeatEvent::touches) {
     std::vector<ActiveContact> landed;
-    for (const SeatPair& pair : touching(at_event)) landed.push_back({pair, ContactState::stick});
+    for (const SeatPair& pair : touching(at_event, report)) {
+      landed.push_back({pair, ContactState::stick});
+    }
     BlockState on_seat = at_event;
     project_positions(landed, on_seat);
     if (contacts_.overturn_margin(geometry_, on_seat.theta) <= kContactHeight) {
       event = SeatEvent::overturns;
-      arrived_point_ = -1;
+      report.arrived_point = -1;
     }
   }
   if (event == SeatEvent::lift_off || event == SeatEvent::friction_limit ||
       event == SeatEvent::leaves_end) {
     const auto contact = static_cast<std::size_t>((which - 2) / kSeatContactGuards);
-    force_event_ = ForceEvent{mode_.active[contact].pair, event};
+    report.force = ForceEvent{mode_.active[contact].pair, event};
   }
   if (event == SeatEvent::overturns || event == SeatEvent::falls) {
     stop_at(t_event, at_event, event);
-    return;
+    return {};
   }
   t_ = t_event;
   state_ = at_event;
-  ended_by_event_ = true;
+  return report;
 }
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) const {
@@ -972,32 +985,27 @@ void SeatSimulation::place_at_start() {
   origin_ = {state_.x, centre.y - geometry_.rest_height()};
 }
 
-void SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
-  ended_by_event_ = false;
-  force_event_.reset();
-  rest_ended_ = false;
-  arrived_point_ = -1;
-  if (mode_.rest) {
-    advance_rest(t_stop);
-    return;
-  }
+SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
+  if (mode_.rest) return advance_rest(t_stop);
   const SeatSystem moving = system(piece);
   const ModeKind kind = kind_of(mode_);
+  EventReport report;
   std::visit(
       [&](const auto& chart) {
         const SeatOde ode(moving, chart);
         if constexpr (std::is_same_v<std::decay_t<decltype(chart)>, FlightChart>) {
           if (vertical_.piece_at(t_).is_zero()) {
             ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
-            integrate_with(ode, flight, piece, t_stop, kind);
+            report = integrate_with(ode, flight, piece, t_stop, kind);
             return;
           }
         }
         with_scene_stepper<decltype(ode)::N>(scene_.solver, ode.scale(), [&](auto& stepper) {
-          integrate_with(ode, stepper, piece, t_stop, kind);
+          report = integrate_with(ode, stepper, piece, t_stop, kind);
         });
       },
       chart_of(mode_));
+  return report;
 }
 
 ContactForces SeatSimulation::forces_now() const {
