@@ -50,6 +50,22 @@ inline constexpr double kRestSearchLimit = 1024.0;
 // many together.
 inline constexpr int kMaxSeatClearances = 38;
 
+// Gauss-Newton iterations that put the active contacts' gaps back to zero after an event.
+inline constexpr int kProjectionIterations = 4;
+// Halvings of the lambda interval that bracket where rest on a seat ends.
+inline constexpr int kRestThresholdHalvings = 64;
+// Relative to g: the contact problem's tolerance (a force outside its cone, an acceleration taken
+// for none) where rest's lambda range is found, a tenth of the margin by which rest ends past it.
+// The block at rest is laid exactly on its contacts, so the problem's forces there are exact to
+// rounding (a few 1e-16 g); at its tolerance between events, 1e-9 g, rest held past its range by
+// 3e-9 of lambda (the block pivoting with an acceleration below 1e-9 g counted as still), and the
+// block started to rock a few 1e-9 s after the flat ground's closed-form onset, which is
+// kOnsetMargin past its threshold.
+inline constexpr double kRestTolerance = 1e-13;
+// Two seat segments whose directions' cross product is within this of zero (and whose lines are
+// within the contact height) are on one line: a flat seat given as a polyline rounds to 1e-16.
+inline constexpr double kCollinearSine = 1e-12;
+
 // --- Events: where a mode ends -------------------------------------------------------------------
 // A guard this close to zero when a mode starts is armed only once it has moved away: the event
 // that started the mode left it there.

@@ -48,9 +48,8 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
   straight_ = straight(kContactHeight * size);
   // A seat point between two collinear segments cannot touch a block edge without a vertex of
   // that edge on the seat's line, where that vertex's own contact carries the block. Taken as a
-  // contact, the joint under a block rocking down onto its far corner touched (its gap within the
-  // contact height) while that corner was still 1e-8 m up, and the block was laid flat 1.2e-4 s
-  // before the flat ground lays it (random-0640 of the flat-seat cross-check).
+  // contact, the joint under a block rocking down onto its far corner would touch (its gap within
+  // the contact height) while that corner is still up, and lay the block flat too early.
   for (std::size_t k = 0; k < seat_.size(); ++k) {
     bool bends = k == 0 || k + 1 == seat_.size();
     if (!bends) {

@@ -1,0 +1,185 @@
+// The seat's ground in the one event loop (engine/event_loop.hpp): a block on a polyline seat, its
+// contact sets integrated in their charts (engine/seat/seat_chart.hpp) and resolved at events by
+// the complementarity problem of engine/contact/contact_lcp.hpp. Internal to the engine: its
+// member functions are defined in seat_simulation.cpp (the loop's hooks and the integration),
+// seat_resolution.cpp (what happens at an event) and seat_projection.cpp (putting the block back
+// on its contacts, laying it, and rest's range).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "engine/contact/contact_lcp.hpp"
+#include "engine/contact/settling.hpp"
+#include "engine/event_loop.hpp"
+#include "engine/seat/seat_chart.hpp"
+#include "engine/seat/seat_system.hpp"
+
+namespace blockfrag {
+
+inline bool is_slip(ContactState s) {
+  return s == ContactState::slip_positive || s == ContactState::slip_negative;
+}
+
+// The mode between two events: the active contacts and their states (none: flight); at rest the
+// block does not move while lambda / (1 + lambda_v) stays within [rest_low, rest_high].
+struct SeatMode {
+  std::vector<ActiveContact> active;
+  bool rest = false;
+  double rest_low = 0.0, rest_high = 0.0;
+  // The contacts leave the block no freedom: it cannot move, only wait for a force guard (just
+  // past where rest ended, inside the contact problem's tolerance).
+  bool pinned = false;
+};
+
+// Rest, or pinned; no contact: flight; one contact: rock when it sticks, slide-rock
+// when it slips; several: slide when all slip, slide-rock when some do, rock otherwise (a vertex
+// sticking in the fold, on both its segments).
+inline ModeKind kind_of(const SeatMode& mode) {
+  if (mode.rest) return ModeKind::rest;
+  if (mode.pinned) return ModeKind::rest;
+  if (mode.active.empty()) return ModeKind::flight;
+  const auto slipping = std::count_if(mode.active.begin(), mode.active.end(),
+                                      [](const ActiveContact& a) { return is_slip(a.state); });
+  if (mode.active.size() == 1) return slipping == 1 ? ModeKind::slide_rock : ModeKind::rock;
+  if (slipping == static_cast<long>(mode.active.size())) return ModeKind::slide;
+  return slipping > 0 ? ModeKind::slide_rock : ModeKind::rock;
+}
+
+class SeatSimulation : public EventLoop<SeatSimulation> {
+ public:
+  SeatSimulation(const Scene& scene, double output_interval)
+      : EventLoop(scene, output_interval),
+        contacts_(scene_block_vertices(scene), scene.seat->points),
+        R_(geometry_.size()),
+        velocity_tol_(resting_speed(scene.g, R_)) {
+    summary_.model = std::holds_alternative<NoMotion>(scene.vertical_motion) ? Model::full
+                                                                             : Model::full_vertical;
+  }
+
+ private:
+  friend class EventLoop<SeatSimulation>;
+  using Crossing = GuardWatch<SeatSystem::kGuards>::Crossing;
+
+  // A contact whose force reached zero or its cone's edge, or that left its segment's or edge's
+  // end.
+  struct ForceEvent {
+    SeatPair pair;
+    SeatEvent event;
+  };
+  // What ended an integrated stretch, for the resolution at its end.
+  struct EventReport {
+    bool by_event = false;            // a guard's crossing, or lambda leaving rest's range
+    std::optional<ForceEvent> force;  // the contact whose guard ended it, if one did
+    bool rest_ended = false;          // lambda left rest's range
+    int arrived_point = -1;           // the seat point that reached the block, if one did
+    bool ended_by_event() const { return by_event; }
+  };
+
+  // The ground's part of the event loop (engine/event_loop.hpp).
+  void place_at_start();
+  void resolve_and_enter(const EventReport& report) { enter(resolve(report), report); }
+  EventReport advance(const MotionPiece& piece, double t_stop);
+  bool holds_under(const MotionPiece& piece) const;
+  bool at_rest() const { return mode_.rest; }
+  void observe(const BlockState& s);
+  ContactForces forces_now() const;
+  ModeKind mode_kind_now() const { return kind_of(mode_); }
+  // The observer measures depth below a flat ground at y = 0; on a seat it is the seat's.
+  void finish_summary() { summary_.max_penetration = deepest_ / R_; }
+  template <class Ode, class GuardsAt, class StateAt>
+  Crossing refine_crossing(const Ode& ode, const GuardWatch<SeatSystem::kGuards>& watch,
+                           const GuardsAt& guards_at, const StateAt& state_at, double t0, double t1,
+                           Crossing found, ModeKind kind) const;
+  template <class Ode, class StateAt, class ForcesAt>
+  void note_contact_violation(const Ode& ode, double t, const StateAt& state_at, const ForcesAt&);
+  template <class StateAt>
+  void stepped(const StateAt& state_at, double t) {
+    deepest_ = std::max(deepest_, contacts_.penetration(state_at(t)));
+  }
+  template <class Ode>
+  EventReport on_event(const Ode& ode, int which, double t_event, const BlockState& at_event);
+
+  double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
+  // The settling speed now, in the gravity the block feels.
+  double settle_velocity() const { return settling_speed(scene_.g * gravity_factor(t_), R_); }
+  Vec2 applied(double t) const {
+    return {motion_.lambda(t) * scene_.g, -scene_.g * gravity_factor(t)};
+  }
+  SeatSystem system(const MotionPiece& piece) const;
+  PlanarContact contact_of(const SeatPair& pair, const BlockState& s) const {
+    return contacts_.pose(pair, s).contact;
+  }
+  // The pairs touching at s, after a stretch that ended as `report` says.
+  std::vector<SeatPair> touching(const BlockState& s, const EventReport& report) const;
+  // Impacts at the contacts that approach, one at a time as on the flat ground, until none does.
+  // impacted: some contact approached.
+  bool resolve_impacts(BlockState& s, const std::vector<SeatPair>& touching, bool& impacted);
+  bool plastic_landing(const std::vector<SeatPair>& pairs) const;
+  SeatMode resolve(const EventReport& report);
+  // The named steps of resolve (engine/seat/seat_resolution.cpp).
+  struct CarryingContacts {
+    std::vector<SeatPair> pairs;
+    PlanarForcesInput problem;
+  };
+  void put_back_on_held_contacts(const std::vector<SeatPair>& pairs);
+  void settle_or_lay(BlockState& s, const std::vector<SeatPair>& pairs, bool impacted);
+  CarryingContacts carrying_contacts(const std::vector<SeatPair>& pairs) const;
+  SeatMode rest_on(const std::vector<SeatPair>& carrying);
+  PlanarForces choice_that_moves(PlanarForcesInput problem, const EventReport& report,
+                                 const PlanarForces& pinned) const;
+  SeatMode states_after_guard(const std::vector<SeatPair>& carrying, const PlanarForces& forces,
+                              const EventReport& report) const;
+  std::vector<Eigen::RowVector3d> fixed_rows(const SeatMode& mode) const;
+  SeatMode logged_mode(const SeatMode& mode, std::size_t logged);
+  std::vector<Eigen::RowVector3d> fixed_rows(const std::vector<SeatPair>& pairs,
+                                             const std::vector<ContactState>& states,
+                                             const BlockState& s) const;
+  bool holds_at_rest(const PlanarForces& f, double relative_tolerance) const;
+  Eigen::Vector3d least_kinetic_change(const Eigen::MatrixXd& j, const Eigen::VectorXd& b) const;
+  void lay_on(const std::vector<SeatPair>& pairs, BlockState& s) const;
+  void project_positions(const std::vector<ActiveContact>& active, BlockState& s) const;
+  void project(const SeatMode& mode);
+  bool rest_holds(double lambda) const;
+  void set_rest_thresholds(SeatMode& mode) const;
+  // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
+  double rest_margin(double t, const MotionPiece& piece, const MotionPiece& vertical) const;
+  void enter(const SeatMode& mode, const EventReport& report);
+  void stop_at(double t, const BlockState& s, SeatEvent why);
+  EventReport advance_rest(double t_stop);
+  // The rounding noise of a vertex's clearance over R near the block's pose s.
+  double clearance_noise(const BlockState& s) const {
+    return 8 * std::numeric_limits<double>::epsilon() *
+           (1.0 + (std::abs(s.x) + std::abs(s.y)) / R_);
+  }
+  template <class GuardsAt>
+  static Crossing landing_at_zero(const GuardsAt& guards_at, double t0, Crossing found,
+                                  double noise);
+  template <class StateAt>
+  Crossing touch_before_an_end(const SeatSystem& system, const StateAt& state_at, double t0,
+                               double t1) const;
+  SeatChart chart_of(const SeatMode& mode) const;
+
+  SeatContacts contacts_;
+  double R_, velocity_tol_;
+  SeatMode mode_;
+  // Where each block vertex that sticks on a seat segment stuck (its place along the segment, m),
+  // kept while it sticks.
+  std::vector<std::pair<SeatPair, double>> anchors_;
+  std::optional<double> anchor_of(const SeatPair& pair) const {
+    const auto it = std::find_if(anchors_.begin(), anchors_.end(),
+                                 [&](const auto& anchor) { return anchor.first == pair; });
+    return it == anchors_.end() ? std::nullopt : std::optional<double>(it->second);
+  }
+  Vec2 origin_{0.0, 0.0};  // the charts' (engine/seat/seat_chart.hpp)
+  double deepest_ = 0.0;   // m: the block's largest penetration of the seat seen
+};
+
+}  // namespace blockfrag
