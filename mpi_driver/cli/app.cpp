@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "blockfrag/version.hpp"
 #include "engine/errors.hpp"
 #include "mpi_driver/accuracy/accuracy_settings.hpp"
 #include "mpi_driver/cli/accuracy_command.hpp"
@@ -227,7 +228,8 @@ void add_subcommands(CLI::App& app, std::function<int()>& command,
 
 int run_command_line(int argc, char** argv, const AtomicWriteHooks& checkpoint_hooks) {
   CLI::App app{"blockfrag: rigid-block rocking, sliding and overturning under ground pulses"};
-  app.set_version_flag("--version", std::string("blockfrag ") + BLOCKFRAG_VERSION);
+  app.set_version_flag("--version",
+                       std::string("blockfrag ") + kVersion + " (commit " + build_commit() + ")");
   app.require_subcommand(1);
 
   std::function<int()> command;
