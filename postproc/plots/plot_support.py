@@ -138,7 +138,7 @@ def attribute(node, path, name, convert=None):
     try:
         return convert(value)
     except (TypeError, ValueError) as error:
-        raise InputError(f"{path}: attribute {name} of {node.name} is not what it should be ({error})") from error
+        raise InputError(f"{path}: attribute {name} of {node.name} cannot be read ({error})") from error
 
 
 def text(value):
