@@ -130,7 +130,7 @@ inline constexpr double kGridRounding = 1e-12;
 inline constexpr double kSettleAllowance = 60.0;  // s
 // The dam's ringing has ended once the crest's acceleration is below this (in g): a thousand times
 // below any friction or tipping threshold of a real block.
-inline constexpr double kRingingEnd = 1e-6;
+inline constexpr double kRingingEndAccelerationG = 1e-6;
 
 // --- Budgets: what stops a scene that does not end -----------------------------------------------
 // The defaults of a scene's max_steps and max_events: far above any real scene (a 600 s record with

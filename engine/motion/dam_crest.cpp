@@ -142,7 +142,7 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
   const double omega_d = omega * std::sqrt(1.0 - zeta * zeta);
   const auto quiet = [&](const OscillatorState& s) {
     const double amplitude = std::hypot(s.q, (s.v + zeta * omega * s.q) / omega_d);
-    return gamma_phi * omega * omega * amplitude / g < kRingingEnd;
+    return gamma_phi * omega * omega * amplitude / g < kRingingEndAccelerationG;
   };
   const double foundation_end = foundation.end_of_motion();
 

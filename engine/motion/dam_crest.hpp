@@ -74,7 +74,8 @@ constexpr std::size_t kMaxCrestNodes = 2'000'000;
 std::size_t dam_crest_nodes(const GroundMotionPieces& foundation, double period, double duration);
 
 // Up to `duration`; with until_quiet, the history ends earlier once the foundation has stopped
-// and the crest's free ringing can no longer exceed kRingingEnd (engine/tolerances.hpp).
+// and the crest's free ringing can no longer exceed kRingingEndAccelerationG
+// (engine/tolerances.hpp).
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,
                                double duration, double g, bool until_quiet = false);
 

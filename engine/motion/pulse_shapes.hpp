@@ -10,14 +10,10 @@
 
 namespace blockfrag::pulse {
 
-// Ricker: (1 - 2 u^2) exp(-u^2) and its derivative in u, 2 u (2 u^2 - 3) exp(-u^2).
+// Ricker: (1 - 2 u^2) exp(-u^2).
 inline double ricker(double u) {
   const double u2 = u * u;
   return (1.0 - 2.0 * u2) * std::exp(-u2);
-}
-inline double ricker_slope(double u) {
-  const double u2 = u * u;
-  return 2.0 * u * (2.0 * u2 - 3.0) * std::exp(-u2);
 }
 
 // Mavroeidis-Papageorgiou lambda over (Vp Omega / (2 g)) at x = Omega tau, with k = 1/gamma:

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "blockfrag/version.hpp"
 #include "engine/errors.hpp"
 #include "mpi_driver/accuracy/accuracy_settings.hpp"
 #include "mpi_driver/cli/accuracy_command.hpp"
@@ -68,8 +69,10 @@ void add_simulate_command(CLI::App& app, std::function<int()>& command) {
       [options, &command] { command = [options] { return run_simulate(*options, std::cout); }; });
 }
 
-void add_run_command(CLI::App& app, std::function<int()>& command) {
+void add_run_command(CLI::App& app, std::function<int()>& command,
+                     const AtomicWriteHooks& checkpoint_hooks) {
   auto options = std::make_shared<RunOptions>();
+  options->checkpoint_hooks = checkpoint_hooks;
   CLI::App* run = app.add_subcommand("run", "Run a batch study (under mpirun for several ranks)");
   run->add_option("study", options->study_path, "Study config (JSON)")
       ->required()
@@ -188,8 +191,10 @@ void add_export_command(CLI::App& app, std::function<int()>& command) {
   });
 }
 
-void add_spectrum_command(CLI::App& app, std::function<int()>& command) {
+void add_spectrum_command(CLI::App& app, std::function<int()>& command,
+                          const AtomicWriteHooks& checkpoint_hooks) {
   auto options = std::make_shared<SpectrumOptions>();
+  options->checkpoint_hooks = checkpoint_hooks;
   CLI::App* spectrum =
       app.add_subcommand("spectrum",
                          "Map an overturning spectrum and bisect its boundaries (under mpirun for "
@@ -209,24 +214,26 @@ void add_spectrum_command(CLI::App& app, std::function<int()>& command) {
 }
 
 // Declares every subcommand on `app`; once one has been parsed, `command` runs it.
-void add_subcommands(CLI::App& app, std::function<int()>& command) {
+void add_subcommands(CLI::App& app, std::function<int()>& command,
+                     const AtomicWriteHooks& checkpoint_hooks) {
   add_simulate_command(app, command);
-  add_run_command(app, command);
+  add_run_command(app, command, checkpoint_hooks);
   add_accuracy_command(app, command);
   add_bench_command(app, command);
   add_export_command(app, command);
-  add_spectrum_command(app, command);
+  add_spectrum_command(app, command, checkpoint_hooks);
 }
 
 }  // namespace
 
-int run_command_line(int argc, char** argv) {
+int run_command_line(int argc, char** argv, const AtomicWriteHooks& checkpoint_hooks) {
   CLI::App app{"blockfrag: rigid-block rocking, sliding and overturning under ground pulses"};
-  app.set_version_flag("--version", std::string("blockfrag ") + BLOCKFRAG_VERSION);
+  app.set_version_flag("--version",
+                       std::string("blockfrag ") + kVersion + " (commit " + build_commit() + ")");
   app.require_subcommand(1);
 
   std::function<int()> command;
-  add_subcommands(app, command);
+  add_subcommands(app, command, checkpoint_hooks);
 
   try {
     app.parse(argc, argv);

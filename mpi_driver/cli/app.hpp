@@ -12,8 +12,13 @@
 //   command
 #pragma once
 
+#include "mpi_driver/io/atomic_file.hpp"
+
 namespace blockfrag {
 
-int run_command_line(int argc, char** argv);
+// `checkpoint_hooks` reach every checkpoint write of `run` and `spectrum`: the executable passes
+// none; a test's own executable (tests/support/paused_checkpoints_main.cpp) passes a pause, to land
+// a kill inside a write.
+int run_command_line(int argc, char** argv, const AtomicWriteHooks& checkpoint_hooks = {});
 
 }  // namespace blockfrag

@@ -107,11 +107,6 @@ MpiSession::~MpiSession() {
   }
 }
 
-double checkpoint_pause_from_environment() {
-  const char* text = std::getenv("BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S");
-  return text ? std::strtod(text, nullptr) : 0.0;
-}
-
 OutputClaim claim_output(MPI_Comm comm, const std::filesystem::path& output, std::uint64_t hash,
                          const std::string& kind,
                          const std::vector<std::filesystem::path>& own_files) {

@@ -32,10 +32,6 @@ class MpiSession {
   std::filesystem::path session_folder_;  // a singleton's own Open MPI session tree, if made
 };
 
-// BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S (seconds; 0 when unset): the test hook that pauses every
-// checkpoint write before its rename.
-double checkpoint_pause_from_environment();
-
 enum class OutputVerdict : int { run = 0, already_complete = 1, refused = 2 };
 
 struct OutputClaim {

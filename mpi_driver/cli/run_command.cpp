@@ -77,7 +77,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   settings.records = record_spool_path_for(config.output);
   settings.checkpoint_interval_s = config.checkpoint_interval_s;
   settings.max_chunk = options.max_chunk;
-  settings.checkpoint_hooks.pause_before_rename_s = checkpoint_pause_from_environment();
+  settings.checkpoint_hooks = options.checkpoint_hooks;
   settings.log = rank == 0 ? &std::cerr : nullptr;
   settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
 

@@ -8,10 +8,6 @@
 // is in progress); 4 interrupted by SIGTERM or SIGINT after writing a checkpoint: run the same
 // command to resume. (Under mpirun, a signal sent to mpirun itself makes mpirun report its own
 // non-zero code; the ranks still checkpoint and exit 4.)
-//
-// Test hook: the environment variable BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S (seconds) makes every
-// checkpoint write pause between its complete FILE.tmp and the rename, so a test can kill the job
-// inside a checkpoint write.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +15,7 @@
 #include <optional>
 
 #include "mpi_driver/cli/exit_codes.hpp"
+#include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/parallel/study_runner.hpp"
 
 namespace blockfrag {
@@ -27,7 +24,8 @@ struct RunOptions {
   std::filesystem::path study_path;
   std::optional<std::filesystem::path> output;
   std::optional<long> samples_per_level;
-  std::int64_t max_chunk = 0;  // 0: adapted (RunSettings::max_chunk)
+  std::int64_t max_chunk = 0;         // 0: adapted (RunSettings::max_chunk)
+  AtomicWriteHooks checkpoint_hooks;  // none from the command line (run_command_line)
 };
 
 // Initialises and finalises MPI; runs the study with `evaluate` (blockfrag::simulate by default)

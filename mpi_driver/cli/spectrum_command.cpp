@@ -68,7 +68,7 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
   settings.checkpoint = checkpoint_path_for(config.output);
   settings.records = record_spool_path_for(config.output);
   settings.checkpoint_interval_s = config.checkpoint_interval_s;
-  settings.checkpoint_hooks.pause_before_rename_s = checkpoint_pause_from_environment();
+  settings.checkpoint_hooks = options.checkpoint_hooks;
   settings.log = rank == 0 ? &std::cerr : nullptr;
   settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
   settings.max_chunk = options.max_chunk;

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "mpi_driver/io/atomic_file.hpp"
 #include "mpi_driver/study/sample_evaluation.hpp"
 
 namespace blockfrag {
@@ -21,7 +22,8 @@ namespace blockfrag {
 struct SpectrumOptions {
   std::filesystem::path spectrum_path;
   std::optional<std::filesystem::path> output;
-  std::int64_t max_chunk = 0;  // 0: adapted (RunSettings::max_chunk)
+  std::int64_t max_chunk = 0;         // 0: adapted (RunSettings::max_chunk)
+  AtomicWriteHooks checkpoint_hooks;  // none from the command line (run_command_line)
 };
 
 // Initialises and finalises MPI; runs the spectrum with `evaluate` (blockfrag::simulate by

@@ -58,7 +58,6 @@ class Range {
   static Range any() { return Range{}; }
   static Range greater_than(double bound) { return Range{Bound{bound, false, {}}, {}}; }
   static Range at_least(double bound) { return Range{Bound{bound, true, {}}, {}}; }
-  static Range less_than(double bound) { return Range{{}, Bound{bound, false, {}}}; }
   static Range at_most(double bound) { return Range{{}, Bound{bound, true, {}}}; }
   static Range closed(double low, double high) {
     return {Bound{low, true, {}}, Bound{high, true, {}}};

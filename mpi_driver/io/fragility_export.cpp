@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "blockfrag/version.hpp"
 #include "engine/errors.hpp"
 
 namespace blockfrag {
@@ -270,7 +271,7 @@ PelicunDamageModel pelicun_damage_model(const FragilityFits& fits, const std::st
       {"Description", "Lognormal fragility functions of " + subject +
                           ", fitted by blockfrag to its Monte Carlo study and exported by "
                           "blockfrag export."},
-      {"Version", BLOCKFRAG_VERSION},
+      {"Version", kVersion},
       {"ComponentGroups", {{first_segment(id) + " - blockfrag rigid blocks", Json::array({id})}}}};
   model[id] = {{"Description", "Free-standing rigid block of blockfrag study " + fits.config_hash +
                                    ": lognormal fragility versus " + fits.im_label +

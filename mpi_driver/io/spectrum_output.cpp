@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "blockfrag/version.hpp"
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
@@ -16,7 +17,7 @@ constexpr std::int64_t kSpoolRecordsPerRead = 1 << 16;
 void write_root(Hdf5Writer& file, const SpectrumConfig& config) {
   file.set_attribute("/", "config", canonical_text(config.canonical));
   file.set_attribute("/", "config_hash", hash_to_hex(config.hash));
-  file.set_attribute("/", "blockfrag_version", std::string(BLOCKFRAG_VERSION));
+  file.set_attribute("/", "blockfrag_version", std::string(kVersion));
   file.set_attribute("/", "kind", std::string("overturning spectrum"));
   file.set_attribute("/", "pulse", std::string(spectrum_pulse_name(config.pulse)));
   file.set_attribute("/", "alpha", config.alpha());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "blockfrag/version.hpp"
 #include "engine/scene/block_geometry.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "mpi_driver/io/atomic_file.hpp"
@@ -322,7 +323,7 @@ StudyTallies write_study_output(const std::filesystem::path& path, const StudyCo
     Hdf5Writer file(temporary);
     file.set_attribute("/", "config", canonical_text(config.canonical));
     file.set_attribute("/", "config_hash", hash_to_hex(config.hash));
-    file.set_attribute("/", "blockfrag_version", std::string(BLOCKFRAG_VERSION));
+    file.set_attribute("/", "blockfrag_version", std::string(kVersion));
     file.set_attribute("/", "total_samples", config.total_samples());
     file.set_attribute("/", "samples_per_level",
                        static_cast<std::int64_t>(config.samples_per_level));

@@ -17,17 +17,16 @@ panel per record.
     /usr/bin/python3 postproc/plots/plot_cloud.py results.h5 -o slide.png --limit-state slide_5cm
 """
 
-import argparse
 import json
 import math
 import os
 import sys
 import textwrap
 
-import matplotlib
-
-matplotlib.use("Agg")
-import h5py  # noqa: E402  (the backend must be chosen before pyplot, and h5py is grouped here)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError, text  # noqa: E402
+import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
@@ -39,19 +38,6 @@ OVERTURNED, EXCEEDED, BELOW = "#D55E00", "#E69F00", "#0072B2"
 MAX_PANELS = 64
 # Stripes put every sample of a level at one intensity: spread them this far sideways (a factor).
 JITTER = 0.035
-
-
-class InputError(Exception):
-    """A problem with the input file, reported as one line without a traceback."""
-
-
-def text(value):
-    """An attribute as str: h5py gives str for variable-length strings, bytes for fixed-length ones."""
-    if isinstance(value, bytes):
-        return value.decode("utf-8", "replace")
-    if isinstance(value, np.ndarray) and value.shape == ():
-        return text(value[()])
-    return str(value)
 
 
 def polygon_alpha(vertices, where):
@@ -104,22 +90,14 @@ def sample_alphas(file, path, count):
 
 
 def column(file, path, name, count=None, dtype=float):
-    if name not in file or not isinstance(file[name], h5py.Dataset):
-        raise InputError(f"{path} has no {name} (is it a blockfrag study output?)")
-    values = np.asarray(file[name][...], dtype=dtype).ravel()
+    values = plot_support.dataset(file, path, name, dtype, hint="a blockfrag study output").ravel()
     if count is not None and len(values) != count:
         raise InputError(f"{path}: {name} has {len(values)} entries, /samples/im {count}")
     return values
 
 
 def read_samples(path):
-    if not os.path.exists(path):
-        raise InputError(f"cannot open {path}: no such file")
-    try:
-        file = h5py.File(path, "r")
-    except OSError as error:
-        raise InputError(f"cannot open {path}: not a readable HDF5 file ({error})") from error
-    with file:
+    with plot_support.open_hdf5(path) as file:
         im = column(file, path, "/samples/im")
         n = len(im)
         data = {
@@ -132,7 +110,7 @@ def read_samples(path):
         data["alpha"] = sample_alphas(file, path, n)
         if len(data["alpha"]) != n:
             raise InputError(f"{path}: /samples/alpha has {len(data['alpha'])} entries, /samples/im {n}")
-        fragility = file["fragility"] if "fragility" in file and isinstance(file["fragility"], h5py.Group) else None
+        fragility = file["fragility"] if plot_support.has_group(file, "fragility") else None
         attrs = fragility.attrs if fragility is not None else {}
         units = text(attrs["im_units"]) if "im_units" in attrs else \
             (text(file["samples/im"].attrs["units"]) if "units" in file["samples/im"].attrs else "")
@@ -353,20 +331,19 @@ def plot(data, limit_state, by_record, title, output):
     note = textwrap.wrap(note, int(20 * fig.get_figwidth()))
     fig.text(0.01, 0.01, "\n".join(note), fontsize=7, color="0.35", va="bottom")
     fig.tight_layout(rect=(0, (0.03 + 0.12 * len(note)) / fig.get_figheight(), 1, top))
-    fig.savefig(output, dpi=150)
-    plt.close(fig)
+    plot_support.save_figure(fig, output, dpi=150)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("results", help="study output HDF5 file")
-    parser.add_argument("-o", "--output", required=True, help="PNG file to write")
+    plot_support.add_output(parser, required=True)
     parser.add_argument("--by-record", action="store_true", help="one panel per record of a record suite")
     parser.add_argument("--limit-state", metavar="NAME", help="colour by whether each sample exceeds this limit state")
-    parser.add_argument("--title", help="figure title (default: from the file name)")
+    plot_support.add_title(parser)
     args = parser.parse_args(argv)
-    name = os.path.basename(sys.argv[0])
-    try:
+
+    def work():
         data = read_samples(args.results)
         limit_state = None
         if args.limit_state is not None:
@@ -383,13 +360,8 @@ def main(argv=None):
                                  f"{MAX_PANELS} panels one figure can show")
         title = args.title or f"Each sample's rotation and verdict: {os.path.basename(args.results)}"
         plot(data, limit_state, args.by_record, title, args.output)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

@@ -16,16 +16,15 @@ severity_order) and a curve that crosses another inside the levels says so (cros
     /usr/bin/python3 postproc/plots/plot_fragility.py results.h5 --summary
 """
 
-import argparse
 import math
 import os
 import sys
 import textwrap
 
-import matplotlib
-
-matplotlib.use("Agg")
-import h5py  # noqa: E402  (the backend must be chosen before pyplot, and h5py is grouped here)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError, text  # noqa: E402
+import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
@@ -41,19 +40,6 @@ REJECT_AT = 0.05
 # Okabe & Ito's palette: distinguishable with the common colour-vision deficiencies and in grey.
 COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442")
 MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*")
-
-
-class InputError(Exception):
-    """A problem with the input file, reported as one line without a traceback."""
-
-
-def text(value):
-    """An attribute as str: h5py gives str for variable-length strings, bytes for fixed-length ones."""
-    if isinstance(value, bytes):
-        return value.decode("utf-8", "replace")
-    if isinstance(value, np.ndarray) and value.shape == ():
-        return text(value[()])
-    return str(value)
 
 
 def number(attrs, name):
@@ -97,14 +83,8 @@ def read_band(path, name, state):
 
 
 def read_study(path):
-    if not os.path.exists(path):
-        raise InputError(f"cannot open {path}: no such file")
-    try:
-        file = h5py.File(path, "r")
-    except OSError as error:
-        raise InputError(f"cannot open {path}: not a readable HDF5 file ({error})") from error
-    with file:
-        if "fragility" not in file or not isinstance(file["fragility"], h5py.Group):
+    with plot_support.open_hdf5(path) as file:
+        if not plot_support.has_group(file, "fragility"):
             raise InputError(f"{path} has no /fragility group (is it a blockfrag study output?)")
         group = file["fragility"]
         im_name = text(group.attrs["im_name"]) if "im_name" in group.attrs else ""
@@ -337,8 +317,7 @@ def plot(study, title, output):
     note = textwrap.wrap(f"{points}, bars: {interval} interval{per_level}. {lines}", 135)
     fig.text(0.01, 0.01, "\n".join(note), fontsize=7.5, color="0.35", va="bottom")
     fig.tight_layout(pad=0.8, rect=(0, (0.02 + 0.12 * len(note)) / fig.get_figheight(), 1, 1))
-    fig.savefig(output, dpi=150)
-    plt.close(fig)
+    plot_support.save_figure(fig, output, dpi=150)
 
 
 def summary(study):
@@ -396,32 +375,23 @@ def summary(study):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("results", help="study output HDF5 file")
-    parser.add_argument("-o", "--output", help="PNG file to write")
+    plot_support.add_output(parser)
     parser.add_argument("--summary", action="store_true", help="print the table of each limit state")
-    parser.add_argument("--title", help="figure title (default: from the file name)")
+    plot_support.add_title(parser)
     args = parser.parse_args(argv)
     if not args.output and not args.summary:
         parser.error("nothing to do: give -o OUT.png, --summary or both")
-    name = os.path.basename(sys.argv[0])
-    try:
+
+    def work():
         study = read_study(args.results)
         if args.summary:
             print(summary(study))
         if args.output:
             plot(study, args.title or f"Fragility curves: {os.path.basename(args.results)}", args.output)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except BrokenPipeError:
-        # The summary's reader went away (| head): nothing left to say.
-        sys.stderr.close()
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

@@ -10,19 +10,16 @@ two studies must measure intensity the same way (the same im_name).
         [--labels "type A" "type B"] [--title TEXT]
 """
 
-import argparse
 import math
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
-import numpy as np  # noqa: E402
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_fragility import InputError, axis_label, has_fit, lognormal_cdf, read_study  # noqa: E402
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError  # noqa: E402
+from plot_fragility import axis_label, has_fit, lognormal_cdf, read_study  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 COLOURS = ("tab:blue", "tab:red")
 
@@ -79,31 +76,25 @@ def plot(studies, labels, title, output):
         axis.set_visible(False)
     figure.suptitle(title)
     figure.tight_layout()
-    figure.savefig(output, dpi=110)
-    plt.close(figure)
+    plot_support.save_figure(figure, output, dpi=110)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("first", help="first study's HDF5 output")
     parser.add_argument("second", help="second study's HDF5 output")
-    parser.add_argument("-o", "--output", required=True, help="PNG file to write")
+    plot_support.add_output(parser, required=True)
     parser.add_argument("--labels", nargs=2, metavar=("FIRST", "SECOND"),
                         help="legend names of the two studies (default: their file names)")
     parser.add_argument("--title", help="figure title")
     args = parser.parse_args(argv)
     labels = args.labels or [os.path.basename(args.first), os.path.basename(args.second)]
-    name = os.path.basename(sys.argv[0])
-    try:
+
+    def work():
         studies = [read_study(args.first), read_study(args.second)]
         plot(studies, labels, args.title or f"{labels[0]} against {labels[1]}", args.output)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

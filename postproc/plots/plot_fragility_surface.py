@@ -16,15 +16,13 @@ fit and its median form (ln median1 = c0 + c1 ln im2, beta1) as text.
     /usr/bin/python3 postproc/plots/plot_fragility_surface.py results.h5 --limit-state overturn -o o.png
 """
 
-import argparse
 import math
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import h5py  # noqa: E402  (the backend must be chosen before pyplot, and h5py is grouped here)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError, text  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.ticker import FixedLocator, FuncFormatter, LogLocator, NullFormatter, NullLocator  # noqa: E402
@@ -34,26 +32,9 @@ MAX_PANELS = 6
 FITTED = ("ok", "not_increasing")
 
 
-class InputError(Exception):
-    """A problem with the input file, reported as one line without a traceback."""
-
-
-def text(value):
-    """An attribute as str: h5py gives str for variable-length strings, bytes for fixed-length ones."""
-    if isinstance(value, bytes):
-        return value.decode("utf-8", "replace")
-    return str(value)
-
-
 def read_surfaces(path):
     """The axes' names and every limit state's grid and fit, as plain numpy values."""
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: no such file")
-    try:
-        f = h5py.File(path, "r")
-    except OSError:
-        raise InputError(f"{path}: not an HDF5 file") from None
-    with f:
+    with plot_support.open_hdf5(path) as f:
         if "fragility_surface" not in f:
             raise InputError(f"{path}: no /fragility_surface (not a study with a second intensity measure)")
         root = f["fragility_surface"]
@@ -160,8 +141,7 @@ def plot(axes, states, contours, title, output):
     bar = fig.colorbar(points, ax=panels.ravel().tolist(), shrink=0.8)
     bar.set_label("observed probability of exceedance (markers)")
     fig.suptitle(title)
-    fig.savefig(output, dpi=150)
-    plt.close(fig)
+    plot_support.save_figure(fig, output, dpi=150)
 
 
 def summary(axes, states):
@@ -185,16 +165,15 @@ def summary(axes, states):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("results", help="study output HDF5 file (a surface study's)")
-    parser.add_argument("-o", "--output", help="PNG file to write")
+    plot_support.add_output(parser)
     parser.add_argument("--limit-state", metavar="NAME", help="draw only this limit state")
     parser.add_argument("--contours", default="0.1,0.5,0.9",
                         help="probabilities of the fitted contours, comma-separated (default 0.1,0.5,0.9)")
     parser.add_argument("--summary", action="store_true", help="print each fit as text")
-    parser.add_argument("--title", help="figure title (default: from the file name)")
+    plot_support.add_title(parser)
     args = parser.parse_args(argv)
-    name = os.path.basename(sys.argv[0])
     try:
         contours = sorted(float(p) for p in args.contours.split(","))
     except ValueError:
@@ -203,7 +182,8 @@ def main(argv=None):
         parser.error(f"--contours: every probability must be in (0, 1), got {args.contours!r}")
     if not args.output and not args.summary:
         parser.error("nothing to do: give -o OUT.png, --summary or both")
-    try:
+
+    def work():
         axes, states = read_surfaces(args.results)
         if args.limit_state is not None:
             known = [state["name"] for state in states]
@@ -221,13 +201,8 @@ def main(argv=None):
         if args.output:
             title = args.title or f"Fragility surfaces: {os.path.basename(args.results)}"
             plot(axes, states, contours, title, args.output)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

@@ -7,15 +7,14 @@ omega, mode, friction_per_weight, normal_per_weight) and writes a PNG with three
     /usr/bin/python3 postproc/plots/plot_history.py history.csv -o history.png [--title TEXT]
 """
 
-import argparse
 import csv
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
@@ -32,10 +31,6 @@ MODE_STYLE = {
 }
 
 
-class InputError(Exception):
-    """A problem with the input file, reported as one line without a traceback."""
-
-
 def read_history(path):
     try:
         with open(path, newline="") as stream:
@@ -44,6 +39,8 @@ def read_history(path):
             if missing:
                 raise InputError(f"{path}: not a blockfrag history: missing column(s) {', '.join(missing)}")
             rows = list(reader)
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file") from None
     except OSError as error:
         raise InputError(f"cannot read {path}: {error.strerror}") from error
     if not rows:
@@ -127,29 +124,23 @@ def plot(data, title, output):
     fig.suptitle(title, fontsize=12)
     fig.align_ylabels((ax_theta, ax_x, ax_force))
     fig.tight_layout()
-    fig.savefig(output, dpi=150)
-    plt.close(fig)
+    plot_support.save_figure(fig, output, dpi=150)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("history", help="time history CSV from blockfrag simulate --history")
-    parser.add_argument("-o", "--output", required=True, help="PNG file to write")
-    parser.add_argument("--title", help="figure title (default: the CSV's file name)")
+    plot_support.add_output(parser, required=True)
+    plot_support.add_title(parser, "the CSV's file name")
     args = parser.parse_args(argv)
-    name = os.path.basename(sys.argv[0])
-    try:
+
+    def work():
         data = read_history(args.history)
         if not np.all(np.isfinite(data["t"])):
             raise InputError(f"{args.history}: time column holds NaN or infinity")
         plot(data, args.title or f"Time history: {os.path.basename(args.history)}", args.output)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

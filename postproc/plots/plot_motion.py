@@ -17,23 +17,20 @@ of the block moving (matplotlib's Pillow writer), real time unless that needs mo
     /usr/bin/python3 postproc/plots/plot_motion.py history.csv scene.json --gif motion.gif [--fps 20]
 """
 
-import argparse
 import json
 import math
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError  # noqa: E402
+# The same history reader and mode colours as the time-history plot (a sibling script).
+from plot_history import MODE_STYLE, read_history  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.animation import FuncAnimation, PillowWriter  # noqa: E402
 from matplotlib.patches import Patch, Polygon, Rectangle  # noqa: E402
-
-# The same history reader and mode colours as the time-history plot (a sibling script).
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_history import MODE_STYLE, InputError, read_history  # noqa: E402
 
 # The outlines' edges: a darker shade of each mode's fill, so a covered snapshot still shows its mode.
 MODE_EDGE = {"rest": "#4d4d4d", "slide": "#2f6fa8", "rock": "#c4661b", "slide_rock": "#7a4a9e",
@@ -60,6 +57,8 @@ def read_scene(path):
     try:
         with open(path) as stream:
             scene = json.load(stream)
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file") from None
     except OSError as error:
         raise InputError(f"cannot read {path}: {error.strerror}") from error
     except ValueError as error:
@@ -319,8 +318,7 @@ def plot(data, shape, title, output, wanted, seat=None, ax=None, strip=None):
         return
     fig.suptitle(title, fontsize=12)
     fig.tight_layout()
-    fig.savefig(output, dpi=150)
-    plt.close(fig)
+    plot_support.save_figure(fig, output, dpi=150)
 
 
 def animate(data, shape, title, output, fps, max_frames, seat=None):
@@ -364,12 +362,15 @@ def animate(data, shape, title, output, fps, max_frames, seat=None):
         return block, trail, label
 
     animation = FuncAnimation(fig, draw, frames=frames + hold, blit=False)
-    animation.save(output, writer=PillowWriter(fps=fps), dpi=90)
-    plt.close(fig)
+    try:
+        with plot_support.writing(output):
+            animation.save(output, writer=PillowWriter(fps=fps), dpi=90)
+    finally:
+        plt.close(fig)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("history", help="time history CSV from blockfrag simulate --history")
     parser.add_argument("scene", help="the scene JSON the history ran (or a study file: its scene)")
     parser.add_argument("-o", "--output", help="PNG file to write: the snapshots")
@@ -378,15 +379,14 @@ def main(argv=None):
     parser.add_argument("--fps", type=int, default=20, help="GIF frames per second (default 20)")
     parser.add_argument("--max-frames", type=int, default=300,
                         help="at most this many GIF frames; a longer motion plays faster (default 300)")
-    parser.add_argument("--title", help="figure title (default: the CSV's file name)")
+    plot_support.add_title(parser, "the CSV's file name")
     args = parser.parse_args(argv)
     if not args.output and not args.gif:
         parser.error("nothing to do: give -o OUT.png, --gif OUT.gif or both")
     if args.snapshots < 2 or args.fps < 1 or args.max_frames < 2:
         parser.error("--snapshots and --max-frames must be at least 2, --fps at least 1")
-    name = os.path.basename(sys.argv[0])
-    target = args.output
-    try:
+
+    def work():
         data = read_history(args.history)
         for column in ("t", "x", "y", "theta"):
             if not np.all(np.isfinite(data[column])):
@@ -400,16 +400,10 @@ def main(argv=None):
         if args.output:
             plot(data, shape, title, args.output, args.snapshots, seat)
         if args.gif:
-            target = args.gif
             animate(data, shape, args.title or os.path.basename(args.history), args.gif, args.fps, args.max_frames,
                     seat)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {target}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

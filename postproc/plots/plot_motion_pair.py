@@ -8,26 +8,23 @@ checks each history against its scene the same way; one title per panel with --t
         [--titles "forward" "reversed"] [--suptitle TEXT] [--snapshots 12]
 """
 
-import argparse
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
-import numpy as np  # noqa: E402
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_history import InputError, read_history  # noqa: E402
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError  # noqa: E402
+from plot_history import read_history  # noqa: E402
 from plot_motion import check_fit, on_seat, plot, read_scene  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("pairs", nargs="+", metavar="HISTORY SCENE",
                         help="time history CSV and the scene JSON it ran, for each panel")
-    parser.add_argument("-o", "--output", required=True, help="PNG file to write")
+    plot_support.add_output(parser, required=True)
     parser.add_argument("--titles", nargs="+", help="one title per panel (default: the CSVs' names)")
     parser.add_argument("--suptitle", help="a title over the panels")
     parser.add_argument("--snapshots", type=int, default=12, help="outlines per panel (default 12)")
@@ -40,8 +37,8 @@ def main(argv=None):
         parser.error(f"--titles: {panels} panels, {len(titles)} titles")
     if args.snapshots < 2:
         parser.error("--snapshots must be at least 2")
-    name = os.path.basename(sys.argv[0])
-    try:
+
+    def work():
         runs = []
         for history, scene in zip(args.pairs[::2], args.pairs[1::2]):
             data = read_history(history)
@@ -59,15 +56,9 @@ def main(argv=None):
         if args.suptitle:
             fig.suptitle(args.suptitle, fontsize=12)
         fig.tight_layout()
-        fig.savefig(args.output, dpi=130)
-        plt.close(fig)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+        plot_support.save_figure(fig, args.output, dpi=130)
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

@@ -27,10 +27,9 @@ import sys
 import textwrap
 from collections import deque
 
-import matplotlib
-
-matplotlib.use("Agg")
-import h5py  # noqa: E402  (the backend must be chosen before pyplot, and h5py is grouped here)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError, text  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import BoundaryNorm, ListedColormap  # noqa: E402
@@ -56,37 +55,19 @@ CLASSES = [
 ]
 
 
-class InputError(Exception):
-    """A problem with the input file, reported as one line without a traceback."""
-
-
-def text(value):
-    """An attribute as str: h5py gives str for variable-length strings, bytes for fixed-length ones."""
-    if isinstance(value, bytes):
-        return value.decode("utf-8", "replace")
-    if isinstance(value, np.ndarray) and value.shape == ():
-        return text(value[()])
-    return str(value)
-
-
 def read_spectrum(path):
-    try:
-        with h5py.File(path, "r") as f:
-            try:
-                frequency = np.asarray(f["map/frequency_ratio"][()], dtype=float)
-                amplitude = np.asarray(f["map/amplitude_ratio"][()], dtype=float)
-                verdict = np.asarray(f["map/verdict"][()], dtype=np.int64)
-                boundary = {
-                    key: np.asarray(f["boundary/" + key][()])
-                    for key in ("frequency_index", "amplitude_ratio", "direction")
-                }
-                config = json.loads(text(f.attrs["config"]))
-                alpha = float(f.attrs["alpha"])
-                pulse = text(f.attrs["pulse"])
-            except (KeyError, ValueError, TypeError) as error:
-                raise InputError(f"{path}: not a blockfrag spectrum output ({error})") from error
-    except OSError as error:
-        raise InputError(f"{path}: cannot read it as HDF5 ({error})") from error
+    hint = "a blockfrag spectrum output"
+    with plot_support.open_hdf5(path) as f:
+        frequency = plot_support.dataset(f, path, "/map/frequency_ratio", hint=hint)
+        amplitude = plot_support.dataset(f, path, "/map/amplitude_ratio", hint=hint)
+        verdict = plot_support.dataset(f, path, "/map/verdict", np.int64, hint=hint)
+        boundary = {
+            key: plot_support.dataset(f, path, "/boundary/" + key, None, hint=hint)
+            for key in ("frequency_index", "amplitude_ratio", "direction")
+        }
+        config = plot_support.attribute(f, path, "config", lambda value: json.loads(text(value)))
+        alpha = plot_support.attribute(f, path, "alpha", float)
+        pulse = plot_support.attribute(f, path, "pulse", text)
     nf, na = len(frequency), len(amplitude)
     if verdict.shape != (nf, na) or nf < 1 or na < 2:
         raise InputError(f"{path}: /map/verdict has shape {verdict.shape}, not ({nf}, {na})")
@@ -312,8 +293,7 @@ def plot(datasets, title, output, mark_frequency, mark_point):
     fig.suptitle("\n".join(textwrap.wrap(title, width) + textwrap.wrap(describe(datasets[0]), width)),
                  fontsize=10)
     fig.tight_layout(rect=(0, 0.17 if panels == 1 else 0.12, 1, 0.94))
-    fig.savefig(output, dpi=150)
-    plt.close(fig)
+    plot_support.save_figure(fig, output, dpi=150)
 
 
 def point(text_value):
@@ -326,30 +306,25 @@ def point(text_value):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = plot_support.parser(__doc__)
     parser.add_argument("spectra", nargs="+", help="spectrum output HDF5 file(s), one panel each (at most 3)")
-    parser.add_argument("-o", "--output", required=True, help="PNG file to write")
+    plot_support.add_output(parser, required=True)
     parser.add_argument("--mark-frequency", type=float, action="append", default=[], metavar="RATIO",
                         help="draw a vertical line at this frequency ratio (repeatable)")
     parser.add_argument("--mark-point", type=point, action="append", default=[],
                         metavar="FREQUENCY,AMPLITUDE",
                         help="draw a star at this (frequency ratio, amplitude ratio) (repeatable)")
-    parser.add_argument("--title", help="figure title (default: from the file name)")
+    plot_support.add_title(parser)
     args = parser.parse_args(argv)
-    name = os.path.basename(sys.argv[0])
-    try:
+
+    def work():
         if len(args.spectra) > 3:
             raise InputError(f"{len(args.spectra)} files are more than the 3 panels one figure shows")
         datasets = [read_spectrum(path) for path in args.spectra]
         title = args.title or f"Overturning spectrum: {os.path.basename(args.spectra[0])}"
         plot(datasets, title, args.output, args.mark_frequency, args.mark_point)
-    except InputError as error:
-        print(f"{name}: error: {error}", file=sys.stderr)
-        return 1
-    except OSError as error:
-        print(f"{name}: error: cannot write {args.output}: {error.strerror or error}", file=sys.stderr)
-        return 1
-    return 0
+
+    return plot_support.run(work)
 
 
 if __name__ == "__main__":

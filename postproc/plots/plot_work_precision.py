@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The work-precision diagram of a `blockfrag accuracy` HDF5 file.
 
 Error in max |theta| (the largest over the suite's scenes) against the median time per scene,
@@ -6,45 +6,58 @@ log-log, one line per method, each point labelled with its dt or tolerance. Erro
 at the plot's floor; settings with a failed scene (infinite error) are left out and listed in the
 legend.
 
-    plot_work_precision.py accuracy.h5 work_precision.png [--title TEXT] [--error median]
+    /usr/bin/python3 postproc/plots/plot_work_precision.py accuracy.h5 work_precision.png \\
+        [--title TEXT] [--error median]
 """
-import argparse
 import math
+import os
 import sys
 
-import h5py
-import matplotlib
-
-matplotlib.use("Agg")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError, text  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
 MARKERS = {"rk4": "s", "adaptive": "o", "gsl_rkf45": "^", "gsl_rk8pd": "D"}
+HINT = "a blockfrag accuracy output"
 
 
 def read_summary(path, statistic):
-    with h5py.File(path, "r") as f:
-        summary = f["summary"]
-        labels = summary.attrs["labels"].split("\n")
-        methods = summary.attrs["methods"].split("\n")
-        errors = list(summary[f"{statistic}_error_max_abs_theta"][...])
-        seconds = list(summary["median_seconds"][...])
-        parameters = list(summary["parameter"][...])
-        failures = list(summary["failures"][...])
-        check_errors = f["scenes/check_error_max_abs_theta"][...]
+    with plot_support.open_hdf5(path) as f:
+        if not plot_support.has_group(f, "summary"):
+            raise InputError(f"{path} has no /summary group (is it {HINT}?)")
+
+        def column(name):
+            return list(plot_support.dataset(f, path, name, None, hint=HINT).ravel())
+
+        labels = plot_support.attribute(f["summary"], path, "labels", text).split("\n")
+        methods = plot_support.attribute(f["summary"], path, "methods", text).split("\n")
+        errors = column(f"/summary/{statistic}_error_max_abs_theta")
+        seconds = column("/summary/median_seconds")
+        parameters = column("/summary/parameter")
+        failures = column("/summary/failures")
+        if not len(labels) == len(methods) == len(errors) == len(seconds) == len(parameters) == len(failures):
+            raise InputError(f"{path}: /summary's labels, methods and datasets differ in length")
+        check_errors = plot_support.dataset(f, path, "/scenes/check_error_max_abs_theta", hint=HINT)
         check = float(check_errors.max()) if check_errors.size else 0.0
-        reference = f"{f.attrs['reference_method']} tol={f.attrs['reference_tolerance']:.0e}"
+        method = plot_support.attribute(f, path, "reference_method", text)
+        tolerance = plot_support.attribute(f, path, "reference_tolerance", float)
+        reference = f"{method} tol={tolerance:.0e}"
     return labels, methods, errors, seconds, parameters, failures, check, reference
 
 
-def main(argv):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("input")
-    parser.add_argument("output")
-    parser.add_argument("--title", default="Work-precision on the accuracy suite")
+def main(argv=None):
+    parser = plot_support.parser(__doc__)
+    parser.add_argument("input", help="the HDF5 output of blockfrag accuracy")
+    parser.add_argument("output", help="PNG file to write")
+    parser.add_argument("--title", default="Work-precision on the accuracy suite", help="figure title")
     parser.add_argument("--error", choices=["max", "median"], default="max",
                         help="which error over the scenes to plot (default: max)")
     args = parser.parse_args(argv)
+    return plot_support.run(lambda: plot(args))
 
+
+def plot(args):
     labels, methods, errors, seconds, parameters, failures, check, reference = read_summary(args.input, args.error)
     finite = [e for e in errors if math.isfinite(e) and e > 0]
     floor = min(finite + [check if check > 0 else 1e-15]) / 3 if finite else 1e-15
@@ -77,9 +90,8 @@ def main(argv):
     ax.grid(True, which="both", linewidth=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(args.output, dpi=120)
-    return 0
+    plot_support.save_figure(fig, args.output, dpi=120)
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(main())

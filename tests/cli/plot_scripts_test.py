@@ -23,7 +23,10 @@ and a bad --mark-point. plot_fragility_surface.py: a PNG with one panel per limi
 markers take the colour map's colours of the cells' probabilities, fitted contours through the
 points where the file's coefficients give P = 0.5, a --summary with the file's coefficients and
 median form, a panel for a limit state without a fit, one-line errors for a file without
-/fragility_surface, an unknown --limit-state and bad --contours. Prints "N passed, M failed" last; exits non-zero on any failure.
+/fragility_surface, an unknown --limit-state and bad --contours. plot_work_precision.py: a PNG
+from a synthetic accuracy output, one-line errors naming the file and the dataset or group it
+lacks. Every error on an input exits 2, one on an output 1 (postproc/plots/plot_support.py).
+Prints "N passed, M failed" last; exits non-zero on any failure.
 """
 
 import math
@@ -54,6 +57,7 @@ PLOT_MOTION_PAIR = SOURCE / "postproc" / "plots" / "plot_motion_pair.py"
 PLOT_FRAGILITY_PAIR = SOURCE / "postproc" / "plots" / "plot_fragility_pair.py"
 PLOT_SPECTRUM = SOURCE / "postproc" / "plots" / "plot_spectrum.py"
 PLOT_SURFACE = SOURCE / "postproc" / "plots" / "plot_fragility_surface.py"
+PLOT_WORK_PRECISION = SOURCE / "postproc" / "plots" / "plot_work_precision.py"
 
 # Colours the scripts promise: the mode shading of plot_history.py and the first two limit-state
 # colours of plot_fragility.py.
@@ -132,8 +136,10 @@ def check_plausible_png(path, min_height=600):
     return pixels
 
 
-def assert_clean_error(result, *fragments):
-    assert result.returncode != 0, "exit code 0 on bad input"
+def assert_clean_error(result, *fragments, code=2):
+    """One short line on stderr holding each fragment, and exit code `code`: 2 for bad input, 1 for
+    an output that cannot be written."""
+    assert result.returncode == code, f"exit code {result.returncode}, not {code}: {result.stderr!r}"
     assert "Traceback" not in result.stderr, f"a traceback instead of a message:\n{result.stderr}"
     for fragment in fragments:
         assert fragment in result.stderr, f"stderr lacks {fragment!r}: {result.stderr!r}"
@@ -251,7 +257,8 @@ def test_history_plot_refuses_an_unknown_mode(work):
 
 def test_history_plot_reports_an_unwritable_output(work):
     write_history(work / "h.csv")
-    assert_clean_error(call(PLOT_HISTORY, work / "h.csv", "-o", work / "no_dir" / "x.png"), "cannot write")
+    assert_clean_error(call(PLOT_HISTORY, work / "h.csv", "-o", work / "no_dir" / "x.png"), "cannot write",
+                       code=1)
 
 
 # --- plot_fragility.py --------------------------------------------------------------------------------
@@ -458,7 +465,7 @@ def test_cloud_plot_errors_are_one_line(work):
     write_samples(work / "s.h5")
     assert_clean_error(call(PLOT_CLOUD, work / "s.h5", "-o", work / "x.png", "--by-record"), "--by-record")
     result = call(PLOT_CLOUD, work / "s.h5", "-o", work / "x.png", "--limit-state", "nope")
-    assert result.returncode == 1 and "nope" in result.stderr and "rocking_half" in result.stderr, result.stderr
+    assert result.returncode == 2 and "nope" in result.stderr and "rocking_half" in result.stderr, result.stderr
     write_study(work / "f.h5")
     assert_clean_error(call(PLOT_CLOUD, work / "f.h5", "-o", work / "x.png"), "/samples/im")
     assert not (work / "x.png").exists()
@@ -532,7 +539,7 @@ def test_motion_plot_refuses_another_scene(work):
     assert_clean_error(call(PLOT_MOTION, work / "h.csv", work / "tall.json", "-o", work / "x.png"),
                        "tall.json", "scene of that history")
     result = call(PLOT_MOTION, work / "h.csv", work / "absent.json", "-o", work / "x.png")
-    assert result.returncode == 1 and "absent.json" in result.stderr, result.stderr
+    assert result.returncode == 2 and "absent.json" in result.stderr, result.stderr
     assert not (work / "x.png").exists()
 
 
@@ -636,7 +643,7 @@ def test_motion_pair_draws_two_panels_on_their_seats(work):
     # Each history is checked against its own scene: swapped, they are refused.
     result = call(PLOT_MOTION_PAIR, work / "h.csv", work / "flat.json", work / "flat.csv", work / "seat.json",
                   "-o", work / "x.png")
-    assert result.returncode == 1 and "scene of that history" in result.stderr, result.stderr
+    assert result.returncode == 2 and "scene of that history" in result.stderr, result.stderr
     assert not (work / "x.png").exists()
 
 
@@ -772,7 +779,8 @@ def test_spectrum_islands_and_boundary_lines(work):
 def test_spectrum_plot_errors_are_one_line(work):
     assert_clean_error(call(PLOT_SPECTRUM, work / "absent.h5", "-o", work / "x.png"), "absent.h5")
     write_study(work / "study.h5")
-    assert_clean_error(call(PLOT_SPECTRUM, work / "study.h5", "-o", work / "x.png"), "not a blockfrag spectrum")
+    assert_clean_error(call(PLOT_SPECTRUM, work / "study.h5", "-o", work / "x.png"),
+                       "study.h5 has no dataset /map/frequency_ratio")
     write_spectrum(work / "s.h5")
     result = run(PLOT_SPECTRUM, work / "s.h5", "-o", work / "x.png", "--mark-point", "1")
     assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
@@ -858,6 +866,44 @@ def test_surface_plot_errors_are_one_line(work):
                        "--limit-state nope", "overturn, slide")
     result = run(PLOT_SURFACE, work / "s.h5", "-o", work / "x.png", "--contours", "0.5,1.5")
     assert result.returncode == 2 and "every probability must be in (0, 1)" in result.stderr, result.stderr
+    assert not (work / "x.png").exists()
+
+
+# --- plot_work_precision.py ----------------------------------------------------------------------
+
+
+def write_accuracy(path, drop=None):
+    """An accuracy output as `blockfrag accuracy` writes it: two rk4 steps and two adaptive
+    tolerances, their errors falling with the cost; `drop` leaves one dataset out."""
+    summary = {"max_error_max_abs_theta": [1e-3, 1e-5, 1e-7, 1e-9], "median_error_max_abs_theta": [1e-4, 1e-6, 1e-8, 0.0],
+               "median_seconds": [1e-4, 1e-3, 2e-4, 5e-4], "parameter": [1e-2, 1e-3, 1e-6, 1e-8],
+               "failures": np.zeros(4, dtype=np.int64)}
+    with h5py.File(path, "w") as f:
+        f.attrs["reference_method"] = "adaptive"
+        f.attrs["reference_tolerance"] = 1e-12
+        group = f.create_group("summary")
+        group.attrs["labels"] = "rk4 dt=0.01\nrk4 dt=0.001\nadaptive tol=1e-06\nadaptive tol=1e-08"
+        group.attrs["methods"] = "rk4\nrk4\nadaptive\nadaptive"
+        for name, values in summary.items():
+            if name != drop:
+                group.create_dataset(name, data=np.asarray(values))
+        f.create_dataset("scenes/check_error_max_abs_theta", data=np.array([1e-12, 3e-12]))
+
+
+def test_work_precision_plot_draws_the_methods(work):
+    write_accuracy(work / "a.h5")
+    result = call(PLOT_WORK_PRECISION, work / "a.h5", work / "wp.png")
+    assert result.returncode == 0, result.stderr
+    check_plausible_png(work / "wp.png")
+
+
+def test_work_precision_plot_errors_are_one_line(work):
+    write_accuracy(work / "a.h5", drop="median_seconds")
+    assert_clean_error(call(PLOT_WORK_PRECISION, work / "a.h5", work / "x.png"), "a.h5",
+                       "/summary/median_seconds")
+    write_study(work / "study.h5")
+    assert_clean_error(call(PLOT_WORK_PRECISION, work / "study.h5", work / "x.png"), "study.h5", "/summary")
+    assert_clean_error(call(PLOT_WORK_PRECISION, work / "absent.h5", work / "x.png"), "absent.h5: no such file")
     assert not (work / "x.png").exists()
 
 

@@ -85,12 +85,19 @@ export PATH="$work/bin:$PATH" SCONTROL_LOG="$work/scontrol.log" SLURM_JOB_ID=424
 
 # A slow study: 20,000 samples (about a second on 2 ranks: 3,000 could end before the signal came;
 # under the sanitizers, which slow the engine several times, 3,000 take as long) with a checkpoint
-# write held 0.2 s every 0.1 s (the test hook).
+# write held 0.2 s every 0.1 s (bin/blockfrag: the test executable with paused checkpoint writes,
+# as slurm_study.sh's $BLOCKFRAG).
 slurm_per_level=2000
 [[ ${BLOCKFRAG_SANITIZED:-OFF} == ON ]] && slurm_per_level=300
 sed -e 's/"checkpoint_interval_s": [0-9.]*/"checkpoint_interval_s": 0.1/' \
   "$BLOCKFRAG_SOURCE_DIR/configs/example_study.json" >slurm.json
-export BLOCKFRAG BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=0.2
+cat >bin/blockfrag <<SH
+#!/bin/bash
+exec "$BLOCKFRAG_PAUSED_CHECKPOINTS" 0.2 "\$@"
+SH
+chmod +x bin/blockfrag
+BLOCKFRAG=$work/bin/blockfrag
+export BLOCKFRAG
 "$BLOCKFRAG" run slurm.json --output reference.h5 --samples-per-level "$slurm_per_level" 2>/dev/null
 
 # interrupt_and_resume LAUNCHER NAME: the script with BLOCKFRAG_LAUNCHER=LAUNCHER writes NAME.h5;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A study killed with SIGKILL at random moments, once certainly inside a checkpoint write (the
-# documented hook BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S holds each write between its complete temporary file
-# and the rename), and resumed each time with the same command, ends bitwise identical to an
+# test executable $BLOCKFRAG_PAUSED_CHECKPOINTS holds each write between its complete temporary
+# file and the rename), and resumed each time with the same command, ends bitwise identical to an
 # uninterrupted run, with every sample exactly once. SIGTERM writes a checkpoint and exits with code
 # 4 ("interrupted"), and the resume completes; a second run while one is going is refused. A
 # resume with a changed config (seed, sample count) is refused with exit code 2 and a clear
@@ -75,7 +75,7 @@ start_job() {
   touch job.err
   local started
   started=$(grep -c "^study " job.err)
-  BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=${pause:-0} mpirun -n 2 --oversubscribe "$BLOCKFRAG" run study.json \
+  mpirun -n 2 --oversubscribe "$BLOCKFRAG_PAUSED_CHECKPOINTS" "${pause:-0}" run study.json \
     2>>job.err &
   job=$!
   for _ in $(seq 1 1500); do
@@ -146,7 +146,7 @@ compgen -G 'study.h5*.tmp.*' >/dev/null && fail "temporary files left: $(ls stud
 # --- SIGTERM: checkpoint, exit code 4, resume ------------------------------------------------------
 rm -f study.h5 study.h5.checkpoint* job.err
 pause=0.2
-BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=$pause "$BLOCKFRAG" run study.json 2>term.err &
+"$BLOCKFRAG_PAUSED_CHECKPOINTS" "$pause" run study.json 2>term.err &
 job=$!
 wait_for_checkpoint
 # Meanwhile the same command again is refused: two runs would overwrite each other's checkpoints.

@@ -79,7 +79,7 @@ mkdir killed
 write_spectrum killed/s.json
 cd killed || exit 1
 start_job() {
-  BLOCKFRAG_TEST_CHECKPOINT_PAUSE_S=0.1 mpirun -n 2 --oversubscribe "$BLOCKFRAG" spectrum s.json 2>>job.err &
+  mpirun -n 2 --oversubscribe "$BLOCKFRAG_PAUSED_CHECKPOINTS" 0.1 spectrum s.json 2>>job.err &
   job=$!
 }
 # wait_for FILE: until it exists or the job ends.
