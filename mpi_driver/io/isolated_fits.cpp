@@ -51,8 +51,10 @@ std::optional<double> text_optional(const Json& text) {
   return text_number(text);
 }
 
+}  // namespace
+
 // The reader's texts are printable ASCII; the source, a path, is not sent.
-Json fits_json(const FragilityFits& fits) {
+Json fits_to_json(const FragilityFits& fits) {
   Json states = Json::array();
   for (const auto& state : fits.states) {
     states.push_back({{"name", state.name},
@@ -78,7 +80,7 @@ Json fits_json(const FragilityFits& fits) {
           {"crossing_pairs", fits.crossing_pairs}};
 }
 
-FragilityFits json_fits(const Json& json, const std::string& source) {
+FragilityFits fits_from_json(const Json& json, const std::string& source) {
   FragilityFits fits;
   fits.source = source;
   fits.config_hash = json.at("config_hash").get<std::string>();
@@ -108,14 +110,12 @@ FragilityFits json_fits(const Json& json, const std::string& source) {
   return fits;
 }
 
-}  // namespace
-
 FragilityFits read_fragility_fits_isolated(const std::filesystem::path& path,
                                            std::chrono::milliseconds limit) {
   const std::string answer = read_in_child(path.string(), limit, fits_memory_bytes, [&] {
-    return fits_json(read_fragility_fits(path)).dump();
+    return fits_to_json(read_fragility_fits(path)).dump();
   });
-  return json_fits(Json::parse(answer), path.string());
+  return fits_from_json(Json::parse(answer), path.string());
 }
 
 }  // namespace blockfrag
