@@ -89,12 +89,14 @@ def draw(report, im, rate, states, first, title):
         estimate = state["fit"] or state["points"]
         lam = estimate["lambda"] if estimate else float("nan")
         label = f"{state['name']}: lambda {lam:.3g} /yr"
-        if detail and detail.get("median") and detail.get("beta"):
+        fitted = bool(detail and detail.get("median") and detail.get("beta"))
+        if fitted:
             middle.plot(x, lognormal(x, detail["median"], detail["beta"]), color=colour,
                         label=label)
         if detail and detail.get("levels"):
             middle.plot(detail["levels"], detail["probability"], linestyle="none", marker="o",
-                        color=colour, markersize=4)
+                        color=colour, markersize=4,
+                        label=None if fitted else label + " (points, no fit)")
         if estimate:
             steps = integrand(im, estimate["bin_lambda"])
             bottom.stairs(steps, im, color=colour, label=state["name"])

@@ -9,7 +9,9 @@
 - the bins and the motions past the curve make up lambda; the interval holds lambda and comes
   from the study's resamples; the probabilities are 1 - exp(-lambda t);
 - two studies weighted 0.25 and 0.75 give the weighted sum of their lambdas;
-- risk.csv has a row per limit state and method with the JSON's numbers.
+- risk.csv has a row per limit state and method with the JSON's numbers;
+- configs/hazard's real sites are what its script writes, and each site is read (poe = 1 at the
+  lowest levels of Los Angeles and San Francisco).
 Prints "N passed, M failed" last; exits non-zero on any failure.
 """
 
@@ -158,6 +160,26 @@ def check_weighted(study, other, folder):
             assert abs(c["fit"]["lambda"] / expected - 1) < 1e-12, c["name"]
 
 
+def check_real_sites(study, folder):
+    """configs/hazard's file is what its script writes, and each of its sites is read."""
+    script = SOURCE / "configs" / "hazard" / "make_usgs_2008_sites.py"
+    committed = (SOURCE / "configs" / "hazard" / "usgs_2008_wus_pga_sites.csv").read_text()
+    copy = folder / "make_usgs_2008_sites.py"
+    copy.write_text(script.read_text())
+    subprocess.run([sys.executable, copy], check=True, timeout=60)
+    assert (folder / "usgs_2008_wus_pga_sites.csv").read_text() == committed
+    at_poe_one = []
+    for site in range(4):
+        report, _ = risk(study, SOURCE / "configs" / "hazard" / "usgs_2008_wus_pga_sites.csv",
+                         folder, "--site", site)
+        at_poe_one.append(report["hazard"]["levels_at_poe_one"])
+        # Salt Lake City's lowest rate, 0.118372651 a year, read back from poe in 50 years.
+        if site == 3:
+            assert abs(report["hazard"]["annual_rate"][0] / 0.118372651 - 1) < 1e-5
+    # Los Angeles and San Francisco round to poe = 1 at their lowest levels.
+    assert at_poe_one == [3, 2, 0, 0], at_poe_one
+
+
 def main():
     passed = failed = 0
     with tempfile.TemporaryDirectory() as scratch:
@@ -168,7 +190,8 @@ def main():
                   ("one curve in three formats", lambda: check_same_curve(study, folder)),
                   ("poe = 1 at low levels", lambda: check_poe_one(study, folder)),
                   ("JSON and CSV", lambda: check_report(study, folder)),
-                  ("weighted studies", lambda: check_weighted(study, other, folder))]
+                  ("weighted studies", lambda: check_weighted(study, other, folder)),
+                  ("real sites' curves", lambda: check_real_sites(study, folder))]
         for name, check in checks:
             try:
                 check()
