@@ -183,6 +183,9 @@ void add_export_command(CLI::App& app, std::function<int()>& command) {
   export_->add_flag("--fitted-only", options->fitted_only,
                     "Export the limit states that have a fit and name the others, instead of "
                     "refusing a limit state without a fit");
+  export_->add_flag("--nested", options->nested,
+                    "Export the fit of all limit states with one common beta (curves that do "
+                    "not cross) instead of each state's own fit");
   export_->callback([options, format, &command] {
     options->format = *format == "openquake" ? ExportFormat::openquake : ExportFormat::pelicun;
     command = [options] { return run_export(*options, std::cout, std::cerr); };

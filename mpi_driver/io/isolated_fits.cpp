@@ -68,7 +68,8 @@ Json fits_to_json(const FragilityFits& fits) {
                       {"deviance", optional_text(state.deviance)},
                       {"gof_p_value", optional_text(state.gof_p_value)},
                       {"overturned_exceeds", state.overturned_exceeds},
-                      {"im", numbers_text(state.im)}});
+                      {"im", numbers_text(state.im)},
+                      {"nested_median", number_text(state.nested_median)}});
   }
   return {{"config_hash", fits.config_hash},
           {"im_name", fits.im_name},
@@ -77,7 +78,10 @@ Json fits_to_json(const FragilityFits& fits) {
           {"im_period_s", optional_text(fits.im_period_s)},
           {"im_damping", optional_text(fits.im_damping)},
           {"states", states},
-          {"crossing_pairs", fits.crossing_pairs}};
+          {"crossing_pairs", fits.crossing_pairs},
+          {"nested_status", fits.nested_status},
+          {"nested_beta", number_text(fits.nested_beta)},
+          {"common_beta", fits.common_beta}};
 }
 
 FragilityFits fits_from_json(const Json& json, const std::string& source) {
@@ -103,10 +107,14 @@ FragilityFits fits_from_json(const Json& json, const std::string& source) {
     fit.gof_p_value = text_optional(state.at("gof_p_value"));
     fit.overturned_exceeds = state.at("overturned_exceeds").get<bool>();
     fit.im = text_numbers(state.at("im"));
+    fit.nested_median = text_number(state.at("nested_median"));
     fits.states.push_back(std::move(fit));
   }
   fits.crossing_pairs =
       json.at("crossing_pairs").get<std::vector<std::pair<std::string, std::string>>>();
+  fits.nested_status = json.at("nested_status").get<std::string>();
+  fits.nested_beta = text_number(json.at("nested_beta"));
+  fits.common_beta = json.at("common_beta").get<bool>();
   return fits;
 }
 

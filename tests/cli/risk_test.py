@@ -10,6 +10,8 @@
   from the study's resamples; the probabilities are 1 - exp(-lambda t);
 - two studies weighted 0.25 and 0.75 give the weighted sum of their lambdas;
 - risk.csv has a row per limit state and method with the JSON's numbers;
+- the study's common-beta fit is stored (in order, its beta among the separate ones) and
+  `export --nested` writes it, read back from OpenQuake's mean and stddev to 1e-12;
 - configs/hazard's real sites are what its script writes, and each site is read (poe = 1 at the
   lowest levels of Los Angeles and San Francisco).
 Prints "N passed, M failed" last; exits non-zero on any failure.
@@ -23,6 +25,7 @@ import subprocess
 import sys
 import tempfile
 import traceback
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import h5py
@@ -180,6 +183,34 @@ def check_real_sites(study, folder):
     assert at_poe_one == [3, 2, 0, 0], at_poe_one
 
 
+def check_nested_fit(study, folder):
+    """The study stores its common-beta fit beside the separate ones, and export --nested writes
+    it: every fitted state's nested_median in order of severity with one beta, read back from
+    OpenQuake's mean and stddev."""
+    with h5py.File(study, "r") as f:
+        g = f["fragility"]
+        assert g.attrs["nested_status"] == "ok", g.attrs["nested_status"]
+        names = g.attrs["nested_states"].split(",")
+        fitted = [n for n in g.attrs["severity_order"].split(",")
+                  if g[n].attrs["fit_status"] == "ok"]
+        assert names == fitted, (names, fitted)
+        beta = g.attrs["nested_beta"]
+        medians = [g[n].attrs["nested_median"] for n in names]
+        assert medians == sorted(medians), medians
+        assert 0 < g.attrs["nested_beta_se"] < 0.2 * beta
+        # The common beta lies among the separate ones.
+        betas = [g[n].attrs["beta"] for n in names]
+        assert min(betas) <= beta <= max(betas), (beta, betas)
+    run("export", study, "--format", "openquake", "--output", folder / "nested.xml", "--nested")
+    params = [e for e in ET.parse(folder / "nested.xml").iter() if e.tag.endswith("params")]
+    assert [p.get("ls") for p in params] == names
+    for p, median in zip(params, medians):
+        mean, stddev = float(p.get("mean")), float(p.get("stddev"))
+        ratio = (stddev / mean) ** 2
+        assert abs(mean / math.sqrt(1 + ratio) / median - 1) < 1e-12
+        assert abs(math.sqrt(math.log1p(ratio)) / beta - 1) < 1e-12
+
+
 def main():
     passed = failed = 0
     with tempfile.TemporaryDirectory() as scratch:
@@ -191,7 +222,8 @@ def main():
                   ("poe = 1 at low levels", lambda: check_poe_one(study, folder)),
                   ("JSON and CSV", lambda: check_report(study, folder)),
                   ("weighted studies", lambda: check_weighted(study, other, folder)),
-                  ("real sites' curves", lambda: check_real_sites(study, folder))]
+                  ("real sites' curves", lambda: check_real_sites(study, folder)),
+                  ("nested fit stored and exported", lambda: check_nested_fit(study, folder))]
         for name, check in checks:
             try:
                 check()
