@@ -35,7 +35,8 @@ struct NestedFit {
 
 // Each state must have a separate fit (exceedances at some level, not at every one, and
 // overlapping proportions): the caller passes those. The common beta is looked for in
-// [0.005, 10]; a maximum at either end is reported as such, not as a fit.
+// [0.005, 10]; a maximum at either end is reported as such, not as a fit, and more than 5,000
+// levels over the states (a second's work) are not fitted.
 NestedFit fit_nested_lognormal(const std::vector<NestedStateData>& states);
 
 }  // namespace blockfrag
