@@ -86,18 +86,17 @@ std::size_t response_of(const UsgsReader& reader, const Json& responses, const H
   throw reader.error("/response", "has no curve of " + wanted.name() + " (it has " + offered + ")");
 }
 
-}  // namespace
-
-SiteHazard read_usgs_curve(const std::string& file, std::string_view text,
-                           const HazardRequest& request) {
-  Json root;
+// The parsed answer's response[] array, after its status.
+Json parse_answer(const std::string& file, std::string_view text) {
   try {
-    root = Json::parse(text);
+    return Json::parse(text);
   } catch (const Json::parse_error& error) {
     throw InvalidInput(file + ": not JSON (byte " + std::to_string(error.byte) +
                        "): a USGS hazard service answer is");
   }
-  const UsgsReader reader(file);
+}
+
+const Json& responses_of(const UsgsReader& reader, const Json& root) {
   if (root.contains("status") &&
       (!root["status"].is_string() || root["status"].get<std::string>() != "success")) {
     throw reader.error("/status", "is " + printable_excerpt(root["status"].dump()) +
@@ -108,20 +107,26 @@ SiteHazard read_usgs_curve(const std::string& file, std::string_view text,
     throw reader.error("/response",
                        "is not an array of 1 to " + std::to_string(kMaxResponses) + " responses");
   }
-  HazardImt wanted = request.study;
-  if (request.imt) {
-    const auto asked = parse_hazard_imt(*request.imt);
-    if (!asked)
-      throw InvalidInput("--imt " + printable_excerpt(*request.imt) +
-                         ": not PGA, PGV, "
-                         "SA(T) or SA<T> (SA0P2)");
-    if (!same_imt(*asked, request.study)) refuse_imt(file, "--imt names", *asked, request.study);
-    wanted = *asked;
+  return responses;
+}
+
+// The measure to take: --imt's (which must be the study's), or the study's.
+HazardImt wanted_imt(const std::string& file, const HazardRequest& request) {
+  if (!request.imt) return request.study;
+  const auto asked = parse_hazard_imt(*request.imt);
+  if (!asked) {
+    throw InvalidInput("--imt " + printable_excerpt(*request.imt) +
+                       ": not PGA, PGV, SA(T) or SA<T> (SA0P2)");
   }
-  const std::size_t i = response_of(reader, responses, wanted);
-  const std::string path = "/response/" + std::to_string(i);
-  const Json& metadata = responses[i]["metadata"];
-  RawHazard raw;
+  if (!same_imt(*asked, request.study)) refuse_imt(file, "--imt names", *asked, request.study);
+  return *asked;
+}
+
+// The response's xvalues into raw.im and its Total component's yvalues into raw.rate; returns the
+// Total component's JSON path.
+std::string read_curve(const UsgsReader& reader, const Json& response, const std::string& path,
+                       RawHazard& raw) {
+  const Json& metadata = reader.member(response, path, "metadata");
   raw.im = reader.numbers(reader.member(metadata, path + "/metadata", "xvalues"),
                           path + "/metadata/xvalues");
   for (std::size_t k = 0; k < raw.im.size(); ++k) {
@@ -130,30 +135,43 @@ SiteHazard read_usgs_curve(const std::string& file, std::string_view text,
                          "is not > 0 and above the value before");
     }
   }
-  const Json& data = reader.member(responses[i], path, "data");
-  std::string total_path;
-  for (std::size_t d = 0; data.is_array() && d < data.size() && total_path.empty(); ++d) {
-    if (data[d].is_object() && data[d].value("component", Json()) == "Total") {
-      total_path = path + "/data/" + std::to_string(d);
-      raw.rate =
-          reader.numbers(reader.member(data[d], total_path, "yvalues"), total_path + "/yvalues");
+  const Json& data = reader.member(response, path, "data");
+  for (std::size_t d = 0; data.is_array() && d < data.size(); ++d) {
+    if (!data[d].is_object() || data[d].value("component", Json()) != "Total") continue;
+    const std::string total = path + "/data/" + std::to_string(d);
+    raw.rate = reader.numbers(reader.member(data[d], total, "yvalues"), total + "/yvalues");
+    if (raw.rate.size() != raw.im.size()) {
+      throw reader.error(total + "/yvalues", "holds " + std::to_string(raw.rate.size()) +
+                                                 " values for " + std::to_string(raw.im.size()) +
+                                                 " xvalues");
     }
-  }
-  if (total_path.empty()) throw reader.error(path + "/data", "has no component \"Total\"");
-  if (raw.rate.size() != raw.im.size()) {
-    throw reader.error(total_path + "/yvalues", "holds " + std::to_string(raw.rate.size()) +
-                                                    " values for " + std::to_string(raw.im.size()) +
-                                                    " xvalues");
-  }
-  for (std::size_t k = 0; k < raw.rate.size(); ++k) {
-    if (raw.rate[k] < 0.0) {
-      throw reader.error(total_path + "/yvalues/" + std::to_string(k), "is negative");
+    for (std::size_t k = 0; k < raw.rate.size(); ++k) {
+      if (raw.rate[k] < 0.0) {
+        throw reader.error(total + "/yvalues/" + std::to_string(k), "is negative");
+      }
     }
+    return total;
   }
-  const auto where = [&](std::size_t k) { return total_path + "/yvalues/" + std::to_string(k); };
+  throw reader.error(path + "/data", "has no component \"Total\"");
+}
+
+}  // namespace
+
+SiteHazard read_usgs_curve(const std::string& file, std::string_view text,
+                           const HazardRequest& request) {
+  const Json root = parse_answer(file, text);
+  const UsgsReader reader(file);
+  const Json& responses = responses_of(reader, root);
+  const HazardImt wanted = wanted_imt(file, request);
+  const std::size_t i = response_of(reader, responses, wanted);
+  const std::string path = "/response/" + std::to_string(i);
+  RawHazard raw;
+  const std::string total = read_curve(reader, responses[i], path, raw);
+  const auto where = [&](std::size_t k) { return total + "/yvalues/" + std::to_string(k); };
   SiteHazard hazard = finish_hazard(file, std::move(raw), where, hazard_unit_to_study(wanted));
   hazard.format = "usgs";
   hazard.imt = wanted;
+  const Json& metadata = responses[i]["metadata"];
   if (metadata.contains("longitude") && metadata.contains("latitude") &&
       metadata["longitude"].is_number() && metadata["latitude"].is_number()) {
     hazard.site = "lon " + metadata["longitude"].dump() + ", lat " + metadata["latitude"].dump();
