@@ -10,6 +10,7 @@
 #include "mpi_driver/accuracy/table_cell.hpp"
 #include "mpi_driver/study/sample_evaluation.hpp"
 #include "mpi_driver/study/study_sample.hpp"
+#include "postproc/fragility/sample_quantile.hpp"
 
 namespace blockfrag {
 

@@ -6,6 +6,8 @@
 #include <limits>
 #include <numeric>
 
+#include "postproc/fragility/sample_quantile.hpp"
+
 namespace blockfrag {
 
 namespace {
@@ -44,17 +46,6 @@ OutputErrors output_errors(const Summary& reference, const Summary& candidate) {
   errors.first_impact_time = time_error(reference.first_impact_time, candidate.first_impact_time);
   errors.wrong_verdict = candidate.overturned != reference.overturned;
   return errors;
-}
-
-double sample_quantile(std::vector<double> values, double q) {
-  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end());
-  const double position = q * static_cast<double>(values.size() - 1);
-  const auto below = static_cast<std::size_t>(std::floor(position));
-  const std::size_t above = std::min(below + 1, values.size() - 1);
-  const double fraction = position - static_cast<double>(below);
-  if (fraction == 0.0 || values[below] == values[above]) return values[below];
-  return values[below] + fraction * (values[above] - values[below]);
 }
 
 SettingStatistics setting_statistics(const std::vector<OutputErrors>& errors,

@@ -21,10 +21,6 @@ struct OutputErrors {
 
 OutputErrors output_errors(const Summary& reference, const Summary& candidate);
 
-// The q-quantile (0 <= q <= 1) with linear interpolation between order statistics (numpy's
-// default); NaN for no values. +inf values sort last.
-double sample_quantile(std::vector<double> values, double q);
-
 // The accuracy in max |theta| the production default must reach on every scene of the suite.
 inline constexpr double max_abs_theta_target = 1e-6;  // rad
 

@@ -16,6 +16,7 @@
 #include "mpi_driver/cli/bench_command.hpp"
 #include "mpi_driver/cli/exit_codes.hpp"
 #include "mpi_driver/cli/export_command.hpp"
+#include "mpi_driver/cli/risk_command.hpp"
 #include "mpi_driver/cli/run_command.hpp"
 #include "mpi_driver/cli/simulate_command.hpp"
 #include "mpi_driver/cli/spectrum_command.hpp"
@@ -185,9 +186,43 @@ void add_export_command(CLI::App& app, std::function<int()>& command) {
   export_->add_flag("--fitted-only", options->fitted_only,
                     "Export the limit states that have a fit and name the others, instead of "
                     "refusing a limit state without a fit");
+  export_->add_flag("--nested", options->nested,
+                    "Export the fit of all limit states with one common beta (curves that do "
+                    "not cross) instead of each state's own fit");
   export_->callback([options, format, &command] {
     options->format = *format == "openquake" ? ExportFormat::openquake : ExportFormat::pelicun;
     command = [options] { return run_export(*options, std::cout, std::cerr); };
+  });
+}
+
+void add_risk_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<RiskOptions>();
+  CLI::App* risk = app.add_subcommand(
+      "risk",
+      "Integrate a study's fragility against a site's hazard curve: each limit state's "
+      "mean annual frequency");
+  risk->add_option("results", options->results, "The study's HDF5 output");
+  risk->add_option("--study", options->studies,
+                   "A study output and its weight, the share of the year (repeatable; instead "
+                   "of RESULTS, weights summing to 1)")
+      ->type_name("FILE.h5:WEIGHT");
+  risk->add_option("--hazard", options->hazard,
+                   "The site's hazard curve: an OpenQuake hazard-curve CSV, a USGS hazard "
+                   "service JSON, or a two-column CSV of im and annual frequency")
+      ->required()
+      ->type_name("FILE");
+  risk->add_option("--imt", options->imt,
+                   "The hazard curve's measure (PGA, PGV, SA(T) or SA0P2): a two-column table's, "
+                   "or the curve to take from a USGS answer");
+  risk->add_option("--site", options->site, "The row (site) of an OpenQuake file, from 0")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{0}, std::size_t{100'000'000}));
+  risk->add_option("--output", options->output, "Also write everything as JSON")
+      ->type_name("FILE.json");
+  risk->add_option("--csv", options->csv, "Also write one row per limit state and method")
+      ->type_name("FILE.csv");
+  risk->callback([options, &command] {
+    command = [options] { return run_risk(*options, std::cout, std::cerr); };
   });
 }
 
@@ -221,6 +256,7 @@ void add_subcommands(CLI::App& app, std::function<int()>& command,
   add_accuracy_command(app, command);
   add_bench_command(app, command);
   add_export_command(app, command);
+  add_risk_command(app, command);
   add_spectrum_command(app, command, checkpoint_hooks);
 }
 

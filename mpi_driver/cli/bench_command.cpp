@@ -10,6 +10,7 @@
 #include "mpi_driver/cli/simulate_command.hpp"
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/io/summary_json.hpp"
+#include "postproc/fragility/sample_quantile.hpp"
 
 namespace blockfrag {
 

@@ -62,7 +62,8 @@ void prepare_folder(const std::filesystem::path& folder) {
 }  // namespace
 
 int run_export(const ExportOptions& options, std::ostream& out, std::ostream& log) {
-  const FragilityFits all = read_fragility_fits_isolated(options.results, read_limit);
+  const FragilityFits read = read_fragility_fits_isolated(options.results, read_limit);
+  const FragilityFits all = options.nested ? nested_fits(read) : read;
   std::vector<std::string> left_out;
   const FragilityFits fits = exportable_fits(all, options.fitted_only, left_out);
   const std::string id = options.id ? *options.id : default_export_id(fits);

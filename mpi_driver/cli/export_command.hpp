@@ -4,7 +4,8 @@
 // the study output's lognormal fits (mpi_driver/io/fragility_export.hpp has the formats).
 // `--id ID` names the component (pelicun) and the taxonomy (OpenQuake), by default
 // BF.BLOCK.<config hash>; `--fitted-only` exports the fitted limit states and names the others on
-// stderr, where by default a limit state without a fit is refused. Files are replaced atomically.
+// stderr, where by default a limit state without a fit is refused; `--nested` exports the study's
+// fit of one common beta (curves that do not cross). Files are replaced atomically.
 #pragma once
 
 #include <filesystem>
@@ -22,6 +23,7 @@ struct ExportOptions {
   std::filesystem::path output;
   std::optional<std::string> id;
   bool fitted_only = false;
+  bool nested = false;  // the common-beta fit instead of the separate ones
 };
 
 // Returns 0 and reports what it wrote on `out`, its notes (fits that cross, states left out) on

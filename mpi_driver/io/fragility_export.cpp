@@ -221,6 +221,34 @@ FragilityFits exportable_fits(const FragilityFits& fits, bool fitted_only,
   return kept;
 }
 
+FragilityFits nested_fits(const FragilityFits& fits) {
+  if (fits.nested_status.empty()) {
+    throw InvalidInput(fits.source +
+                       ": has no nested fit (no /fragility attribute nested_status): rerun the "
+                       "study with a blockfrag that fits one");
+  }
+  if (fits.nested_status != "ok") {
+    throw InvalidInput(fits.source + ": its nested fit does not exist (" + fits.nested_status +
+                       ")");
+  }
+  FragilityFits nested = fits;
+  nested.common_beta = true;
+  nested.crossing_pairs.clear();  // curves of one beta never cross
+  for (auto& state : nested.states) {
+    if (std::isnan(state.nested_median)) {
+      state.fit_status = "not in the nested fit (fit_status " + state.fit_status + ")";
+    } else {
+      state.median = state.nested_median;
+      state.beta = fits.nested_beta;
+    }
+    state.median_ci.clear();
+    state.beta_ci.clear();
+    state.deviance.reset();
+    state.gof_p_value.reset();
+  }
+  return nested;
+}
+
 std::string default_export_id(const FragilityFits& fits) { return "BF.BLOCK." + fits.config_hash; }
 
 void check_export_id(const std::string& id) {
@@ -268,9 +296,11 @@ PelicunDamageModel pelicun_damage_model(const FragilityFits& fits, const std::st
   Json model;
   model["_GeneralInformation"] = {
       {"ShortName", "blockfrag study " + fits.config_hash},
-      {"Description", "Lognormal fragility functions of " + subject +
-                          ", fitted by blockfrag to its Monte Carlo study and exported by "
-                          "blockfrag export."},
+      {"Description", "Lognormal fragility functions of " + subject + ", fitted by blockfrag " +
+                          (fits.common_beta ? "jointly with one common beta (nested: the curves "
+                                              "do not cross) "
+                                            : "") +
+                          "to its Monte Carlo study and exported by blockfrag export."},
       {"Version", kVersion},
       {"ComponentGroups", {{first_segment(id) + " - blockfrag rigid blocks", Json::array({id})}}}};
   model[id] = {{"Description", "Free-standing rigid block of blockfrag study " + fits.config_hash +
@@ -303,9 +333,10 @@ std::string openquake_fragility_model(const FragilityFits& fits, const std::stri
   }
   std::string model_id = id;
   std::replace(model_id.begin(), model_id.end(), '.', '_');  // OpenQuake's model ids have no '.'
-  const std::string description = "blockfrag study " + fits.config_hash +
-                                  ": lognormal fragility of a free-standing rigid block versus " +
-                                  fits.im_label + " (" + measure.openquake_unit +
+  const std::string description = "blockfrag study " + fits.config_hash + ": lognormal fragility" +
+                                  (fits.common_beta ? " with one common beta (nested)" : "") +
+                                  " of a free-standing rigid block versus " + fits.im_label + " (" +
+                                  measure.openquake_unit +
                                   "); limit states, least severe first: " + meanings;
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"

@@ -35,6 +35,13 @@ namespace blockfrag {
 FragilityFits exportable_fits(const FragilityFits& fits, bool fitted_only,
                               std::vector<std::string>& left_out);
 
+// export --nested: the fits with the study's common-beta fit in place of each state's own (median
+// nested_median, beta nested_beta; intervals and goodness of fit, which are the separate fits',
+// dropped; no crossings). A state not in it gets a fit_status saying so, which exportable_fits
+// then treats as unfitted. Throws InvalidInput for an output without a nested fit or whose
+// nested fit does not exist.
+FragilityFits nested_fits(const FragilityFits& fits);
+
 // "BF.BLOCK.<config hash>". An ID is letters, digits, '.' and '_' (pelicun splits names on '-'),
 // at most 75 characters (OpenQuake's identifier limit); check_export_id throws InvalidInput.
 std::string default_export_id(const FragilityFits& fits);

@@ -178,6 +178,15 @@ FragilityFit read_fit(const FitsReader& reader, const std::string& name) {
   fit.overturned_exceeds = overturned ? *overturned != 0.0 : fit.type != "residual_slide";
   fit.im = reader.levels(group + "/im");
   if (fit.fitted()) check_fit(reader, fit, group);
+  const auto nested = reader.optional_number(group, "nested_median");
+  if (nested && !std::isnan(*nested)) {
+    if (!(*nested >= min_median && *nested <= max_median)) {
+      throw reader.malformed(group + " has the nested_median " + format_number(*nested) +
+                             " (a median is in [" + format_number(min_median) + ", " +
+                             format_number(max_median) + "] of the measure's unit)");
+    }
+    fit.nested_median = *nested;
+  }
   return fit;
 }
 
@@ -275,6 +284,16 @@ FragilityFits read_fragility_fits(const std::filesystem::path& path) {
   fits.im_damping = reader.optional_number("/fragility", "im_damping");
   const std::vector<std::string> groups = state_groups(file, reader);
   fits.states = read_states(file, reader, groups);
+  if (file.has_attribute("/fragility", "nested_status")) {
+    fits.nested_status = reader.text("/fragility", "nested_status", max_label);
+    fits.nested_beta = reader.number("/fragility", "nested_beta");
+    if (fits.nested_status == "ok" &&
+        !(fits.nested_beta >= min_beta && fits.nested_beta <= max_beta)) {
+      throw reader.malformed("/fragility has nested_status \"ok\" but nested_beta " +
+                             format_number(fits.nested_beta) + " (a beta is in [" +
+                             format_number(min_beta) + ", " + format_number(max_beta) + "])");
+    }
+  }
   if (file.has_attribute("/fragility", "crossing_pairs")) {
     for (const auto& pair :
          split_names(reader.text("/fragility", "crossing_pairs", max_name_list), ';')) {

@@ -6,7 +6,9 @@
 //                      optionally crossing_pairs ("a,b;c,d": limit states whose fits cross)
 //   /fragility/<name>  attributes type, threshold, median, beta, fit_status; optionally
 //                      median_ci, beta_ci (2 values), deviance, gof_p_value, overturned_exceeds
-//                      (0 or 1); dataset im (levels)
+//                      (0 or 1), nested_median (NaN when not in the nested fit); dataset im
+//                      (levels)
+//   /fragility         optionally nested_status, nested_beta: the common-beta fit
 // A file without severity_order has its groups ordered by fitted median (unfitted ones last, by
 // name); groups that severity_order does not name follow the ones it names.
 // Nothing is trusted: every member of /fragility is a limit state name by the study's rule, every
@@ -18,6 +20,7 @@
 #pragma once
 
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -40,6 +43,8 @@ struct FragilityFit {
   // attribute (older outputs), what blockfrag then did: max_rotation yes, residual_slide no.
   bool overturned_exceeds = true;
   std::vector<double> im;  // the levels
+  // Its median in the fit of one common beta; NaN when not in it or the output has none.
+  double nested_median = std::numeric_limits<double>::quiet_NaN();
 
   bool fitted() const { return fit_status == "ok"; }
 };
@@ -55,6 +60,11 @@ struct FragilityFits {
   std::vector<FragilityFit> states;  // least severe first
   // Pairs of limit states whose fitted curves cross in the levels' range.
   std::vector<std::pair<std::string, std::string>> crossing_pairs;
+  // The fit of one common beta: its status ("ok" or why not; empty when the output has none) and
+  // beta. common_beta: the states' median and beta are that fit's (export --nested).
+  std::string nested_status;
+  double nested_beta = std::numeric_limits<double>::quiet_NaN();
+  bool common_beta = false;
 };
 
 // Throws InvalidInput naming the file (and the object) when it is missing, not a regular file, not

@@ -51,8 +51,10 @@ std::optional<double> text_optional(const Json& text) {
   return text_number(text);
 }
 
+}  // namespace
+
 // The reader's texts are printable ASCII; the source, a path, is not sent.
-Json fits_json(const FragilityFits& fits) {
+Json fits_to_json(const FragilityFits& fits) {
   Json states = Json::array();
   for (const auto& state : fits.states) {
     states.push_back({{"name", state.name},
@@ -66,7 +68,8 @@ Json fits_json(const FragilityFits& fits) {
                       {"deviance", optional_text(state.deviance)},
                       {"gof_p_value", optional_text(state.gof_p_value)},
                       {"overturned_exceeds", state.overturned_exceeds},
-                      {"im", numbers_text(state.im)}});
+                      {"im", numbers_text(state.im)},
+                      {"nested_median", number_text(state.nested_median)}});
   }
   return {{"config_hash", fits.config_hash},
           {"im_name", fits.im_name},
@@ -75,10 +78,13 @@ Json fits_json(const FragilityFits& fits) {
           {"im_period_s", optional_text(fits.im_period_s)},
           {"im_damping", optional_text(fits.im_damping)},
           {"states", states},
-          {"crossing_pairs", fits.crossing_pairs}};
+          {"crossing_pairs", fits.crossing_pairs},
+          {"nested_status", fits.nested_status},
+          {"nested_beta", number_text(fits.nested_beta)},
+          {"common_beta", fits.common_beta}};
 }
 
-FragilityFits json_fits(const Json& json, const std::string& source) {
+FragilityFits fits_from_json(const Json& json, const std::string& source) {
   FragilityFits fits;
   fits.source = source;
   fits.config_hash = json.at("config_hash").get<std::string>();
@@ -101,21 +107,23 @@ FragilityFits json_fits(const Json& json, const std::string& source) {
     fit.gof_p_value = text_optional(state.at("gof_p_value"));
     fit.overturned_exceeds = state.at("overturned_exceeds").get<bool>();
     fit.im = text_numbers(state.at("im"));
+    fit.nested_median = text_number(state.at("nested_median"));
     fits.states.push_back(std::move(fit));
   }
   fits.crossing_pairs =
       json.at("crossing_pairs").get<std::vector<std::pair<std::string, std::string>>>();
+  fits.nested_status = json.at("nested_status").get<std::string>();
+  fits.nested_beta = text_number(json.at("nested_beta"));
+  fits.common_beta = json.at("common_beta").get<bool>();
   return fits;
 }
-
-}  // namespace
 
 FragilityFits read_fragility_fits_isolated(const std::filesystem::path& path,
                                            std::chrono::milliseconds limit) {
   const std::string answer = read_in_child(path.string(), limit, fits_memory_bytes, [&] {
-    return fits_json(read_fragility_fits(path)).dump();
+    return fits_to_json(read_fragility_fits(path)).dump();
   });
-  return json_fits(Json::parse(answer), path.string());
+  return fits_from_json(Json::parse(answer), path.string());
 }
 
 }  // namespace blockfrag

@@ -6,6 +6,9 @@
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "mpi_driver/io/fragility_fits.hpp"
 
@@ -13,6 +16,11 @@ namespace blockfrag {
 
 // Reading a study's fits takes tens of MB; a file that makes HDF5 ask for more is damaged.
 inline constexpr std::size_t fits_memory_bytes = std::size_t{1} << 30;
+
+// The fits as JSON, numbers as their shortest exact text (JSON has no NaN), and back: how the child
+// hands them to the parent. `source` is the file, for the parent's messages.
+nlohmann::json fits_to_json(const FragilityFits& fits);
+FragilityFits fits_from_json(const nlohmann::json& json, const std::string& source);
 
 // read_fragility_fits(path), and its refusals; also InvalidInput naming the file when reading it
 // crashes HDF5, takes more than fits_memory_bytes or longer than `limit`.

@@ -197,6 +197,23 @@ void write_curve(Hdf5Writer& file, const std::string& group, const LimitState& s
   file.write_column(group + "/band_high", boot.band_high);
 }
 
+// The common-beta fit (docs/studies.md, "Nested fits"): /fragility's nested_* attributes, and each
+// limit state's nested_median and nested_median_se (NaN for one not in it).
+void write_nested_fit(Hdf5Writer& file, const StudyConfig& config,
+                      const StudyFragility& fragility) {
+  const NestedFit& nested = fragility.nested;
+  std::string names;
+  for (const std::size_t k : fragility.nested_states) {
+    if (!names.empty()) names += ',';
+    names += config.limit_states[k].name;
+  }
+  file.set_attribute("/fragility", "nested_status", nested.status);
+  file.set_attribute("/fragility", "nested_states", nested.ok() ? names : std::string());
+  file.set_attribute("/fragility", "nested_beta", nested.beta);
+  file.set_attribute("/fragility", "nested_beta_se", nested.beta_se);
+  file.set_attribute("/fragility", "nested_log_likelihood", nested.log_likelihood);
+}
+
 void write_fragility(Hdf5Writer& file, const StudyConfig& config, const StudyFragility& fragility) {
   const IntensityMeasure& measure = config.intensity;
   file.create_group("/fragility");
@@ -228,12 +245,21 @@ void write_fragility(Hdf5Writer& file, const StudyConfig& config, const StudyFra
   }
   file.set_attribute("/fragility", "bootstrap_resamples",
                      static_cast<std::int64_t>(config.bootstrap_resamples));
+  write_nested_fit(file, config, fragility);
   for (std::size_t k = 0; k < config.limit_states.size(); ++k) {
     const std::string group = "/fragility/" + config.limit_states[k].name;
     write_curve(file, group, config.limit_states[k], fragility.curves[k]);
     const auto rank = std::find(fragility.severity.begin(), fragility.severity.end(), k) -
                       fragility.severity.begin();
     file.set_attribute(group, "severity_rank", static_cast<std::int64_t>(rank));
+    const auto nested =
+        std::find(fragility.nested_states.begin(), fragility.nested_states.end(), k);
+    const bool in_nested = fragility.nested.ok() && nested != fragility.nested_states.end();
+    const auto i = static_cast<std::size_t>(nested - fragility.nested_states.begin());
+    file.set_attribute(group, "nested_median",
+                       in_nested ? fragility.nested.median[i] : NestedFit::nan);
+    file.set_attribute(group, "nested_median_se",
+                       in_nested ? fragility.nested.median_se[i] : NestedFit::nan);
   }
 }
 

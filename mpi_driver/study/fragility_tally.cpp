@@ -55,6 +55,18 @@ StudyFragility FragilityTally::finish() const {
     }
   }
   fragility.severity = severity_order(fragility.curves);
+  if (config_.intensity.cloud) {
+    fragility.nested.status = "not fitted for a cloud";
+  } else {
+    std::vector<NestedStateData> data;
+    for (const std::size_t k : fragility.severity) {
+      const FragilityCurve& curve = fragility.curves[k];
+      if (curve.fit_status != "ok") continue;
+      data.push_back({curve.im, curve.trials, curve.exceedances});
+      fragility.nested_states.push_back(k);
+    }
+    fragility.nested = fit_nested_lognormal(data);
+  }
   if (im_low_ <= im_high_)
     fragility.crossings = crossing_pairs(fragility.curves, im_low_, im_high_);
   return fragility;

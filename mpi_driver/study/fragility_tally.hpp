@@ -11,6 +11,7 @@
 #include "mpi_driver/config/study_config.hpp"
 #include "mpi_driver/study/study_record.hpp"
 #include "postproc/fragility/fragility_curve.hpp"
+#include "postproc/fragility/nested_fit.hpp"
 #include "postproc/fragility/surface_grid.hpp"
 
 namespace blockfrag {
@@ -23,6 +24,10 @@ struct StudyFragility {
   std::vector<std::pair<std::size_t, std::size_t>> crossings;
   // surfaces[k] is config.limit_states[k]'s; none unless the study has a second measure.
   std::vector<SurfaceGrid> surfaces;
+  // The fitted limit states fitted again with one common beta (postproc/fragility/nested_fit.hpp):
+  // nested.median[i] is limit state nested_states[i]'s. Stripes only: a cloud's status says so.
+  NestedFit nested;
+  std::vector<std::size_t> nested_states;
 };
 
 class FragilityTally {

@@ -35,17 +35,14 @@ int affordable_resamples(const StudyConfig& config, double budget, std::size_t p
   return static_cast<int>(std::min<double>(config.bootstrap_resamples, affordable));
 }
 
-// The bootstrap's uniforms: a Philox stream of the study's seed named after the limit state, so
-// the intervals are a pure function of the config, whatever ran the study.
-UniformDraw bootstrap_uniforms(const StudyConfig& config, const LimitState& state) {
-  const std::uint32_t stream = stream_id("bootstrap/" + state.name);
-  const std::uint64_t seed = config.seed;
+}  // namespace
+
+UniformDraw bootstrap_uniforms(std::uint64_t seed, const std::string& limit_state) {
+  const std::uint32_t stream = stream_id("bootstrap/" + limit_state);
   return [seed, stream](std::uint64_t resample, std::uint64_t draw) {
     return uniform_open01(seed, stream, resample, static_cast<std::uint32_t>(draw));
   };
 }
-
-}  // namespace
 
 FragilityCurve stripe_curve(const StudyConfig& config, const LimitState& state,
                             std::vector<std::int64_t> trials,
@@ -56,7 +53,7 @@ FragilityCurve stripe_curve(const StudyConfig& config, const LimitState& state,
       affordable_resamples(config, kMaxStripeBootstrapLevelResamples, curve.im.size());
   if (curve.fit_status == "ok" && resamples > 0) {
     curve.bootstrap = bootstrap_stripes(curve.im, curve.trials, curve.exceedances, resamples,
-                                        bootstrap_uniforms(config, state));
+                                        bootstrap_uniforms(config.seed, state.name));
   }
   return curve;
 }
@@ -66,7 +63,8 @@ FragilityCurve cloud_curve(const StudyConfig& config, const LimitState& state,
   FragilityCurve curve = fragility_from_samples(im, exceeded);
   const int resamples = affordable_resamples(config, kMaxCloudBootstrapDraws, im.size());
   if (curve.fit_status == "ok" && resamples > 0) {
-    curve.bootstrap = bootstrap_cloud(im, exceeded, resamples, bootstrap_uniforms(config, state));
+    curve.bootstrap =
+        bootstrap_cloud(im, exceeded, resamples, bootstrap_uniforms(config.seed, state.name));
   }
   return curve;
 }

@@ -3,6 +3,8 @@
 // postproc/fragility builds the curve and its fit.
 #pragma once
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "mpi_driver/config/study_config.hpp"
@@ -17,6 +19,11 @@ namespace blockfrag {
 // longer a sliding block's), unless the state counts only its raw measure (overturned_exceeds
 // false).
 bool exceeds(const LimitState& state, const SampleRecord& record, double alpha);
+
+// The bootstrap's uniforms: a Philox stream of the study's seed named after the limit state, so
+// the intervals are a pure function of the config, whatever ran the study (and `blockfrag risk`
+// draws the same resamples again from the output's counts).
+UniformDraw bootstrap_uniforms(std::uint64_t seed, const std::string& limit_state);
 
 // The curve of per-level counts (stripes), with its bootstrap.
 FragilityCurve stripe_curve(const StudyConfig& config, const LimitState& state,

@@ -3,29 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <gsl/gsl_cdf.h>
 
 #include "postproc/fragility/lognormal_fit.hpp"
 #include "postproc/fragility/normal_probability.hpp"
+#include "postproc/fragility/sample_quantile.hpp"
 
 namespace blockfrag {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr int kBandPoints = 200;
-
-// The q-quantile of values (sorted here), interpolated between order statistics (Hyndman & Fan
-// type 7, numpy's default).
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return nan;
-  std::sort(values.begin(), values.end());
-  const double position = q * static_cast<double>(values.size() - 1);
-  const auto below = static_cast<std::size_t>(std::floor(position));
-  const std::size_t above = std::min(below + 1, values.size() - 1);
-  const double weight = position - static_cast<double>(below);
-  return values[below] + weight * (values[above] - values[below]);
-}
 
 // The intervals and the band from the refits that exist.
 BootstrapResult summarise(int resamples, const std::vector<LognormalFit>& fits, double im_max) {
@@ -38,10 +28,10 @@ BootstrapResult summarise(int resamples, const std::vector<LognormalFit>& fits, 
     betas.push_back(fit.beta);
   }
   result.fitted = static_cast<int>(medians.size());
-  result.median_low = quantile(medians, 0.025);
-  result.median_high = quantile(medians, 0.975);
-  result.beta_low = quantile(betas, 0.025);
-  result.beta_high = quantile(betas, 0.975);
+  result.median_low = sample_quantile(medians, 0.025);
+  result.median_high = sample_quantile(medians, 0.975);
+  result.beta_low = sample_quantile(betas, 0.025);
+  result.beta_high = sample_quantile(betas, 0.975);
   // Evenly spaced from im_max / 200 to 1.1 im_max, both included.
   const double first = im_max / kBandPoints, last = 1.1 * im_max;
   for (int k = 0; k < kBandPoints; ++k) {
@@ -52,8 +42,8 @@ BootstrapResult summarise(int resamples, const std::vector<LognormalFit>& fits, 
       probabilities.push_back(normal_cdf(std::log(x / medians[b]) / betas[b]));
     }
     result.band_im.push_back(x);
-    result.band_low.push_back(quantile(probabilities, 0.025));
-    result.band_high.push_back(quantile(probabilities, 0.975));
+    result.band_low.push_back(sample_quantile(probabilities, 0.025));
+    result.band_high.push_back(sample_quantile(probabilities, 0.975));
   }
   return result;
 }
@@ -100,20 +90,29 @@ std::int64_t binomial_quantile(double u, std::int64_t n, double p) {
   return hi;
 }
 
-BootstrapResult bootstrap_stripes(const std::vector<double>& im,
-                                  const std::vector<std::int64_t>& trials,
-                                  const std::vector<std::int64_t>& exceedances, int resamples,
-                                  const UniformDraw& uniform) {
+std::vector<std::int64_t> resampled_exceedances(const std::vector<std::int64_t>& trials,
+                                                const std::vector<std::int64_t>& exceedances,
+                                                std::uint64_t resample,
+                                                const UniformDraw& uniform) {
+  std::vector<std::int64_t> drawn(trials.size());
+  for (std::size_t j = 0; j < trials.size(); ++j) {
+    const double p =
+        trials[j] > 0 ? static_cast<double>(exceedances[j]) / static_cast<double>(trials[j]) : 0.0;
+    drawn[j] = binomial_quantile(uniform(resample, j), trials[j], p);
+  }
+  return drawn;
+}
+
+std::vector<LognormalFit> bootstrap_stripe_fits(const std::vector<double>& im,
+                                                const std::vector<std::int64_t>& trials,
+                                                const std::vector<std::int64_t>& exceedances,
+                                                int resamples, const UniformDraw& uniform) {
   std::vector<LognormalFit> fits;
-  fits.reserve(static_cast<std::size_t>(resamples));
-  std::vector<std::int64_t> drawn(im.size()), previous;
+  fits.reserve(static_cast<std::size_t>(std::max(resamples, 0)));
+  std::vector<std::int64_t> previous;
   for (int b = 0; b < resamples; ++b) {
-    for (std::size_t j = 0; j < im.size(); ++j) {
-      const double p = trials[j] > 0
-                           ? static_cast<double>(exceedances[j]) / static_cast<double>(trials[j])
-                           : 0.0;
-      drawn[j] = binomial_quantile(uniform(static_cast<std::uint64_t>(b), j), trials[j], p);
-    }
+    std::vector<std::int64_t> drawn =
+        resampled_exceedances(trials, exceedances, static_cast<std::uint64_t>(b), uniform);
     // A level observed at 0 or 1 draws its own count every time, so where every level is (a grid
     // of one sample a level) all resamples are the data: the fit, a pure function of the counts,
     // is taken once for a run of equal draws.
@@ -121,9 +120,17 @@ BootstrapResult bootstrap_stripes(const std::vector<double>& im,
       fits.push_back(fits.back());
     } else {
       fits.push_back(fit_lognormal_fragility(im, trials, drawn));
-      previous = drawn;
+      previous = std::move(drawn);
     }
   }
+  return fits;
+}
+
+BootstrapResult bootstrap_stripes(const std::vector<double>& im,
+                                  const std::vector<std::int64_t>& trials,
+                                  const std::vector<std::int64_t>& exceedances, int resamples,
+                                  const UniformDraw& uniform) {
+  const auto fits = bootstrap_stripe_fits(im, trials, exceedances, resamples, uniform);
   const double im_max = im.empty() ? 1.0 : *std::max_element(im.begin(), im.end());
   return summarise(resamples, fits, im_max);
 }

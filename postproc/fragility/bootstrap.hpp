@@ -10,6 +10,8 @@
 #include <functional>
 #include <vector>
 
+#include "postproc/fragility/lognormal_fit.hpp"
+
 namespace blockfrag {
 
 // A uniform in (0, 1): the draw-th number of the resample-th resample.
@@ -34,6 +36,20 @@ BootstrapResult bootstrap_stripes(const std::vector<double>& im,
 
 BootstrapResult bootstrap_cloud(const std::vector<double>& im, const std::vector<bool>& exceeded,
                                 int resamples, const UniformDraw& uniform);
+
+// The refitted curves of a stripe study's resamples, in order (each with its status): what
+// bootstrap_stripes summarises, for a caller that needs each resample's curve (the risk of a
+// limit state per resample, postproc/risk/).
+std::vector<LognormalFit> bootstrap_stripe_fits(const std::vector<double>& im,
+                                                const std::vector<std::int64_t>& trials,
+                                                const std::vector<std::int64_t>& exceedances,
+                                                int resamples, const UniformDraw& uniform);
+
+// The exceedances of resample b: each level's count drawn from Binomial(trials, observed
+// proportion) by the b-th resample's uniforms.
+std::vector<std::int64_t> resampled_exceedances(const std::vector<std::int64_t>& trials,
+                                                const std::vector<std::int64_t>& exceedances,
+                                                std::uint64_t resample, const UniformDraw& uniform);
 
 // The k with P(X <= k - 1) < u <= P(X <= k) for X ~ Binomial(n, p): the inverse CDF, by GSL's CDF
 // in the tail where u lies (a few evaluations from the Cornish-Fisher approximation), right to the

@@ -9,7 +9,9 @@ range, and median and beta recovered from mean and stddev to 1e-12. Refusals (ex
 message, nothing written): the dimensionless measure, the pulse amplitude, Sa at 2 % damping, a
 limit state without a fit (unless --fitted-only), a file that is not HDF5, an HDF5 file that is not
 a study output, an output without /fragility, a missing file, a bad --id, a pelicun folder whose
-parent is missing. Prints "N passed, M failed" last; exits non-zero on any failure.
+parent is missing. --nested: the common-beta fit in both formats, a state outside it, outputs
+without one or whose nested fit does not exist, a nested beta out of range. Prints "N passed,
+M failed" last; exits non-zero on any failure.
 """
 
 import csv
@@ -51,7 +53,7 @@ def run(*args):
 
 def write_output(path, im_name="pga", im_units="g", im_label="PGA", states=None, levels=None,
                  period=None, damping=None, severity=True, fragility=True, marked=True,
-                 crossing_pairs=None):
+                 crossing_pairs=None, nested=None):
     states = STATES if states is None else states
     levels = LEVELS if levels is None else levels
     with h5py.File(path, "w") as f:
@@ -72,6 +74,9 @@ def write_output(path, im_name="pga", im_units="g", im_label="PGA", states=None,
             g.attrs["severity_order"] = ",".join(s["name"] for s in states)
         if crossing_pairs is not None:
             g.attrs["crossing_pairs"] = crossing_pairs
+        if nested is not None:  # (status, beta, {name: median})
+            g.attrs["nested_status"] = nested[0]
+            g.attrs["nested_beta"] = nested[1]
         for s in states:
             h = g.create_group(s["name"])
             fitted = s.get("fit_status", "ok") == "ok"
@@ -87,6 +92,8 @@ def write_output(path, im_name="pga", im_units="g", im_label="PGA", states=None,
             if "overturned_exceeds" in s:
                 h.attrs["overturned_exceeds"] = np.int64(s["overturned_exceeds"])
             h.create_dataset("im", data=np.array(levels, dtype=float))
+            if nested is not None:
+                h.attrs["nested_median"] = nested[2].get(s["name"], math.nan)
             h.create_dataset("probability", data=np.linspace(0.0, 1.0, len(levels)))
 
 
@@ -255,6 +262,50 @@ def test_overturned_blocks_and_crossing_fits(work):
     result = run(work / "t.h5", "--format", "openquake", "--output", work / "m.xml")
     assert_ok(result)
     assert "cross" not in result.stderr, result.stderr
+
+
+NESTED_MEDIANS = {"slide_2cm": 0.95, "rock.half": 1.25, "a_overturn": 1.9}
+
+
+def test_nested_exports_the_common_beta_fit(work):
+    """--nested: each state's nested_median with the common nested_beta, in both formats, the
+    descriptions saying so, no crossing note; a state outside it is left out or refused; an
+    output without a nested fit, or whose nested fit does not exist, is refused."""
+    write_output(work / "s.h5", crossing_pairs="slide_2cm,rock.half",
+                 nested=("ok", 0.45, NESTED_MEDIANS))
+    common = [dict(s, median=NESTED_MEDIANS[s["name"]], beta=0.45) for s in STATES]
+    result = run(work / "s.h5", "--format", "pelicun", "--output", work / "dl", "--nested")
+    assert_ok(result)
+    assert "cross" not in result.stderr, result.stderr
+    rows, model = read_pelicun(work / "dl")
+    check_pelicun_row(rows, "Peak Ground Acceleration", "g", states=common)
+    assert "one common beta" in model["_GeneralInformation"]["Description"]
+    assert_ok(run(work / "s.h5", "--format", "openquake", "--output", work / "m.xml", "--nested"))
+    check_openquake(work / "m.xml", "PGA", 1.0, states=common)
+    assert "one common beta" in read_openquake(work / "m.xml").find(NRML + "description").text
+    # Without --nested, the same file exports the separate fits as before.
+    assert_ok(run(work / "s.h5", "--format", "pelicun", "--output", work / "sep"))
+    check_pelicun_row(read_pelicun(work / "sep")[0], "Peak Ground Acceleration", "g")
+
+    partial = dict(NESTED_MEDIANS)
+    del partial["a_overturn"]
+    write_output(work / "p.h5", nested=("ok", 0.45, partial))
+    assert_refused(run(work / "p.h5", "--format", "pelicun", "--output", work / "p", "--nested"),
+                   "a_overturn (fit_status: not in the nested fit")
+    assert_ok(run(work / "p.h5", "--format", "pelicun", "--output", work / "p", "--nested",
+                  "--fitted-only"))
+    check_pelicun_row(read_pelicun(work / "p")[0], "Peak Ground Acceleration", "g",
+                      states=common[:2])
+    write_output(work / "old.h5")
+    assert_refused(run(work / "old.h5", "--format", "pelicun", "--output", work / "o", "--nested"),
+                   "old.h5: has no nested fit")
+    write_output(work / "none.h5", nested=("the common beta's maximum lies at the search bound",
+                                           math.nan, {}))
+    assert_refused(run(work / "none.h5", "--format", "openquake", "--output", work / "n.xml",
+                       "--nested"), "none.h5: its nested fit does not exist (the common beta's")
+    write_output(work / "wide.h5", nested=("ok", 40.0, NESTED_MEDIANS))
+    assert_refused(run(work / "wide.h5", "--format", "openquake", "--output", work / "w.xml",
+                       "--nested"), "wide.h5: /fragility has nested_status \"ok\" but nested_beta 40")
 
 
 def test_dimensionless_measure_is_refused(work):

@@ -25,8 +25,11 @@ points where the file's coefficients give P = 0.5, a --summary with the file's c
 median form, a panel for a limit state without a fit, one-line errors for a file without
 /fragility_surface, an unknown --limit-state and bad --contours. plot_work_precision.py: a PNG
 from a synthetic accuracy output, one-line errors naming the file and the dataset or group it
-lacks. Every error on an input exits 2, one on an output 1 (postproc/plots/plot_support.py).
-Prints "N passed, M failed" last; exits non-zero on any failure.
+lacks. plot_risk.py: a PNG with each limit state's colour, its integrand each bin's lambda per
+unit of ln im, one-line errors for a missing file, a JSON that is not a risk.json and a hazard
+curve of one level. Every error on an input exits 2, one on an output 1
+(postproc/plots/plot_support.py). Prints "N passed, M failed" last; exits non-zero on any
+failure.
 """
 
 import math
@@ -58,6 +61,7 @@ PLOT_FRAGILITY_PAIR = SOURCE / "postproc" / "plots" / "plot_fragility_pair.py"
 PLOT_SPECTRUM = SOURCE / "postproc" / "plots" / "plot_spectrum.py"
 PLOT_SURFACE = SOURCE / "postproc" / "plots" / "plot_fragility_surface.py"
 PLOT_WORK_PRECISION = SOURCE / "postproc" / "plots" / "plot_work_precision.py"
+PLOT_RISK = SOURCE / "postproc" / "plots" / "plot_risk.py"
 
 # Colours the scripts promise: the mode shading of plot_history.py and the first two limit-state
 # colours of plot_fragility.py.
@@ -905,6 +909,52 @@ def test_work_precision_plot_errors_are_one_line(work):
     assert_clean_error(call(PLOT_WORK_PRECISION, work / "study.h5", work / "x.png"), "study.h5", "/summary")
     assert_clean_error(call(PLOT_WORK_PRECISION, work / "absent.h5", work / "x.png"), "absent.h5: no such file")
     assert not (work / "x.png").exists()
+# --- plot_risk.py ---------------------------------------------------------------------------------
+
+def write_risk(path):
+    """A risk.json as `blockfrag risk` writes it (docs/risk.md): a power-law hazard at 12 levels,
+    two fitted limit states with points, each bin's lambda the fit's there."""
+    im = np.geomspace(0.05, 3.0, 12)
+    rate = 1e-4 * im ** -2.5
+    states = []
+    for name, median, beta in (("rock", 0.6, 0.4), ("overturn", 1.2, 0.5)):
+        edges = np.sqrt(im[1:] * im[:-1])
+        bins = [float(lognormal(e, median, beta) * (rate[i] - rate[i + 1])) for i, e in enumerate(edges)]
+        estimate = {"lambda": sum(bins), "bin_lambda": bins}
+        levels = [0.2, 0.4, 0.8, 1.6]
+        states.append({"name": name, "median": median, "beta": beta, "levels": levels,
+                       "probability": [float(lognormal(x, median, beta)) for x in levels],
+                       "fit": estimate, "points": estimate})
+    report = {"blockfrag_risk": 1, "years": [1.0, 50.0, 100.0],
+              "hazard": {"file": "site.csv", "format": "openquake", "imt": "PGA", "site": "lon 1, lat 2",
+                         "im": im.tolist(), "annual_rate": rate.tolist()},
+              "studies": [{"file": "a.h5", "weight": 1.0, "im_units": "g", "limit_states": states}],
+              "limit_states": states}
+    path.write_text(json.dumps(report))
+
+
+def test_risk_plot_shows_hazard_fragility_and_integrand(work):
+    write_risk(work / "risk.json")
+    result = call(PLOT_RISK, work / "risk.json", "-o", work / "risk.png")
+    assert result.returncode == 0, result.stderr
+    pixels = check_plausible_png(work / "risk.png", min_height=900)
+    # Each limit state's colour in the fragility and integrand panels.
+    assert colour_pixels(pixels, FIRST_STATE) > 200 and colour_pixels(pixels, SECOND_STATE) > 200
+    # The integrand is each bin's lambda over its width in ln im.
+    module = load(PLOT_RISK)
+    im = np.array([0.1, 0.2, 0.8])
+    assert np.allclose(module.integrand(im, [1.0, 2.0]), [1.0 / math.log(2.0), 2.0 / math.log(4.0)])
+
+
+def test_risk_plot_refuses_what_is_not_a_risk_json(work):
+    assert_clean_error(call(PLOT_RISK, work / "none.json", "-o", work / "x.png"), "none.json: no such file")
+    (work / "other.json").write_text('{"a": 1}')
+    assert_clean_error(call(PLOT_RISK, work / "other.json", "-o", work / "x.png"),
+                       "other.json: not a blockfrag risk.json")
+    (work / "short.json").write_text('{"blockfrag_risk": 1, "hazard": {"im": [1], "annual_rate": [1]}, '
+                                     '"limit_states": [], "studies": [{"limit_states": []}]}')
+    assert_clean_error(call(PLOT_RISK, work / "short.json", "-o", work / "x.png"),
+                       "short.json: /hazard/im and /hazard/annual_rate are not one curve")
 
 
 def main():

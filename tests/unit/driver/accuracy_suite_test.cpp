@@ -23,6 +23,7 @@
 #include "mpi_driver/accuracy/accuracy_study.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/study_config.hpp"
+#include "postproc/fragility/sample_quantile.hpp"
 
 namespace blockfrag {
 namespace {

@@ -18,6 +18,7 @@
 #include "postproc/fragility/cloud_fragility.hpp"
 #include "postproc/fragility/fit_diagnostics.hpp"
 #include "postproc/fragility/lognormal_fit.hpp"
+#include "postproc/fragility/sample_quantile.hpp"
 #include "tests/support/fragility_draws.hpp"
 
 namespace blockfrag {
@@ -322,6 +323,32 @@ TEST(Bootstrap, StripesIntervalsAreThoseOfTheRefitsThatExist) {
   EXPECT_TRUE(std::isnan(none.beta_high));
   ASSERT_EQ(none.band_low.size(), 200u);
   EXPECT_TRUE(std::isnan(none.band_low[100]));
+}
+
+TEST(Bootstrap, StripeFitsAreTheRefitsOfTheDrawnResamples) {
+  // The same levels and table: each resample's refit is the fit of the counts its uniforms draw,
+  // resampled_exceedances gives those counts, and the intervals are the quantiles of the refits.
+  const std::vector<double> im{1.0, 2.0, 4.0};
+  const std::vector<std::int64_t> trials{2, 2, 2}, exceedances{1, 1, 1};
+  const std::vector<std::vector<double>> table{
+      {0.5, 0.5, 0.9}, {0.1, 0.1, 0.1}, {0.1, 0.5, 0.9}, {0.1, 0.5, 0.5}};
+  const std::vector<std::vector<std::int64_t>> drawn{{1, 1, 2}, {0, 0, 0}, {0, 1, 2}, {0, 1, 1}};
+  const auto uniforms = from_table(table);
+  const auto fits = bootstrap_stripe_fits(im, trials, exceedances, 4, uniforms);
+  ASSERT_EQ(fits.size(), 4u);
+  std::vector<double> medians;
+  for (std::size_t b = 0; b < drawn.size(); ++b) {
+    EXPECT_EQ(resampled_exceedances(trials, exceedances, b, uniforms), drawn[b]) << b;
+    const LognormalFit direct = fit_lognormal_fragility(im, trials, drawn[b]);
+    EXPECT_EQ(fits[b].status, direct.status) << b;
+    if (direct.status != FitStatus::ok) continue;
+    EXPECT_EQ(fits[b].median, direct.median) << b;
+    EXPECT_EQ(fits[b].beta, direct.beta) << b;
+    medians.push_back(direct.median);
+  }
+  const auto summary = bootstrap_stripes(im, trials, exceedances, 4, uniforms);
+  EXPECT_EQ(summary.median_low, sample_quantile(medians, 0.025));
+  EXPECT_EQ(summary.median_high, sample_quantile(medians, 0.975));
 }
 
 TEST(Bootstrap, StripesResamplesThatRepeatADrawKeepItsRefit) {
