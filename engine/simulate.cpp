@@ -83,10 +83,10 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   ContactForces forces_now() const;
   ModeKind mode_kind_now() const { return mode_kind(mode_); }
   void finish_summary() {}
-  template <class System, class GuardsAt, class StateAt>
-  GuardWatch<System::kGuards>::Crossing refine_crossing(
-      const System&, const GuardWatch<System::kGuards>&, const GuardsAt&, const StateAt&, double,
-      double, GuardWatch<System::kGuards>::Crossing found, ModeKind) const {
+  // The flat ground's guards find its crossings as they are.
+  template <class System, class Crossing, class GuardsAt, class StateAt>
+  Crossing refine_crossing(const System&, const GuardWatch<System::kGuards>&, const GuardsAt&,
+                           const StateAt&, double, double, Crossing found, ModeKind) const {
     return found;
   }
   template <class System, class StateAt, class ForcesAt>

@@ -19,6 +19,7 @@
 #include "engine/contact/contact_lcp.hpp"
 #include "engine/contact/settling.hpp"
 #include "engine/event_loop.hpp"
+#include "engine/scene/seat.hpp"
 #include "engine/seat/seat_chart.hpp"
 #include "engine/seat/seat_system.hpp"
 
