@@ -133,13 +133,18 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
 BlockState FlatGroundSimulation::initial_state() const {
   BlockState s;
   s.theta = scene_.initial.theta;
-  if (s.theta == 0.0) {
+  const double omega = scene_.initial.omega;
+  if (s.theta == 0.0 && omega == 0.0) {
     s.y = geometry_.rest_height();
-  } else {
-    // Released from rest on the corner that the tilt lowers.
-    const Corner pivot = s.theta < 0 ? Corner::right : Corner::left;
-    const Vec2 r = geometry_.base_corner_at(pivot, s.theta);
-    s.y = -r.y;
+    return s;
+  }
+  // Released on the corner that the tilt lowers (or the turning keeps down), turning about it.
+  const Vec2 r = geometry_.base_corner_at(release_pivot(s.theta, omega), s.theta);
+  s.y = -r.y;
+  if (omega != 0.0) {
+    s.vx = omega * r.y;
+    s.vy = -omega * r.x;
+    s.omega = omega;
   }
   return s;
 }

@@ -52,8 +52,8 @@ Model choose_model(const Scene& scene, const GroundMotionPieces& motion,
   const double mu = scene.contact.friction;
   const double tip =
       std::min(geometry.tip_threshold(Corner::left), geometry.tip_threshold(Corner::right));
-  // A block released tilted is already rocking.
-  if (scene.initial.theta != 0.0) return Model::full;
+  // A block released tilted or turning is already rocking.
+  if (scene.initial.theta != 0.0 || scene.initial.omega != 0.0) return Model::full;
   if (motion.peak_abs_lambda() < std::min(mu, tip)) return Model::at_rest;
   if (mu < tip && mu <= geometry.flat_slide_friction_limit()) return Model::newmark_sliding;
   return Model::full;

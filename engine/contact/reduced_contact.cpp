@@ -32,7 +32,9 @@ ContactOutcome HousnerRules::rock_on(BlockState s, Corner pivot) const {
 }
 
 ContactOutcome HousnerRules::start(const BlockState& state, double lambda) const {
-  if (state.theta != 0.0) return rock_on(state, state.theta < 0 ? Corner::right : Corner::left);
+  if (state.theta != 0.0 || state.omega != 0.0) {
+    return rock_on(state, release_pivot(state.theta, state.omega));
+  }
   BlockState s = state;
   s.y = geometry_.rest_height();
   s.vx = s.vy = s.omega = 0.0;

@@ -31,6 +31,13 @@ inline Vec2 rotate(Vec2 c, Rotation r) { return rotate(c, r.cos, r.sin); }
 
 enum class Corner { left = 0, right = 1 };
 
+// The base corner a block released tilted by theta and turning at omega turns about: the one its
+// tilt lowers, or, flat, the one its turning keeps on the ground (the right one for omega < 0).
+inline Corner release_pivot(double theta, double omega) {
+  if (theta != 0.0) return theta < 0 ? Corner::right : Corner::left;
+  return omega < 0 ? Corner::right : Corner::left;
+}
+
 inline Corner other(Corner corner) { return corner == Corner::left ? Corner::right : Corner::left; }
 
 class BlockGeometry {

@@ -104,6 +104,8 @@ inline constexpr Domain g{1e-2, 1e3, true, true, "m/s^2"};
 // A release tilt (a polygon's own overturning angles narrow it further).
 inline constexpr Domain initial_theta{
     -std::numbers::pi / 2, std::numbers::pi / 2, false, false, "rad", "-pi/2", "pi/2"};
+// A release's angular velocity: a free-rocking or impulse test's, far past any block's overturning.
+inline constexpr Domain initial_omega{-1e3, 1e3, true, true, "rad/s"};
 // RK4's fixed step (and at most the scene's duration).
 inline constexpr Domain rk4_step{1e-7, 10.0, true, true, "s"};
 // The adaptive methods' relative tolerance: round-off below 1e-14, no accuracy above 0.1.

@@ -103,10 +103,13 @@ struct SolverSettings {
   long max_events = 1'000'000;
 };
 
-// A block released from rest, tilted by theta (rad, counter-clockwise positive) onto the corner
-// that is then lowest; theta = 0 is flat on its base.
+// A block released tilted by theta (rad, counter-clockwise positive) onto the corner that is then
+// lowest (theta = 0: flat on its base), turning at omega (rad/s, counter-clockwise positive) about
+// that corner; flat and turning, about the corner its turning keeps on the ground (the right one
+// for omega < 0).
 struct InitialState {
   double theta = 0.0;
+  double omega = 0.0;
 };
 
 // The physics a scene simulates ("effects" in a scene file). automatic ("auto"): everything the

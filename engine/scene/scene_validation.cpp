@@ -37,6 +37,9 @@ void require_in(const Domain& domain, double value, const char* name) {
 void validate_block(const Scene& scene) {
   const double theta = scene.initial.theta;
   require_in(domain::initial_theta, theta, "initial theta");
+  require_in(domain::initial_omega, scene.initial.omega, "initial omega");
+  require(scene.initial.omega == 0.0 || model_named_by(scene.effects) != Model::newmark_sliding,
+          "initial omega needs a model that rocks: Newmark's sliding block never turns");
   if (!scene.polygon) {
     require_in(domain::block_length, scene.block.half_width, "block half_width");
     require_in(domain::block_length, scene.block.half_height, "block half_height");

@@ -10,6 +10,7 @@
 
 #include "engine/errors.hpp"
 #include "engine/number_text.hpp"
+#include "engine/scene/block_geometry.hpp"
 
 namespace blockfrag {
 
@@ -258,9 +259,10 @@ std::optional<SeatDefect> seat_defect(const std::vector<Vertex>& seat,
 }
 
 SeatTilt tilt_on_seat(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
-                      double theta, double tolerance) {
+                      double theta, double tolerance, double turning) {
   const OutermostContacts outermost = outermost_contacts(seat, block, tolerance);
-  const Vertex pivot = theta > 0 ? outermost.left : outermost.right;
+  const Vertex pivot =
+      release_pivot(theta, turning) == Corner::left ? outermost.left : outermost.right;
   const double c = std::cos(theta), s = std::sin(theta);
   const auto turned = [&](const Vertex& v) {
     const double dx = v[0] - pivot[0], dy = v[1] - pivot[1];

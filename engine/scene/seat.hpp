@@ -55,15 +55,16 @@ double seat_alpha(const std::vector<Vertex>& seat, const std::vector<Vertex>& bl
 
 // Where the block resting on its seat is released from when it starts tilted by theta
 // (counter-clockwise > 0): turned about the leftmost point where it touches for theta > 0, the
-// rightmost for theta < 0, as the flat ground releases it on the base corner the tilt lowers; as
-// seat_alpha, InvalidInput for a block that does not touch the seat.
+// rightmost for theta < 0, as the flat ground releases it on the base corner the tilt lowers (flat,
+// the side turning's sign says: the rightmost for turning < 0); as seat_alpha, InvalidInput for a
+// block that does not touch the seat.
 struct SeatTilt {
   Vertex pivot;                  // the point it turns about, in the frame of the block's vertices
   std::vector<Vertex> vertices;  // the block's vertices turned about it
   Vertex centre;                 // its centre of mass turned about it
 };
 SeatTilt tilt_on_seat(const std::vector<Vertex>& seat, const std::vector<Vertex>& block,
-                      double theta, double tolerance);
+                      double theta, double tolerance, double turning = 0.0);
 
 // Why the block resting on its seat cannot be released tilted by theta, as a rule's text: turned
 // about its pivot, it would enter the seat (a vertex below it, a seat point inside the block, an

@@ -303,15 +303,19 @@ void SeatSimulation::place_at_start() {
   const Vec2 centre = contacts_.rest_centre();
   state_.x = centre.x;
   state_.y = centre.y;
-  if (scene_.initial.theta != 0.0) {
-    // Released from rest turned about its pivot, as the flat ground releases it on a base corner.
-    const double theta = scene_.initial.theta;
-    const Vertex turned =
-        tilt_on_seat(scene_.seat->points, scene_block_vertices(scene_), theta, kContactHeight * R_)
-            .centre;
-    state_.x = turned[0];
-    state_.y = turned[1];
+  const double theta = scene_.initial.theta, omega = scene_.initial.omega;
+  if (theta != 0.0 || omega != 0.0) {
+    // Released turned about its pivot, as the flat ground releases it on a base corner.
+    const SeatTilt tilt = tilt_on_seat(scene_.seat->points, scene_block_vertices(scene_), theta,
+                                       kContactHeight * R_, omega);
+    state_.x = tilt.centre[0];
+    state_.y = tilt.centre[1];
     state_.theta = theta;
+    if (omega != 0.0) {
+      state_.vx = -omega * (tilt.centre[1] - tilt.pivot[1]);
+      state_.vy = omega * (tilt.centre[0] - tilt.pivot[0]);
+      state_.omega = omega;
+    }
   }
   origin_ = {state_.x, centre.y - geometry_.rest_height()};
 }

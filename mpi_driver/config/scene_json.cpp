@@ -219,6 +219,7 @@ void read_scene_seat(ObjectReader& root, bool block_valid, const JsonPointer& pa
 InitialState read_initial(ObjectReader reader) {
   InitialState initial;
   initial.theta = reader.number_or("theta", initial.theta, Range::of(domain::initial_theta));
+  initial.omega = reader.number_or("omega", initial.omega, Range::of(domain::initial_omega));
   reader.finish();
   return initial;
 }
@@ -332,6 +333,8 @@ json scene_to_json(const Scene& scene) {
               {"g", scene.g},
               {"solver", solver_to_json(scene.solver)},
               {"initial", {{"theta", scene.initial.theta}}}};
+  // Written only where given, so that a config without it keeps its hash.
+  if (scene.initial.omega != 0.0) out["initial"]["omega"] = scene.initial.omega;
   // A settling run has no duration, and a max_duration only when the scene gives one.
   if (scene.duration) out["duration"] = *scene.duration;
   if (scene.max_duration) out["max_duration"] = *scene.max_duration;

@@ -178,6 +178,7 @@ INSTANTIATE_TEST_SUITE_P(
         RuleCase{"/solver/max_events", -1, "/solver/max_events: must be in [1, 1e+09] (got -1)"},
         RuleCase{"/initial/theta", 1.6, "/initial/theta: must be in (-pi/2, pi/2) (got 1.6)"},
         RuleCase{"/initial/theta", -1.6, "/initial/theta: must be in (-pi/2, pi/2) (got -1.6)"},
+        RuleCase{"/initial/omega", 1e4, "/initial/omega: must be in [-1000, 1000] (got 10000)"},
         RuleCase{"/block", 1, "/block: must be an object (got 1)"},
         RuleCase{"/contact/frction", 0.6,
                  "/contact/frction: unknown key; did you mean \"friction\"?"},
@@ -341,6 +342,16 @@ TEST(SceneJson, CanonicalFormHasEveryKeyWithDefaults) {
     "duration": 4.0, "g": 9.81, "initial": {"theta": 0.0},
     "solver": {"method": "adaptive", "tolerance": 1e-8, "max_steps": 50000000, "max_events": 1000000}})");
   EXPECT_EQ(canonical, expected);
+}
+
+TEST(SceneJson, AnInitialOmegaIsReadAndWrittenOnlyWhereGiven) {
+  json document = paper_scene();
+  document["initial"] = {{"theta", 0.1}, {"omega", -0.75}};
+  const Scene scene = scene_from_json(document, "scene.json");
+  EXPECT_EQ(scene.initial.omega, -0.75);
+  EXPECT_EQ(scene_to_json(scene)["initial"], (json{{"theta", 0.1}, {"omega", -0.75}}));
+  EXPECT_FALSE(
+      scene_to_json(scene_from_json(paper_scene(), "scene.json"))["initial"].contains("omega"));
 }
 
 TEST(SceneJson, CanonicalRoundTripIsExact) {
