@@ -4,7 +4,9 @@
 // vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
 #pragma once
 
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -12,6 +14,7 @@
 #include "engine/contact/planar_contact.hpp"
 #include "engine/scene/block_state.hpp"
 #include "engine/scene/polygon_properties.hpp"
+#include "engine/sine_cosine.hpp"
 
 namespace blockfrag {
 
@@ -115,12 +118,31 @@ class SeatContacts {
   double height_over_fall(const BlockState& s, std::span<const Vec2> world, double depth) const;
 
  private:
+  // sin and cos of theta, kept for the last theta asked: a step's guards, its touch checks and its
+  // forces ask for the same pose's vertices several times over.
+  SineCosine turn(double theta) const {
+    const auto bits = std::bit_cast<std::uint64_t>(theta);
+    if (bits != turn_bits_) {
+      turn_ = sine_cosine(theta);
+      turn_bits_ = bits;
+    }
+    return turn_;
+  }
+
+  struct Segment {  // a seat segment's unit direction, upward normal and length
+    Vec2 direction, normal;
+    double length;
+  };
+
   std::vector<Vec2> body_;  // block vertices relative to the centre of mass, body frame
   std::vector<Vec2> seat_;
+  std::vector<Segment> segments_;
   Vec2 centre_;
   bool straight_ = false;  // set from the block's size: see the constructor
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
+  mutable SineCosine turn_ = sine_cosine(0.0);
+  mutable std::uint64_t turn_bits_ = 0;  // theta = 0
 };
 
 }  // namespace blockfrag
