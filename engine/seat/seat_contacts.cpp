@@ -104,7 +104,7 @@ SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
-  const SineCosine turn = this->turn(s.theta);
+  const SineCosine turn = turn_(s.theta);
   const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
   return {s.x + r.x, s.y + r.y};
 }
@@ -216,7 +216,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
 }
 
 void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
-  const SineCosine turn = this->turn(s.theta);
+  const SineCosine turn = turn_(s.theta);
   for (std::size_t i = 0; i < body_.size(); ++i) {
     const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
     out[i] = {s.x + r.x, s.y + r.y};
@@ -240,7 +240,6 @@ double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
 double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   const Vec2 p = seat_[static_cast<std::size_t>(k)];
   double squared = std::numeric_limits<double>::infinity();
-  bool inside = false;
   const std::size_t n = body_.size();
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2 a = world[i], b = world[j];
@@ -248,12 +247,22 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
     const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
     const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
     squared = std::min(squared, dot(off, off));
+  }
+  const double distance = std::sqrt(squared);
+  return inside_block(k, world) ? -distance : distance;
+}
+
+bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {
+  const Vec2 p = seat_[static_cast<std::size_t>(k)];
+  bool inside = false;
+  const std::size_t n = body_.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = world[i], b = world[j];
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
       inside = !inside;
     }
   }
-  const double distance = std::sqrt(squared);
-  return inside ? -distance : distance;
+  return inside;
 }
 
 double SeatContacts::point_clearance(int k, const BlockState& s) const {
@@ -269,7 +278,10 @@ double SeatContacts::penetration(const BlockState& s) const {
   for (const Vec2& p : std::span(world).first(body_.size())) {
     deepest = std::max(deepest, -clearance_at(p));
   }
-  for (int k = 0; k < point_count(); ++k) deepest = std::max(deepest, -point_clearance(k, world));
+  // A point outside adds nothing: its -clearance is not above 0.
+  for (int k = 0; k < point_count(); ++k) {
+    if (inside_block(k, world)) deepest = std::max(deepest, -point_clearance(k, world));
+  }
   return deepest;
 }
 

@@ -4,9 +4,7 @@
 // vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
 #pragma once
 
-#include <bit>
 #include <cstddef>
-#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -14,7 +12,7 @@
 #include "engine/contact/planar_contact.hpp"
 #include "engine/scene/block_state.hpp"
 #include "engine/scene/polygon_properties.hpp"
-#include "engine/sine_cosine.hpp"
+#include "engine/seat/turn_cache.hpp"
 
 namespace blockfrag {
 
@@ -104,6 +102,8 @@ class SeatContacts {
   // vertex_clearance and point_clearance for the vertices given in the world frame.
   double clearance_at(Vec2 p) const;
   double point_clearance(int k, std::span<const Vec2> world) const;
+  // Whether seat point k is inside the block (point_clearance's sign, without its distance).
+  bool inside_block(int k, std::span<const Vec2> world) const;
 
   // How far block vertex i is above the seat (its height over the seat for x within the seat's
   // ends, else its distance from the nearer end): <= 0 where it touches or is below.
@@ -118,17 +118,6 @@ class SeatContacts {
   double height_over_fall(const BlockState& s, std::span<const Vec2> world, double depth) const;
 
  private:
-  // sin and cos of theta, kept for the last theta asked: a step's guards, its touch checks and its
-  // forces ask for the same pose's vertices several times over.
-  SineCosine turn(double theta) const {
-    const auto bits = std::bit_cast<std::uint64_t>(theta);
-    if (bits != turn_bits_) {
-      turn_ = sine_cosine(theta);
-      turn_bits_ = bits;
-    }
-    return turn_;
-  }
-
   struct Segment {  // a seat segment's unit direction, upward normal and length
     Vec2 direction, normal;
     double length;
@@ -141,8 +130,7 @@ class SeatContacts {
   bool straight_ = false;  // set from the block's size: see the constructor
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
-  mutable SineCosine turn_ = sine_cosine(0.0);
-  mutable std::uint64_t turn_bits_ = 0;  // theta = 0
+  TurnCache turn_;
 };
 
 }  // namespace blockfrag

@@ -18,6 +18,9 @@ namespace {
 // A vertex this close to a seat's end (times R) may pass it, where its clearance becomes its
 // distance from the end.
 constexpr double kEndMargin = 1e-9;
+// A seat point this close to a block edge's line (times R) may be on the edge: its distance's
+// sinusoid is not told from zero.
+constexpr double kLineMargin = 1e-12;
 
 // Where x lies against the seat's range: -1 past its first point, 0 over it, 1 past its last.
 int side_of(double x, const SeatContacts& seat) {
@@ -91,7 +94,14 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
   for (const int i : system.watched_vertices_) {
     const Vec2 v = seat.body_vertex(i);
     const Vec2 w{v.x - body.x, v.y - body.y};
-    Vertex vertex{swept({p.x, w.x, -w.y}), {}};
+    Vertex vertex{swept({p.x, w.x, -w.y}), {}, {}};
+    for (const int end : {0, 1}) {
+      const Vec2 e = seat.seat_point(end == 0 ? 0 : seat.point_count() - 1);
+      const Vec2 f{p.x - e.x, p.y - e.y};
+      const Sinusoid squared{f.x * f.x + f.y * f.y + w.x * w.x + w.y * w.y,
+                             2 * (f.x * w.x + f.y * w.y), 2 * (f.y * w.x - f.x * w.y)};
+      vertex.end_least_at[static_cast<std::size_t>(end)] = squared.least_at();
+    }
     for (int k = 0; k + 1 < seat.point_count(); ++k) {
       const Vec2 a = seat.seat_point(k), b = seat.seat_point(k + 1);
       if (!(b.x > a.x)) {  // never asked: clearance_least_at_ends claims nothing over it
@@ -145,11 +155,7 @@ GuardClaims PivotSweep::claims(double theta0, double theta1) const {
   system_->claim_overturn_and_fall(least(step, centre_x_), largest(step, centre_x_), true, false,
                                    claims);
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
-  for (const Vertex& v : vertices_) {
-    claims[g++] = system_->clearance_least_at_ends(
-        least(step, v.x), largest(step, v.x),
-        [&](int k) { return !step.range.holds(v.height_least_at[static_cast<std::size_t>(k)]); });
-  }
+  for (const Vertex& v : vertices_) claims[g++] = vertex_claim(step, v);
   if (points_.empty()) return claims;
   std::array<Vec2, kMaxSeatClearances> world{};
   system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
@@ -157,21 +163,38 @@ GuardClaims PivotSweep::claims(double theta0, double theta1) const {
   return claims;
 }
 
+// Over the seat, the vertex's clearance is its height over it; past an end, its distance from that
+// end, whose square is a sinusoid too.
+bool PivotSweep::vertex_claim(const Step& step, const Vertex& vertex) const {
+  const SeatContacts& seat = *system_->c_.contacts;
+  const double x_lo = least(step, vertex.x), x_hi = largest(step, vertex.x);
+  const double margin = kEndMargin * system_->length_scale();
+  if (x_hi <= seat.seat_point(0).x - margin) return !step.range.holds(vertex.end_least_at[0]);
+  if (x_lo >= seat.seat_point(seat.point_count() - 1).x + margin) {
+    return !step.range.holds(vertex.end_least_at[1]);
+  }
+  return system_->clearance_least_at_ends(x_lo, x_hi, [&](int k) {
+    return !step.range.holds(vertex.height_least_at[static_cast<std::size_t>(k)]);
+  });
+}
+
 // The point's clearance is its distance from the block's boundary, the least of its distances from
 // the edges, while it stays outside. Its distance from an edge is the least of those from the
 // edge's ends and, where its projection falls on the edge, from the edge's line. Where none of
-// these has a minimum inside the step (the line's distance keeping its sign), no edge's distance
+// these has a minimum inside the step (the line's distance keeping its sign, and off the line by
+// more than its rounding at the step's ends, so the point is on no edge there), no edge's distance
 // has, so it never reaches the boundary: outside at the step's start (`world`), the clearance is
 // least at an end.
 bool PivotSweep::point_claim(const Step& step, const Point& point,
                              std::span<const Vec2> world) const {
-  if (!(system_->c_.contacts->point_clearance(point.k, world) > 0)) return false;
+  if (system_->c_.contacts->inside_block(point.k, world)) return false;
   for (const double at : point.corner_least_at) {
     if (step.range.holds(at)) return false;
   }
+  const double off = kLineMargin * system_->length_scale();
   for (const Swept& line : point.lines) {
     const double at_lo = line.f.at(step.lo), at_hi = line.f.at(step.hi);
-    const bool above = at_lo > 0 && at_hi > 0, below = at_lo < 0 && at_hi < 0;
+    const bool above = at_lo > off && at_hi > off, below = at_lo < -off && at_hi < -off;
     if (!(above || below) || step.range.holds(above ? line.least_at : line.largest_at)) {
       return false;
     }

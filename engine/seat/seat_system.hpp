@@ -163,6 +163,8 @@ class PivotSweep {
   struct Vertex {
     Swept x;
     std::vector<double> height_least_at;  // per seat segment
+    // Its squared distance from the seat's first and last points (its clearance past them).
+    std::array<double, 2> end_least_at;
   };
   struct Point {
     int k;                                // the seat point
@@ -172,6 +174,7 @@ class PivotSweep {
   static Swept swept(const Sinusoid& f);
   static double least(const Step& step, const Swept& s);
   static double largest(const Step& step, const Swept& s);
+  bool vertex_claim(const Step& step, const Vertex& vertex) const;
   bool point_claim(const Step& step, const Point& point, std::span<const Vec2> world) const;
 
   const SeatSystem* system_;
