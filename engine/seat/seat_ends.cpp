@@ -87,30 +87,28 @@ bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
 // p + Rot(theta) w, and its height over a line of slope m through a is a sinusoid of theta. Seen
 // from the block, a seat point s moves on a circle about the pivot, at body + Rot(-theta) (s - p).
 PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
-    : system_(&system), chart_(chart), unused_(system.unused_guards()) {
+    : system_(&system),
+      chart_(chart),
+      unused_(system.unused_guards()),
+      centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
   const SeatContacts& seat = *system.c_.contacts;
   const Vec2 p = chart.point, body = chart.body;
-  centre_x_ = swept({p.x, -body.x, body.y});
   for (const int i : system.watched_vertices_) {
     const Vec2 v = seat.body_vertex(i);
     const Vec2 w{v.x - body.x, v.y - body.y};
-    Vertex vertex{swept({p.x, w.x, -w.y}), {}, {}};
+    Vertex vertex{{p.x, w.x, -w.y}, {}, {}};
     for (const int end : {0, 1}) {
       const Vec2 e = seat.seat_point(end == 0 ? 0 : seat.point_count() - 1);
       const Vec2 f{p.x - e.x, p.y - e.y};
-      const Sinusoid squared{f.x * f.x + f.y * f.y + w.x * w.x + w.y * w.y,
-                             2 * (f.x * w.x + f.y * w.y), 2 * (f.y * w.x - f.x * w.y)};
-      vertex.end_least_at[static_cast<std::size_t>(end)] = squared.least_at();
+      vertex.ends[static_cast<std::size_t>(end)] = {f.x * f.x + f.y * f.y + w.x * w.x + w.y * w.y,
+                                                    2 * (f.x * w.x + f.y * w.y),
+                                                    2 * (f.y * w.x - f.x * w.y)};
     }
     for (int k = 0; k + 1 < seat.point_count(); ++k) {
       const Vec2 a = seat.seat_point(k), b = seat.seat_point(k + 1);
-      if (!(b.x > a.x)) {  // never asked: clearance_least_at_ends claims nothing over it
-        vertex.height_least_at.push_back(0.0);
-        continue;
-      }
-      const double m = (b.y - a.y) / (b.x - a.x);
-      const Sinusoid height{p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y};
-      vertex.height_least_at.push_back(height.least_at());
+      // A segment that does not run left to right is never asked (clearance_least_at_ends).
+      const double m = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
+      vertex.heights.push_back({p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y});
     }
     vertices_.push_back(std::move(vertex));
   }
@@ -122,42 +120,27 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
     for (int j = 0; j < n; ++j) {
       const Vec2 a = seat.body_vertex(j), b = seat.body_vertex((j + 1) % n);
       const Vec2 e{body.x - a.x, body.y - a.y};
-      const Sinusoid squared{e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
-                             2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)};
-      point.corner_least_at.push_back(squared.least_at());
+      point.corners.push_back({e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
+                               2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)});
       const double length = std::hypot(b.x - a.x, b.y - a.y);
       const Vec2 normal{-(b.y - a.y) / length, (b.x - a.x) / length};
-      point.lines.push_back(swept({normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
-                                   normal.x * u.y - normal.y * u.x}));
+      point.lines.push_back({normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
+                             normal.x * u.y - normal.y * u.x});
     }
     points_.push_back(std::move(point));
   }
 }
 
-PivotSweep::Swept PivotSweep::swept(const Sinusoid& f) {
-  return {f, f.least_at(), (-f).least_at(), f.amplitude()};
-}
-
-double PivotSweep::least(const Step& step, const Swept& s) {
-  return step.range.holds(s.least_at) ? s.f.c - s.amplitude
-                                      : std::min(s.f.at(step.lo), s.f.at(step.hi));
-}
-
-double PivotSweep::largest(const Step& step, const Swept& s) {
-  return step.range.holds(s.largest_at) ? s.f.c + s.amplitude
-                                        : std::max(s.f.at(step.lo), s.f.at(step.hi));
-}
-
 GuardClaims PivotSweep::claims(double theta0, double theta1) const {
   GuardClaims claims = unused_;
   const double lo = std::min(theta0, theta1), hi = std::max(theta0, theta1);
-  const Step step{AngleRange(lo, hi), sine_cosine(lo), sine_cosine(hi)};
-  system_->claim_overturn_and_fall(least(step, centre_x_), largest(step, centre_x_), true, false,
+  const ThetaStep step(lo, hi);
+  system_->claim_overturn_and_fall(step.least(centre_x_), step.largest(centre_x_), true, false,
                                    claims);
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const Vertex& v : vertices_) claims[g++] = vertex_claim(step, v);
   if (points_.empty()) return claims;
-  std::array<Vec2, kMaxSeatClearances> world{};
+  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
   system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
   for (const Point& point : points_) claims[g++] = point_claim(step, point, world);
   return claims;
@@ -165,16 +148,16 @@ GuardClaims PivotSweep::claims(double theta0, double theta1) const {
 
 // Over the seat, the vertex's clearance is its height over it; past an end, its distance from that
 // end, whose square is a sinusoid too.
-bool PivotSweep::vertex_claim(const Step& step, const Vertex& vertex) const {
+bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const {
   const SeatContacts& seat = *system_->c_.contacts;
-  const double x_lo = least(step, vertex.x), x_hi = largest(step, vertex.x);
+  const double x_lo = step.least(vertex.x), x_hi = step.largest(vertex.x);
   const double margin = kEndMargin * system_->length_scale();
-  if (x_hi <= seat.seat_point(0).x - margin) return !step.range.holds(vertex.end_least_at[0]);
+  if (x_hi <= seat.seat_point(0).x - margin) return !step.holds_minimum(vertex.ends[0]);
   if (x_lo >= seat.seat_point(seat.point_count() - 1).x + margin) {
-    return !step.range.holds(vertex.end_least_at[1]);
+    return !step.holds_minimum(vertex.ends[1]);
   }
   return system_->clearance_least_at_ends(x_lo, x_hi, [&](int k) {
-    return !step.range.holds(vertex.height_least_at[static_cast<std::size_t>(k)]);
+    return !step.holds_minimum(vertex.heights[static_cast<std::size_t>(k)]);
   });
 }
 
@@ -185,19 +168,17 @@ bool PivotSweep::vertex_claim(const Step& step, const Vertex& vertex) const {
 // more than its rounding at the step's ends, so the point is on no edge there), no edge's distance
 // has, so it never reaches the boundary: outside at the step's start (`world`), the clearance is
 // least at an end.
-bool PivotSweep::point_claim(const Step& step, const Point& point,
+bool PivotSweep::point_claim(const ThetaStep& step, const Point& point,
                              std::span<const Vec2> world) const {
   if (system_->c_.contacts->inside_block(point.k, world)) return false;
-  for (const double at : point.corner_least_at) {
-    if (step.range.holds(at)) return false;
+  for (const Sinusoid& corner : point.corners) {
+    if (step.holds_minimum(corner)) return false;
   }
   const double off = kLineMargin * system_->length_scale();
-  for (const Swept& line : point.lines) {
-    const double at_lo = line.f.at(step.lo), at_hi = line.f.at(step.hi);
+  for (const Sinusoid& line : point.lines) {
+    const double at_lo = line.at(step.lo()), at_hi = line.at(step.hi());
     const bool above = at_lo > off && at_hi > off, below = at_lo < -off && at_hi < -off;
-    if (!(above || below) || step.range.holds(above ? line.least_at : line.largest_at)) {
-      return false;
-    }
+    if (!(above || below) || step.holds_minimum(above ? line : -line)) return false;
   }
   return true;
 }

@@ -142,45 +142,32 @@ class SeatSystem {
 
 // Which guards are least at an end of a step while the block turns about a fixed point (a
 // PivotChart), theta moving one way (engine/seat/seat_ends.cpp). Each guard it claims is made of
-// sinusoids of theta (a vertex's x and its heights over the seat's lines, a seat point's squared
-// distances from the block's vertices and its distances from their edges' lines): where each is
-// least or largest depends only on the chart and is found once; a step then evaluates them at its
-// ends and asks whether its range of theta holds those places.
+// sinusoids of theta (a vertex's x and its heights over the seat's lines or its distance from an
+// end, a seat point's squared distances from the block's vertices and its distances from their
+// edges' lines), set up once per chart; a step evaluates them and their slopes at its ends.
 class PivotSweep {
  public:
   PivotSweep(const SeatSystem& system, const PivotChart& chart);
   GuardClaims claims(double theta0, double theta1) const;
 
  private:
-  struct Swept {  // a sinusoid, where it is least and largest, its amplitude
-    Sinusoid f;
-    double least_at, largest_at, amplitude;
-  };
-  struct Step {
-    AngleRange range;
-    SineCosine lo, hi;
-  };
   struct Vertex {
-    Swept x;
-    std::vector<double> height_least_at;  // per seat segment
-    // Its squared distance from the seat's first and last points (its clearance past them).
-    std::array<double, 2> end_least_at;
+    Sinusoid x;
+    std::vector<Sinusoid> heights;  // over each seat segment's line
+    std::array<Sinusoid, 2> ends;   // squared distance from the seat's first and last points
   };
   struct Point {
-    int k;                                // the seat point
-    std::vector<double> corner_least_at;  // its squared distance from each block vertex
-    std::vector<Swept> lines;             // its distance from each block edge's line
+    int k;                          // the seat point
+    std::vector<Sinusoid> corners;  // squared distance from each block vertex
+    std::vector<Sinusoid> lines;    // signed distance from each block edge's line
   };
-  static Swept swept(const Sinusoid& f);
-  static double least(const Step& step, const Swept& s);
-  static double largest(const Step& step, const Swept& s);
-  bool vertex_claim(const Step& step, const Vertex& vertex) const;
-  bool point_claim(const Step& step, const Point& point, std::span<const Vec2> world) const;
+  bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
+  bool point_claim(const ThetaStep& step, const Point& point, std::span<const Vec2> world) const;
 
   const SeatSystem* system_;
   PivotChart chart_;
   GuardClaims unused_;
-  Swept centre_x_;
+  Sinusoid centre_x_;
   std::vector<Vertex> vertices_;
   std::vector<Point> points_;
 };

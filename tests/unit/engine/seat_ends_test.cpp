@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "engine/seat/seat_system.hpp"
+#include "engine/seat/sinusoid.hpp"
+#include "engine/sine_cosine.hpp"
 #include "tests/support/type_b_block.hpp"
 #include "tests/unit/engine/fixed_uniforms.hpp"
 
@@ -54,6 +56,34 @@ int check_claims(const SeatSystem& system, const GuardClaims& claims, const Stat
     clearances += claims[static_cast<std::size_t>(i)] && system.event(i) == SeatEvent::touches;
   }
   return clearances;
+}
+
+// A step's range holds a sinusoid's minimum where dense samples find one inside it, and bounds the
+// sinusoid's values over it.
+TEST(SeatEnds, AStepHoldsASinusoidsMinimumWhereSamplesFindOne) {
+  FixedUniforms u(36);
+  int held = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const Sinusoid f{u(-3, 3), u(-5, 5), u(-5, 5)};
+    const double lo = u(-7, 7), hi = lo + u(0, 3);
+    const ThetaStep step(lo, hi);
+    double least = std::min(f.at(step.lo()), f.at(step.hi())), largest = least;
+    bool dips = false;  // a sample clearly below both ends
+    for (int k = 1; k < kSamples; ++k) {
+      const double value = f.at(sine_cosine(lo + (hi - lo) * k / kSamples));
+      dips = dips || value < std::min(f.at(step.lo()), f.at(step.hi())) - 1e-12;
+      least = std::min(least, value);
+      largest = std::max(largest, value);
+    }
+    if (dips) {
+      EXPECT_TRUE(step.holds_minimum(f)) << n;
+    }
+    held += step.holds_minimum(f);
+    EXPECT_LE(step.least(f), least + 1e-12);
+    EXPECT_GE(step.largest(f), largest - 1e-12);
+  }
+  EXPECT_GT(held, 300);
+  EXPECT_LT(held, 1700);
 }
 
 struct PivotCase {
