@@ -1,6 +1,12 @@
 #include "engine/seat/fixed_state_forces.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <utility>
 
 #include <Eigen/Dense>
 

@@ -3,6 +3,7 @@
 // Each claim holds of the guard as SeatSystem::guards computes it; where a case is not covered, the
 // guard is sampled.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -93,10 +94,14 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
       centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
   const SeatContacts& seat = *system.c_.contacts;
   const Vec2 p = chart.point, body = chart.body;
+  const int n = seat.vertex_count();
+  vertices_.reserve(system.watched_vertices_.size());
+  points_.reserve(system.watched_points_.size());
   for (const int i : system.watched_vertices_) {
     const Vec2 v = seat.body_vertex(i);
     const Vec2 w{v.x - body.x, v.y - body.y};
     Vertex vertex{{p.x, w.x, -w.y}, {}, {}};
+    vertex.heights.reserve(static_cast<std::size_t>(seat.point_count()));
     for (const int end : {0, 1}) {
       const Vec2 e = seat.seat_point(end == 0 ? 0 : seat.point_count() - 1);
       const Vec2 f{p.x - e.x, p.y - e.y};
@@ -112,17 +117,18 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
     }
     vertices_.push_back(std::move(vertex));
   }
-  const int n = seat.vertex_count();
   for (const int k : system.watched_points_) {
     const Vec2 s = seat.seat_point(k);
     const Vec2 u{s.x - p.x, s.y - p.y};
     Point point{k, {}, {}};
+    point.corners.reserve(static_cast<std::size_t>(n));
+    point.lines.reserve(static_cast<std::size_t>(n));
     for (int j = 0; j < n; ++j) {
       const Vec2 a = seat.body_vertex(j), b = seat.body_vertex((j + 1) % n);
       const Vec2 e{body.x - a.x, body.y - a.y};
       point.corners.push_back({e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
                                2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)});
-      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
       const Vec2 normal{-(b.y - a.y) / length, (b.x - a.x) / length};
       point.lines.push_back({normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
                              normal.x * u.y - normal.y * u.x});

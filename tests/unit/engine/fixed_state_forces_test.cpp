@@ -4,8 +4,11 @@
 // with the whole scene turned with it.
 #include "engine/seat/fixed_state_forces.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <span>
 
 #include <gtest/gtest.h>
 
