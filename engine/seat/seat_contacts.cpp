@@ -1,6 +1,7 @@
 #include "engine/seat/seat_contacts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -43,6 +44,10 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
   centre_ = {c[0], c[1]};
   for (const Vertex& v : block) body_.push_back({v[0] - c[0], v[1] - c[1]});
   for (const Vertex& p : seat) seat_.push_back({p[0], p[1]});
+  for (std::size_t k = 0; k + 1 < seat_.size(); ++k) {
+    const SegmentFrame frame = segment_frame(seat_[k], seat_[k + 1]);
+    segments_.push_back({frame.direction, frame.normal, frame.length});
+  }
   double size = 0.0;
   for (const Vec2& r : body_) size = std::max(size, norm(r));
   straight_ = straight(kContactHeight * size);
@@ -98,7 +103,7 @@ SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
-  const SineCosine turn = sine_cosine(s.theta);
+  const SineCosine turn = turn_(s.theta);
   const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
   return {s.x + r.x, s.y + r.y};
 }
@@ -107,7 +112,7 @@ PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
   const Vec2 centre{s.x, s.y};
   if (pair.kind == ContactKind::block_vertex) {
     const Vec2 a = seat_[static_cast<std::size_t>(pair.seat)];
-    const SegmentFrame seg = segment_frame(a, seat_[static_cast<std::size_t>(pair.seat) + 1]);
+    const Segment& seg = segments_[static_cast<std::size_t>(pair.seat)];
     const Vec2 p = vertex_at(pair.block, s);
     const Vec2 ap = minus(p, a);
     return {dot(seg.normal, ap), dot(seg.direction, ap), seg.length,
@@ -210,7 +215,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
 }
 
 void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
-  const SineCosine turn = sine_cosine(s.theta);
+  const SineCosine turn = turn_(s.theta);
   for (std::size_t i = 0; i < body_.size(); ++i) {
     const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
     out[i] = {s.x + r.x, s.y + r.y};
@@ -234,7 +239,6 @@ double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
 double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   const Vec2 p = seat_[static_cast<std::size_t>(k)];
   double squared = std::numeric_limits<double>::infinity();
-  bool inside = false;
   const std::size_t n = body_.size();
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2 a = world[i], b = world[j];
@@ -242,26 +246,41 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
     const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
     const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
     squared = std::min(squared, dot(off, off));
+  }
+  const double distance = std::sqrt(squared);
+  return inside_block(k, world) ? -distance : distance;
+}
+
+bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {
+  const Vec2 p = seat_[static_cast<std::size_t>(k)];
+  bool inside = false;
+  const std::size_t n = body_.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = world[i], b = world[j];
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
       inside = !inside;
     }
   }
-  const double distance = std::sqrt(squared);
-  return inside ? -distance : distance;
+  return inside;
 }
 
 double SeatContacts::point_clearance(int k, const BlockState& s) const {
-  std::vector<Vec2> world(body_.size());
+  std::array<Vec2, kMaxSeatClearances> world{};
   world_vertices(s, world);
   return point_clearance(k, world);
 }
 
 double SeatContacts::penetration(const BlockState& s) const {
-  std::vector<Vec2> world(body_.size());
+  std::array<Vec2, kMaxSeatClearances> world{};
   world_vertices(s, world);
   double deepest = 0.0;
-  for (const Vec2& p : world) deepest = std::max(deepest, -clearance_at(p));
-  for (int k = 0; k < point_count(); ++k) deepest = std::max(deepest, -point_clearance(k, world));
+  for (const Vec2& p : std::span(world).first(body_.size())) {
+    deepest = std::max(deepest, -clearance_at(p));
+  }
+  // A point outside adds nothing: its -clearance is not above 0.
+  for (int k = 0; k < point_count(); ++k) {
+    if (inside_block(k, world)) deepest = std::max(deepest, -point_clearance(k, world));
+  }
   return deepest;
 }
 

@@ -12,6 +12,7 @@
 #include "engine/contact/planar_contact.hpp"
 #include "engine/scene/block_state.hpp"
 #include "engine/scene/polygon_properties.hpp"
+#include "engine/seat/turn_cache.hpp"
 
 namespace blockfrag {
 
@@ -101,6 +102,8 @@ class SeatContacts {
   // vertex_clearance and point_clearance for the vertices given in the world frame.
   double clearance_at(Vec2 p) const;
   double point_clearance(int k, std::span<const Vec2> world) const;
+  // Whether seat point k is inside the block (point_clearance's sign, without its distance).
+  bool inside_block(int k, std::span<const Vec2> world) const;
 
   // How far block vertex i is above the seat (its height over the seat for x within the seat's
   // ends, else its distance from the nearer end): <= 0 where it touches or is below.
@@ -115,12 +118,19 @@ class SeatContacts {
   double height_over_fall(const BlockState& s, std::span<const Vec2> world, double depth) const;
 
  private:
+  struct Segment {  // a seat segment's unit direction, upward normal and length
+    Vec2 direction, normal;
+    double length;
+  };
+
   std::vector<Vec2> body_;  // block vertices relative to the centre of mass, body frame
   std::vector<Vec2> seat_;
+  std::vector<Segment> segments_;
   Vec2 centre_;
   bool straight_ = false;  // set from the block's size: see the constructor
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
+  TurnCache turn_;
 };
 
 }  // namespace blockfrag

@@ -5,20 +5,26 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <span>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "engine/contact/planar_contact.hpp"
 #include "engine/integrate/ode_state.hpp"
 #include "engine/modes/modes.hpp"
 #include "engine/motion/ground_motion.hpp"
+#include "engine/seat/fixed_state_forces.hpp"
+#include "engine/seat/seat_chart.hpp"
 #include "engine/seat/seat_contacts.hpp"
+#include "engine/seat/sinusoid.hpp"
+#include "engine/sine_cosine.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
-// At most this many contacts at once (engine/contact/contact_lcp.hpp's limit).
-inline constexpr int kMaxSeatContacts = 6;
 // Guards: overturning, falling, four per active contact, and one per watched vertex or point.
 inline constexpr int kSeatGuards = 64;
 inline constexpr int kSeatContactGuards = 4;
@@ -30,6 +36,9 @@ struct ActiveContact {
   ContactState state;  // stick, slip_positive or slip_negative
 };
 
+// Per guard: whether its least value over a step is known to be at an end of it.
+using GuardClaims = std::array<bool, kSeatGuards>;
+
 // What a guard reaching zero means on a seat.
 enum class SeatEvent {
   none,            // an unused guard slot
@@ -40,14 +49,6 @@ enum class SeatEvent {
   slip_stops,      // a slipping contact's tangential velocity reaches zero
   leaves_end,      // an active contact's point reaches its segment's or edge's end
   touches,         // a block vertex reaches the seat or a seat point reaches the block
-};
-
-// Contact forces for fixed states (per unit mass): each active contact's normal acceleration is
-// zero, a sticking one's tangential too, a slipping one's friction is -s mu times its normal force.
-struct FixedStateForces {
-  BodyAcceleration acceleration{0.0, 0.0, 0.0};
-  std::array<double, kMaxSeatContacts> normal{}, tangent{};
-  Vec2 total{0.0, 0.0};  // the sum of the contact forces, world frame
 };
 
 struct SeatSystemContext {
@@ -85,12 +86,90 @@ class SeatSystem {
   double length_scale() const { return c_.geometry->size(); }
   double g() const { return c_.g; }
 
+  // Which guards are least at an end of a step (engine/seat/seat_ends.cpp), claimed only where that
+  // is exactly true of guards() (docs/physics.md, "Contact on a seat"); turning about a fixed
+  // point, PivotSweep.
+  // A vertex slipping along a line, its place and its rate along it moving one way or not:
+  GuardClaims slip_least_at_ends(bool place_one_way, bool rate_one_way) const;
+  // Sliding without turning between the states s0 and s1, its place and rate likewise:
+  GuardClaims slide_least_at_ends(const BlockState& s0, const BlockState& s1, bool place_one_way,
+                                  bool rate_one_way) const;
+  // Any other motion, the centre of mass's x from x0 to x1 (in flight theta is linear in time: it
+  // moves one way):
+  GuardClaims free_least_at_ends(double x0, double x1, bool x_one_way, bool theta_one_way) const;
+  // The guards whose slot is unused: their value is 1 throughout.
+  GuardClaims unused_guards() const;
+
  private:
+  friend class PivotSweep;
+
+  // Guards 0 and 1 (overturning, falling) while the centre of mass's x stays within [x_lo, x_hi]
+  // and theta within [theta_lo, theta_hi] (moving one way when theta_one_way), the lowest vertex
+  // linear in a parameter moving one way when vertices_linear.
+  void claim_overturn_and_fall(double x_lo, double x_hi, bool theta_one_way, bool vertices_linear,
+                               GuardClaims& claims) const;
+  // A slipping contact's guards, where its tangential velocity is a positive multiple of the
+  // chart's rate and its place along its run is linear in the chart's place.
+  void claim_contact_guards(bool place_one_way, bool rate_one_way, GuardClaims& claims) const;
+  // A watched vertex whose x stays in [x_lo, x_hi]: where the segments there make a valley, its
+  // clearance is the least of its heights over their lines, and is least at an end when each of
+  // those is (height_least_at_ends(k) for the line of segment k, whose slope is finite).
+  template <class HeightLeastAtEnds>
+  bool clearance_least_at_ends(double x_lo, double x_hi,
+                               const HeightLeastAtEnds& height_least_at_ends) const;
+
+  using Poses = std::array<PairPose, kMaxSeatContacts>;
+  Poses active_poses(const BlockState& s) const;
+  // Whether the last forces solved are at this time and state.
+  bool solved_at(double t, const BlockState& s) const;
+  // The forces with the active contacts' poses at s given.
+  const FixedStateForces& solve(double t, const BlockState& s, const Poses& poses) const;
+
   SeatSystemContext c_;
   std::array<ActiveContact, kMaxSeatContacts> active_{};
   int count_ = 0;
   std::vector<int> watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
+  // The last forces solved, and the time and state they were solved at: a step's end is asked for
+  // by its guards, by the next step's first stage and by the checks of its forces.
+  struct Solved {
+    double t = std::numeric_limits<double>::quiet_NaN();
+    BlockState s;
+    FixedStateForces forces;
+  };
+  mutable Solved last_solve_;
+};
+
+// Which guards are least at an end of a step while the block turns about a fixed point (a
+// PivotChart), theta moving one way (engine/seat/seat_ends.cpp). Each guard it claims is made of
+// sinusoids of theta (a vertex's x and its heights over the seat's lines or its distance from an
+// end, a seat point's squared distances from the block's vertices and its distances from their
+// edges' lines), set up once per chart; a step evaluates them and their slopes at its ends.
+class PivotSweep {
+ public:
+  PivotSweep(const SeatSystem& system, const PivotChart& chart);
+  GuardClaims claims(double theta0, double theta1) const;
+
+ private:
+  struct Vertex {
+    Sinusoid x;
+    std::vector<Sinusoid> heights;  // over each seat segment's line
+    std::array<Sinusoid, 2> ends;   // squared distance from the seat's first and last points
+  };
+  struct Point {
+    int k;                          // the seat point
+    std::vector<Sinusoid> corners;  // squared distance from each block vertex
+    std::vector<Sinusoid> lines;    // signed distance from each block edge's line
+  };
+  bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
+  bool point_claim(const ThetaStep& step, const Point& point, std::span<const Vec2> world) const;
+
+  const SeatSystem* system_;
+  PivotChart chart_;
+  GuardClaims unused_;
+  Sinusoid centre_x_;
+  std::vector<Vertex> vertices_;
+  std::vector<Point> points_;
 };
 
 // The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp).
@@ -117,21 +196,36 @@ class SeatOde {
     return system_->forces(t, chart_.full(t, q));
   }
   OdeState<N> coordinates(const BlockState& b) const { return chart_.coordinates(b); }
-  // No guard's least value over a step is known to be at an end: near zero, each is sampled.
+  // Which guards' least value over a step from q0 to q1 is at one of its ends (so no sample inside
+  // can find it lower): one_way(i) says whether coordinate i of the dense output moves one way.
   template <class OneWay>
-  std::array<bool, kGuards> least_at_ends(const OdeState<N>&, const OdeState<N>&,
-                                          const OneWay&) const {
-    return {};
+  GuardClaims least_at_ends(const OdeState<N>& q0, const OdeState<N>& q1,
+                            const OneWay& one_way) const {
+    if constexpr (std::is_same_v<Chart, PivotChart>) {
+      if (!one_way(0)) return system_->unused_guards();
+      if (!sweep_) sweep_.emplace(*system_, chart_);
+      return sweep_->claims(q0[0], q1[0]);
+    } else if constexpr (std::is_same_v<Chart, SlipChart>) {
+      return system_->slip_least_at_ends(one_way(2), one_way(3));
+    } else if constexpr (std::is_same_v<Chart, SlideChart>) {
+      return system_->slide_least_at_ends(chart_.full(0.0, q0), chart_.full(0.0, q1), one_way(0),
+                                          one_way(1));
+    } else if constexpr (std::is_same_v<Chart, FlightChart>) {
+      return system_->free_least_at_ends(chart_.full(chart_.t0, q0).x, chart_.full(chart_.t0, q1).x,
+                                         one_way(0), true);
+    } else {
+      return system_->free_least_at_ends(chart_.full(0.0, q0).x, chart_.full(0.0, q1).x, one_way(0),
+                                         one_way(2));
+    }
   }
 
  private:
   const SeatSystem* system_;
   Chart chart_;
+  // A pivot's sweep, built when first asked: a chart that is never near a guard's zero needs none.
+  mutable std::optional<
+      std::conditional_t<std::is_same_v<Chart, PivotChart>, PivotSweep, std::monostate>>
+      sweep_;
 };
-
-// The forces of the fixed states at the state s under the applied force per unit mass.
-FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
-                                    std::span<const ContactState> states, const BlockState& s,
-                                    Vec2 applied, double inertia_per_mass, double mu);
 
 }  // namespace blockfrag

@@ -1,0 +1,171 @@
+#include "engine/seat/fixed_state_forces.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include <Eigen/Dense>
+
+#include "engine/contact/contact_lcp.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+constexpr int kMaxUnknowns = 2 * kMaxSeatContacts;
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxUnknowns, kMaxUnknowns>;
+using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxUnknowns, 1>;
+
+}  // namespace
+
+FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
+                                    std::span<const ContactState> states, const BlockState& s,
+                                    Vec2 applied, double inertia_per_mass, double mu) {
+  FixedStateForces out;
+  const BodyAcceleration free{applied.x, applied.y, 0.0};
+  out.acceleration = free;
+  if (contacts.empty()) return out;
+  const RigidVelocity v{s.vx, s.vy, s.omega};
+  const Eigen::Vector3d inverse_mass(1.0, 1.0, 1.0 / inertia_per_mass);
+  // Rows: each contact's normal acceleration, and a sticking one's tangential. Unknowns: each
+  // contact's normal force, and a sticking one's friction (a slipping one's follows the normal).
+  std::array<Eigen::RowVector3d, kMaxUnknowns> rows{};
+  std::array<Eigen::Vector3d, kMaxUnknowns> columns{};
+  std::array<double, kMaxUnknowns> rhs{};
+  int k = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const PlanarContact& c = contacts[i];
+    const Vec2 t = contact_tangent(c);
+    const Eigen::RowVector3d jn = contact_row(c, c.normal), jt = contact_row(c, t);
+    const ContactAcceleration y = contact_acceleration(c, v, free);
+    const int slip = slip_sign(states[i]);
+    rows[static_cast<std::size_t>(k)] = jn;
+    rhs[static_cast<std::size_t>(k)] = -y.normal;
+    columns[static_cast<std::size_t>(k)] = (jn - slip * mu * jt).transpose();
+    ++k;
+    if (slip == 0) {
+      rows[static_cast<std::size_t>(k)] = jt;
+      rhs[static_cast<std::size_t>(k)] = -y.tangent;
+      columns[static_cast<std::size_t>(k)] = jt.transpose();
+      ++k;
+    }
+  }
+  Matrix a(k, k);
+  Vector d(k);
+  for (int r = 0; r < k; ++r) {
+    const Eigen::RowVector3d weighted =
+        rows[static_cast<std::size_t>(r)].cwiseProduct(inverse_mass.transpose());
+    for (int col = 0; col < k; ++col)
+      a(r, col) = weighted.dot(columns[static_cast<std::size_t>(col)]);
+    d(r) = rhs[static_cast<std::size_t>(r)];
+  }
+  // Redundant contacts (collinear supports) leave the system singular: the accelerations are then
+  // still determined, and the forces taken are the smallest that give them.
+  const Eigen::FullPivLU<Matrix> lu(a);
+  const Vector amounts = lu.isInvertible() ? Vector(lu.solve(d))
+                                           : Vector(a.completeOrthogonalDecomposition().solve(d));
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  int col = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int slip = slip_sign(states[i]);
+    const double normal = amounts(col++);
+    const double tangent = slip == 0 ? amounts(col++) : -slip * mu * normal;
+    out.normal[i] = normal;
+    out.tangent[i] = tangent;
+    const PlanarContact& c = contacts[i];
+    const Vec2 t = contact_tangent(c);
+    const Vec2 f{normal * c.normal.x + tangent * t.x, normal * c.normal.y + tangent * t.y};
+    out.total.x += f.x;
+    out.total.y += f.y;
+    force +=
+        normal * contact_row(c, c.normal).transpose() + tangent * contact_row(c, t).transpose();
+  }
+  const Eigen::Vector3d change = inverse_mass.cwiseProduct(force);
+  out.acceleration = {free.x_dd + change(0), free.y_dd + change(1), free.theta_dd + change(2)};
+  return out;
+}
+
+namespace {
+
+// A row of contact_row's, and Eigen's sum order for a dot product of three.
+struct Row3 {
+  double x, y, z;
+};
+Row3 row_of(const PlanarContact& c, Vec2 d) { return {d.x, d.y, c.r.x * d.y - c.r.y * d.x}; }
+double dot(Row3 a, Row3 b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+
+// The solution of a x = d by Eigen's FullPivLU, step by step: the pivot is the first largest
+// entry in column-major order; nothing where the rank falls short.
+std::optional<std::array<double, 2>> full_pivot_solve(std::array<std::array<double, 2>, 2> a,
+                                                      std::array<double, 2> d) {
+  const std::array<double, 4> score{std::abs(a[0][0]), std::abs(a[1][0]), std::abs(a[0][1]),
+                                    std::abs(a[1][1])};
+  int best = 0;
+  for (int k = 1; k < 4; ++k) {
+    if (score[static_cast<std::size_t>(k)] > score[static_cast<std::size_t>(best)]) best = k;
+  }
+  if (score[static_cast<std::size_t>(best)] == 0.0) return std::nullopt;
+  const bool swap_rows = best % 2 == 1, swap_columns = best >= 2;
+  if (swap_rows) {
+    std::swap(a[0], a[1]);
+    std::swap(d[0], d[1]);
+  }
+  if (swap_columns) {
+    std::swap(a[0][0], a[0][1]);
+    std::swap(a[1][0], a[1][1]);
+  }
+  const double l = a[1][0] / a[0][0];
+  const double u11 = a[1][1] - l * a[0][1];
+  const double max_pivot = std::max(std::abs(a[0][0]), std::abs(u11));
+  const double threshold = 2.0 * std::numeric_limits<double>::epsilon() * max_pivot;
+  if (!(std::abs(a[0][0]) > threshold && std::abs(u11) > threshold)) return std::nullopt;
+  const double c1 = (d[1] - d[0] * l) / u11;
+  const double c0 = (d[0] - c1 * a[0][1]) / a[0][0];
+  return swap_columns ? std::array<double, 2>{c1, c0} : std::array<double, 2>{c0, c1};
+}
+
+}  // namespace
+
+std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
+                                                   const BlockState& s, Vec2 applied,
+                                                   double inertia_per_mass, double mu) {
+  FixedStateForces out;
+  const BodyAcceleration free{applied.x, applied.y, 0.0};
+  const RigidVelocity v{s.vx, s.vy, s.omega};
+  const double inverse_inertia = 1.0 / inertia_per_mass;
+  const Vec2 t = contact_tangent(c);
+  const Row3 jn = row_of(c, c.normal), jt = row_of(c, t);
+  const Row3 wn{jn.x, jn.y, jn.z * inverse_inertia};
+  const ContactAcceleration y = contact_acceleration(c, v, free);
+  const int slip = slip_sign(state);
+  double normal = 0.0, tangent = 0.0;
+  if (slip == 0) {
+    const Row3 wt{jt.x, jt.y, jt.z * inverse_inertia};
+    const auto amounts = full_pivot_solve(
+        {{{dot(wn, jn), dot(wn, jt)}, {dot(wt, jn), dot(wt, jt)}}}, {-y.normal, -y.tangent});
+    if (!amounts) return std::nullopt;
+    normal = (*amounts)[0];
+    tangent = (*amounts)[1];
+  } else {
+    const double s_mu = slip * mu;
+    const double a = dot(wn, {jn.x - s_mu * jt.x, jn.y - s_mu * jt.y, jn.z - s_mu * jt.z});
+    if (a == 0.0) return std::nullopt;
+    normal = -y.normal / a;
+    tangent = -slip * mu * normal;
+  }
+  out.normal[0] = normal;
+  out.tangent[0] = tangent;
+  out.total.x += normal * c.normal.x + tangent * t.x;
+  out.total.y += normal * c.normal.y + tangent * t.y;
+  const Row3 force{0.0 + (normal * jn.x + tangent * jt.x), 0.0 + (normal * jn.y + tangent * jt.y),
+                   0.0 + (normal * jn.z + tangent * jt.z)};
+  out.acceleration = {free.x_dd + force.x, free.y_dd + force.y,
+                      free.theta_dd + inverse_inertia * force.z};
+  return out;
+}
+
+}  // namespace blockfrag

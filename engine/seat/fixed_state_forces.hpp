@@ -1,0 +1,40 @@
+// The contact forces of a block on its seat for a fixed set of contact states (docs/physics.md,
+// "Contact on a seat"): each active contact's normal acceleration is zero, a sticking one's
+// tangential too, a slipping one's friction is -s mu times its normal force. Per unit mass.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+
+#include "engine/contact/planar_contact.hpp"
+#include "engine/scene/block_state.hpp"
+
+namespace blockfrag {
+
+// At most this many contacts at once (engine/contact/contact_lcp.hpp's limit).
+inline constexpr int kMaxSeatContacts = 6;
+
+struct FixedStateForces {
+  BodyAcceleration acceleration{0.0, 0.0, 0.0};
+  std::array<double, kMaxSeatContacts> normal{}, tangent{};
+  Vec2 total{0.0, 0.0};  // the sum of the contact forces, world frame
+};
+
+// The forces of the fixed states at the state s under the applied force per unit mass: any number
+// of contacts, solved by full-pivoting LU (least-norm forces where the contacts are redundant).
+FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
+                                    std::span<const ContactState> states, const BlockState& s,
+                                    Vec2 applied, double inertia_per_mass, double mu);
+
+// The same for one contact (sticking: a 2x2 system, slipping: 1x1) in fixed-size arithmetic, the
+// general solve's operations on the same entries in the same order (Eigen's full-pivoting LU
+// written out), so that both give the same numbers; nothing where the system is singular, which
+// the general solve's least-norm forces handle. The flat ground's sticking_corner and
+// slipping_corner (engine/contact/contact_dynamics.hpp) are this system for a vertical normal,
+// solved in closed form in another order, whose rounding differs.
+std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
+                                                   const BlockState& s, Vec2 applied,
+                                                   double inertia_per_mass, double mu);
+
+}  // namespace blockfrag

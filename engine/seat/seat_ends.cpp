@@ -1,0 +1,225 @@
+// Which of a seat's guards are least at an end of a step (SeatSystem::least_at_ends and its
+// siblings): the guard watch samples a guard near zero inside a step only where this is not known.
+// Each claim holds of the guard as SeatSystem::guards computes it; where a case is not covered, the
+// guard is sampled.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <utility>
+
+#include "engine/seat/seat_system.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+// A vertex this close to a seat's end (times R) may pass it, where its clearance becomes its
+// distance from the end.
+constexpr double kEndMargin = 1e-9;
+// A seat point this close to a block edge's line (times R) may be on the edge: its distance's
+// sinusoid is not told from zero.
+constexpr double kLineMargin = 1e-12;
+
+// Where x lies against the seat's range: -1 past its first point, 0 over it, 1 past its last.
+int side_of(double x, const SeatContacts& seat) {
+  if (x < seat.seat_point(0).x) return -1;
+  return x > seat.seat_point(seat.point_count() - 1).x ? 1 : 0;
+}
+
+}  // namespace
+
+GuardClaims SeatSystem::unused_guards() const {
+  GuardClaims claims{};
+  for (std::size_t i = 0; i < claims.size(); ++i) claims[i] = events_[i] == SeatEvent::none;
+  return claims;
+}
+
+void SeatSystem::claim_overturn_and_fall(double x_lo, double x_hi, bool theta_one_way,
+                                         bool vertices_linear, GuardClaims& claims) const {
+  const int side = side_of(x_lo, *c_.contacts);
+  if (side != side_of(x_hi, *c_.contacts)) return;
+  // Over the seat, the overturning margin (concave in theta) and a constant fall depth; past an
+  // end, a constant 1 and the lowest vertex's height, the least of functions linear in a place
+  // moving one way where vertices_linear.
+  claims[0] = side != 0 || theta_one_way;
+  claims[1] = side == 0 || vertices_linear;
+}
+
+void SeatSystem::claim_contact_guards(bool place_one_way, bool rate_one_way,
+                                      GuardClaims& claims) const {
+  for (int i = 0; i < count_; ++i) {
+    if (active_[static_cast<std::size_t>(i)].state == ContactState::stick) continue;
+    const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
+    claims[base + 1] = rate_one_way;
+    claims[base + 2] = place_one_way;
+    claims[base + 3] = place_one_way;
+  }
+}
+
+template <class HeightLeastAtEnds>
+bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
+                                         const HeightLeastAtEnds& height_least_at_ends) const {
+  const SeatContacts& seat = *c_.contacts;
+  const int last = seat.point_count() - 1;
+  const double margin = kEndMargin * length_scale();
+  if (!(x_lo >= seat.seat_point(0).x + margin && x_hi <= seat.seat_point(last).x - margin)) {
+    return false;
+  }
+  int k = 0;
+  while (seat.seat_point(k + 1).x < x_lo) ++k;
+  // Where the seat's slope only grows (a valley), its height at x is the largest of its segments'
+  // lines there: the clearance is the least of the heights over them.
+  double slope_before = -std::numeric_limits<double>::infinity();
+  for (; k < last; ++k) {
+    const Vec2 a = seat.seat_point(k), b = seat.seat_point(k + 1);
+    if (!(b.x > a.x)) return false;
+    const double slope = (b.y - a.y) / (b.x - a.x);
+    if (slope < slope_before || !height_least_at_ends(k)) return false;
+    slope_before = slope;
+    if (b.x >= x_hi) return true;
+  }
+  return false;
+}
+
+// The block turns about the chart's point p: a vertex w from the pivot (body frame) is at
+// p + Rot(theta) w, and its height over a line of slope m through a is a sinusoid of theta. Seen
+// from the block, a seat point s moves on a circle about the pivot, at body + Rot(-theta) (s - p).
+PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
+    : system_(&system),
+      chart_(chart),
+      unused_(system.unused_guards()),
+      centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
+  const SeatContacts& seat = *system.c_.contacts;
+  const Vec2 p = chart.point, body = chart.body;
+  const int n = seat.vertex_count();
+  vertices_.reserve(system.watched_vertices_.size());
+  points_.reserve(system.watched_points_.size());
+  for (const int i : system.watched_vertices_) {
+    const Vec2 v = seat.body_vertex(i);
+    const Vec2 w{v.x - body.x, v.y - body.y};
+    Vertex vertex{{p.x, w.x, -w.y}, {}, {}};
+    vertex.heights.reserve(static_cast<std::size_t>(seat.point_count()));
+    for (const int end : {0, 1}) {
+      const Vec2 e = seat.seat_point(end == 0 ? 0 : seat.point_count() - 1);
+      const Vec2 f{p.x - e.x, p.y - e.y};
+      vertex.ends[static_cast<std::size_t>(end)] = {f.x * f.x + f.y * f.y + w.x * w.x + w.y * w.y,
+                                                    2 * (f.x * w.x + f.y * w.y),
+                                                    2 * (f.y * w.x - f.x * w.y)};
+    }
+    for (int k = 0; k + 1 < seat.point_count(); ++k) {
+      const Vec2 a = seat.seat_point(k), b = seat.seat_point(k + 1);
+      // A segment that does not run left to right is never asked (clearance_least_at_ends).
+      const double m = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
+      vertex.heights.push_back({p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y});
+    }
+    vertices_.push_back(std::move(vertex));
+  }
+  for (const int k : system.watched_points_) {
+    const Vec2 s = seat.seat_point(k);
+    const Vec2 u{s.x - p.x, s.y - p.y};
+    Point point{k, {}, {}};
+    point.corners.reserve(static_cast<std::size_t>(n));
+    point.lines.reserve(static_cast<std::size_t>(n));
+    for (int j = 0; j < n; ++j) {
+      const Vec2 a = seat.body_vertex(j), b = seat.body_vertex((j + 1) % n);
+      const Vec2 e{body.x - a.x, body.y - a.y};
+      point.corners.push_back({e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
+                               2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)});
+      const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+      const Vec2 normal{-(b.y - a.y) / length, (b.x - a.x) / length};
+      point.lines.push_back({normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
+                             normal.x * u.y - normal.y * u.x});
+    }
+    points_.push_back(std::move(point));
+  }
+}
+
+GuardClaims PivotSweep::claims(double theta0, double theta1) const {
+  GuardClaims claims = unused_;
+  const double lo = std::min(theta0, theta1), hi = std::max(theta0, theta1);
+  const ThetaStep step(lo, hi);
+  system_->claim_overturn_and_fall(step.least(centre_x_), step.largest(centre_x_), true, false,
+                                   claims);
+  auto g = static_cast<std::size_t>(kFirstClearanceGuard);
+  for (const Vertex& v : vertices_) claims[g++] = vertex_claim(step, v);
+  if (points_.empty()) return claims;
+  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
+  system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
+  for (const Point& point : points_) claims[g++] = point_claim(step, point, world);
+  return claims;
+}
+
+// Over the seat, the vertex's clearance is its height over it; past an end, its distance from that
+// end, whose square is a sinusoid too.
+bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const {
+  const SeatContacts& seat = *system_->c_.contacts;
+  const double x_lo = step.least(vertex.x), x_hi = step.largest(vertex.x);
+  const double margin = kEndMargin * system_->length_scale();
+  if (x_hi <= seat.seat_point(0).x - margin) return !step.holds_minimum(vertex.ends[0]);
+  if (x_lo >= seat.seat_point(seat.point_count() - 1).x + margin) {
+    return !step.holds_minimum(vertex.ends[1]);
+  }
+  return system_->clearance_least_at_ends(x_lo, x_hi, [&](int k) {
+    return !step.holds_minimum(vertex.heights[static_cast<std::size_t>(k)]);
+  });
+}
+
+// The point's clearance is its distance from the block's boundary, the least of its distances from
+// the edges, while it stays outside. Its distance from an edge is the least of those from the
+// edge's ends and, where its projection falls on the edge, from the edge's line. Where none of
+// these has a minimum inside the step (the line's distance keeping its sign, and off the line by
+// more than its rounding at the step's ends, so the point is on no edge there), no edge's distance
+// has, so it never reaches the boundary: outside at the step's start (`world`), the clearance is
+// least at an end.
+bool PivotSweep::point_claim(const ThetaStep& step, const Point& point,
+                             std::span<const Vec2> world) const {
+  if (system_->c_.contacts->inside_block(point.k, world)) return false;
+  for (const Sinusoid& corner : point.corners) {
+    if (step.holds_minimum(corner)) return false;
+  }
+  const double off = kLineMargin * system_->length_scale();
+  for (const Sinusoid& line : point.lines) {
+    const double at_lo = line.at(step.lo()), at_hi = line.at(step.hi());
+    const bool above = at_lo > off && at_hi > off, below = at_lo < -off && at_hi < -off;
+    if (!(above || below) || step.holds_minimum(above ? line : -line)) return false;
+  }
+  return true;
+}
+
+GuardClaims SeatSystem::slip_least_at_ends(bool place_one_way, bool rate_one_way) const {
+  GuardClaims claims = unused_guards();
+  claim_contact_guards(place_one_way, rate_one_way, claims);
+  return claims;
+}
+
+// Sliding, every vertex moves along the line by the same amount: its height over a segment is
+// linear in the place, and the least of such heights over a valley is concave in it. A seat point's
+// distance from a moving edge is convex in the place, and can be least inside: not claimed.
+GuardClaims SeatSystem::slide_least_at_ends(const BlockState& s0, const BlockState& s1,
+                                            bool place_one_way, bool rate_one_way) const {
+  GuardClaims claims = unused_guards();
+  claim_contact_guards(place_one_way, rate_one_way, claims);
+  if (!place_one_way) return claims;
+  claim_overturn_and_fall(std::min(s0.x, s1.x), std::max(s0.x, s1.x), true, true, claims);
+  auto g = static_cast<std::size_t>(kFirstClearanceGuard);
+  for (const int i : watched_vertices_) {
+    const double x0 = c_.contacts->vertex_at(i, s0).x, x1 = c_.contacts->vertex_at(i, s1).x;
+    claims[g++] =
+        clearance_least_at_ends(std::min(x0, x1), std::max(x0, x1), [](int) { return true; });
+  }
+  return claims;
+}
+
+GuardClaims SeatSystem::free_least_at_ends(double x0, double x1, bool x_one_way,
+                                           bool theta_one_way) const {
+  GuardClaims claims = unused_guards();
+  if (x_one_way) {
+    claim_overturn_and_fall(std::min(x0, x1), std::max(x0, x1), theta_one_way, false, claims);
+  }
+  return claims;
+}
+
+}  // namespace blockfrag

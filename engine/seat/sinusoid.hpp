@@ -1,0 +1,56 @@
+// f(theta) = c + a cos(theta) + b sin(theta): a point's coordinate, its height over a line or its
+// squared distance from another point, while the block turns about a fixed point; and whether a
+// step's range of theta holds such a function's minimum, for the seat's guards
+// (engine/seat/seat_ends.cpp).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "engine/sine_cosine.hpp"
+
+namespace blockfrag {
+
+struct Sinusoid {
+  double c, a, b;
+
+  double at(SineCosine turn) const { return c + a * turn.cos + b * turn.sin; }
+  double slope_at(SineCosine turn) const { return b * turn.cos - a * turn.sin; }
+  Sinusoid operator-() const { return {-c, -a, -b}; }
+};
+
+// A step's range of theta, [lo, hi], widened by kMargin (rad) either way where it asks whether a
+// sinusoid's minimum lies in it: rounding moves where the slope changes sign by a few ulps.
+class ThetaStep {
+ public:
+  static constexpr double kMargin = 1e-9;
+
+  ThetaStep(double lo, double hi)
+      : lo_(sine_cosine(lo)),
+        hi_(sine_cosine(hi)),
+        // sin and cos kMargin further out: cos(kMargin) is 1 and sin(kMargin) kMargin in doubles.
+        lo_wide_{lo_.sin - kMargin * lo_.cos, lo_.cos + kMargin * lo_.sin},
+        hi_wide_{hi_.sin + kMargin * hi_.cos, hi_.cos - kMargin * hi_.sin},
+        wide_(hi - lo + 2 * kMargin >= std::numbers::pi) {}
+
+  SineCosine lo() const { return lo_; }
+  SineCosine hi() const { return hi_; }
+  // Whether f has a local minimum in the widened range: a range shorter than half a turn holds at
+  // most one of its extremes, a minimum where its slope goes from <= 0 to >= 0 across the range.
+  bool holds_minimum(const Sinusoid& f) const {
+    if (f.a == 0.0 && f.b == 0.0) return false;
+    return wide_ || (f.slope_at(lo_wide_) <= 0 && f.slope_at(hi_wide_) >= 0);
+  }
+  // The least and largest value of f over [lo, hi] (exact where no extreme lies inside).
+  double least(const Sinusoid& f) const {
+    return holds_minimum(f) ? f.c - std::hypot(f.a, f.b) : std::min(f.at(lo_), f.at(hi_));
+  }
+  double largest(const Sinusoid& f) const { return -least(-f); }
+
+ private:
+  SineCosine lo_, hi_, lo_wide_, hi_wide_;
+  bool wide_;
+};
+
+}  // namespace blockfrag

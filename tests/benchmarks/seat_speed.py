@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""The seat's cost against the flat ground's: the paper's type B dam block (on its polygonal seat)
+and type A block (on flat ground), for a build and optionally an older one side by side.
+
+Not a test: prints a markdown table. Rows: `blockfrag bench` of configs/dam_block_type_b.json and
+configs/dam_block_type_a.json (median time of --repeat runs, steps), their ratio B / A, and with
+--studies the wall time of the type B and type A record-suite studies
+(configs/dam_type_b_record_suite.json, configs/record_suite_study.json: the same records, inputs
+and levels) on two ranks, and their ratio. The builds' runs alternate, so that a change of the
+machine's load falls on both.
+
+    /usr/bin/python3 tests/benchmarks/seat_speed.py --blockfrag build/mpi_driver/blockfrag \\
+        [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies]
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+SCENES = {"B": "configs/dam_block_type_b.json", "A": "configs/dam_block_type_a.json"}
+STUDIES = {"B": "configs/dam_type_b_record_suite.json", "A": "configs/record_suite_study.json"}
+
+
+def bench(blockfrag, scene, repeat):
+    out = subprocess.run([blockfrag, "bench", scene, "--repeat", str(repeat)], cwd=ROOT,
+                         check=True, capture_output=True, text=True).stdout
+    result = json.loads(out)
+    return result["median_us"] / 1e3, result["steps"]
+
+
+def study_wall(blockfrag, study):
+    with tempfile.TemporaryDirectory() as folder:
+        command = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-n", "2",
+                   blockfrag, "run", study, "--output",
+                   os.path.join(folder, "out.h5")]
+        start = time.monotonic()
+        subprocess.run(command, cwd=ROOT, check=True, capture_output=True)
+        return time.monotonic() - start
+
+
+def measure(builds, repeat, studies):
+    rows = {name: {} for name in builds}
+    for key, scene in SCENES.items():
+        for name, binary in builds.items():
+            rows[name]["bench " + key] = bench(binary, scene, repeat)
+    if studies:
+        for key, study in STUDIES.items():
+            for name, binary in reversed(list(builds.items())):
+                rows[name]["study " + key] = study_wall(binary, study)
+    return rows
+
+
+def table(rows, studies):
+    names = list(rows)
+    lines = ["| measure | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
+
+    def row(label, cell):
+        lines.append(f"| {label} | " + " | ".join(cell(rows[n]) for n in names) + " |")
+
+    for key in SCENES:
+        row(f"bench type {key}: median ms (steps)",
+            lambda r, k=key: f"{r['bench ' + k][0]:.2f} ({r['bench ' + k][1]:,})")
+    row("**bench ratio B / A**", lambda r: f"**{r['bench B'][0] / r['bench A'][0]:.2f}**")
+    if studies:
+        for key in STUDIES:
+            row(f"record-suite study type {key}: wall s", lambda r, k=key: f"{r['study ' + k]:.2f}")
+        row("**study ratio B / A**", lambda r: f"**{r['study B'] / r['study A']:.2f}**")
+    return "\n".join(lines)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--blockfrag", default="build/mpi_driver/blockfrag")
+    parser.add_argument("--baseline", help="an older build, measured side by side")
+    parser.add_argument("--repeat", type=int, default=10, help="bench runs per scene")
+    parser.add_argument("--studies", action="store_true",
+                        help="also time the two record-suite studies on two ranks")
+    args = parser.parse_args()
+    builds = {"build": args.blockfrag}
+    if args.baseline:
+        builds["baseline"] = args.baseline
+    for name, binary in builds.items():
+        if not Path(binary).is_file():
+            sys.exit(f"seat_speed.py: no such program: {binary}")
+        builds[name] = os.path.abspath(binary)
+    print(table(measure(builds, args.repeat, args.studies), args.studies))
+
+
+if __name__ == "__main__":
+    main()
