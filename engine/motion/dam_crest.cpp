@@ -55,6 +55,20 @@ double dam_period(const DamCrest& dam) {
       dam.stiffness);
 }
 
+DamMode fenves_chopra_mode(DamMode rigid_empty, double reservoir_period_ratio,
+                           double reservoir_damping, double foundation_period_ratio,
+                           double foundation_damping) {
+  const double r_r = reservoir_period_ratio, r_f = foundation_period_ratio;
+  return {r_r * r_f * rigid_empty.period,
+          rigid_empty.damping / (r_r * r_f * r_f * r_f) + reservoir_damping + foundation_damping};
+}
+
+DamMode dam_mode(const DamCrest& dam) {
+  return fenves_chopra_mode({dam_period(dam), dam.damping}, dam.reservoir_period_ratio,
+                            dam.reservoir_damping, dam.foundation_period_ratio,
+                            dam.foundation_damping);
+}
+
 NigamJenningsStep::NigamJenningsStep(double omega, double zeta, double h)
     : omega_(omega), zeta_(zeta), h_(h), taylor_(omega * h < kTaylorBelow) {
   if (taylor_) return;
@@ -104,9 +118,10 @@ std::size_t dam_crest_nodes(const GroundMotionPieces& foundation, double period,
 
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,
                                double duration, double g, bool until_quiet) {
-  const double period = dam_period(dam);
+  const DamMode mode = dam_mode(dam);
+  const double period = mode.period;
   const double omega = 2 * std::numbers::pi / period;
-  const double zeta = dam.damping, gamma_phi = dam.participation;
+  const double zeta = mode.damping, gamma_phi = dam.participation;
 
   const std::size_t nodes = dam_crest_nodes(foundation, period, duration);
   if (nodes > kMaxCrestNodes) {

@@ -18,8 +18,27 @@ namespace blockfrag {
 // period of the dam on rigid foundation rock with an empty reservoir.
 double fenves_chopra_period(double height_m, double elastic_modulus_pa);
 
-// The dam's fundamental period: as given, or estimated from its height and modulus.
+// The dam's fundamental period on rigid rock with an empty reservoir: as given, or estimated from
+// its height and modulus.
 double dam_period(const DamCrest& dam);
+
+// The fundamental mode the crest filter runs: period (s) and damping (of critical).
+struct DamMode {
+  double period;
+  double damping;
+};
+
+// Fenves & Chopra's simplified analysis (Fenves & Chopra 1987; USACE EP 1110-2-12, 1995,
+// appendix C): the impounded water lengthens the period by R_r and the flexible foundation rock by
+// R_f, and each adds damping,
+//   T1' = R_r R_f T1,   zeta1' = zeta1 / (R_r R_f^3) + zeta_r + zeta_f.
+// With R_r = R_f = 1 and zeta_r = zeta_f = 0 the mode is the dam's own, to the bit.
+DamMode fenves_chopra_mode(DamMode rigid_empty, double reservoir_period_ratio,
+                           double reservoir_damping, double foundation_period_ratio,
+                           double foundation_damping);
+
+// The dam's mode with its reservoir and foundation: what the crest filter runs.
+DamMode dam_mode(const DamCrest& dam);
 
 // The modal coordinate and its rate.
 struct OscillatorState {

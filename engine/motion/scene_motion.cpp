@@ -53,7 +53,7 @@ CrestExtent scene_crest_extent(const Scene& scene) {
   if (!scene.dam) return {};
   const GroundMotionPieces foundation(fitted_to_solver(scene.ground_motion, scene.solver), scene.g);
   const double horizon = crest_horizon(scene, foundation);
-  return {dam_crest_nodes(foundation, dam_period(*scene.dam), horizon), horizon};
+  return {dam_crest_nodes(foundation, dam_mode(*scene.dam).period, horizon), horizon};
 }
 
 double run_end_time(const Scene& scene, const GroundMotionPieces& motion,

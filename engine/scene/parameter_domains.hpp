@@ -95,6 +95,11 @@ inline constexpr Domain dam_height{1.0, 1e3, true, true, "m"};
 inline constexpr Domain elastic_modulus{1e6, 1e13, true, true, "Pa"};
 inline constexpr Domain dam_damping{0.0, 1.0, true, false, ""};
 inline constexpr Domain participation{0.0, 100.0, false, true, ""};
+// Fenves & Chopra's period ratios (R_r for the reservoir, R_f for the foundation: about 1 to 1.5 in
+// their charts) and added dampings (zeta_r, zeta_f: up to about 0.15). Past 10 no simplified
+// analysis holds.
+inline constexpr Domain dam_period_ratio{1.0, 10.0, true, true, ""};
+inline constexpr Domain dam_added_damping{0.0, 1.0, true, false, ""};
 
 // --- The run -------------------------------------------------------------------------------------
 // A scene's duration: up to about 28 hours of motion.

@@ -82,11 +82,18 @@ struct DamSize {
   double height = 100.0;          // H, m
   double elastic_modulus = 25e9;  // E, Pa
 };
+// The period and damping are the dam's on rigid rock with an empty reservoir; the ratios and added
+// dampings of Fenves & Chopra's simplified analysis bring in the impounded water and the flexible
+// foundation (engine/motion/dam_crest.hpp, dam_mode). Their defaults leave the dam as given.
 struct DamCrest {
   std::variant<DamPeriod, DamSize> stiffness = DamPeriod{};
   double damping = 0.05;  // zeta, of critical
   double participation =
       1.0;  // Gamma_1 phi_1(crest): the mode's participation times its crest ordinate
+  double reservoir_period_ratio = 1.0;   // R_r >= 1
+  double reservoir_damping = 0.0;        // zeta_r, of critical
+  double foundation_period_ratio = 1.0;  // R_f >= 1
+  double foundation_damping = 0.0;       // zeta_f, of critical
 };
 
 // rk4: the paper's fixed step. adaptive: Dormand-Prince 5(4) with dense output (the production

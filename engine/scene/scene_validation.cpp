@@ -7,6 +7,7 @@
 
 #include "engine/contact/model_choice.hpp"
 #include "engine/errors.hpp"
+#include "engine/motion/dam_crest.hpp"
 #include "engine/number_text.hpp"
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/parameter_domains.hpp"
@@ -170,6 +171,11 @@ void validate_dam(const DamCrest& dam) {
   // The filter is the underdamped oscillator's closed form.
   require_in(domain::dam_damping, dam.damping, "dam damping");
   require_in(domain::participation, dam.participation, "dam participation");
+  require_in(domain::dam_period_ratio, dam.reservoir_period_ratio, "dam reservoir_period_ratio");
+  require_in(domain::dam_added_damping, dam.reservoir_damping, "dam reservoir_damping");
+  require_in(domain::dam_period_ratio, dam.foundation_period_ratio, "dam foundation_period_ratio");
+  require_in(domain::dam_added_damping, dam.foundation_damping, "dam foundation_damping");
+  require(dam_mode(dam).damping < 1.0, "dam damping with its reservoir and foundation must be < 1");
 }
 
 void validate_solver(const SolverSettings& solver, std::optional<double> longest_run) {

@@ -8,6 +8,49 @@
 
 namespace blockfrag {
 
+namespace {
+
+// Fenves & Chopra's reservoir and foundation. Each damping is below 1 alone, but the crest filter
+// needs their sum with the dam's own below 1 too.
+void read_interaction(ObjectReader& reader, DamCrest& dam) {
+  const Range ratio = Range::of(domain::dam_period_ratio);
+  const Range added = Range::of(domain::dam_added_damping);
+  dam.reservoir_period_ratio =
+      reader.number_or("reservoir_period_ratio", dam.reservoir_period_ratio, ratio);
+  dam.reservoir_damping = reader.number_or("reservoir_damping", dam.reservoir_damping, added);
+  dam.foundation_period_ratio =
+      reader.number_or("foundation_period_ratio", dam.foundation_period_ratio, ratio);
+  dam.foundation_damping = reader.number_or("foundation_damping", dam.foundation_damping, added);
+  const double damping = dam_mode(dam).damping;
+  if (!(damping < 1.0)) {
+    reader.errors().add(reader.path(),
+                        "the damping with the reservoir and foundation, damping / "
+                        "(reservoir_period_ratio foundation_period_ratio^3) + reservoir_damping + "
+                        "foundation_damping, must be < 1 (got " +
+                            format_number(damping) + ")");
+  }
+}
+
+// Fenves & Chopra's keys are written only when they change the dam, so a scene without them keeps
+// its canonical form (and a study its hash).
+void write_interaction(const DamCrest& dam, nlohmann::json& out) {
+  const DamCrest defaults;
+  if (dam.reservoir_period_ratio != defaults.reservoir_period_ratio) {
+    out["reservoir_period_ratio"] = dam.reservoir_period_ratio;
+  }
+  if (dam.reservoir_damping != defaults.reservoir_damping) {
+    out["reservoir_damping"] = dam.reservoir_damping;
+  }
+  if (dam.foundation_period_ratio != defaults.foundation_period_ratio) {
+    out["foundation_period_ratio"] = dam.foundation_period_ratio;
+  }
+  if (dam.foundation_damping != defaults.foundation_damping) {
+    out["foundation_damping"] = dam.foundation_damping;
+  }
+}
+
+}  // namespace
+
 std::optional<DamCrest> read_dam(ObjectReader reader) {
   if (!reader.valid()) return std::nullopt;
   DamCrest dam;
@@ -34,6 +77,7 @@ std::optional<DamCrest> read_dam(ObjectReader reader) {
   dam.damping = reader.number_or("damping", dam.damping, Range::of(domain::dam_damping));
   dam.participation =
       reader.number_or("participation", dam.participation, Range::of(domain::participation));
+  read_interaction(reader, dam);
   reader.finish();
   return dam;
 }
@@ -47,6 +91,7 @@ nlohmann::json dam_to_json(const DamCrest& dam) {
     out["height"] = size.height;
     out["elastic_modulus"] = size.elastic_modulus;
   }
+  write_interaction(dam, out);
   return out;
 }
 
@@ -54,8 +99,11 @@ std::optional<std::string> crest_history_problem(const Scene& scene) {
   if (!scene.dam) return std::nullopt;
   const CrestExtent crest = scene_crest_extent(scene);
   if (crest.nodes <= kMaxCrestNodes) return std::nullopt;
-  return "the dam's period (" + format_number(dam_period(*scene.dam)) +
-         " s) is too short for the run (" + format_number(crest.horizon) +
+  const double period = dam_mode(*scene.dam).period;
+  const bool lengthened = period != dam_period(*scene.dam);
+  return "the dam's period (" + format_number(period) +
+         (lengthened ? " s, with its reservoir and foundation" : " s") +
+         ") is too short for the run (" + format_number(crest.horizon) +
          " s): the crest motion would need " + std::to_string(crest.nodes) +
          " nodes (one per period / 100), more than " + std::to_string(kMaxCrestNodes) +
          "; give a longer period, or a duration or max_duration that ends the run sooner";

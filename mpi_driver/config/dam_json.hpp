@@ -12,8 +12,10 @@
 
 namespace blockfrag {
 
-// {"period": s} or {"height": m, "elastic_modulus": Pa}, with "damping" (0.05) and
-// "participation" (1). An absent "dam" is no dam; errors are recorded at their paths.
+// {"period": s} or {"height": m, "elastic_modulus": Pa}, with "damping" (0.05),
+// "participation" (1) and Fenves & Chopra's "reservoir_period_ratio" (1), "reservoir_damping" (0),
+// "foundation_period_ratio" (1), "foundation_damping" (0), written back only when not their
+// defaults. An absent "dam" is no dam; errors are recorded at their paths.
 std::optional<DamCrest> read_dam(ObjectReader reader);
 nlohmann::json dam_to_json(const DamCrest& dam);
 

@@ -59,6 +59,34 @@ TEST(DamJson, ReadsHeightAndModulusAndWritesThemBack) {
   EXPECT_EQ(scene_to_json(again), scene_to_json(scene));
 }
 
+// Fenves & Chopra's reservoir and foundation: read, written back only when they change the dam
+// (so a scene without them, or with their defaults spelled out, keeps its canonical form).
+TEST(DamJson, ReadsTheReservoirAndFoundationAndWritesThemOnlyWhenSet) {
+  const json wet = {{"period", 0.443},
+                    {"damping", 0.07},
+                    {"participation", 1.0},
+                    {"reservoir_period_ratio", 1.11},
+                    {"reservoir_damping", 0.0158},
+                    {"foundation_period_ratio", 1.19},
+                    {"foundation_damping", 0.0701}};
+  const Scene scene = scene_from_json(scene_with_dam(wet), "scene.json");
+  ASSERT_TRUE(scene.dam.has_value());
+  EXPECT_EQ(scene.dam->reservoir_period_ratio, 1.11);
+  EXPECT_EQ(scene.dam->reservoir_damping, 0.0158);
+  EXPECT_EQ(scene.dam->foundation_period_ratio, 1.19);
+  EXPECT_EQ(scene.dam->foundation_damping, 0.0701);
+  EXPECT_EQ(scene_to_json(scene)["dam"], wet);
+
+  const json spelled = {{"period", 0.3},
+                        {"reservoir_period_ratio", 1.0},
+                        {"reservoir_damping", 0.0},
+                        {"foundation_period_ratio", 1.0},
+                        {"foundation_damping", 0.0}};
+  const json canonical = scene_to_json(scene_from_json(scene_with_dam(spelled), "scene.json"));
+  EXPECT_EQ(canonical["dam"], (json{{"period", 0.3}, {"damping", 0.05}, {"participation", 1.0}}));
+  EXPECT_EQ(canonical, scene_to_json(scene_from_json(scene_with_dam({{"period", 0.3}}), "s.json")));
+}
+
 TEST(DamJson, RefusesEachRuleAtItsPath) {
   EXPECT_EQ(
       scene_errors(scene_with_dam({{"period", 0.3}, {"height", 100.0}, {"elastic_modulus", 25e9}})),
@@ -75,6 +103,22 @@ TEST(DamJson, RefusesEachRuleAtItsPath) {
             "scene.json: /dam/damping: must be in [0, 1) (got -0.1)");
   EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"participation", -1.0}})),
             "scene.json: /dam/participation: must be in (0, 100] (got -1)");
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"reservoir_period_ratio", 0.9}})),
+            "scene.json: /dam/reservoir_period_ratio: must be in [1, 10] (got 0.9)");
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"foundation_period_ratio", 11}})),
+            "scene.json: /dam/foundation_period_ratio: must be in [1, 10] (got 11)");
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"reservoir_damping", -0.01}})),
+            "scene.json: /dam/reservoir_damping: must be in [0, 1) (got -0.01)");
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3}, {"foundation_damping", 1.0}})),
+            "scene.json: /dam/foundation_damping: must be in [0, 1) (got 1)");
+  // Each damping in its range, but the mode's (0.5 / (1 x 1) + 0.25 + 0.25 = 1) overdamped.
+  EXPECT_EQ(scene_errors(scene_with_dam({{"period", 0.3},
+                                         {"damping", 0.5},
+                                         {"reservoir_damping", 0.25},
+                                         {"foundation_damping", 0.25}})),
+            "scene.json: /dam: the damping with the reservoir and foundation, damping / "
+            "(reservoir_period_ratio foundation_period_ratio^3) + reservoir_damping + "
+            "foundation_damping, must be < 1 (got 1)");
   EXPECT_THAT(scene_errors(scene_with_dam({{"period", 0.3}, {"dampng", 0.1}})),
               HasSubstr("/dam/dampng: unknown key; did you mean \"damping\"?"));
   EXPECT_THAT(scene_errors(scene_with_dam(0.3)), HasSubstr("/dam: must be an object"));
@@ -98,6 +142,15 @@ TEST(DamJson, RefusesACrestHistoryOfMoreNodesThanARunHolds) {
   EXPECT_THAT(scene_errors(settling), HasSubstr("too short for the run (20 s)"));
   settling["max_duration"] = 19.0;
   EXPECT_EQ(scene_errors(settling), "(accepted)");
+  // The reservoir and foundation lengthen the period the crest is stepped at: 2 x 0.001 s.
+  settling["max_duration"] = 39.0;
+  settling["dam"]["reservoir_period_ratio"] = 2.0;
+  EXPECT_EQ(scene_errors(settling), "(accepted)");
+  settling["max_duration"] = 41.0;
+  EXPECT_THAT(
+      scene_errors(settling),
+      HasSubstr("the dam's period (0.002 s, with its reservoir and foundation) is too short "
+                "for the run (41 s)"));
   // Other errors first: the crest is counted only for an otherwise valid scene.
   settling["contact"]["friction"] = -1;
   EXPECT_THAT(scene_errors(settling), Not(HasSubstr("/dam")));

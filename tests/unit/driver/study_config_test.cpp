@@ -112,6 +112,32 @@ TEST(StudyConfig, OverridesReplaceTheConfigValues) {
   EXPECT_EQ(config.canonical["output"], "elsewhere.h5");
 }
 
+// A dam study's hash is the one it had before the dam took Fenves & Chopra's reservoir and
+// foundation: their keys enter the canonical config only when they change the dam.
+TEST(StudyConfig, DamReservoirAndFoundationHashOnlyWhenTheyChangeTheDam) {
+  json dam_study = small_study();
+  dam_study["scene"]["dam"] = {{"period", 0.3}};
+  const StudyConfig dry = parse_study_config(dam_study, "study.json");
+  EXPECT_EQ(dry.canonical["scene"]["dam"],
+            (json{{"period", 0.3}, {"damping", 0.05}, {"participation", 1.0}}));
+  const json defaults = {{"reservoir_period_ratio", 1.0},
+                         {"reservoir_damping", 0.0},
+                         {"foundation_period_ratio", 1.0},
+                         {"foundation_damping", 0.0}};
+  json spelled = dam_study;
+  spelled["scene"]["dam"].update(defaults);
+  EXPECT_EQ(parse_study_config(spelled, "study.json").hash, dry.hash);
+  for (const auto& [key, value] :
+       std::vector<std::pair<std::string, double>>{{"reservoir_period_ratio", 1.1},
+                                                   {"reservoir_damping", 0.02},
+                                                   {"foundation_period_ratio", 1.2},
+                                                   {"foundation_damping", 0.05}}) {
+    json changed = dam_study;
+    changed["scene"]["dam"][key] = value;
+    EXPECT_NE(parse_study_config(changed, "study.json").hash, dry.hash) << key;
+  }
+}
+
 TEST(StudyConfig, HashIgnoresOutputIntervalAndSpellingButNotTheScience) {
   const auto hash = parse_study_config(small_study(), "study.json").hash;
 

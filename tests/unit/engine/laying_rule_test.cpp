@@ -14,13 +14,13 @@
 namespace blockfrag {
 namespace {
 
-constexpr double kG = 9.81, kA = 0.2, kB = 2.0;
+constexpr double kLayingG = 9.81, kLayingA = 0.2, kLayingB = 2.0;
 
 // mu = 0.05, below a / b: sliding flat, the block stays flat.
-ContactOutcome lay(double vx, double omega) {
-  const BlockGeometry geometry(RectangularBlock{kA, kB, 1.0});
-  const ContactResolver resolver(geometry, Contact{0.05, 0.5}, kG);
-  BlockState s = testing::flat_state(kB);
+ContactOutcome lay_flat_block(double vx, double omega) {
+  const BlockGeometry geometry(RectangularBlock{kLayingA, kLayingB, 1.0});
+  const ContactResolver resolver(geometry, Contact{0.05, 0.5}, kLayingG);
+  BlockState s = testing::flat_state(kLayingB);
   s.vx = vx;
   s.omega = omega;
   return resolver.resolve(s, 0.0);
@@ -37,7 +37,7 @@ TEST(KeepsSlip, OnlyWhereTheSlipAddsNoKineticEnergy) {
 // vx - omega r_y = vx + omega b = vx + 1e-3 m/s.
 TEST(FlatGroundLaying, KeepsTheBaseSlipWhereThatAddsNoEnergy) {
   // omega < 0: the base slips at 0.01 - 0.001 = 0.009 m/s, slower than the centre.
-  const ContactOutcome out = lay(0.01, -5e-4);
+  const ContactOutcome out = lay_flat_block(0.01, -5e-4);
   EXPECT_DOUBLE_EQ(out.state.vx, 0.009);
   EXPECT_EQ(out.state.omega, 0.0);
   EXPECT_EQ(out.state.vy, 0.0);
@@ -47,7 +47,7 @@ TEST(FlatGroundLaying, KeepsTheBaseSlipWhereThatAddsNoEnergy) {
 TEST(FlatGroundLaying, KeepsTheCentresVelocityWhereTheSlipWouldAddEnergy) {
   // omega > 0: the base slips at 0.011 m/s; kept, the block's kinetic energy per unit mass would
   // be 0.011^2 / 2 = 6.05e-5 J/kg against 0.01^2 / 2 + (I/M) omega^2 / 2 = 5.0168e-5 J/kg before.
-  const ContactOutcome out = lay(0.01, 5e-4);
+  const ContactOutcome out = lay_flat_block(0.01, 5e-4);
   EXPECT_EQ(out.state.vx, 0.01);
   EXPECT_EQ(out.state.omega, 0.0);
   EXPECT_EQ(mode_kind(out.mode), ModeKind::slide);
@@ -55,21 +55,21 @@ TEST(FlatGroundLaying, KeepsTheCentresVelocityWhereTheSlipWouldAddEnergy) {
 }
 
 TEST(FlatGroundLaying, NeverAddsEnergyToASlowFlatLanding) {
-  const BlockGeometry geometry(RectangularBlock{kA, kB, 1.0});
-  const double settle = settling_speed(kG, geometry.size());
+  const BlockGeometry geometry(RectangularBlock{kLayingA, kLayingB, 1.0});
+  const double settle = settling_speed(kLayingG, geometry.size());
   // Corners landing or leaving slower than the settling speed, the centre sliding either way.
   for (int trial = 0; trial < 2000; ++trial) {
-    const double omega = (trial % 40 - 19.5) / 20.0 * settle / kA;
-    const double vy = -((trial / 40) % 10) / 10.0 * (settle - std::abs(omega) * kA);
+    const double omega = (trial % 40 - 19.5) / 20.0 * settle / kLayingA;
+    const double vy = -((trial / 40) % 10) / 10.0 * (settle - std::abs(omega) * kLayingA);
     const double vx = ((trial / 400) - 2.0) * 10 * settle;
-    const ContactResolver resolver(geometry, Contact{0.5, 0.5}, kG);
-    BlockState s = testing::flat_state(kB);
+    const ContactResolver resolver(geometry, Contact{0.5, 0.5}, kLayingG);
+    BlockState s = testing::flat_state(kLayingB);
     s.vx = vx;
     s.vy = vy;
     s.omega = omega;
     const ContactOutcome out = resolver.resolve(s, 0.0);
-    const double before = testing::rectangle_kinetic_energy(kA, kB, s);
-    const double after = testing::rectangle_kinetic_energy(kA, kB, out.state);
+    const double before = testing::rectangle_kinetic_energy(kLayingA, kLayingB, s);
+    const double after = testing::rectangle_kinetic_energy(kLayingA, kLayingB, out.state);
     EXPECT_LE(after, before) << "vx " << vx << " vy " << vy << " omega " << omega;
     EXPECT_LE(out.impact_energy_gain, 0.0);
   }

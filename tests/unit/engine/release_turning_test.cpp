@@ -14,22 +14,24 @@
 namespace blockfrag {
 namespace {
 
-constexpr double kA = 0.5, kB = 1.0, kG = 9.81;
+constexpr double kReleaseA = 0.5, kReleaseB = 1.0, kReleaseG = 9.81;
 
-double frequency_parameter() { return std::sqrt(3 * kG / (4 * std::hypot(kA, kB))); }
-double alpha() { return std::atan(kA / kB); }
-double overturning_omega() {
-  return frequency_parameter() * std::sqrt(2 * (1 - std::cos(alpha())));
+double release_frequency_parameter() {
+  return std::sqrt(3 * kReleaseG / (4 * std::hypot(kReleaseA, kReleaseB)));
 }
-double first_peak(double omega) {
-  const double p = frequency_parameter();
-  return alpha() - std::acos(std::cos(alpha()) + omega * omega / (2 * p * p));
+double release_alpha() { return std::atan(kReleaseA / kReleaseB); }
+double release_overturning_omega() {
+  return release_frequency_parameter() * std::sqrt(2 * (1 - std::cos(release_alpha())));
+}
+double release_first_peak(double omega) {
+  const double p = release_frequency_parameter();
+  return release_alpha() - std::acos(std::cos(release_alpha()) + omega * omega / (2 * p * p));
 }
 
 // Plastic impacts (e = 0) and friction far above the rocking need: the first swing is free rocking.
-Scene released(double omega, double theta = 0.0) {
+Scene released_turning(double omega, double theta = 0.0) {
   Scene scene;
-  scene.block = {kA, kB, 1.0};
+  scene.block = {kReleaseA, kReleaseB, 1.0};
   scene.contact = {2.0, 0.0};
   scene.initial = {theta, omega};
   scene.duration = 5.0;
@@ -40,11 +42,11 @@ Scene released(double omega, double theta = 0.0) {
 TEST(ReleaseTurning, TheFirstSwingPeaksWhereHousnersEnergyIntegralSays) {
   for (const double fraction : {0.3, 0.7, 0.99}) {
     for (const double sign : {1.0, -1.0}) {
-      const double omega = sign * fraction * overturning_omega();
-      const Summary s = simulate(released(omega));
+      const double omega = sign * fraction * release_overturning_omega();
+      const Summary s = simulate(released_turning(omega));
       ASSERT_EQ(s.status, Status::ok);
       EXPECT_FALSE(s.overturned) << omega;
-      EXPECT_NEAR(s.max_abs_theta, first_peak(omega), 1e-8) << omega;
+      EXPECT_NEAR(s.max_abs_theta, release_first_peak(omega), 1e-8) << omega;
       ASSERT_TRUE(s.rock_start_time.has_value());
       EXPECT_EQ(*s.rock_start_time, 0.0);
     }
@@ -53,28 +55,30 @@ TEST(ReleaseTurning, TheFirstSwingPeaksWhereHousnersEnergyIntegralSays) {
 
 TEST(ReleaseTurning, OverturnsJustAboveTheEnergyThresholdEitherWay) {
   for (const double sign : {1.0, -1.0}) {
-    EXPECT_TRUE(simulate(released(sign * 1.001 * overturning_omega())).overturned) << sign;
-    EXPECT_FALSE(simulate(released(sign * 0.999 * overturning_omega())).overturned) << sign;
+    EXPECT_TRUE(simulate(released_turning(sign * 1.001 * release_overturning_omega())).overturned)
+        << sign;
+    EXPECT_FALSE(simulate(released_turning(sign * 0.999 * release_overturning_omega())).overturned)
+        << sign;
   }
 }
 
 TEST(ReleaseTurning, TiltedAndTurningBackTheFirstImpactComesFirst) {
   // Tilted onto the left corner (theta > 0) and turning back (omega < 0): it lands flat first, at
   // the time the energy integral gives, before any swing to the right; the peak is the release.
-  const Summary s = simulate(released(-0.5, 0.2));
+  const Summary s = simulate(released_turning(-0.5, 0.2));
   ASSERT_TRUE(s.first_impact_time.has_value());
   EXPECT_NEAR(s.max_abs_theta, 0.2, 1e-12);
 }
 
 TEST(ReleaseTurning, AFlatSeatAndHousnersModelAgreeWithTheFlatGround) {
-  const double omega = -0.8 * overturning_omega();
-  const Summary flat = simulate(released(omega));
-  Scene on_seat = released(omega);
-  on_seat.seat = Seat{{{-3.0, -kB}, {3.0, -kB}}};
+  const double omega = -0.8 * release_overturning_omega();
+  const Summary flat = simulate(released_turning(omega));
+  Scene on_seat = released_turning(omega);
+  on_seat.seat = Seat{{{-3.0, -kReleaseB}, {3.0, -kReleaseB}}};
   const Summary seat = simulate(on_seat);
   EXPECT_NEAR(seat.max_abs_theta, flat.max_abs_theta, 1e-9);
   EXPECT_EQ(seat.overturned, flat.overturned);
-  Scene housner = released(omega);
+  Scene housner = released_turning(omega);
   housner.effects = Effects{false, true, false, true, false, false};
   const Summary reduced = simulate(housner);
   EXPECT_EQ(reduced.model, Model::housner_rocking);
@@ -82,7 +86,7 @@ TEST(ReleaseTurning, AFlatSeatAndHousnersModelAgreeWithTheFlatGround) {
 }
 
 TEST(ReleaseTurning, NewmarksSlidingBlockCannotStartTurning) {
-  Scene scene = released(0.5);
+  Scene scene = released_turning(0.5);
   scene.effects = Effects{false, false, true, false, false, false};
   EXPECT_THROW(simulate(scene), InvalidInput);
 }

@@ -1,0 +1,19 @@
+// The resultant of a pressure that varies linearly along a straight segment: the hydrostatic
+// pressure on a wetted edge and the uplift in a crack both are one.
+#pragma once
+
+#include "engine/water/water_load.hpp"
+
+namespace blockfrag {
+
+// Pressure p_a at a, p_b at b, linear between, pressing on the body whose outward unit normal on
+// the segment is `outward`: the force is -outward p per unit length. With s the distance from a
+// and l the segment's length, the resultant is exact:
+//   F = -outward l (p_a + p_b) / 2,
+//   M = (integral of (r(s) - c) p(s) ds) x (-outward),
+//   integral of (r(s) - c) p(s) ds = (a - c) l (p_a + p_b) / 2 + (b - a) l (p_a + 2 p_b) / 6,
+// about the reference point c; no division, so a zero pressure gives exactly zero.
+WaterLoad linear_pressure_load(const Vertex& a, const Vertex& b, double p_a, double p_b,
+                               const Vertex& outward, const Vertex& reference);
+
+}  // namespace blockfrag

@@ -1,0 +1,45 @@
+// Westergaard's (1933, Trans. ASCE 98) added mass of the reservoir on the block's wetted upstream
+// face: a rigid vertical face moving horizontally with acceleration a in incompressible water of
+// depth H feels the pressure -(7/8) rho_w sqrt(H y_d) a at depth y_d, so the water adds the mass
+//   m_w(y_d) = (7/8) rho_w sqrt(H y_d)   per unit area of the face,
+// on horizontal motion only. Over the wetted face, with z a point's height above a reference,
+//   M_a = integral m_w dA,   S_a = integral m_w z dA,   I_a = integral m_w z^2 dA,
+// the face's added mass and its first and second moments, which couple the block's sliding and
+// rocking (the face at height z moves horizontally by -z dtheta). For a vertical face wetted to
+// depth d, about its foot: M_a = (7/12) rho_w sqrt(H) d^(3/2), acting 0.4 d above the foot,
+// S_a = (7/30) rho_w sqrt(H) d^(5/2), I_a = (2/15) rho_w sqrt(H) d^(7/2).
+//
+// An inclined edge counts by its projected height (dA = |dy| per metre of dam): the pressure is
+// taken as the vertical face's at the same depth, acting along the edge's normal, so its
+// horizontal part on a length ds is p |n_x| ds = p |dy|. This is a simplification for sloping
+// faces (Zangar 1952 gives their pressure; CADAM3D offers cos^2 and Corns et al. 1988 corrections),
+// exact for a vertical face; the pressure's vertical part on an inclined face is left out.
+//
+// The integrals over each wetted piece are exact closed forms in the depth u = y_d, with
+// Z = y_w - y_ref the surface's height above the reference:
+//   integral sqrt(u) du = 2/3 u^(3/2),
+//   integral sqrt(u) (Z - u) du = 2/3 Z u^(3/2) - 2/5 u^(5/2),
+//   integral sqrt(u) (Z - u)^2 du = 2/3 Z^2 u^(3/2) - 4/5 Z u^(5/2) + 2/7 u^(7/2).
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "engine/water/water_load.hpp"
+
+namespace blockfrag {
+
+struct AddedMass {
+  double mass = 0.0;           // M_a, kg/m
+  double first_moment = 0.0;   // S_a, kg m/m
+  double second_moment = 0.0;  // I_a, kg m^2/m
+};
+
+// `reservoir_depth` H > 0 (the reservoir's depth at the dam, surface to bottom); the moments are
+// about the height `reference_y` (the block's centre of mass, or its base). `crack_edges` as for
+// the hydrostatic load (engine/water/wetted_face.hpp).
+AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, double density,
+                                 double reservoir_depth, std::span<const std::size_t> crack_edges,
+                                 double reference_y);
+
+}  // namespace blockfrag

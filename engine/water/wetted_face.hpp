@@ -1,0 +1,54 @@
+// The part of a block the reservoir wets: the edges whose outward normal points upstream (n_x < 0,
+// the reservoir being at smaller x), below the water surface, each clipped where it crosses the
+// surface. The crack's edges (the block's base on flat ground, the edges resting on a seat), named
+// by the caller, are never wetted by the reservoir whatever their normal: the water there is the
+// uplift's (engine/water/uplift.hpp), and a base tilted upstream by a hair would otherwise take the
+// reservoir's full pressure on its whole length. Edges facing straight up or down (n_x = 0) are
+// dry. The rule reads the normals alone: a face turned upstream on the block's dry downstream side
+// would be wetted (blockfrag's dam blocks have none), and a submerged face whose normal turns
+// through the vertical as the block tilts gains or loses its load at once (their upstream faces
+// are vertical, and the tops above the water).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <span>
+
+#include "engine/water/water_load.hpp"
+
+namespace blockfrag {
+
+// One wetted piece of an edge, in the edge's direction (so `outward` is its normal too).
+struct WettedPiece {
+  Vertex a, b;
+  Vertex outward;           // the edge's outward unit normal
+  double depth_a, depth_b;  // below the surface, m, >= 0
+};
+
+// Calls visit(const WettedPiece&) for each wetted piece of the counter-clockwise polygon. A surface
+// at or below the polygon's lowest point wets nothing.
+template <class Visit>
+void for_each_wetted_piece(const WorldPolygon& polygon, double surface,
+                           std::span<const std::size_t> crack_edges, Visit&& visit) {
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vertex& a = polygon[i];
+    const Vertex& b = polygon[(i + 1) % n];
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    // A counter-clockwise polygon's outward normal is (dy, -dx) / length: n_x < 0 is a descending
+    // edge, whose end b is its lowest point.
+    if (!(dy < 0.0) || !(b[1] < surface)) continue;
+    if (std::find(crack_edges.begin(), crack_edges.end(), i) != crack_edges.end()) continue;
+    const double length = std::hypot(dx, dy);
+    WettedPiece piece{a, b, {dy / length, -dx / length}, surface - a[1], surface - b[1]};
+    if (!(a[1] < surface)) {  // the edge crosses the surface: its wetted part starts there
+      const double t = (surface - a[1]) / dy;
+      piece.a = {a[0] + t * dx, surface};
+      piece.depth_a = 0.0;
+    }
+    visit(piece);
+  }
+}
+
+}  // namespace blockfrag
