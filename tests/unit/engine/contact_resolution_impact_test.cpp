@@ -3,13 +3,13 @@
 // without sliding"), and, over random impacts, that no resolution gains kinetic energy.
 #include <cmath>
 #include <cstdint>
-#include <random>
 
 #include <gtest/gtest.h>
 
 #include "engine/contact/contact_resolution.hpp"
 #include "engine/tolerances.hpp"
 #include "tests/support/contact_states.hpp"
+#include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/paper_block.hpp"
 
 namespace blockfrag {
@@ -128,26 +128,12 @@ TEST(ContactResolverImpact, AFlatLandingSlowerThanTheSettlingSpeedEndsASlipSlowe
   }
 }
 
-// A fixed-seed source of uniforms that is the same on every platform: std::mt19937_64's output
-// sequence is fixed by the standard (unlike the std::*_distribution classes), its top 53 bits map
-// to [0, 1) exactly.
-class Uniforms {
- public:
-  explicit Uniforms(std::uint64_t seed) : bits_(seed) {}
-  double operator()(double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(bits_() >> 11) * 0x1p-53;
-  }
-
- private:
-  std::mt19937_64 bits_;
-};
-
 TEST(ContactResolverImpact, NoImpactGainsKineticEnergy) {
   // Random rectangles, friction, restitution and lambda; the block tilted (or, one time in four,
   // flat) with its lowest base corner on the ground and moving into it. Newton's law with friction
   // can create energy where a slip stops or reverses; the engine caps it (docs/physics.md, "Where
   // the model needs repairs"), so across resolve() T+ <= T- up to rounding.
-  Uniforms u(20240612);
+  testing::FixedUniforms u(20240612);
   int impacts = 0, flat = 0;
   const int count = 4000;
   for (int i = 0; i < count; ++i) {

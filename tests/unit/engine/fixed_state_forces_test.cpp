@@ -14,7 +14,7 @@
 
 #include "engine/contact/contact_dynamics.hpp"
 #include "engine/sine_cosine.hpp"
-#include "tests/unit/engine/fixed_uniforms.hpp"
+#include "tests/support/fixed_uniforms.hpp"
 
 namespace blockfrag {
 namespace {

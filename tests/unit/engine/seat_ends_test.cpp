@@ -12,8 +12,8 @@
 #include "engine/seat/seat_system.hpp"
 #include "engine/seat/sinusoid.hpp"
 #include "engine/sine_cosine.hpp"
+#include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/type_b_block.hpp"
-#include "tests/unit/engine/fixed_uniforms.hpp"
 
 namespace blockfrag {
 namespace {

@@ -1,5 +1,5 @@
-// A fixed-seed source of uniforms that is the same on every platform, for the seat's random
-// trials: std::mt19937_64's output sequence is fixed by the standard (unlike the
+// A fixed-seed source of uniforms that is the same on every platform, for randomized tests:
+// std::mt19937_64's output sequence is fixed by the standard (unlike the
 // std::*_distribution classes), its top 53 bits map to [0, 1) exactly.
 #pragma once
 
