@@ -108,7 +108,7 @@ class Choice {
       const Row& row = rows_[static_cast<std::size_t>(r)];
       const LcpContact& c = p_.contacts[row.contact];
       j.row(r) = row.normal ? c.jn : c.jt;
-      const Eigen::RowVector3d y_row = j.row(r).cwiseProduct(p_.inverse_mass.transpose());
+      const Eigen::RowVector3d y_row = p_.inertia.inverse_times(j.row(r).transpose()).transpose();
       for (Eigen::Index col = 0; col < n; ++col) {
         a(r, col) = y_row.dot(generalized(columns_[static_cast<std::size_t>(col)]));
       }
@@ -175,7 +175,7 @@ class Choice {
       if (amounts(col) < -tol) return std::nullopt;
       force += std::max(amounts(col), 0.0) * generalized(columns_[static_cast<std::size_t>(col)]);
     }
-    const Eigen::Vector3d change = p_.inverse_mass.cwiseProduct(force);
+    const Eigen::Vector3d change = p_.inertia.inverse_times(force);
     for (std::size_t i = 0; i < states_.size(); ++i) {
       const LcpContact& c = p_.contacts[i];
       const double y_n = c.free_n + c.jn.dot(change);

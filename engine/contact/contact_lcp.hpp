@@ -13,6 +13,7 @@
 
 #include <Eigen/Dense>
 
+#include "engine/contact/body_load.hpp"
 #include "engine/contact/planar_contact.hpp"
 
 namespace blockfrag {
@@ -29,7 +30,7 @@ struct LcpContact {
 
 struct LcpProblem {
   std::vector<LcpContact> contacts;
-  Eigen::Vector3d inverse_mass;  // (1, 1, 1 / (I/M))
+  BodyInertia inertia;  // the mass matrix per unit mass
   double friction;
   double tolerance;  // absolute, in y's units
   double length;     // R: a theta component is compared through R times it

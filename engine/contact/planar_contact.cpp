@@ -37,9 +37,10 @@ ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelo
 }
 
 PlanarForces resolve_contact_forces(const PlanarForcesInput& in, LcpSearch search) {
-  const Eigen::Vector3d inverse_mass(1.0, 1.0, 1.0 / in.inertia_per_mass);
-  const BodyAcceleration free{in.applied.x, in.applied.y, 0.0};
-  LcpProblem problem{{}, inverse_mass, in.friction, in.tolerance * in.g, in.length, in.must_move};
+  const Eigen::Vector3d free_q =
+      BodyLoad{in.applied, in.applied_moment, in.inertia}.free_acceleration();
+  const BodyAcceleration free{free_q(0), free_q(1), free_q(2)};
+  LcpProblem problem{{}, in.inertia, in.friction, in.tolerance * in.g, in.length, in.must_move};
   for (const PlanarContact& c : in.contacts) {
     const ContactAcceleration y = contact_acceleration(c, in.velocity, free);
     const double u_t = contact_velocity(c, in.velocity).tangent;

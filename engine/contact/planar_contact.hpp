@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "engine/contact/body_load.hpp"
 #include "engine/contact/impact.hpp"
 #include "engine/scene/block_geometry.hpp"
 
@@ -62,22 +63,25 @@ enum class Determinacy { unique, indeterminate, inconsistent };
 // one was found), for questions the choice alone answers, such as whether a body stays at rest.
 enum class LcpSearch { every_choice, first_consistent };
 
+// Relative to g: accelerations this close count as equal, forces this far outside their cones
+// as inside. Loose enough for the drift of an integrated state between events; a question asked
+// of a state laid exactly on its contacts (where rest ends) can ask it tighter.
+inline constexpr double kContactProblemTolerance = 1e-9;
+
 struct PlanarForcesInput {
   std::vector<PlanarContact> contacts;  // touching, normal velocity zero
   RigidVelocity velocity;
-  double inertia_per_mass;  // I/M, m^2
-  Vec2 applied;             // force per unit mass at the centre of mass: (lambda g, -g) on a ground
-  double friction;          // mu
+  BodyInertia inertia;  // the mass matrix per unit mass (engine/contact/body_load.hpp)
+  Vec2 applied;         // force per unit mass at the centre of mass: (lambda g, -g) on a ground
+  double friction;      // mu
   // A contact whose |u_t| exceeds this slips (its friction is -sign(u_t) mu V): m/s.
   double slip_velocity;
   double g;       // scales the tolerances (accelerations are compared to tolerance g)
   double length;  // R, m: theta'' is compared through R theta''
-  // Relative to g: accelerations this close count as equal, forces this far outside their cones
-  // as inside. Loose enough for the drift of an integrated state between events; a question asked
-  // of a state laid exactly on its contacts (where rest ends) can ask it tighter.
-  double tolerance = 1e-9;
+  double tolerance = kContactProblemTolerance;  // relative to g
   // The body may not stay put: choices that leave it no freedom are skipped (LcpProblem).
   bool must_move = false;
+  double applied_moment = 0.0;  // per unit mass, about the centre of mass
 };
 
 struct PlanarForces {

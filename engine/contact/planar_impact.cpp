@@ -14,8 +14,8 @@ namespace {
 constexpr double kImpactTolerance = 1e-9;
 constexpr int kRestitutionHalvings = 30;
 
-double kinetic(const RigidVelocity& v, double k2) {
-  return 0.5 * (v.vx * v.vx + v.vy * v.vy + k2 * v.omega * v.omega);
+double kinetic(const RigidVelocity& v, const BodyInertia& inertia) {
+  return 0.5 * inertia.twice_kinetic(v);
 }
 
 ContactState leaving_state(const CornerImpulse& p, double u_t) {
@@ -32,11 +32,7 @@ PlanarImpact newton_impact(const PlanarImpactInput& in, double e) {
     const ContactVelocity u = contact_velocity(c, in.velocity);
     fastest = std::max({fastest, std::abs(u.normal), std::abs(u.tangent)});
   }
-  LcpProblem problem{{},
-                     Eigen::Vector3d(1.0, 1.0, 1.0 / in.inertia_per_mass),
-                     in.friction,
-                     kImpactTolerance * fastest,
-                     in.length};
+  LcpProblem problem{{}, in.inertia, in.friction, kImpactTolerance * fastest, in.length};
   for (const PlanarContact& c : in.contacts) {
     const ContactVelocity u = contact_velocity(c, in.velocity);
     problem.contacts.push_back({contact_row(c, c.normal), contact_row(c, contact_tangent(c)),
@@ -51,10 +47,10 @@ PlanarImpact newton_impact(const PlanarImpactInput& in, double e) {
 }  // namespace
 
 PlanarImpact simultaneous_impact(const PlanarImpactInput& in) {
-  const double before = kinetic(in.velocity, in.inertia_per_mass);
+  const double before = kinetic(in.velocity, in.inertia);
   const auto safe = [&](const PlanarImpact& impact) {
     return impact.determinacy != Determinacy::inconsistent &&
-           kinetic(impact.after, in.inertia_per_mass) <= before;
+           kinetic(impact.after, in.inertia) <= before;
   };
   PlanarImpact impact = newton_impact(in, in.restitution);
   if (safe(impact) || in.restitution == 0.0) return impact;
@@ -69,18 +65,19 @@ PlanarImpact simultaneous_impact(const PlanarImpactInput& in) {
 }
 
 PlanarImpact resolve_contact_impact(const PlanarImpactInput& in) {
-  if (in.contacts.size() != 1) return simultaneous_impact(in);
+  // The one-corner law knows a block alone; with an added mass the general problem takes it.
+  if (in.contacts.size() != 1 || in.inertia.coupled()) return simultaneous_impact(in);
   const PlanarContact& c = in.contacts.front();
   const Vec2 t = contact_tangent(c);
   const ContactVelocity u = contact_velocity(c, in.velocity);
   // The contact's frame (t, n) is right-handed (t x n = 1), so theta and omega keep their sense.
-  const CornerImpulse p = corner_impact({1.0, in.inertia_per_mass, t.x * c.r.x + t.y * c.r.y,
+  const CornerImpulse p = corner_impact({1.0, in.inertia.k2, t.x * c.r.x + t.y * c.r.y,
                                          c.normal.x * c.r.x + c.normal.y * c.r.y, u.tangent,
                                          u.normal, in.friction, in.restitution});
   const double p_x = p.p_x * t.x + p.p_y * c.normal.x;
   const double p_y = p.p_x * t.y + p.p_y * c.normal.y;
   const RigidVelocity after{in.velocity.vx + p_x, in.velocity.vy + p_y,
-                            in.velocity.omega + (c.r.x * p_y - c.r.y * p_x) / in.inertia_per_mass};
+                            in.velocity.omega + (c.r.x * p_y - c.r.y * p_x) / in.inertia.k2};
   PlanarImpact out;
   out.after = after;
   out.states = {leaving_state(p, contact_velocity(c, after).tangent)};

@@ -12,7 +12,7 @@ namespace blockfrag {
 struct PlanarImpactInput {
   std::vector<PlanarContact> contacts;  // touching; those with u_n < 0 approach
   RigidVelocity velocity;               // before
-  double inertia_per_mass;              // I/M, m^2
+  BodyInertia inertia;                  // the mass matrix per unit mass
   double friction, restitution;         // mu, e
   double length;                        // R, m: tolerances and theta' comparisons
 };

@@ -24,13 +24,13 @@ using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxUnknowns, 1>;
 
 FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
                                     std::span<const ContactState> states, const BlockState& s,
-                                    Vec2 applied, double inertia_per_mass, double mu) {
+                                    const BodyLoad& load, double mu) {
   FixedStateForces out;
-  const BodyAcceleration free{applied.x, applied.y, 0.0};
+  const Eigen::Vector3d free_q = load.free_acceleration();
+  const BodyAcceleration free{free_q(0), free_q(1), free_q(2)};
   out.acceleration = free;
   if (contacts.empty()) return out;
   const RigidVelocity v{s.vx, s.vy, s.omega};
-  const Eigen::Vector3d inverse_mass(1.0, 1.0, 1.0 / inertia_per_mass);
   // Rows: each contact's normal acceleration, and a sticking one's tangential. Unknowns: each
   // contact's normal force, and a sticking one's friction (a slipping one's follows the normal).
   std::array<Eigen::RowVector3d, kMaxUnknowns> rows{};
@@ -58,7 +58,7 @@ FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
   Vector d(k);
   for (int r = 0; r < k; ++r) {
     const Eigen::RowVector3d weighted =
-        rows[static_cast<std::size_t>(r)].cwiseProduct(inverse_mass.transpose());
+        load.inertia.inverse_times(rows[static_cast<std::size_t>(r)].transpose()).transpose();
     for (int col = 0; col < k; ++col)
       a(r, col) = weighted.dot(columns[static_cast<std::size_t>(col)]);
     d(r) = rhs[static_cast<std::size_t>(r)];
@@ -84,7 +84,7 @@ FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
     force +=
         normal * contact_row(c, c.normal).transpose() + tangent * contact_row(c, t).transpose();
   }
-  const Eigen::Vector3d change = inverse_mass.cwiseProduct(force);
+  const Eigen::Vector3d change = load.inertia.inverse_times(force);
   out.acceleration = {free.x_dd + change(0), free.y_dd + change(1), free.theta_dd + change(2)};
   return out;
 }
@@ -131,12 +131,14 @@ std::optional<std::array<double, 2>> full_pivot_solve(std::array<std::array<doub
 }  // namespace
 
 std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
-                                                   const BlockState& s, Vec2 applied,
-                                                   double inertia_per_mass, double mu) {
+                                                   const BlockState& s, const BodyLoad& load,
+                                                   double mu) {
+  if (load.inertia.coupled()) return std::nullopt;
   FixedStateForces out;
-  const BodyAcceleration free{applied.x, applied.y, 0.0};
+  const Eigen::Vector3d free_q = load.free_acceleration();
+  const BodyAcceleration free{free_q(0), free_q(1), free_q(2)};
   const RigidVelocity v{s.vx, s.vy, s.omega};
-  const double inverse_inertia = 1.0 / inertia_per_mass;
+  const double inverse_inertia = 1.0 / load.inertia.k2;
   const Vec2 t = contact_tangent(c);
   const Row3 jn = row_of(c, c.normal), jt = row_of(c, t);
   const Row3 wn{jn.x, jn.y, jn.z * inverse_inertia};

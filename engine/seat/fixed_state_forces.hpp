@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 
+#include "engine/contact/body_load.hpp"
 #include "engine/contact/planar_contact.hpp"
 #include "engine/scene/block_state.hpp"
 
@@ -21,20 +22,21 @@ struct FixedStateForces {
   Vec2 total{0.0, 0.0};  // the sum of the contact forces, world frame
 };
 
-// The forces of the fixed states at the state s under the applied force per unit mass: any number
-// of contacts, solved by full-pivoting LU (least-norm forces where the contacts are redundant).
+// The forces of the fixed states at the state s under the load (per unit mass): any number of
+// contacts, solved by full-pivoting LU (least-norm forces where the contacts are redundant).
 FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
                                     std::span<const ContactState> states, const BlockState& s,
-                                    Vec2 applied, double inertia_per_mass, double mu);
+                                    const BodyLoad& load, double mu);
 
 // The same for one contact (sticking: a 2x2 system, slipping: 1x1) in fixed-size arithmetic, the
 // general solve's operations on the same entries in the same order (Eigen's full-pivoting LU
 // written out), so that both give the same numbers; nothing where the system is singular, which
-// the general solve's least-norm forces handle. The flat ground's sticking_corner and
+// the general solve's least-norm forces handle, and nothing for a coupled mass matrix (the
+// reservoir's added mass), which the general solve takes. The flat ground's sticking_corner and
 // slipping_corner (engine/contact/contact_dynamics.hpp) are this system for a vertical normal,
 // solved in closed form in another order, whose rounding differs.
 std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
-                                                   const BlockState& s, Vec2 applied,
-                                                   double inertia_per_mass, double mu);
+                                                   const BlockState& s, const BodyLoad& load,
+                                                   double mu);
 
 }  // namespace blockfrag

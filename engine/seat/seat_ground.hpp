@@ -16,6 +16,7 @@
 
 #include <Eigen/Dense>
 
+#include "engine/contact/body_load.hpp"
 #include "engine/contact/contact_lcp.hpp"
 #include "engine/contact/settling.hpp"
 #include "engine/event_loop.hpp"
@@ -56,8 +57,11 @@ inline ModeKind kind_of(const SeatMode& mode) {
 
 class SeatSimulation : public EventLoop<SeatSimulation> {
  public:
-  SeatSimulation(const Scene& scene, double output_interval)
+  // `external`: what acts on the block besides gravity, the ground and the seat (none: the dry
+  // block); it must outlive the simulation.
+  SeatSimulation(const Scene& scene, double output_interval, const ExternalLoad* external = nullptr)
       : EventLoop(scene, output_interval),
+        external_(external),
         contacts_(scene_block_vertices(scene), scene.seat->points),
         R_(geometry_.size()),
         velocity_tol_(resting_speed(scene.g, R_)) {
@@ -111,8 +115,14 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
   // The settling speed now, in the gravity the block feels.
   double settle_velocity() const { return settling_speed(scene_.g * gravity_factor(t_), R_); }
-  Vec2 applied(double t) const {
-    return {motion_.lambda(t) * scene_.g, -scene_.g * gravity_factor(t)};
+  // The load on the block at time t in the state s (engine/contact/body_load.hpp).
+  BodyLoad load_at(double t, const BlockState& s) const {
+    return body_load(geometry_.inertia_per_mass(), motion_.lambda(t), vertical_.lambda(t), scene_.g,
+                     external_, s);
+  }
+  // The kinetic energy per unit mass, the added mass's included.
+  double kinetic_energy(const BlockState& s) const {
+    return 0.5 * load_at(t_, s).inertia.twice_kinetic(velocity_of(s));
   }
   SeatSystem system(const MotionPiece& piece) const;
   PlanarContact contact_of(const SeatPair& pair, const BlockState& s) const {
@@ -144,7 +154,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
                                              const std::vector<ContactState>& states,
                                              const BlockState& s) const;
   bool holds_at_rest(const PlanarForces& f, double relative_tolerance) const;
-  Eigen::Vector3d least_kinetic_change(const Eigen::MatrixXd& j, const Eigen::VectorXd& b) const;
+  Eigen::Vector3d least_kinetic_change(const Eigen::MatrixXd& j, const Eigen::VectorXd& b,
+                                       const BodyInertia& inertia) const;
   void lay_on(const std::vector<SeatPair>& pairs, BlockState& s) const;
   void project_positions(const std::vector<ActiveContact>& active, BlockState& s) const;
   void project(const SeatMode& mode);
@@ -168,6 +179,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
                                double t1) const;
   SeatChart chart_of(const SeatMode& mode) const;
 
+  const ExternalLoad* external_;
   SeatContacts contacts_;
   double R_, velocity_tol_;
   SeatMode mode_;

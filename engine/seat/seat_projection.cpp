@@ -12,13 +12,22 @@
 
 namespace blockfrag {
 
-// The change dq with J dq = b that is least in the kinetic metric dx^2 + dy^2 + k^2 dtheta^2 (k the
-// radius of gyration): the change impulses at the contacts would make. Least in the plain
-// (x, y, theta) norm instead, a rotation is cheap and turns the block about its centre, sliding
-// every contact point along its segment (far past a fold, at the type B block's height).
+// The change dq with J dq = b that is least in the kinetic metric dq^T M dq (dx^2 + dy^2 +
+// k^2 dtheta^2 for the block alone, k the radius of gyration): the change impulses at the contacts
+// would make. Least in the plain (x, y, theta) norm instead, a rotation is cheap and turns the
+// block about its centre, sliding every contact point along its segment (far past a fold, at the
+// type B block's height). With an added mass, M = L L^T and the change is L^-T of the least z = L^T
+// dq with J L^-T z = b.
 Eigen::Vector3d SeatSimulation::least_kinetic_change(const Eigen::MatrixXd& j,
-                                                     const Eigen::VectorXd& b) const {
-  const double k = std::sqrt(geometry_.inertia_per_mass());
+                                                     const Eigen::VectorXd& b,
+                                                     const BodyInertia& inertia) const {
+  if (inertia.coupled()) {
+    const Eigen::LLT<Eigen::Matrix3d> llt(inertia.matrix());
+    const Eigen::Matrix3d l_inverse_transposed = llt.matrixU().solve(Eigen::Matrix3d::Identity());
+    const Eigen::MatrixXd scaled = j * l_inverse_transposed;
+    return l_inverse_transposed * scaled.completeOrthogonalDecomposition().solve(b);
+  }
+  const double k = std::sqrt(inertia.k2);
   Eigen::MatrixXd scaled = j;
   scaled.col(2) /= k;
   Eigen::Vector3d change = scaled.completeOrthogonalDecomposition().solve(b);
@@ -42,7 +51,7 @@ void SeatSimulation::lay_on(const std::vector<SeatPair>& pairs, BlockState& s) c
     tangent.row(i) = contact_row(c, contact_tangent(c));
     u(i) = contact_velocity(c, velocity_of(s)).normal;
   }
-  const Eigen::Vector3d least = least_kinetic_change(normal, -u);
+  const Eigen::Vector3d least = least_kinetic_change(normal, -u, load_at(t_, s).inertia);
   Eigen::Vector3d dv = least;
   // Within the changes that keep the normal velocities, the one that takes the slip back. The
   // normals are the seat's or the block's edges' (turned by the block's tilt, within the contact
@@ -64,8 +73,7 @@ void SeatSimulation::lay_on(const std::vector<SeatPair>& pairs, BlockState& s) c
     s.omega += change(2);
   };
   apply(dv);
-  if (!keeps_slip(kinetic_energy_per_mass(geometry_, before),
-                  kinetic_energy_per_mass(geometry_, s))) {
+  if (!keeps_slip(kinetic_energy(before), kinetic_energy(s))) {
     apply(least);
   }
 }
@@ -100,7 +108,7 @@ void SeatSimulation::project_positions(const std::vector<ActiveContact>& active,
       gap(i) = p.along - anchored[a].second;
     }
     if (gap.cwiseAbs().maxCoeff() <= std::numeric_limits<double>::epsilon() * R_) break;
-    const Eigen::Vector3d dq = least_kinetic_change(j, -gap);
+    const Eigen::Vector3d dq = least_kinetic_change(j, -gap, geometry_.inertia_per_mass());
     s.x += dq(0);
     s.y += dq(1);
     s.theta += dq(2);
@@ -136,7 +144,7 @@ void SeatSimulation::project(const SeatMode& mode) {
     j.row(static_cast<Eigen::Index>(i)) = rows[i];
     u(static_cast<Eigen::Index>(i)) = velocities[i];
   }
-  const Eigen::Vector3d dv = least_kinetic_change(j, -u);
+  const Eigen::Vector3d dv = least_kinetic_change(j, -u, load_at(t_, state_).inertia);
   state_.vx += dv(0);
   state_.vy += dv(1);
   state_.omega += dv(2);
@@ -144,30 +152,38 @@ void SeatSimulation::project(const SeatMode& mode) {
 
 // Whether the block at rest on its active contacts stays at rest under lambda (with g).
 bool SeatSimulation::rest_holds(double lambda) const {
+  const BodyLoad load =
+      body_load(geometry_.inertia_per_mass(), lambda, 0.0, scene_.g, external_, state_);
   PlanarForcesInput in{{},
                        {0.0, 0.0, 0.0},
-                       geometry_.inertia_per_mass(),
-                       {lambda * scene_.g, -scene_.g},
+                       load.inertia,
+                       load.force,
                        scene_.contact.friction,
                        velocity_tol_,
                        scene_.g,
                        R_};
   in.tolerance = kRestTolerance;
+  in.applied_moment = load.moment;
   for (const ActiveContact& a : mode_.active) in.contacts.push_back(contact_of(a.pair, state_));
   // The first consistent choice decides rest; whether others disagree does not matter here.
   return holds_at_rest(resolve_contact_forces(in, LcpSearch::first_consistent), in.tolerance);
 }
 
 // The lambda range of rest: rest holds on an interval of lambda (the contact forces that balance
-// the load form a convex cone), found by doubling then halving from lambda = 0 each way.
+// the load, affine in lambda, form a convex cone), found by doubling then halving each way from
+// lambda = 0, or, where a load pushes the block (the reservoir's) so that it rests only under the
+// ground's help, from the lambda it came to rest under.
 void SeatSimulation::set_rest_thresholds(SeatMode& mode) const {
+  const double start =
+      external_ == nullptr || rest_holds(0.0) ? 0.0 : motion_.lambda(t_) / gravity_factor(t_);
   const auto edge = [&](double direction) {
-    double inside = 0.0, outside = direction;
+    double inside = start, step = direction, outside = start + step;
     while (rest_holds(outside)) {
       inside = outside;
       if (std::abs(outside) >= kRestSearchLimit)
         return direction * std::numeric_limits<double>::infinity();
-      outside *= 2.0;
+      step *= 2.0;
+      outside = start + step;
     }
     for (int i = 0; i < kRestThresholdHalvings && std::abs(outside - inside) > 0.0; ++i) {
       const double middle = 0.5 * (inside + outside);

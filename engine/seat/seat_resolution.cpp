@@ -35,7 +35,6 @@ std::vector<SeatPair> SeatSimulation::touching(const BlockState& s,
 
 bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>& pairs,
                                      bool& impacted) {
-  const double k2 = geometry_.inertia_per_mass();
   const double mu = scene_.contact.friction;
   for (int round = 0; round < kMaxImpactRounds; ++round) {
     std::vector<PlanarContact> all;
@@ -55,8 +54,9 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
       ++summary_.impacts;
       if (!summary_.first_impact_time) summary_.first_impact_time = t_;
     }
-    const double before = kinetic_energy_per_mass(geometry_, s);
+    const double before = kinetic_energy(s);
     const BlockState start = s;
+    const BodyInertia inertia = load_at(t_, s).inertia;
     // A landing slower than the settling speed while another contact touches lays the block on
     // its contacts, their slip kept: the flat ground's rule for a corner landing that slowly while
     // the other touches (it lays the block flat). Taken as an impact, the landing is plastic and
@@ -68,7 +68,7 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
     } else {
       const double e = landing_restitution(scene_.contact.restitution, fastest, settle_velocity());
       const PlanarImpactInput one{
-          {all[static_cast<std::size_t>(first)]}, velocity_of(s), k2, mu, e, R_};
+          {all[static_cast<std::size_t>(first)]}, velocity_of(s), inertia, mu, e, R_};
       PlanarImpact impact = resolve_contact_impact(one);
       set_velocity(s, impact.after);
       // The paper's law at the contact that hits first, as on the flat ground; when that drives
@@ -80,7 +80,8 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
             others_approach || contact_velocity(all[i], velocity_of(s)).normal < -velocity_tol_;
       }
       if (others_approach) {
-        const PlanarImpact together = simultaneous_impact({all, velocity_of(start), k2, mu, e, R_});
+        const PlanarImpact together =
+            simultaneous_impact({all, velocity_of(start), inertia, mu, e, R_});
         if (together.determinacy != Determinacy::unique) ++summary_.painleve_events;
         // No consistent choice of impulses together (two pairs of one contact point, a block vertex
         // on a seat point, whose geometries differ by the contact tolerance): the first contact's
@@ -91,7 +92,7 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
         }
       }
     }
-    const double after = kinetic_energy_per_mass(geometry_, s);
+    const double after = kinetic_energy(s);
     if (before > 0) {
       summary_.max_impact_energy_gain =
           std::max(summary_.max_impact_energy_gain, (after - before) / before);
@@ -202,12 +203,11 @@ void SeatSimulation::settle_or_lay(BlockState& s, const std::vector<SeatPair>& p
   }
   if (landed && !sliding) s.vx = s.vy = s.omega = 0.0;
   if (landed && sliding) {
-    const double before = kinetic_energy_per_mass(geometry_, s);
+    const double before = kinetic_energy(s);
     lay_on(pairs, s);
     if (before > 0) {
       summary_.max_impact_energy_gain =
-          std::max(summary_.max_impact_energy_gain,
-                   (kinetic_energy_per_mass(geometry_, s) - before) / before);
+          std::max(summary_.max_impact_energy_gain, (kinetic_energy(s) - before) / before);
     }
   }
 }
@@ -215,15 +215,17 @@ void SeatSimulation::settle_or_lay(BlockState& s, const std::vector<SeatPair>& p
 // The touching contacts that can carry force (not leaving), and their contact problem at state_.
 SeatSimulation::CarryingContacts SeatSimulation::carrying_contacts(
     const std::vector<SeatPair>& pairs) const {
+  const BodyLoad load = load_at(t_, state_);
   CarryingContacts carrying{{},
                             {{},
                              velocity_of(state_),
-                             geometry_.inertia_per_mass(),
-                             applied(t_),
+                             load.inertia,
+                             load.force,
                              scene_.contact.friction,
                              velocity_tol_,
                              scene_.g,
                              R_}};
+  carrying.problem.applied_moment = load.moment;
   for (const SeatPair& pair : pairs) {
     const PlanarContact c = contact_of(pair, state_);
     if (contact_velocity(c, velocity_of(state_)).normal > velocity_tol_) continue;
@@ -259,7 +261,7 @@ PlanarForces SeatSimulation::choice_that_moves(PlanarForcesInput problem, const 
   if (report.rest_ended) problem.tolerance = kRestTolerance;
   PlanarForces moving = resolve_contact_forces(problem);
   if (moving.determinacy == Determinacy::inconsistent && report.rest_ended) {
-    problem.tolerance = PlanarForcesInput{}.tolerance;
+    problem.tolerance = kContactProblemTolerance;
     moving = resolve_contact_forces(problem);
   }
   return moving.determinacy != Determinacy::inconsistent ? moving : pinned;

@@ -20,10 +20,10 @@
 namespace blockfrag {
 
 SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
-  const SeatSystemContext context{&contacts_,     &geometry_,
-                                  &piece,         &vertical_.piece_at(t_),
-                                  scene_.g,       scene_.contact.friction,
-                                  kFallDepth * R_};
+  const SeatSystemContext context{&contacts_,      &geometry_,
+                                  &piece,          &vertical_.piece_at(t_),
+                                  scene_.g,        scene_.contact.friction,
+                                  kFallDepth * R_, external_};
   // Vertices and points in an active contact are not watched for touching: they touch.
   std::vector<int> vertices, points;
   const double near = kSeatContactDrift * R_;
@@ -51,6 +51,9 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
 // line: one vertex on it pivots or slips, two or more slide along it.
 SeatChart SeatSimulation::chart_of(const SeatMode& mode) const {
   const std::vector<ActiveContact>& active = mode.active;
+  // In flight theta is linear in time unless a load turns the block or couples its turning to
+  // its sliding (the reservoir's).
+  if (active.empty() && external_ != nullptr) return FreeChart{origin_};
   if (active.empty()) return FlightChart{origin_, t_, state_.theta, state_.omega};
   const ActiveContact& first = active.front();
   const bool sticks = first.state == ContactState::stick;
@@ -129,7 +132,7 @@ SeatSimulation::EventReport SeatSimulation::advance_rest(double t_stop) {
   const MotionPiece& piece = motion_.piece_at(t_);
   const MotionPiece& vertical = vertical_.piece_at(t_);
   const auto forces_at = [&](double t) {
-    const Vec2 f = applied(t);
+    const Vec2 f = load_at(t, state_).force;
     return ContactForces{-f.x, -f.y};
   };
   EventReport report;
@@ -329,7 +332,7 @@ SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, do
       [&](const auto& chart) {
         const SeatOde ode(moving, chart);
         if constexpr (std::is_same_v<std::decay_t<decltype(chart)>, FlightChart>) {
-          if (vertical_.piece_at(t_).is_zero()) {
+          if (vertical_.piece_at(t_).is_zero() && external_ == nullptr) {
             ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
             report = integrate_with(ode, flight, piece, t_stop, kind);
             return;
@@ -345,7 +348,7 @@ SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, do
 
 ContactForces SeatSimulation::forces_now() const {
   if (!stopped_ && mode_.rest) {
-    const Vec2 f = applied(t_);
+    const Vec2 f = load_at(t_, state_).force;
     return {-f.x, -f.y};
   }
   if (!stopped_ && !mode_.active.empty()) {
@@ -355,8 +358,9 @@ ContactForces SeatSimulation::forces_now() const {
   return {0.0, 0.0};
 }
 
-SimulationWithHistory simulate_on_seat(const Scene& scene, double output_interval) {
-  SeatSimulation simulation(scene, output_interval);
+SimulationWithHistory simulate_on_seat(const Scene& scene, double output_interval,
+                                       const ExternalLoad* external) {
+  SeatSimulation simulation(scene, output_interval, external);
   return run_to_end(simulation);
 }
 

@@ -61,14 +61,14 @@ const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const P
     states[at] = active_[at].state;
   }
   const auto n = static_cast<std::size_t>(count_);
-  const Vec2 applied{c_.piece->lambda(t) * c_.g, -c_.g * (1.0 + c_.vertical->lambda(t))};
-  const double k2 = c_.geometry->inertia_per_mass();
+  const BodyLoad load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
+                                  c_.vertical->lambda(t), c_.g, c_.external, s);
   std::optional<FixedStateForces> one;
-  if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, applied, k2, c_.mu);
+  if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, load, c_.mu);
   last_solve_ = {t, s,
                  one ? *one
                      : fixed_state_forces(std::span(contacts).first(n), std::span(states).first(n),
-                                          s, applied, k2, c_.mu)};
+                                          s, load, c_.mu)};
   return last_solve_.forces;
 }
 

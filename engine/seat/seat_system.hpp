@@ -54,9 +54,10 @@ enum class SeatEvent {
 struct SeatSystemContext {
   const SeatContacts* contacts;
   const BlockGeometry* geometry;
-  const MotionPiece* piece;     // lambda
-  const MotionPiece* vertical;  // lambda_v
-  double g, mu, fall_depth;     // fall_depth in m
+  const MotionPiece* piece;                // lambda
+  const MotionPiece* vertical;             // lambda_v
+  double g, mu, fall_depth;                // fall_depth in m
+  const ExternalLoad* external = nullptr;  // none: the dry block
 };
 
 class SeatSystem {

@@ -41,10 +41,10 @@ TEST(OneContactForces, AgreeWithTheGeneralSolveOnRandomPosesAndVelocities) {
     const BlockState s{0.0, 0.0, u(-1, 1), u(-3, 3), u(-3, 3), u(-1, 1)};
     const Vec2 applied{u(-2, 2) * kG, -kG * (1 + u(-0.5, 0.5))};
     const double k2 = u(1, 60), mu = u(0, 1.2);
-    const auto one = one_contact_forces(c, state, s, applied, k2, mu);
+    const auto one = one_contact_forces(c, state, s, BodyLoad{applied, 0.0, k2}, mu);
     if (!one) continue;  // a slipping contact at its Painleve boundary exactly: not met at random
-    const FixedStateForces general =
-        fixed_state_forces(std::span(&c, 1), std::span(&state, 1), s, applied, k2, mu);
+    const FixedStateForces general = fixed_state_forces(std::span(&c, 1), std::span(&state, 1), s,
+                                                        BodyLoad{applied, 0.0, k2}, mu);
     const double scale = 10 * kG;  // the accelerations' and forces' size here
     expect_close(one->acceleration.x_dd, general.acceleration.x_dd, scale);
     expect_close(one->acceleration.y_dd, general.acceleration.y_dd, scale);
@@ -81,7 +81,8 @@ TEST(OneContactForces, AreTheFlatGroundsClosedFormsTurnedWithTheNormal) {
     const Vec2 corner_velocity{s == 0 ? 0.0 : u(-2, 2), 0.0};
     const Vec2 centre{corner_velocity.x + w * r.y, corner_velocity.y - w * r.x};
     const Vec2 v = turned(centre), applied = turned({lambda * kG, -kG});
-    const auto one = one_contact_forces(c, state, {0.0, 0.0, 0.0, v.x, v.y, w}, applied, k2, mu);
+    const auto one =
+        one_contact_forces(c, state, {0.0, 0.0, 0.0, v.x, v.y, w}, BodyLoad{applied, 0.0, k2}, mu);
     ASSERT_TRUE(one.has_value());
     const double scale = 10 * kG;
     expect_close(one->normal[0], flat.normal, scale);
