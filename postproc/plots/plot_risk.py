@@ -12,15 +12,14 @@ panels over the intensity measure, one x axis (log):
     /usr/bin/python3 postproc/plots/plot_risk.py risk.json -o risk.png [--title TEXT]
 """
 
-import argparse
 import json
 import math
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_support  # noqa: E402  (beside this script; it chooses matplotlib's backend before pyplot)
+from plot_support import InputError  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -28,10 +27,6 @@ import numpy as np  # noqa: E402
 COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442")
 HAZARD_COLOUR = "#000000"
 LEVELS_SHADE = "#eeeeee"
-
-
-class InputError(Exception):
-    """A problem with the input file, reported as one line without a traceback."""
 
 
 def read_report(path):
@@ -54,7 +49,48 @@ def read_report(path):
         raise InputError(f"{path}: a risk.json without {error}") from None
     if im.ndim != 1 or len(im) < 2 or im.shape != rate.shape or np.any(im <= 0):
         raise InputError(f"{path}: /hazard/im and /hazard/annual_rate are not one curve")
+    check_limit_states(path, states, first, len(im) - 1)
     return report, im, rate, states, first
+
+
+def check_limit_states(path, states, first, bins):
+    """What draw() reads of each limit state, so that a damaged file is one line naming the JSON
+    path, not a traceback halfway through the figure."""
+    def fail(where, rule):
+        raise InputError(f"{path}: {where}: {rule}")
+
+    def numbers(value, where, count=None):
+        try:
+            array = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            fail(where, "not a list of numbers")
+        if array.ndim != 1 or (count is not None and len(array) != count):
+            fail(where, f"not a list of {count} numbers" if count is not None else "not a list of numbers")
+        return array
+
+    if not isinstance(states, list) or not isinstance(first, list):
+        fail("/limit_states", "not a list of limit states")
+    for k, state in enumerate(states):
+        where = f"/limit_states/{k}"
+        if not isinstance(state, dict) or not isinstance(state.get("name"), str):
+            fail(where, "not a limit state with a name")
+        for estimate in ("fit", "points"):
+            value = state.get(estimate)
+            if value is None:
+                continue
+            if not isinstance(value, dict) or not isinstance(value.get("lambda"), (int, float)):
+                fail(f"{where}/{estimate}", "not an estimate with a lambda")
+            numbers(value.get("bin_lambda"), f"{where}/{estimate}/bin_lambda", bins)
+    for k, state in enumerate(first):
+        where = f"/studies/0/limit_states/{k}"
+        if not isinstance(state, dict) or not isinstance(state.get("name"), str):
+            fail(where, "not a limit state with a name")
+        for key in ("median", "beta"):
+            if state.get(key) is not None and not isinstance(state[key], (int, float)):
+                fail(f"{where}/{key}", "not a number")
+        if state.get("levels"):
+            levels = numbers(state["levels"], f"{where}/levels")
+            numbers(state.get("probability"), f"{where}/probability", len(levels))
 
 
 def lognormal(x, median, beta):
@@ -117,24 +153,18 @@ def draw(report, im, rate, states, first, title):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("risk_json")
-    parser.add_argument("-o", "--output", required=True)
-    parser.add_argument("--title")
+    parser = plot_support.parser(__doc__)
+    parser.add_argument("risk_json", help="the risk.json of blockfrag risk")
+    plot_support.add_output(parser, required=True)
+    plot_support.add_title(parser, default="risk at the hazard file's site")
     args = parser.parse_args(argv)
-    try:
-        report, im, rate, states, first = read_report(args.risk_json)
-        figure = draw(report, im, rate, states, first, args.title)
-        try:
-            figure.savefig(args.output, dpi=120)
-        except OSError as error:
-            raise InputError(f"{args.output}: cannot be written ({error.strerror})") from None
-        finally:
-            plt.close(figure)
-    except InputError as error:
-        print(f"plot_risk.py: {error}", file=sys.stderr)
-        return 2
-    return 0
+    return plot_support.run(lambda: plot(args))
+
+
+def plot(args):
+    report, im, rate, states, first = read_report(args.risk_json)
+    figure = draw(report, im, rate, states, first, args.title)
+    plot_support.save_figure(figure, args.output, dpi=120)
 
 
 if __name__ == "__main__":

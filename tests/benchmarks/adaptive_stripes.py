@@ -6,7 +6,8 @@ fitted overturning median's 95 % interval, and the medians they find, next to a 
 run's (the truth). With --figure, draws where the samples went.
 
     /usr/bin/python3 tests/benchmarks/adaptive_stripes.py --blockfrag build/mpi_driver/blockfrag \\
-        [--ranks 2] [--truth-samples-per-level 25000] [--figure docs/adaptive_stripes.png] [--quick]
+        [--ranks 2] [--truth-samples-per-level 25000] [--figure docs/adaptive_stripes.png] [--quick] \\
+        [--markdown]
 
 - uniform: configs/example_study.json's inputs over each range of --ranges (10 levels from the
   range's low to its high end: the example's own 0.2 to 2.0 g, and 0.1 to 5.0 g, a range taken
@@ -20,7 +21,9 @@ run's (the truth). With --figure, draws where the samples went.
   25,000): its fitted median, and where its empirical probability crosses 0.5.
 
 The ratio is uniform samples / adaptive samples for the same width. Each run writes into a fresh
-temporary folder, removed at the end.
+temporary folder, removed at the end. --markdown prints under the table the line
+docs/performance.md shows under it: the version that computed it and this command
+(tests/benchmarks/markdown_stamp.py).
 """
 
 import argparse
@@ -34,6 +37,8 @@ from math import erf, log, sqrt
 
 import h5py
 import numpy as np
+
+from markdown_stamp import Stamp
 
 SOURCE = Path(__file__).resolve().parents[2]
 ADAPTIVE_SAMPLES_PER_LEVEL = 250
@@ -135,7 +140,9 @@ def main():
                         help="comma-separated LOW:HIGH ranges of PGA (g)")
     parser.add_argument("--figure", type=Path)
     parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--markdown", action="store_true", help="the stamp line under the table")
     args = parser.parse_args()
+    stamp = Stamp(args.blockfrag, note="--quick: n = 250 and 500 only" if args.quick else "") if args.markdown else None
     sizes = [250, 500] if args.quick else [250, 500, 1000, 2000, 4000]
     ranges = [tuple(float(v) for v in span.split(":")) for span in args.ranges.split(",")]
 
@@ -158,6 +165,9 @@ def main():
               f"| {uniform['median']:.4f} | {pair} | {adaptive['samples']:,} "
               f"| {adaptive['median']:.4f} | {adaptive['width']:.4f} "
               f"| {uniform['samples'] / adaptive['samples']:.2f} | {adaptive['stop_reason']} |")
+    if stamp:
+        print()
+        print(stamp.line())
     if args.figure:
         span, _, uniform, adaptive = [row for row in rows if row[1] == PAIR_PROBABILITIES[0]][-1]
         draw(args.figure, truth, uniform, adaptive, span)

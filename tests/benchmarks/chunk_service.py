@@ -8,7 +8,10 @@ study with the adaptive chunk size and with --max-chunk 1 (every sample a reques
 samples/s, chunks handed out and chunks per second, the rate rank 0 served.
 
     /usr/bin/python3 tests/benchmarks/chunk_service.py --blockfrag build/mpi_driver/blockfrag \\
-        [--ranks 2,8,32] [--samples 400000] [--single-samples 100000]
+        [--ranks 2,8,32] [--samples 400000] [--single-samples 100000] [--markdown]
+
+--markdown prints under the table the line docs/performance.md shows under it: the version, the
+cores and the load average that measured it, and this command (tests/benchmarks/markdown_stamp.py).
 
 docs/performance.md turns the served rate into the rank count at which rank 0 saturates.
 """
@@ -21,6 +24,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from markdown_stamp import Stamp
 
 SOURCE = Path(__file__).resolve().parents[2]
 
@@ -60,7 +65,9 @@ def main():
     parser.add_argument("--ranks", default="2,8,32")
     parser.add_argument("--samples", type=int, default=400_000)
     parser.add_argument("--single-samples", type=int, default=100_000)
+    parser.add_argument("--markdown", action="store_true", help="the stamp line under the table")
     args = parser.parse_args()
+    stamp = Stamp(args.blockfrag, note="oversubscribed beyond the cores") if args.markdown else None
     print("| ranks | chunks | samples | wall s | samples/s | chunks handed out | chunks/s |")
     print("|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory(prefix="blockfrag_chunks_") as temporary:
@@ -70,7 +77,10 @@ def main():
                 wall, computed, chunks = run(args.blockfrag, Path(temporary), ranks, samples,
                                              max_chunk)
                 print(f"| {ranks} | {label} | {computed:,} | {wall:.2f} | {computed / wall:,.0f} "
-                      f"| {chunks:,} | {chunks / wall:,.0f} |")
+                      f"| {chunks:,} | {chunks / wall:,.0f} |", flush=True)
+    if stamp:
+        print()
+        print(stamp.line())
 
 
 if __name__ == "__main__":

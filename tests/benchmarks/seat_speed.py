@@ -10,7 +10,10 @@ and levels) on two ranks, and their ratio. The builds' runs alternate, so that a
 machine's load falls on both.
 
     /usr/bin/python3 tests/benchmarks/seat_speed.py --blockfrag build/mpi_driver/blockfrag \\
-        [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies]
+        [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies] [--markdown]
+
+--markdown prints under the table the line docs/performance.md shows under it: the version, the
+cores and the load average that measured it, and this command (tests/benchmarks/markdown_stamp.py).
 """
 
 import argparse
@@ -21,6 +24,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from markdown_stamp import Stamp
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = {"B": "configs/dam_block_type_b.json", "A": "configs/dam_block_type_a.json"}
@@ -81,6 +86,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=10, help="bench runs per scene")
     parser.add_argument("--studies", action="store_true",
                         help="also time the two record-suite studies on two ranks")
+    parser.add_argument("--markdown", action="store_true", help="the stamp line under the table")
     args = parser.parse_args()
     builds = {"build": args.blockfrag}
     if args.baseline:
@@ -89,7 +95,11 @@ def main():
         if not Path(binary).is_file():
             sys.exit(f"seat_speed.py: no such program: {binary}")
         builds[name] = os.path.abspath(binary)
+    stamp = Stamp(builds["build"], note=f"bench medians of {args.repeat} runs") if args.markdown else None
     print(table(measure(builds, args.repeat, args.studies), args.studies))
+    if stamp:
+        print()
+        print(stamp.line())
 
 
 if __name__ == "__main__":

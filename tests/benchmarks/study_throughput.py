@@ -8,7 +8,12 @@ new/old. The runs of the two builds alternate (new, old, then old, new, ...), so
 the machine's load falls on both.
 
     /usr/bin/python3 tests/benchmarks/study_throughput.py --blockfrag build/mpi_driver/blockfrag \\
-        [--baseline OLD/mpi_driver/blockfrag] [--ranks 2] [--repeats 3] [--quick] [--cases grid,...]
+        [--baseline OLD/mpi_driver/blockfrag] [--ranks 2] [--repeats 3] [--quick] [--cases grid,...] \\
+        [--markdown]
+
+Below the table: each build's version, the machine's load and every run's wall time. With
+--markdown, below the table only the line docs/performance.md shows under it: the version, the
+cores and the load average that measured it, and this command (tests/benchmarks/markdown_stamp.py).
 
 Cases (--quick shrinks each to a smoke test of a second or so):
   grid          the paper's grid: one block (a = 0.5 m, b = 1 m, mu 0.6, e 0.6) under a one-cycle
@@ -38,6 +43,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from markdown_stamp import Stamp
 
 TIME = "/usr/bin/time"
 # Peak resident set size (KiB), wall, user and system seconds of one rank, as /usr/bin/time gives them.
@@ -191,11 +198,13 @@ def measure(builds, cases, repeats, scratch):
     return cells
 
 
-def table(builds, cases, cells):
+def table(builds, cases, cells, label_columns=True):
+    """label_columns False (one build only): the columns without the build's label."""
     labels = [label for label, _ in builds]
     header = ["case", "ranks", "scenes"]
     for label in labels:
-        header += [f"{label} wall s", f"{label} scenes/s/core", f"{label} RSS rank 0 MiB", f"{label} RSS max MiB"]
+        prefix = f"{label} " if label_columns else ""
+        header += [f"{prefix}wall s", f"{prefix}scenes/s/core", f"{prefix}RSS rank 0 MiB", f"{prefix}RSS max MiB"]
     if len(labels) == 2:
         header += ["scenes/s new/old", "RSS rank 0 new/old", "RSS max new/old"]
     rows = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
@@ -238,6 +247,8 @@ def parse_args():
     parser.add_argument("--ranks", type=int, default=2, help="ranks of every case but grid (default 2)")
     parser.add_argument("--repeats", type=int, help="runs of each case and build (default 3, 1 with --quick)")
     parser.add_argument("--quick", action="store_true", help="tiny studies: a smoke test, not a measurement")
+    parser.add_argument("--markdown", action="store_true",
+                        help="the table as the docs show it: only the stamp line below it")
     parser.add_argument("--cases", default=",".join(CASE_NAMES),
                         help=f"comma-separated, from {','.join(CASE_NAMES)} (default all)")
     parser.add_argument("--source-dir", default=os.environ.get("BLOCKFRAG_SOURCE_DIR",
@@ -275,11 +286,24 @@ def main():
     with tempfile.TemporaryDirectory(prefix="study_throughput-") as scratch:
         scratch = Path(scratch)
         cases = make_cases(args, scratch)
+        if args.markdown:
+            runs = f"medians of {args.repeats} runs of each case" if args.repeats > 1 else "one run of each case"
+            stamp = Stamp(builds[0][1], note=runs
+                          + (", --quick: sizes for a smoke test, not a measurement" if args.quick else ""))
         load_before = os.getloadavg()
         cells = measure(builds, cases, args.repeats, scratch)
         load_after = os.getloadavg()
-    print(table(builds, cases, cells))
+    failed = any(cells[(case.name, "new")].problem for case in cases)
+    print(table(builds, cases, cells, label_columns=len(builds) == 2 or not args.markdown))
     print()
+    if args.markdown:
+        print(stamp.line())
+        for case in cases:
+            for label, _ in builds:
+                cell = cells[(case.name, label)]
+                if cell.problem:
+                    print(f"- {case.name}, {label}: {cell.problem} ({cell.reason})", file=sys.stderr)
+        return 1 if failed else 0
     for label, executable in builds:
         print(f"- {label}: {executable} ({version(executable)})")
     print(f"- {args.repeats} run(s) of each case and build, medians; {os.cpu_count()} cores; "
@@ -296,7 +320,7 @@ def main():
                       + ", ".join(cell.checkpoints)
                       + ("; exit code 3 (more failed samples than allowed)" if cell.exit3 else ""))
     # The build under test must run every case; a baseline may refuse what it does not know.
-    return 1 if any(cells[(case.name, "new")].problem for case in cases) else 0
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":

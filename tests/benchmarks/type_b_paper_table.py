@@ -18,9 +18,11 @@ damping), and prints for each run next to the paper's numbers:
   pulse and the crest's ringing): stays (and where it comes to rest), falls into the reservoir
   (past the seat's upstream end, with its time), overturns (with its time), or still moving at 30 s.
 
-    /usr/bin/python3 tests/benchmarks/type_b_paper_table.py --blockfrag build/mpi_driver/blockfrag
+    /usr/bin/python3 tests/benchmarks/type_b_paper_table.py --blockfrag build/mpi_driver/blockfrag [--markdown]
 
-Each run writes into a fresh temporary folder, removed at the end. About 10 s on one core.
+Each run writes into a fresh temporary folder, removed at the end. --markdown prints under the
+table the line docs/validation.md shows under it: the version that computed it and this command
+(tests/benchmarks/markdown_stamp.py).
 """
 
 import argparse
@@ -32,6 +34,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+from markdown_stamp import Stamp
 from shoelace import centroid as centroid_of
 
 SOURCE = Path(__file__).resolve().parents[2]
@@ -122,7 +125,9 @@ def describe(summary, rows, centroid):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--blockfrag", required=True, help="the blockfrag executable")
+    parser.add_argument("--markdown", action="store_true", help="the stamp line under the table")
     args = parser.parse_args()
+    stamp = Stamp(args.blockfrag) if args.markdown else None
     base = json.loads(SCENE.read_text())
     base.pop("duration", None)
     base["max_duration"] = 30.0
@@ -147,6 +152,9 @@ def main():
                 lines.append(f"| {amplitude:+.1f} g | {'dam, T1 = 0.241 s' if dam else 'rigid'} | "
                              + " | ".join(cells) + " |")
     print("\n".join(lines))
+    if stamp:
+        print()
+        print(stamp.line())
     return 0
 
 

@@ -26,8 +26,9 @@ median form, a panel for a limit state without a fit, one-line errors for a file
 /fragility_surface, an unknown --limit-state and bad --contours. plot_work_precision.py: a PNG
 from a synthetic accuracy output, one-line errors naming the file and the dataset or group it
 lacks. plot_risk.py: a PNG with each limit state's colour, its integrand each bin's lambda per
-unit of ln im, one-line errors for a missing file, a JSON that is not a risk.json and a hazard
-curve of one level. Every error on an input exits 2, one on an output 1
+unit of ln im, one-line errors for a missing file, a JSON that is not a risk.json, a hazard
+curve of one level and a limit state whose estimate or points are damaged (named by their JSON
+path), and exit code 1 for an output it cannot write. Every error on an input exits 2, one on an output 1
 (postproc/plots/plot_support.py). Prints "N passed, M failed" last; exits non-zero on any
 failure.
 """
@@ -955,6 +956,33 @@ def test_risk_plot_refuses_what_is_not_a_risk_json(work):
                                      '"limit_states": [], "studies": [{"limit_states": []}]}')
     assert_clean_error(call(PLOT_RISK, work / "short.json", "-o", work / "x.png"),
                        "short.json: /hazard/im and /hazard/annual_rate are not one curve")
+
+
+
+def test_risk_plot_names_a_damaged_limit_state_by_its_path(work):
+    write_risk(work / "risk.json")
+    report = json.loads((work / "risk.json").read_text())
+    report["limit_states"][1]["fit"]["bin_lambda"] = report["limit_states"][1]["fit"]["bin_lambda"][:-1]
+    (work / "short_bins.json").write_text(json.dumps(report))
+    assert_clean_error(call(PLOT_RISK, work / "short_bins.json", "-o", work / "x.png"),
+                       "short_bins.json: /limit_states/1/fit/bin_lambda: not a list of 11 numbers")
+    report = json.loads((work / "risk.json").read_text())
+    del report["limit_states"][0]["name"]
+    (work / "nameless.json").write_text(json.dumps(report))
+    assert_clean_error(call(PLOT_RISK, work / "nameless.json", "-o", work / "x.png"),
+                       "nameless.json: /limit_states/0: not a limit state with a name")
+    report = json.loads((work / "risk.json").read_text())
+    report["studies"][0]["limit_states"][0]["probability"] = [0.5]
+    (work / "points.json").write_text(json.dumps(report))
+    assert_clean_error(call(PLOT_RISK, work / "points.json", "-o", work / "x.png"),
+                       "points.json: /studies/0/limit_states/0/probability: not a list of 4 numbers")
+    assert not (work / "x.png").exists()
+
+
+def test_risk_plot_reports_an_unwritable_output(work):
+    write_risk(work / "risk.json")
+    assert_clean_error(call(PLOT_RISK, work / "risk.json", "-o", work / "no_dir" / "x.png"), "cannot write",
+                       code=1)
 
 
 def main():

@@ -4,7 +4,9 @@ Against $BLOCKFRAG as its own baseline on 2 ranks: exit 0, a table with a row pe
 sizes in its scenes column, a number in every cell (medians, rates, memory, ratios), nothing left in
 its temporary folder. Against a baseline that refuses every study: "refused" in the old build's
 cells with the reason below, and still exit 0; as the build under test, exit 1. An unknown case is
-refused up front. Prints "N passed, M failed" last; exits non-zero on any failure.
+refused up front. With --markdown: the table's columns without the build's label, and under it
+only the stamp line (tests/benchmarks/markdown_stamp.py) with the executable's version, the cores
+and the command. Prints "N passed, M failed" last; exits non-zero on any failure.
 """
 
 import os
@@ -106,6 +108,25 @@ def main():
             assert row["new wall s"] == "refused", row
 
         check("a refusing build under test exits 1", refusing_build_under_test)
+
+        scratch = work / "tmp-markdown"
+        scratch.mkdir()
+        markdown = run(scratch, "--quick", "--cases", "grid,record_suite", "--markdown")
+
+        def markdown_stamped():
+            assert markdown.returncode == 0, markdown.stderr[-2000:]
+            rows = table_rows(markdown.stdout)
+            assert [row["case"] for row in rows] == ["grid", "record_suite"], markdown.stdout
+            assert float(rows[0]["scenes/s/core"]) > 0 and "new wall s" not in rows[0], rows[0]
+            version = subprocess.run([BLOCKFRAG, "--version"], capture_output=True, text=True).stdout.split()[1]
+            last = markdown.stdout.strip().splitlines()[-1]
+            assert last.startswith(f"Measured with blockfrag {version} on {os.cpu_count()} cores, load average "), last
+            assert "--quick: sizes for a smoke test" in last, last
+            assert "by `/usr/bin/python3 tests/benchmarks/study_throughput.py --blockfrag " in last, last
+            assert last.endswith(" --quick --cases grid,record_suite --markdown`."), last
+            assert "- grid, new: wall s of each run" not in markdown.stdout, markdown.stdout
+
+        check("--markdown: the table without labels and the stamp under it", markdown_stamped)
 
         unknown = run(work, "--cases", "grid,nonsense")
 
