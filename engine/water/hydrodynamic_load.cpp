@@ -35,7 +35,7 @@ HydrodynamicLoad::Matrix HydrodynamicLoad::added(double y, double theta) const {
   return {a.mass / block_.mass, -a.first_moment / block_.mass, a.second_moment / block_.mass};
 }
 
-LoadAddition HydrodynamicLoad::at(const BlockState& s, double lambda, double g) const {
+LoadAddition HydrodynamicLoad::at(const BlockState& s, double lambda, double g, Footing) const {
   const Matrix a = added(s.y, s.theta);
   LoadAddition out;
   out.xx = a.xx;

@@ -42,7 +42,7 @@ class HydrodynamicLoad : public ExternalLoad {
   HydrodynamicLoad(WettedBlock block, double surface, double density, double reservoir_depth);
 
   // The added mass's part of the load per unit of the block's mass at s under lambda.
-  LoadAddition at(const BlockState& s, double lambda, double g) const override;
+  LoadAddition at(const BlockState& s, double lambda, double g, Footing) const override;
 
  private:
   struct Matrix {  // A's three entries, per unit mass
