@@ -78,18 +78,24 @@ struct LoadAddition {
   double xx = 0.0, xtheta = 0.0, thetatheta = 0.0;
 };
 
+// How the block stands on its ground, for a load that depends on it (the water in the crack under
+// its base): seated on its base (at rest, or sliding on two contacts or more), or lifted from it
+// (rocking on one contact, or in flight). It changes only at events.
+enum class Footing { seated, lifted };
+
 class ExternalLoad {
  public:
   virtual ~ExternalLoad() = default;
-  virtual LoadAddition at(const BlockState& s, double lambda, double g) const = 0;
+  virtual LoadAddition at(const BlockState& s, double lambda, double g, Footing footing) const = 0;
 };
 
-// The load on a block of k^2 = I/M under lambda, lambda_v and an external load (none: dry).
+// The load on a block of k^2 = I/M under lambda, lambda_v and an external load (none: dry), the
+// block standing as `footing` says.
 inline BodyLoad body_load(double inertia_per_mass, double lambda, double lambda_v, double g,
-                          const ExternalLoad* external, const BlockState& s) {
+                          const ExternalLoad* external, const BlockState& s, Footing footing) {
   BodyLoad load{{lambda * g, -g * (1.0 + lambda_v)}, 0.0, inertia_per_mass};
   if (external == nullptr) return load;
-  const LoadAddition add = external->at(s, lambda, g);
+  const LoadAddition add = external->at(s, lambda, g, footing);
   load.force.x += add.force.x;
   load.force.y += add.force.y;
   load.moment += add.moment;

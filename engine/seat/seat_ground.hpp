@@ -115,10 +115,14 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
   // The settling speed now, in the gravity the block feels.
   double settle_velocity() const { return settling_speed(scene_.g * gravity_factor(t_), R_); }
-  // The load on the block at time t in the state s (engine/contact/body_load.hpp).
+  // The load on the block at time t in the state s (engine/contact/body_load.hpp), standing as
+  // the current mode has it.
   BodyLoad load_at(double t, const BlockState& s) const {
     return body_load(geometry_.inertia_per_mass(), motion_.lambda(t), vertical_.lambda(t), scene_.g,
-                     external_, s);
+                     external_, s, footing_of(mode_));
+  }
+  static Footing footing_of(const SeatMode& mode) {
+    return mode.rest || mode.active.size() >= 2 ? Footing::seated : Footing::lifted;
   }
   // The kinetic energy per unit mass, the added mass's included.
   double kinetic_energy(const BlockState& s) const {

@@ -152,8 +152,8 @@ void SeatSimulation::project(const SeatMode& mode) {
 
 // Whether the block at rest on its active contacts stays at rest under lambda (with g).
 bool SeatSimulation::rest_holds(double lambda) const {
-  const BodyLoad load =
-      body_load(geometry_.inertia_per_mass(), lambda, 0.0, scene_.g, external_, state_);
+  const BodyLoad load = body_load(geometry_.inertia_per_mass(), lambda, 0.0, scene_.g, external_,
+                                  state_, Footing::seated);
   PlanarForcesInput in{{},
                        {0.0, 0.0, 0.0},
                        load.inertia,

@@ -61,8 +61,9 @@ const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const P
     states[at] = active_[at].state;
   }
   const auto n = static_cast<std::size_t>(count_);
-  const BodyLoad load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
-                                  c_.vertical->lambda(t), c_.g, c_.external, s);
+  const BodyLoad load =
+      body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t), c_.vertical->lambda(t), c_.g,
+                c_.external, s, count_ >= 2 ? Footing::seated : Footing::lifted);
   std::optional<FixedStateForces> one;
   if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, load, c_.mu);
   last_solve_ = {t, s,

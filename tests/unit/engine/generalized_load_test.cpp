@@ -27,7 +27,7 @@ constexpr double kLoadG = 9.81;
 class ConstantPush : public ExternalLoad {
  public:
   explicit ConstantPush(double force) : force_(force) {}
-  LoadAddition at(const BlockState&, double, double) const override {
+  LoadAddition at(const BlockState&, double, double, Footing) const override {
     return {{force_, 0.0}, 0.0, 0.0, 0.0, 0.0};
   }
 
@@ -38,7 +38,7 @@ class ConstantPush : public ExternalLoad {
 class CentredAddedMass : public ExternalLoad {
  public:
   explicit CentredAddedMass(double ratio) : ratio_(ratio) {}
-  LoadAddition at(const BlockState&, double lambda, double g) const override {
+  LoadAddition at(const BlockState&, double lambda, double g, Footing) const override {
     return {{ratio_ * lambda * g, 0.0}, 0.0, ratio_, 0.0, 0.0};
   }
 
