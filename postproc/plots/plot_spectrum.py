@@ -198,9 +198,12 @@ def describe(data):
     family = data["pulse"] + (f", {pulse['cycles']:g} cycle(s)" if "cycles" in pulse else "") + (
         f", n = {pulse['n']}" if "n" in pulse else "")
     R = math.hypot(block.get("half_width", 0.0), block.get("half_height", 0.0))
+    rocking = contact.get("rocking_restitution")
+    rocking_text = "" if rocking is None else (
+        ", r = Housner's" if rocking == "housner" else f", r = {rocking:g}")
     return (f"{family}; block alpha = {math.degrees(data['alpha']):.2f} deg, R = {R:.4g} m; "
-            f"mu = {contact.get('friction', float('nan')):g}, e = {contact.get('restitution', float('nan')):g}; "
-            f"{model}")
+            f"mu = {contact.get('friction', float('nan')):g}, e = {contact.get('restitution', float('nan')):g}"
+            f"{rocking_text}; {model}")
 
 
 def draw_panel(ax, data, mark_frequency, mark_point, zoom_box):
