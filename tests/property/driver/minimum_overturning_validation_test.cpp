@@ -5,6 +5,12 @@
 // it. Every amplitude ratio from 1.0 (below it the pulse cannot tip the block) to the map's
 // standing point above the band, 1e-4 apart, gives the first overturning amplitude the refined
 // minimum must match, to its tolerance and the scan's step.
+//
+// Zhang & Makris (2001) tell two ways a block overturns under a cycloidal pulse: after impacts, and
+// without any impact, the latter from a threshold a linearised (slender) block gives in closed form
+// (docs/references.md, "Overturning thresholds under pulses"). A block of alpha = 0.02 rad, where
+// the linearisation is good to its order alpha^2, overturns with no impact from the closed form's
+// amplitude on, to 1e-3, under one-sine and one-cosine pulses at omega_p / p = 1, 2 and 3.
 #include <cmath>
 #include <vector>
 
@@ -61,6 +67,42 @@ TEST(MinimumOverturningValidation, FindsTheOneSineBandTheMapStepsOver) {
   EXPECT_GT(refined.high, last_standing);
   EXPECT_NEAR(refined.amplitude_ratio, 0.5 * (last_standing + first_overturning),
               0.5 * config.minimum_overturning.tolerance * refined.high + step);
+}
+
+// Overturns on its first swing, before any impact.
+bool overturns_without_impact(const SpectrumConfig& config, double amplitude_ratio) {
+  const Summary summary =
+      simulate(spectrum_scene(config, config.frequency_ratio[0], amplitude_ratio));
+  return summary.overturned && summary.impacts == 0;
+}
+
+TEST(MinimumOverturningValidation, NoImpactOverturningOfASlenderBlockIsTheLinearisedClosedForm) {
+  struct Case {
+    const char* pulse;
+    double frequency_ratio, closed_form;
+  };
+  // psi = (1 + W^2) / (1 - exp(-2 pi / W)) for the cosine; sqrt(psi^2 - 1) - psi exp(-(2 pi -
+  // asin(1 / psi)) / W) = W for the sine.
+  for (const Case c : {Case{"cosine_pulse", 1, 2.00374}, Case{"cosine_pulse", 2, 5.22583},
+                       Case{"cosine_pulse", 3, 11.40439}, Case{"sine_pulse", 1, 1.41832},
+                       Case{"sine_pulse", 2, 2.34990}, Case{"sine_pulse", 3, 3.63115}}) {
+    json document = json::parse(R"({
+      "block": {"alpha": 0.02, "R": 1.0},
+      "contact": {"friction": 10, "restitution": 0},
+      "effects": ["rocking", "impact"],
+      "amplitude_ratio": {"values": [1.0, 2.0]}})");
+    document["pulse"] = {{"type", c.pulse}};
+    document["frequency_ratio"] = {{"values", {c.frequency_ratio}}};
+    const SpectrumConfig config = parse_spectrum_config(document, "modes.json");
+    double low = 0.97 * c.closed_form, high = 1.03 * c.closed_form;
+    ASSERT_FALSE(overturns_without_impact(config, low)) << c.pulse << " " << c.frequency_ratio;
+    ASSERT_TRUE(overturns_without_impact(config, high)) << c.pulse << " " << c.frequency_ratio;
+    while (high - low > 1e-5 * high) {
+      const double middle = 0.5 * (low + high);
+      (overturns_without_impact(config, middle) ? high : low) = middle;
+    }
+    EXPECT_NEAR(high / c.closed_form, 1.0, 1e-3) << c.pulse << " " << c.frequency_ratio;
+  }
 }
 
 }  // namespace
