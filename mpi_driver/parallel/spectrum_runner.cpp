@@ -10,7 +10,7 @@
 #include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/parallel/bisection_state.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
-#include "mpi_driver/parallel/minimum_state.hpp"
+#include "mpi_driver/parallel/minimum_refinement_state.hpp"
 
 namespace blockfrag {
 namespace {
@@ -329,8 +329,6 @@ SpectrumFiles SpectrumFiles::for_output(const std::filesystem::path& output) {
 SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
                                const RunSettings& settings, const SpectrumFiles& files,
                                const SceneEvaluator& evaluate) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
   SpectrumRunResult result;
   on_rank0(comm, [&] { check_round_files(config, files); });
   const auto na = static_cast<std::int64_t>(config.amplitude_ratio.size());

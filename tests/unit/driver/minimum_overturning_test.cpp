@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "mpi_driver/parallel/checkpoint.hpp"
-#include "mpi_driver/parallel/minimum_state.hpp"
+#include "mpi_driver/parallel/minimum_refinement_state.hpp"
 
 namespace blockfrag {
 namespace {

@@ -1,4 +1,4 @@
-#include "mpi_driver/parallel/minimum_state.hpp"
+#include "mpi_driver/parallel/minimum_refinement_state.hpp"
 
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/study_hash.hpp"
