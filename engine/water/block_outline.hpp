@@ -24,6 +24,13 @@ class BlockOutline {
   // The lowest y of the block at rest: the flat ground's height.
   double rest_bottom() const { return bottom_; }
 
+  // The pose at rest (unturned, on its ground).
+  BlockState rest_state() const {
+    BlockState s;
+    s.x = centre_[0] - offset_[0];
+    s.y = centre_[1] - offset_[1];
+    return s;
+  }
   // The centre of mass at pose s, in the scene's frame.
   Vertex centre(const BlockState& s) const { return {offset_[0] + s.x, offset_[1] + s.y}; }
   // The vertices at pose s; `out` is overwritten (its storage reused).

@@ -5,7 +5,9 @@
 #include <limits>
 #include <vector>
 
+#include "engine/errors.hpp"
 #include "engine/scene/block_geometry.hpp"
+#include "engine/sine_cosine.hpp"
 #include "engine/tolerances.hpp"
 #include "engine/water/block_outline.hpp"
 #include "engine/water/crack_path.hpp"
@@ -77,33 +79,43 @@ struct RestingBlock {
   }
 };
 
-RestingBlock resting_block(const Scene& scene, const WorldPolygon& world, const Vertex& centre,
-                           double ground_y, double tolerance, UpliftUse use) {
+// The block at `pose`, held where it was held at rest: its supports and crack at rest (on a seat,
+// found within the contact tolerance) are carried with it to the pose.
+RestingBlock resting_block(const Scene& scene, const BlockState& pose, UpliftUse use) {
+  const BlockOutline outline(scene);
   RestingBlock block;
-  block.tolerance = tolerance;
+  block.tolerance = kContactHeight * scene_geometry(scene).size();
   block.mass = scene.polygon ? scene.polygon->mass : scene.block.mass;
   block.g = scene.g;
   block.mu = scene.contact.friction;
   block.weight = SplitLoad::at({0.0, 0.0}, 0.0, -block.mass * scene.g);
-  const std::vector<Support> supports = scene_supports(scene, ground_y, world, tolerance);
-  for (const Support& s : supports) {
-    block.supports.push_back({{s.point[0] - centre[0], s.point[1] - centre[1]}, s.normal});
-  }
-  if (!scene.reservoir || supports.empty()) return block;
+  const std::vector<Support> supports =
+      scene_supports(scene, outline.rest_bottom(), outline.rest(), block.tolerance);
+  if (supports.empty()) throw ContractViolation("block statics: the block does not rest");
+  const SineCosine turn = sine_cosine(pose.theta);
+  const auto turned = [&](const Vertex& v) -> Vertex {
+    return {v[0] * turn.cos - v[1] * turn.sin, v[0] * turn.sin + v[1] * turn.cos};
+  };
+  const Vertex rest_centre = outline.rest_centre();
+  const auto carried = [&](const Vertex& p) {
+    return turned({p[0] - rest_centre[0], p[1] - rest_centre[1]});
+  };
+  for (const Support& s : supports) block.supports.push_back({carried(s.point), turned(s.normal)});
+  if (!scene.reservoir) return block;
   const Reservoir& water = *scene.reservoir;
-  WorldPolygon outline;
-  for (const Vertex& v : world) outline.push_back({v[0] - centre[0], v[1] - centre[1]});
-  CrackPath crack = crack_under(world, supports, tolerance);
-  for (Vertex& p : crack.points) p = {p[0] - centre[0], p[1] - centre[1]};
-  const double surface = water.level - centre[1];
+  WorldPolygon body;
+  for (const Vertex& v : outline.rest()) body.push_back(carried(v));
+  CrackPath crack = crack_under(outline.rest(), supports, block.tolerance);
+  for (Vertex& p : crack.points) p = carried(p);
+  const double surface = water.level - outline.centre(pose)[1];
   const double unit_weight = water.density * scene.g;  // rho_w g
-  for_each_wetted_piece(outline, surface, crack.edges, [&](const WettedPiece& piece) {
+  for_each_wetted_piece(body, surface, crack.edges, [&](const WettedPiece& piece) {
     block.hydrostatic.add(split_pressure(piece.a, piece.b, unit_weight * piece.depth_a,
                                          unit_weight * piece.depth_b, piece.outward));
   });
   if (water.hydrodynamic == Hydrodynamic::westergaard) {
     block.added =
-        westergaard_added_mass(outline, surface, water.density, water.depth, crack.edges, 0.0);
+        westergaard_added_mass(body, surface, water.density, water.depth, crack.edges, 0.0);
   }
   if (use == UpliftUse::scene_rule && water.uplift == UpliftRule::none) return block;
   const double area = use == UpliftUse::full ? 1.0 : water.uplift_area_factor;
@@ -221,9 +233,7 @@ SafetyFactors safety_factors(const RestingBlock& block, double coefficient) {
 }
 
 RestingBlock block_at_rest(const Scene& scene) {
-  const BlockOutline outline(scene);
-  return resting_block(scene, outline.rest(), outline.rest_centre(), outline.rest_bottom(),
-                       kContactHeight * scene_geometry(scene).size(), UpliftUse::scene_rule);
+  return resting_block(scene, BlockOutline(scene).rest_state(), UpliftUse::scene_rule);
 }
 
 }  // namespace
@@ -246,17 +256,18 @@ SafetyFactors pseudo_static_safety_factors(const Scene& scene, double coefficien
   return safety_factors(block_at_rest(scene), coefficient);
 }
 
-std::optional<SafetyFactors> post_earthquake_safety_factors(const Scene& scene,
-                                                            const BlockState& final_pose) {
-  const BlockOutline outline(scene);
-  WorldPolygon world;
-  outline.place(final_pose, world);
-  // The settled block's contacts drift from the seat by up to the engine's projection tolerance.
-  const double tolerance = kSeatContactDrift * scene_geometry(scene).size();
-  const RestingBlock block = resting_block(scene, world, outline.centre(final_pose),
-                                           outline.rest_bottom(), tolerance, UpliftUse::full);
-  if (block.supports.empty()) return std::nullopt;
-  return safety_factors(block, 0.0);
+SafetyFactors post_earthquake_safety_factors(const Scene& scene, const BlockState& final_pose) {
+  return safety_factors(resting_block(scene, final_pose, UpliftUse::full), 0.0);
+}
+
+PostEarthquakeCheck post_earthquake_check(const Scene& scene, const BlockState& final_pose,
+                                          bool standing_at_rest) {
+  PostEarthquakeCheck check;
+  if (!standing_at_rest) return check;
+  const SafetyFactors factors = post_earthquake_safety_factors(scene, final_pose);
+  check.sliding_safety_factor = factors.sliding;
+  check.overturning_safety_factor = factors.overturning;
+  return check;
 }
 
 }  // namespace blockfrag

@@ -19,9 +19,8 @@
 // clockwise (counter-clockwise).
 #pragma once
 
-#include <optional>
-
 #include "engine/scene/block_state.hpp"
+#include "engine/summary.hpp"
 #include "engine/water/block_supports.hpp"
 
 namespace blockfrag {
@@ -66,11 +65,15 @@ BlockStatics block_statics(const Scene& scene);
 SafetyFactors pseudo_static_safety_factors(const Scene& scene, double coefficient);
 
 // After the earthquake: the block at rest at pose `final_pose` (engine/water/block_outline.hpp),
-// under its reservoir with full uplift over its crack there (the crack between its outermost
-// supports, the head at its mouth falling linearly to zero, effective area 1, whatever the scene's
-// uplift rule and area factor) and no seismic load. Nothing when the block does not rest on its
-// ground at that pose. The scene must be valid and have a reservoir.
-std::optional<SafetyFactors> post_earthquake_safety_factors(const Scene& scene,
-                                                            const BlockState& final_pose);
+// held where it was held at rest (its supports and crack carried with it: a block back in its seat,
+// or displaced by a slide small next to the block), under its reservoir with full uplift over its
+// crack (the head at the mouth falling linearly to zero, effective area 1, whatever the scene's
+// uplift rule and area factor) and no seismic load. The scene must be valid and have a reservoir.
+SafetyFactors post_earthquake_safety_factors(const Scene& scene, const BlockState& final_pose);
+
+// The summary's post-earthquake check of a run that ended at `final_pose`; `standing_at_rest`: the
+// run succeeded and the block neither overturned nor fell, and rests at the end.
+PostEarthquakeCheck post_earthquake_check(const Scene& scene, const BlockState& final_pose,
+                                          bool standing_at_rest);
 
 }  // namespace blockfrag
