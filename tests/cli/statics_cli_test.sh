@@ -2,7 +2,9 @@
 # `blockfrag statics` end to end: the type A block with the water at the crest and at 5 m freeboard
 # against hand computations (hydrostatic 1/2 rho g d^2, uplift 1/2 rho g d B, Westergaard's
 # (7/12) rho sqrt(H) d^(3/2), the yield accelerations' closed forms and the pseudo-static factors
-# of engine/water/block_statics.hpp), a dry block's keys with zero water, the report, and bad input:
+# of engine/water/block_statics.hpp), the type B block's folded crack against its hand integral,
+# both wet configs simulated with the post-earthquake keys in their summaries (and none in a dry
+# one's), a dry block's keys with zero water, the report, and bad input:
 # a bad scene and a bad --coefficient exit 2 with the reason on stderr and nothing on stdout. Prints
 # "N passed, M failed" last; exits non-zero on any failure.
 set -u
@@ -51,6 +53,40 @@ assert math.isclose(out["hydrostatic_force_N"][0], P, rel_tol=1e-12) and out["hy
 assert out["uplift_horizontal_force_N"] == 0 and out["coefficient"] == 0.1
 PY
 done
+
+# --- The type B block on its folded seat, wet: the crack's horizontal push ---------------------------
+run statics "$BLOCKFRAG_SOURCE_DIR/configs/dam_block_type_b_reservoir.json" --summary-json
+check "type B statics exits 0" test "$code" -eq 0
+check "type B's folded crack pushes it upstream as the hand integral says" "$PYTHON" - "$work/out" <<'PY'
+import json, math, sys
+out = json.loads(open(sys.argv[1]).read())
+# Head 21.7 m at the heel, p(s) = rho g h (1 - s/S) along the base (L1 = 703/120 m) and the incline
+# (8.333 m, slope (0.8, 0.6), pressing along (-0.6, 0.8)).
+p = 1000.0 * 9.81 * 21.7
+L1 = 703 / 120
+L2 = math.hypot(12.525 - L1, 5.0)
+S = L1 + L2
+base, incline = p * (L1 - L1 * L1 / (2 * S)), p * L2 * L2 / (2 * S)
+assert math.isclose(out["uplift_horizontal_force_N"], -0.6 * incline, rel_tol=1e-12), out
+assert math.isclose(out["uplift_force_N"], base + 0.8 * incline, rel_tol=1e-12), out
+assert math.isclose(out["hydrostatic_force_N"][0], 0.5 * p * 21.7, rel_tol=1e-12), out
+PY
+
+# --- Both wet configs simulate, their summaries with the post-earthquake keys -------------------------
+for block in a b; do
+  run simulate "$BLOCKFRAG_SOURCE_DIR/configs/dam_block_type_${block}_reservoir.json" --summary-json
+  check "type $block with its reservoir simulates (got $code)" test "$code" -eq 0
+  check "type $block's summary has the post-earthquake keys" "$PYTHON" -c '
+import json, sys
+summary = json.loads(open(sys.argv[1]).read())
+assert "post_earthquake_sliding_safety_factor" in summary and "post_earthquake_overturning_safety_factor" in summary
+' "$work/out"
+done
+run simulate "$dry" --summary-json
+check "a dry scene's summary has no post-earthquake keys" "$PYTHON" -c '
+import json, sys
+assert "post_earthquake_sliding_safety_factor" not in json.loads(open(sys.argv[1]).read())
+' "$work/out"
 
 # --- Dry: the same keys, zero water; the yields are mu and the tip thresholds -----------------------
 run statics "$dry" --summary-json
