@@ -5,6 +5,8 @@
 //    "duration": 4.0,
 //    "solver": {"method": "adaptive", "tolerance": 1e-8, "max_steps": ..., "max_events": ...},
 //    "g": 9.81, "initial": {"theta": 0.0}}
+// and optionally "reservoir" (mpi_driver/config/reservoir_json.hpp), "dam", "seat",
+// "vertical_motion", "effects".
 // block, contact, ground_motion and duration are required; everything else has the defaults of
 // engine/scene/scene.hpp. Ground motion types: "none"; "cosine_pulse" and "sine_pulse"
 // (amplitude_g, period, optional cycles); "rectangular_pulse" (amplitude_g, duration); "record"

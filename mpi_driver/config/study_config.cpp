@@ -12,6 +12,7 @@
 #include "engine/motion/intensity_measures.hpp"
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/parameter_domains.hpp"
+#include "engine/scene/seat.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/output_name.hpp"
@@ -32,7 +33,8 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr StudyInput all_inputs[] = {
     StudyInput::friction,   StudyInput::restitution, StudyInput::rocking_restitution,
     StudyInput::half_width, StudyInput::half_height, StudyInput::alpha,
-    StudyInput::R,          StudyInput::period,      StudyInput::direction};
+    StudyInput::R,          StudyInput::period,      StudyInput::reservoir_level,
+    StudyInput::direction};
 
 // The domain every sample of an input must stay within: the scene parameter's it sets.
 const Domain& input_domain(StudyInput input) {
@@ -45,6 +47,7 @@ const Domain& input_domain(StudyInput input) {
     case StudyInput::R: return domain::block_length;
     case StudyInput::alpha: return domain::alpha;
     case StudyInput::period: return domain::pulse_period;
+    case StudyInput::reservoir_level: return domain::reservoir_level;
     case StudyInput::direction: break;
   }
   throw ContractViolation("a random sign has no domain");
@@ -151,6 +154,28 @@ const char* fixed_geometry(const Scene& base) {
   return nullptr;
 }
 
+// A pool level needs a reservoir to set, at least as deep as the water any level puts against the
+// block.
+void check_reservoir_level(ObjectReader& reader, const Scene& base, const StudyConfig& config) {
+  if (!base.reservoir) {
+    reader.add_error("reservoir_level",
+                     "sets the reservoir's level, but /scene has no reservoir: give one");
+    return;
+  }
+  for (const auto& spec : config.inputs) {
+    if (spec.input != StudyInput::reservoir_level) continue;
+    const double highest = support_of(spec.distribution).second;
+    const double wetted = highest - lowest_block_y(base);
+    if (!(base.reservoir->depth >= wetted)) {
+      reader.add_error("reservoir_level", "reaches " + format_number(highest) + ", which puts " +
+                                              format_number(wetted) +
+                                              " m of water against the block, more than "
+                                              "/scene/reservoir/depth (" +
+                                              format_number(base.reservoir->depth) + " m)");
+    }
+  }
+}
+
 void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, StudyConfig& config) {
   for (const StudyInput input : all_inputs) {
     const std::string key = input_key(input);
@@ -201,6 +226,7 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
   if (has(StudyInput::period) && !periodic) {
     reader.add_error("period", "needs a cosine_pulse or sine_pulse in /scene/ground_motion");
   }
+  if (has(StudyInput::reservoir_level)) check_reservoir_level(reader, base, config);
   if (has(StudyInput::direction) && !has_motion) {
     reader.add_error("direction",
                      "needs a ground motion in /scene/ground_motion (its type is \"none\")");
@@ -223,7 +249,8 @@ bool valid_limit_state_name(const std::string& name) {
 
 namespace {
 
-void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& config) {
+void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& config,
+                       bool scene_valid) {
   if (array.valid() && array.size() == 0)
     root.add_error("limit_states", "must name at least one limit state");
   for (std::size_t k = 0; k < array.size(); ++k) {
@@ -241,14 +268,22 @@ void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& confi
       if (name && other.name == *name)
         reader.add_error("name", "\"" + *name + "\" is used by another limit state");
     }
-    const auto type =
-        reader.required_choice("type", {"overturning", "max_rotation", "residual_slide"});
+    const auto type = reader.required_choice(
+        "type", {"overturning", "max_rotation", "residual_slide", "post_earthquake_unstable"});
     if (type == "max_rotation") {
       state.kind = LimitStateKind::max_rotation;
       state.threshold = reader.required_number("theta_over_alpha", positive).value_or(0.0);
     } else if (type == "residual_slide") {
       state.kind = LimitStateKind::residual_slide;
       state.threshold = reader.required_number("threshold_m", positive).value_or(0.0);
+    } else if (type == "post_earthquake_unstable") {
+      state.kind = LimitStateKind::post_earthquake_unstable;
+      state.threshold = reader.number_or("threshold", 1.0, positive);
+      if (scene_valid && !config.base_scene.reservoir) {
+        reader.add_error("type",
+                         "\"post_earthquake_unstable\" needs a reservoir in /scene (the safety "
+                         "factors after the earthquake are the reservoir's)");
+      }
     }
     if (type != "overturning") {
       state.overturned_exceeds = reader.boolean_or("overturned_exceeds", true);
@@ -265,6 +300,7 @@ json limit_state_to_json(const LimitState& state) {
   json out = {{"name", state.name}, {"type", limit_state_kind_name(state.kind)}};
   if (state.kind == LimitStateKind::max_rotation) out["theta_over_alpha"] = state.threshold;
   if (state.kind == LimitStateKind::residual_slide) out["threshold_m"] = state.threshold;
+  if (state.kind == LimitStateKind::post_earthquake_unstable) out["threshold"] = state.threshold;
   if (state.kind != LimitStateKind::overturning)
     out["overturned_exceeds"] = state.overturned_exceeds;
   return out;
@@ -432,6 +468,7 @@ const char* input_key(StudyInput input) {
     case StudyInput::alpha: return "alpha";
     case StudyInput::R: return "R";
     case StudyInput::period: return "period";
+    case StudyInput::reservoir_level: return "reservoir_level";
     case StudyInput::direction: return "direction";
   }
   return "";
@@ -442,6 +479,7 @@ const char* limit_state_kind_name(LimitStateKind kind) {
     case LimitStateKind::overturning: return "overturning";
     case LimitStateKind::max_rotation: return "max_rotation";
     case LimitStateKind::residual_slide: return "residual_slide";
+    case LimitStateKind::post_earthquake_unstable: return "post_earthquake_unstable";
   }
   return "";
 }
@@ -516,7 +554,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
                           : std::optional<std::string>("monte_carlo");
     config.design = name == "latin_hypercube" ? Design::latin_hypercube : Design::monte_carlo;
   }
-  read_limit_states(root.required_array("limit_states"), root, config);
+  read_limit_states(root.required_array("limit_states"), root, config, scene_valid);
   if (config.adaptive) check_adaptive(root, config);
   if (config.intensity.surface()) check_surface(root, config, scene_valid);
   config.seed =

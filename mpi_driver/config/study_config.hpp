@@ -10,7 +10,8 @@
 //    "design": "monte_carlo" | "latin_hypercube" | {"adaptive": {...}},
 //    "limit_states": [{"name": "overturn", "type": "overturning"},
 //                     {"name": "...", "type": "max_rotation", "theta_over_alpha": 0.5},
-//                     {"name": "...", "type": "residual_slide", "threshold_m": 0.05}],
+//                     {"name": "...", "type": "residual_slide", "threshold_m": 0.05},
+//                     {"name": "...", "type": "post_earthquake_unstable", "threshold": 1.0}],
 //    "seed": 1, "output": "study.h5", "checkpoint_interval_s": 60}
 // Each input's distribution must lie inside its parameter's domain
 // (engine/scene/parameter_domains.hpp) or be truncated to it; the direction input (default +1)
@@ -54,11 +55,13 @@ enum class StudyInput {
   alpha,
   R,
   period,
+  reservoir_level,
   direction
 };
 
 // The config key (and the /samples column name) of an input: the enumerator's name ("friction",
-// "rocking_restitution", "half_width", "alpha", "R", "period" (s, as in the scene), "direction").
+// "rocking_restitution", "half_width", "alpha", "R", "period" (s, as in the scene),
+// "reservoir_level" (m, the scene's reservoir's level), "direction").
 const char* input_key(StudyInput input);
 
 struct StudyInputSpec {
@@ -75,6 +78,9 @@ enum class LimitStateKind {
   overturning,     // the block overturned
   max_rotation,    // max |theta| / alpha > threshold, or overturned
   residual_slide,  // |final_slide| > threshold (m)
+  // stands, but its post-earthquake safety factor (the smaller of sliding and overturning) is below
+  // threshold (default 1)
+  post_earthquake_unstable,
 };
 
 struct LimitState {

@@ -181,6 +181,9 @@ std::string limit_state_description(const FragilityFit& fit) {
   std::string text = fit.type;
   if (fit.type == "max_rotation") text = "max |theta| > " + exact_number(fit.threshold) + " alpha";
   if (fit.type == "residual_slide") text = "residual slide > " + exact_number(fit.threshold) + " m";
+  if (fit.type == "post_earthquake_unstable") {
+    text = "post-earthquake safety factor < " + exact_number(fit.threshold);
+  }
   return fit.overturned_exceeds ? text + ", or overturned" : text;
 }
 

@@ -159,7 +159,8 @@ FragilityFit read_fit(const FitsReader& reader, const std::string& name) {
   FragilityFit fit;
   fit.name = name;
   fit.type = reader.text(group, "type", max_word);
-  if (fit.type != "overturning" && fit.type != "max_rotation" && fit.type != "residual_slide") {
+  if (fit.type != "overturning" && fit.type != "max_rotation" && fit.type != "residual_slide" &&
+      fit.type != "post_earthquake_unstable") {
     throw reader.malformed(group + " has an unknown type \"" + printable_excerpt(fit.type) + "\"");
   }
   fit.threshold = reader.number(group, "threshold");

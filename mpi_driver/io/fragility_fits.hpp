@@ -14,9 +14,9 @@
 // Nothing is trusted: every member of /fragility is a limit state name by the study's rule, every
 // text read is printable ASCII of a bounded length, config_hash is 16 hexadecimal digits, im holds
 // at most a study's number of levels (checked before it is read), each finite and > 0, a
-// max_rotation's or residual_slide's threshold is finite and > 0, and a fit with status "ok" has a
-// median in [1e-6, 1e6] (the measure's unit) and a beta in [1e-6, 10]. Objects are reached through
-// hard links only (hdf5_reader.hpp).
+// a threshold (max_rotation's, residual_slide's, post_earthquake_unstable's) is finite and > 0, and
+// a fit with status "ok" has a median in [1e-6, 1e6] (the measure's unit) and a beta in [1e-6, 10].
+// Objects are reached through hard links only (hdf5_reader.hpp).
 #pragma once
 
 #include <filesystem>
@@ -30,8 +30,11 @@ namespace blockfrag {
 
 struct FragilityFit {
   std::string name;
-  std::string type;               // "overturning", "max_rotation", "residual_slide"
-  double threshold = 0.0;         // theta/alpha for max_rotation, m for residual_slide
+  // "overturning", "max_rotation", "residual_slide", "post_earthquake_unstable"
+  std::string type;
+  // theta/alpha for max_rotation, m for residual_slide, the safety factor for
+  // post_earthquake_unstable
+  double threshold = 0.0;
   double median = 0.0;            // in the measure's unit; NaN without a fit
   double beta = 0.0;              // the logarithmic standard deviation; NaN without a fit
   std::string fit_status;         // "ok" when the fit exists, otherwise why not

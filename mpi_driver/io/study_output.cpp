@@ -51,6 +51,9 @@ class SampleColumns {
                              "overturn_time", "settle_time", "fell_time"}) {
       file.create_column(std::string("/results/") + name, total, Type::float64);
     }
+    if (config_.base_scene.reservoir) {
+      file.create_column("/results/post_earthquake_safety_factor", total, Type::float64);
+    }
     file.set_attribute(
         "/results/status", "meaning",
         std::string("0 ok, 1 failed (engine budget exceeded), 2 rejected (invalid scene)"));
@@ -106,6 +109,10 @@ class SampleColumns {
     write_field(file, "settle_time", first, records, &SampleRecord::settle_time);
     write_field(file, "fell", first, records, &SampleRecord::fell);
     write_field(file, "fell_time", first, records, &SampleRecord::fell_time);
+    if (config_.base_scene.reservoir) {
+      write_field(file, "post_earthquake_safety_factor", first, records,
+                  &SampleRecord::post_earthquake_safety_factor);
+    }
   }
 
  private:

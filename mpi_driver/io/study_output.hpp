@@ -10,7 +10,7 @@
 //                (sa_g with an Sa measure)
 //   /results     status, overturned, impacts, steps, rhs_evaluations, max_abs_theta, final_theta,
 //                final_slide, max_abs_slide, overturn_time, settled, settle_time, fell,
-//                fell_time: what it did
+//                fell_time, and with a reservoir post_earthquake_safety_factor: what it did
 //   /fragility   attributes of the measure, severity_order and crossing_pairs; one group per
 //                limit state with its points (im, trials, exceedances, probability, ci_low,
 //                ci_high), its fit and the fit's diagnostics as attributes, and the bootstrap's

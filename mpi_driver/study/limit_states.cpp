@@ -17,6 +17,9 @@ bool exceeds(const LimitState& state, const SampleRecord& record, double alpha) 
     case LimitStateKind::overturning: return lost;
     case LimitStateKind::max_rotation: return record.max_abs_theta / alpha > state.threshold;
     case LimitStateKind::residual_slide: return std::abs(record.final_slide) > state.threshold;
+    // NaN (no factor: the block does not stand at rest at the end) compares false.
+    case LimitStateKind::post_earthquake_unstable:
+      return record.post_earthquake_safety_factor < state.threshold;
   }
   return false;
 }

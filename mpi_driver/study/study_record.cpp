@@ -1,5 +1,7 @@
 #include "mpi_driver/study/study_record.hpp"
 
+#include <algorithm>
+
 namespace blockfrag {
 
 SampleRecord make_record(std::int64_t index, const Summary& summary) {
@@ -20,6 +22,11 @@ SampleRecord make_record(std::int64_t index, const Summary& summary) {
   if (summary.settle_time) record.settle_time = *summary.settle_time;
   record.fell = summary.fell ? 1 : 0;
   if (summary.fell_time) record.fell_time = *summary.fell_time;
+  if (summary.post_earthquake && summary.post_earthquake->sliding_safety_factor) {
+    record.post_earthquake_safety_factor =
+        std::min(*summary.post_earthquake->sliding_safety_factor,
+                 *summary.post_earthquake->overturning_safety_factor);
+  }
   return record;
 }
 

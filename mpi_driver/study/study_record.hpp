@@ -34,9 +34,13 @@ struct SampleRecord {
   double settle_time = std::numeric_limits<double>::quiet_NaN();  // NaN when not settled
   std::int64_t fell = 0;  // went off a seat's end (never on the flat ground)
   double fell_time = std::numeric_limits<double>::quiet_NaN();  // NaN when it did not fall
+  // With a reservoir, the smaller of the post-earthquake sliding and overturning safety factors
+  // (engine/summary.hpp; +inf when nothing drives it); NaN without a reservoir or when the block
+  // does not stand at rest at the end.
+  double post_earthquake_safety_factor = std::numeric_limits<double>::quiet_NaN();
 };
 static_assert(std::is_trivially_copyable_v<SampleRecord>);
-static_assert(sizeof(SampleRecord) == 15 * 8, "records travel as raw bytes: no padding allowed");
+static_assert(sizeof(SampleRecord) == 16 * 8, "records travel as raw bytes: no padding allowed");
 
 SampleRecord make_record(std::int64_t index, const Summary& summary);
 SampleRecord make_rejected_record(std::int64_t index);

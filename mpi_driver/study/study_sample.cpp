@@ -82,6 +82,7 @@ Scene apply_sample(const StudyConfig& config, const std::vector<double>& values,
       case StudyInput::alpha: alpha = value; break;
       case StudyInput::R: radius = value; break;
       case StudyInput::period: period = &values[k]; break;
+      case StudyInput::reservoir_level: scene.reservoir->level = value; break;
       case StudyInput::direction: break;
     }
   }

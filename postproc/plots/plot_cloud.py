@@ -105,6 +105,8 @@ def read_samples(path):
             "max_abs_theta": column(file, path, "/results/max_abs_theta", n),
             "overturned": column(file, path, "/results/overturned", n) != 0,
             "final_slide": column(file, path, "/results/final_slide", n) if "/results/final_slide" in file else None,
+            "post_earthquake_safety_factor": column(file, path, "/results/post_earthquake_safety_factor", n)
+            if "/results/post_earthquake_safety_factor" in file else None,
             "status": column(file, path, "/results/status", n) if "/results/status" in file else np.zeros(n),
         }
         data["alpha"] = sample_alphas(file, path, n)
@@ -187,6 +189,13 @@ def verdicts(data, limit_state):
             raise InputError("the file has no /results/final_slide for a residual_slide limit state")
         exceeded = np.abs(data["final_slide"]) > threshold
         what = f"residual slide > {threshold:g} m"
+    elif kind == "post_earthquake_unstable":
+        if data["post_earthquake_safety_factor"] is None:
+            raise InputError("the file has no /results/post_earthquake_safety_factor for a "
+                             "post_earthquake_unstable limit state")
+        with np.errstate(invalid="ignore"):  # NaN: no factor (not standing at rest), not counted
+            exceeded = data["post_earthquake_safety_factor"] < threshold
+        what = f"post-earthquake safety factor < {threshold:g}"
     else:
         raise InputError(f"limit state {name} has a type this script does not know: {kind}")
     if overturned_exceeds and kind != "overturning":

@@ -168,6 +168,8 @@ def describe(state):
         return f"max |θ|/α > {threshold:g}"
     if kind == "residual_slide" and math.isfinite(threshold):
         return f"residual slide > {threshold:g} m"
+    if kind == "post_earthquake_unstable" and math.isfinite(threshold):
+        return f"post-earthquake safety factor < {threshold:g}"
     return kind
 
 

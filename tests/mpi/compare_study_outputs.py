@@ -7,7 +7,8 @@ Also checks that each file's sample columns cover every sample exactly once (the
 i // samples_per_level for i = 0..total-1), so a missing or duplicated sample cannot pass, and that
 the limit states nest: at every level of a stripe study, each limit state an overturned block
 exceeds (overturned_exceeds 1) counts at least the level's overturned samples, so P(any limit
-state) >= P(overturning); a residual slide's counts are recounted from /results. A surface
+state) >= P(overturning); a residual slide's and a post-earthquake instability's counts are
+recounted from /results. A surface
 study's grid counts are recounted from /results per cell, and sum to /fragility's per level.
 """
 import sys
@@ -66,6 +67,9 @@ def exceeded(f, group):
         return overturned
     if group.attrs["type"] == "residual_slide":
         raw = ok & (np.abs(f["results/final_slide"][()]) > group.attrs["threshold"])
+    elif group.attrs["type"] == "post_earthquake_unstable":
+        with np.errstate(invalid="ignore"):
+            raw = ok & (f["results/post_earthquake_safety_factor"][()] < group.attrs["threshold"])
     else:
         return None  # a rotation limit needs each sample's alpha: not recounted here
     return raw | overturned if nested else raw
@@ -115,6 +119,13 @@ def check_nested(path, f):
             if not np.array_equal(exceedances, count(slid | overturned if nested else slid)):
                 sys.exit(f"{path}: /fragility/{name}: exceedances are not the samples whose "
                          "|final_slide| exceeds the threshold" + (" or that overturned" if nested else ""))
+        if group.attrs["type"] == "post_earthquake_unstable":
+            with np.errstate(invalid="ignore"):
+                unstable = ok & (f["results/post_earthquake_safety_factor"][()] < group.attrs["threshold"])
+            if not np.array_equal(exceedances, count(unstable | overturned if nested else unstable)):
+                sys.exit(f"{path}: /fragility/{name}: exceedances are not the samples whose "
+                         "post-earthquake safety factor is below the threshold" +
+                         (" or that overturned" if nested else ""))
 
 def main():
     reference_path, others = sys.argv[1], sys.argv[2:]

@@ -15,9 +15,10 @@ write_study() {
   cat >"$1" <<JSON
 {
   "scene": {
-    "block": {"half_width": 0.5, "half_height": 1.0},
+    "block": {"half_width": 0.5, "half_height": 1.0, "mass": 4800},
     "contact": {"friction": 0.7, "restitution": 0.7},
     "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 1.0},
+    "reservoir": {"level": 0.0, "depth": 100.0},
     "duration": 2.0
   },
   "inputs": {
@@ -25,6 +26,7 @@ write_study() {
     "restitution": {"distribution": "normal", "mean": 0.75, "std_dev": 0.1, "lower": 0.0, "upper": 1.0},
     "half_width": {"distribution": "lognormal", "median": 0.5, "beta": 0.1, "lower": 0.2, "upper": 1.2},
     "period": {"distribution": "lognormal", "median": 0.8, "beta": 0.3, "lower": 0.3, "upper": 2.0},
+    "reservoir_level": {"distribution": "uniform", "min": -1.5, "max": 0.5},
     "direction": {"distribution": "random_sign"}
   },
   "intensity_measure": {"from": 0.3, "to": 1.8, "count": 6},
@@ -33,7 +35,8 @@ write_study() {
   "limit_states": [
     {"name": "overturn", "type": "overturning"},
     {"name": "rock_half", "type": "max_rotation", "theta_over_alpha": 0.5},
-    {"name": "slide_2cm", "type": "residual_slide", "threshold_m": 0.02}
+    {"name": "slide_2cm", "type": "residual_slide", "threshold_m": 0.02},
+    {"name": "unstable_after", "type": "post_earthquake_unstable", "threshold": 2.5}
   ],
   "seed": 1234,
   "output": "unused.h5",
