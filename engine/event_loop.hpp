@@ -37,6 +37,7 @@
 #include "engine/segment_observer.hpp"
 #include "engine/simulate.hpp"
 #include "engine/tolerances.hpp"
+#include "engine/water/block_statics.hpp"
 
 namespace blockfrag {
 
@@ -159,6 +160,11 @@ void EventLoop<Ground>::finish() {
   }
   summary_.final_theta = state_.theta;
   summary_.final_slide = state_.x - observer_.x0();
+  if (scene_.reservoir) {
+    const bool standing = summary_.status == Status::ok && !summary_.overturned && !summary_.fell &&
+                          self().mode_kind_now() == ModeKind::rest;
+    summary_.post_earthquake = post_earthquake_check(scene_, state_, standing);
+  }
   self().finish_summary();
   observer_.finish(t_, state_, self().forces_now(), self().mode_kind_now());
 }

@@ -27,6 +27,15 @@ const char* model_name(Model model);
 // The effects the model simulates, e.g. {"rocking", "impact"}.
 std::vector<const char*> model_effects(Model model);
 
+// A scene with a reservoir: the block's static safety factors after the earthquake, at its final
+// pose under full uplift over its crack (engine/water/block_statics.hpp); none when the block does
+// not stand at rest at the end (it overturned, fell, failed, or still moves when a fixed duration
+// ends); +inf when nothing drives it.
+struct PostEarthquakeCheck {
+  std::optional<double> sliding_safety_factor;
+  std::optional<double> overturning_safety_factor;
+};
+
 struct Summary {
   Status status = Status::ok;
   std::string status_reason;  // empty when ok
@@ -69,6 +78,7 @@ struct Summary {
   // ground leave the other that far under.
   double max_penetration = 0.0;
   long painleve_events = 0;  // jams resolved by a tangential impulse, singular points passed
+  std::optional<PostEarthquakeCheck> post_earthquake;  // with a reservoir only
 };
 
 // One impact event (all the corner impulses of one instant), for the history's impact log.

@@ -101,6 +101,17 @@ inline constexpr Domain participation{0.0, 100.0, false, true, ""};
 inline constexpr Domain dam_period_ratio{1.0, 10.0, true, true, ""};
 inline constexpr Domain dam_added_damping{0.0, 1.0, true, false, ""};
 
+// --- The reservoir -------------------------------------------------------------------------------
+// The water surface's y, in the frame of the block's vertices: as a polygon's coordinates.
+inline constexpr Domain reservoir_level = polygon_coordinate;
+// The reservoir's depth at the dam (Westergaard's H): a pond to ten times the highest dam.
+inline constexpr Domain reservoir_depth{0.0, 1e4, false, true, "m"};
+// Fresh water is 1000 kg/m^3, a silt-laden reservoir a few percent more: anything up to a heavy
+// slurry's ten times.
+inline constexpr Domain water_density{0.0, 1e4, false, true, "kg/m^3"};
+// CADAM3D's uplift effective area: the fraction of the crack the pressure acts on.
+inline constexpr Domain uplift_area_factor{0.0, 1.0, true, true, ""};
+
 // --- The run -------------------------------------------------------------------------------------
 // A scene's duration: up to about 28 hours of motion.
 inline constexpr Domain duration{0.0, 1e5, false, true, "s"};

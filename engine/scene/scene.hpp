@@ -10,6 +10,7 @@
 
 #include "engine/motion/accelerogram.hpp"
 #include "engine/motion/near_fault_pulses.hpp"
+#include "engine/scene/reservoir.hpp"
 
 namespace blockfrag {
 
@@ -141,7 +142,8 @@ struct Scene {
   // The ground's upward acceleration is lambda_v(t) g: gravity in the ground's frame is
   // g (1 + lambda_v), and the block leaves the ground when the ground falls faster than g.
   GroundMotion vertical_motion = NoMotion{};
-  std::optional<DamCrest> dam;  // none: the block stands on the foundation
+  std::optional<DamCrest> dam;         // none: the block stands on the foundation
+  std::optional<Reservoir> reservoir;  // none: no water (engine/scene/reservoir.hpp)
   // The simulated time, s. None: the run goes on until the block has settled (every excitation,
   // the dam crest's ringing included, has ended and the block is at rest on its base, or it has
   // overturned), and stops unsettled at max_duration.

@@ -178,6 +178,23 @@ void validate_dam(const DamCrest& dam) {
   require(dam_mode(dam).damping < 1.0, "dam damping with its reservoir and foundation must be < 1");
 }
 
+// The reservoir must be at least as deep as the water against the block at rest: Westergaard's
+// pressure is a reservoir's of depth H, whose bottom is not above the block's base.
+void validate_reservoir(const Scene& scene) {
+  const Reservoir& water = *scene.reservoir;
+  require_in(domain::reservoir_level, water.level, "reservoir level");
+  require_in(domain::reservoir_depth, water.depth, "reservoir depth");
+  require_in(domain::water_density, water.density, "reservoir density");
+  require_in(domain::uplift_area_factor, water.uplift_area_factor, "reservoir uplift_area_factor");
+  const double wetted = water.level - lowest_block_y(scene);
+  if (!(water.depth >= wetted)) {
+    refuse(
+        "reservoir depth must be >= the water's depth at the block, level minus the block's "
+        "lowest y (" +
+        format_number(wetted) + " m) (got " + format_number(water.depth) + ")");
+  }
+}
+
 void validate_solver(const SolverSettings& solver, std::optional<double> longest_run) {
   require_in(domain::rk4_step, solver.dt, "solver dt");
   require(solver.method != Method::rk4 || !longest_run ||
@@ -208,6 +225,7 @@ void validate_scene(const Scene& scene) {
   validate_motion(scene.ground_motion);
   validate_motion(scene.vertical_motion);
   if (scene.dam) validate_dam(*scene.dam);
+  if (scene.reservoir) validate_reservoir(scene);
 }
 
 }  // namespace blockfrag

@@ -290,4 +290,11 @@ std::vector<Vertex> scene_block_vertices(const Scene& scene) {
   return {{-a, -b}, {a, -b}, {a, b}, {-a, b}};
 }
 
+double lowest_block_y(const Scene& scene) {
+  if (!scene.polygon) return -scene.block.half_height;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Vertex& v : scene.polygon->vertices) lowest = std::min(lowest, v[1]);
+  return lowest;
+}
+
 }  // namespace blockfrag

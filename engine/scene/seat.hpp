@@ -76,5 +76,7 @@ std::optional<std::string> tilt_defect(const std::vector<Vertex>& seat,
 // The scene's block as vertices in its own frame: the polygon, or the rectangle's corners about
 // its centre, counter-clockwise from the base's left end.
 std::vector<Vertex> scene_block_vertices(const Scene& scene);
+// The lowest y of those vertices: the flat ground's height in that frame.
+double lowest_block_y(const Scene& scene);
 
 }  // namespace blockfrag

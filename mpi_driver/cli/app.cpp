@@ -20,6 +20,7 @@
 #include "mpi_driver/cli/run_command.hpp"
 #include "mpi_driver/cli/simulate_command.hpp"
 #include "mpi_driver/cli/spectrum_command.hpp"
+#include "mpi_driver/cli/statics_command.hpp"
 
 namespace blockfrag {
 
@@ -68,6 +69,42 @@ void add_simulate_command(CLI::App& app, std::function<int()>& command) {
       ->needs(history);
   simulate->callback(
       [options, &command] { command = [options] { return run_simulate(*options, std::cout); }; });
+}
+
+// A finite number >= 0.
+CLI::Validator non_negative_finite_number(const std::string& name) {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          const double x = std::stod(text, &used);
+          if (used == text.size() && std::isfinite(x) && x >= 0) return {};
+        } catch (const std::exception&) {
+        }
+        return "must be a number >= 0 (got " + text + ")";
+      },
+      name);
+}
+
+void add_statics_command(CLI::App& app, std::function<int()>& command) {
+  auto options = std::make_shared<StaticsOptions>();
+  auto coefficient = std::make_shared<double>(0.0);
+  CLI::App* statics = app.add_subcommand(
+      "statics",
+      "The block at rest under its reservoir: loads, yield accelerations, safety factors");
+  statics->add_option("scene", options->scene_path, "Scene file (JSON)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  auto* given = statics
+                    ->add_option("--coefficient", *coefficient,
+                                 "Seismic coefficient K: also the pseudo-static safety factors")
+                    ->check(non_negative_finite_number("K"));
+  statics->add_flag("--summary-json", options->summary_json,
+                    "Print exactly one JSON object on stdout, nothing else");
+  statics->callback([options, coefficient, given, &command] {
+    if (given->count() > 0) options->coefficient = *coefficient;
+    command = [options] { return run_statics(*options, std::cout); };
+  });
 }
 
 void add_run_command(CLI::App& app, std::function<int()>& command,
@@ -252,6 +289,7 @@ void add_spectrum_command(CLI::App& app, std::function<int()>& command,
 void add_subcommands(CLI::App& app, std::function<int()>& command,
                      const AtomicWriteHooks& checkpoint_hooks) {
   add_simulate_command(app, command);
+  add_statics_command(app, command);
   add_run_command(app, command, checkpoint_hooks);
   add_accuracy_command(app, command);
   add_bench_command(app, command);

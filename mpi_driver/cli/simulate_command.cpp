@@ -75,8 +75,19 @@ void write_simulate_report(std::ostream& out, const Scene& scene, const Summary&
   }
   if (summary.modes.size() > modes_shown)
     out << " ... and " << summary.modes.size() - modes_shown << " more";
-  out << "\n"
-      << "end time: " << fixed(summary.end_time) << " s; " << summary.steps << " steps, "
+  out << "\n";
+  if (summary.post_earthquake) {
+    const auto factor = [](const std::optional<double>& f) {
+      return f ? (std::isinf(*f) ? std::string("infinite") : fixed(*f)) : std::string("none");
+    };
+    out << "after the earthquake (full uplift): sliding safety factor "
+        << factor(summary.post_earthquake->sliding_safety_factor) << ", overturning safety factor "
+        << factor(summary.post_earthquake->overturning_safety_factor)
+        << (summary.post_earthquake->sliding_safety_factor ? ""
+                                                           : " (the block does not stand at rest)")
+        << "\n";
+  }
+  out << "end time: " << fixed(summary.end_time) << " s; " << summary.steps << " steps, "
       << summary.rhs_evaluations << " right-hand-side evaluations, " << summary.events
       << " events\n";
 }

@@ -16,6 +16,7 @@
 #include "mpi_driver/config/polygon_json.hpp"
 #include "mpi_driver/config/pulse_json.hpp"
 #include "mpi_driver/config/record_file.hpp"
+#include "mpi_driver/config/reservoir_json.hpp"
 #include "mpi_driver/config/seat_json.hpp"
 #include "sampling/validation.hpp"  // format_number
 
@@ -295,6 +296,9 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
     errors.add(path / "effects", "lists \"vertical\" exactly when the scene has a vertical_motion");
   }
   scene.dam = read_dam(root.object("dam"));
+  scene.reservoir =
+      read_reservoir(root.object("reservoir"),
+                     block_valid ? std::optional<double>(lowest_block_y(scene)) : std::nullopt);
   // Without a duration the run settles (engine/scene/scene.hpp), at most max_duration.
   const auto duration = root.number("duration", Range::of(domain::duration));
   scene.duration = duration;
@@ -339,6 +343,7 @@ json scene_to_json(const Scene& scene) {
   if (scene.duration) out["duration"] = *scene.duration;
   if (scene.max_duration) out["max_duration"] = *scene.max_duration;
   if (scene.dam) out["dam"] = dam_to_json(*scene.dam);
+  if (scene.reservoir) out["reservoir"] = reservoir_to_json(*scene.reservoir);
   if (scene.seat) out["seat"] = scene.seat->points;
   if (!std::holds_alternative<NoMotion>(scene.vertical_motion)) {
     out["vertical_motion"] = ground_motion_to_json(scene.vertical_motion);

@@ -1,0 +1,31 @@
+#include "engine/water/block_outline.hpp"
+
+#include <algorithm>
+
+#include "engine/scene/polygon_properties.hpp"
+#include "engine/scene/seat.hpp"
+#include "engine/sine_cosine.hpp"
+
+namespace blockfrag {
+
+BlockOutline::BlockOutline(const Scene& scene) : rest_(scene_block_vertices(scene)) {
+  centre_ = polygon_properties(rest_).centroid;
+  bottom_ = rest_.front()[1];
+  for (const Vertex& v : rest_) {
+    body_.push_back({v[0] - centre_[0], v[1] - centre_[1]});
+    bottom_ = std::min(bottom_, v[1]);
+  }
+  offset_ = scene.seat ? Vertex{0.0, 0.0} : Vertex{centre_[0], bottom_};
+}
+
+void BlockOutline::place(const BlockState& s, WorldPolygon& out) const {
+  const SineCosine turn = sine_cosine(s.theta);
+  const Vertex c = centre(s);
+  out.resize(body_.size());
+  for (std::size_t i = 0; i < body_.size(); ++i) {
+    const Vertex& p = body_[i];
+    out[i] = {c[0] + p[0] * turn.cos - p[1] * turn.sin, c[1] + p[0] * turn.sin + p[1] * turn.cos};
+  }
+}
+
+}  // namespace blockfrag

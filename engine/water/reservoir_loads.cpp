@@ -1,0 +1,56 @@
+#include "engine/water/reservoir_loads.hpp"
+
+#include <algorithm>
+
+#include "engine/errors.hpp"
+#include "engine/scene/block_geometry.hpp"
+#include "engine/sine_cosine.hpp"
+#include "engine/tolerances.hpp"
+#include "engine/water/hydrostatic.hpp"
+
+namespace blockfrag {
+
+CrackPath rest_crack(const Scene& scene, const BlockOutline& outline) {
+  const double tolerance = kContactHeight * scene_geometry(scene).size();
+  const std::vector<Support> supports =
+      scene_supports(scene, outline.rest_bottom(), outline.rest(), tolerance);
+  if (supports.empty())
+    throw ContractViolation("rest_crack: the block does not rest on its ground");
+  return crack_under(outline.rest(), supports, tolerance);
+}
+
+ReservoirLoads::ReservoirLoads(const Scene& scene)
+    : reservoir_(scene.reservoir.value()), g_(scene.g), outline_(scene) {
+  crack_ = rest_crack(scene, outline_);
+  crack_length_ = crack_.length();
+  const double rest_head = std::max(0.0, reservoir_.level - crack_.points.front()[1]);
+  rest_mouth_pressure_ = reservoir_.uplift_area_factor * reservoir_.density * g_ * rest_head;
+  const Vertex centre = outline_.rest_centre();
+  for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
+}
+
+ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) const {
+  ReservoirLoadSet loads;
+  outline_.place(s, world_);
+  const Vertex centre = outline_.centre(s);
+  const StillWater water{reservoir_.level, reservoir_.density, g_};
+  loads.hydrostatic = hydrostatic_load(world_, water, crack_.edges, centre);
+  if (reservoir_.hydrodynamic == Hydrodynamic::westergaard) {
+    loads.added_mass = westergaard_added_mass(world_, reservoir_.level, reservoir_.density,
+                                              reservoir_.depth, crack_.edges, centre[1]);
+  }
+  if (reservoir_.uplift == UpliftRule::none) return loads;
+  const SineCosine turn = sine_cosine(s.theta);
+  place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
+  const double head = std::max(0.0, reservoir_.level - crack_world_.front()[1]);
+  const double full_head = reservoir_.density * g_ * head;
+  const double closed_mouth = reservoir_.uplift == UpliftRule::unchanged
+                                  ? rest_mouth_pressure_
+                                  : reservoir_.uplift_area_factor * full_head;
+  const CrackPressure pressure =
+      crack_pressure(reservoir_.uplift, crack_length_, closed_mouth, full_head, open);
+  loads.uplift = crack_pressure_load(crack_world_, pressure, centre);
+  return loads;
+}
+
+}  // namespace blockfrag

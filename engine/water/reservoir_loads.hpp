@@ -1,0 +1,65 @@
+// The reservoir's loads on the scene's block at any pose: what the dynamics add to the block's
+// equations of motion, evaluated in one call. Per metre of dam (the block is a slice of unit
+// thickness: its mass is per metre too), in the scene's frame (engine/scene/reservoir.hpp).
+//   hydrostatic: rho_w g (level - y) over the wetted upstream face at the pose
+//     (engine/water/hydrostatic.hpp);
+//   uplift: the crack's water under the scene's rule, the crack closed or opened as the caller
+//     says (engine/water/crack_pressure.hpp);
+//   added mass: Westergaard's on the wetted face, "westergaard" only
+//     (engine/water/westergaard.hpp).
+// The crack is the block's at rest (engine/water/crack_path.hpp): on the flat ground its base, on a
+// seat its outline between the outermost points where the seat holds it. It moves with the block:
+// the pressure acts on the block's own base, along its normals, whatever the pose.
+#pragma once
+
+#include <vector>
+
+#include "engine/scene/block_state.hpp"
+#include "engine/water/block_outline.hpp"
+#include "engine/water/crack_path.hpp"
+#include "engine/water/crack_pressure.hpp"
+#include "engine/water/westergaard.hpp"
+
+namespace blockfrag {
+
+struct ReservoirLoadSet {
+  WaterLoad hydrostatic;  // force and moment about the centre of mass
+  WaterLoad uplift;       // force and moment about the centre of mass
+  AddedMass added_mass;   // M_a, and S_a, I_a about the centre of mass's height
+};
+
+// Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
+class ReservoirLoads {
+ public:
+  // The scene must be valid and have a reservoir.
+  explicit ReservoirLoads(const Scene& scene);
+
+  // The water rises above the block's lowest point at rest: without that, every load is zero at
+  // rest and a scene is the dry scene's.
+  bool wets() const { return reservoir_.level > outline_.rest_bottom(); }
+  // The crack at rest about the centre of mass, unturned (its points), and the block's edges along
+  // it.
+  const CrackPath& crack() const { return crack_; }
+
+  // The loads at pose s (BlockState in the ground's frame: engine/water/block_outline.hpp), the
+  // crack's part [open.from, open.to] opened (closed at rest and sliding, whole when rocking about
+  // either end of the base or in flight). The head at the crack's mouth is the mouth's depth below
+  // the surface at the pose, but under "unchanged", which keeps the pre-earthquake head and
+  // pressure on the block.
+  ReservoirLoadSet at(const BlockState& s, CrackOpening open) const;
+
+ private:
+  Reservoir reservoir_;
+  double g_;
+  BlockOutline outline_;
+  CrackPath crack_;
+  double crack_length_;
+  double rest_mouth_pressure_;  // c rho_w g h at rest
+  mutable WorldPolygon world_;
+  mutable std::vector<Vertex> crack_world_;
+};
+
+// The crack of the scene's block at rest, in the scene's frame.
+CrackPath rest_crack(const Scene& scene, const BlockOutline& outline);
+
+}  // namespace blockfrag
