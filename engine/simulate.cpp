@@ -30,7 +30,8 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
       : EventLoop(scene, output_interval),
         model_(choose_model(scene, motion_, geometry_)),
         resolver_(geometry_, scene.contact, scene.g),
-        housner_(geometry_, scene.effects.automatic || scene.effects.impact, scene.g),
+        housner_(geometry_, scene.effects.automatic || scene.effects.impact, scene.g,
+                 scene.contact.rocking_restitution),
         newmark_(geometry_, scene.contact.friction, scene.g) {
     summary_.model = model_;
   }

@@ -7,6 +7,7 @@
 
 #include "engine/contact/contact_dynamics.hpp"
 #include "engine/contact/impact.hpp"
+#include "engine/contact/rocking_restitution.hpp"
 #include "engine/contact/settling.hpp"
 #include "engine/errors.hpp"
 #include "engine/tolerances.hpp"
@@ -55,6 +56,7 @@ ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& c
     : geometry_(geometry),
       mu_(contact.friction),
       e_(contact.restitution),
+      rocking_(contact.rocking_restitution),
       g_(g),
       height_tol_(kContactHeight * geometry.size()),
       velocity_tol_(resting_speed(g, geometry.size())) {}
@@ -170,6 +172,20 @@ bool ContactResolver::resolve_impacts(BlockState& s, double settle_velocity,
       lay_flat(s, settle_velocity);
       note_energy_change(before, kinetic_energy(velocity_of(s), M, I), out);
       return true;
+    }
+    if (rocking_ && flat && left_hits != right_hits) {
+      const std::size_t landing = left_hits ? 0 : 1;
+      if (const auto rocking = rocking_impact({{{kl.r, {0.0, 1.0}}, {kr.r, {0.0, 1.0}}},
+                                               landing,
+                                               velocity_of(s),
+                                               I,
+                                               mu_,
+                                               velocity_tol_,
+                                               *rocking_})) {
+        set_velocity(s, rocking->after);
+        note_energy_change(before, kinetic_energy(velocity_of(s), M, I), out);
+        continue;
+      }
     }
     // A bounce that would leave slower than the settling speed is one the rules above end at
     // its next landing: the landing is plastic at once.

@@ -3,6 +3,8 @@
 // stick/slip, lift-off, return to rest come out of the same consistency checks).
 #pragma once
 
+#include <optional>
+
 #include "engine/modes/modes.hpp"
 #include "engine/scene/block_state.hpp"
 #include "engine/scene/scene.hpp"
@@ -32,6 +34,7 @@ class ContactResolver {
  private:
   bool touches(const CornerKinematics& k) const { return k.height <= height_tol_; }
   // Impacts, one contact point at a time, until no corner approaches; false if it does not end.
+  // A rocking impact takes the scene's rocking restitution where it sets one.
   bool resolve_impacts(BlockState& s, double settle_velocity, ContactOutcome& out) const;
   bool flat_impact(BlockState& s, double e) const;
   void lay_flat(BlockState& s, double settle_velocity) const;
@@ -45,7 +48,9 @@ class ContactResolver {
                       bool from_flat) const;
 
   const BlockGeometry& geometry_;
-  double mu_, e_, g_;
+  double mu_, e_;
+  std::optional<RockingRestitution> rocking_;  // engine/contact/rocking_restitution.hpp
+  double g_;
   double height_tol_, velocity_tol_;
 };
 

@@ -12,6 +12,13 @@ namespace blockfrag {
 // Throws InvalidInput for a set of effects that names no model.
 Model model_named_by(const Effects& effects);
 
+// Whether the effects' model has the rocking impacts a rocking restitution sets: "auto", the full
+// model and Housner's with impact (Housner's without impact changes the pivot without loss, and
+// Newmark's never rocks).
+inline bool has_rocking_impacts(const Effects& effects) {
+  return effects.automatic || (effects.rocking && effects.impact);
+}
+
 // "auto" prunes only what is impossible:
 // - the ground never reaches friction or either tipping threshold: the block rests throughout;
 // - friction is below both tipping thresholds and below the flat-sliding limit (mu <= a/b for a

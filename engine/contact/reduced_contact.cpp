@@ -2,23 +2,34 @@
 
 #include <cmath>
 
+#include "engine/contact/rocking_restitution.hpp"
 #include "engine/contact/settling.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
 double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot) {
-  const Vec2 r_old = geometry.base_corner(old_pivot);
-  const Vec2 r_new = geometry.base_corner(other(old_pivot));
-  const double k2 = geometry.inertia_per_mass();
-  return (k2 + r_new.x * r_old.x + r_new.y * r_old.y) /
-         (k2 + r_new.x * r_new.x + r_new.y * r_new.y);
+  return angular_momentum_ratio(geometry.base_corner(old_pivot),
+                                geometry.base_corner(other(old_pivot)),
+                                geometry.inertia_per_mass());
 }
 
-HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g)
+HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
+                           std::optional<RockingRestitution> rocking)
     : geometry_(geometry),
       impacts_lose_energy_(impacts_lose_energy),
-      settle_velocity_(settling_speed(g, geometry.size())) {}
+      settle_velocity_(settling_speed(g, geometry.size())),
+      rocking_(rocking) {}
+
+double HousnerRules::omega_after_impact(double omega, Corner pivot) const {
+  if (!rocking_ || rocking_->housner) return omega * housner_impact_ratio(geometry_, pivot);
+  const Vec2 r_old = geometry_.base_corner(pivot), r_new = geometry_.base_corner(other(pivot));
+  const double k2 = geometry_.inertia_per_mass();
+  const double energy = 0.5 * (k2 + r_old.x * r_old.x + r_old.y * r_old.y) * omega * omega;
+  bool capped = false;
+  return rocking_angular_velocity(rocking_->ratio, omega, energy,
+                                  k2 + r_new.x * r_new.x + r_new.y * r_new.y, capped);
+}
 
 ContactOutcome HousnerRules::rock_on(BlockState s, Corner pivot) const {
   const Vec2 r = geometry_.base_corner_at(pivot, s.theta);
@@ -54,7 +65,7 @@ ContactOutcome HousnerRules::impact(const BlockState& state, Corner pivot, doubl
   const double base_width =
       geometry_.base_corner(Corner::right).x - geometry_.base_corner(Corner::left).x;
   const auto settles = [&] { return std::abs(s.omega) * base_width < settle_velocity_; };
-  if (!settles() && impacts_lose_energy_) s.omega *= housner_impact_ratio(geometry_, pivot);
+  if (!settles() && impacts_lose_energy_) s.omega = omega_after_impact(s.omega, pivot);
   ContactOutcome out;
   if (settles()) {
     s.omega = 0.0;

@@ -2,6 +2,8 @@
 // rocking block (never slides, never lifts off) and in Newmark's sliding block (never rocks).
 #pragma once
 
+#include <optional>
+
 #include "engine/contact/contact_resolution.hpp"
 
 namespace blockfrag {
@@ -13,7 +15,10 @@ double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot);
 
 class HousnerRules {
  public:
-  HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g);
+  // rocking: the scene's rocking restitution; a given r sets omega+ = r omega- at each impact
+  // (engine/contact/rocking_restitution.hpp), Housner's or none keeps housner_impact_ratio.
+  HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
+               std::optional<RockingRestitution> rocking = std::nullopt);
 
   // From rest (or a release from a tilt): rocks once lambda exceeds a tipping threshold.
   ContactOutcome start(const BlockState& state, double lambda) const;
@@ -23,9 +28,13 @@ class HousnerRules {
  private:
   ContactOutcome rock_on(BlockState s, Corner pivot) const;
 
+  // omega after an impact on the other corner of `pivot`.
+  double omega_after_impact(double omega, Corner pivot) const;
+
   const BlockGeometry& geometry_;
   bool impacts_lose_energy_;
   double settle_velocity_;
+  std::optional<RockingRestitution> rocking_;
 };
 
 class NewmarkRules {

@@ -59,6 +59,9 @@ inline constexpr Domain alpha{0.0, std::numbers::pi / 2, false, false, "rad", nu
 // Coulomb's mu: 0 (frictionless) to 10,000 (no slip in practice: Housner's block).
 inline constexpr Domain friction{0.0, 1e4, true, true, ""};
 inline constexpr Domain restitution{0.0, 1.0, true, true, ""};
+// The rocking restitution r = omega+ / omega- (engine/contact/rocking_restitution.hpp): 0 would
+// stop the block dead at every rocking impact, above 1 every impact would add energy.
+inline constexpr Domain rocking_restitution{0.0, 1.0, false, true, ""};
 
 // --- Ground motion -------------------------------------------------------------------------------
 // A pulse's peak acceleration in g, either sign: 1000 g is far past any earthquake.

@@ -30,10 +30,25 @@ struct PolygonBlock {
   double mass = 1.0;  // kg, of the whole block (e.g. per metre of a dam's length)
 };
 
+// The rocking restitution r = omega+ / omega- of a rocking impact (engine/contact/
+// rocking_restitution.hpp): a value in (0, 1], or Housner's, the block's own angular-momentum
+// value.
+struct RockingRestitution {
+  bool housner = false;
+  double ratio = 1.0;  // r, when not housner
+};
+
 struct Contact {
+  // Contact{mu, e}: the rocking restitution unset.
+  Contact() = default;
+  Contact(double mu, double e, std::optional<RockingRestitution> rocking = std::nullopt)
+      : friction(mu), restitution(e), rocking_restitution(rocking) {}
+
   double friction = 0.6;  // mu, Coulomb, static = kinetic
   double restitution =
       0.6;  // e, Newton's coefficient on the normal velocity of the impacting corner
+  // None: Newton's e at every impact, rocking impacts included.
+  std::optional<RockingRestitution> rocking_restitution;
 };
 
 // The ground the block rests on when it is not one flat unbounded line (engine/scene/seat.hpp): a

@@ -221,6 +221,14 @@ void validate_scene(const Scene& scene) {
   if (scene.seat) validate_seat(scene);
   require_in(domain::friction, scene.contact.friction, "friction");
   require_in(domain::restitution, scene.contact.restitution, "restitution");
+  if (const auto& rocking = scene.contact.rocking_restitution) {
+    if (!rocking->housner) {
+      require_in(domain::rocking_restitution, rocking->ratio, "rocking_restitution");
+    }
+    require(has_rocking_impacts(scene.effects),
+            "rocking_restitution needs a model with rocking impacts: effects \"auto\", the full "
+            "model's or [\"rocking\", \"impact\"]");
+  }
   if (scene.duration) require_in(domain::duration, *scene.duration, "duration");
   if (scene.max_duration) require_in(domain::duration, *scene.max_duration, "max_duration");
   require(!(scene.duration && scene.max_duration),

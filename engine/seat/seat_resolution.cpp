@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/contact/planar_impact.hpp"
+#include "engine/contact/rocking_restitution.hpp"
 #include "engine/errors.hpp"
 #include "engine/seat/seat_ground.hpp"
 #include "engine/tolerances.hpp"
@@ -63,8 +64,17 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
     // the other contact, turning about it, can leave faster than the settling speed: a chain of
     // ever smaller bounces that the flat ground ends would go on.
     const bool laid = pairs.size() >= 2 && -fastest < settle_velocity();
+    // A rocking impact takes the scene's rocking restitution where it sets one, as on the flat
+    // ground (engine/contact/rocking_restitution.hpp).
+    const auto& rocking_restitution = scene_.contact.rocking_restitution;
+    const auto rocking = laid || !rocking_restitution
+                             ? std::nullopt
+                             : rocking_impact({all, static_cast<std::size_t>(first), velocity_of(s),
+                                               k2, mu, velocity_tol_, *rocking_restitution});
     if (laid) {
       lay_on(pairs, s);
+    } else if (rocking) {
+      set_velocity(s, rocking->after);
     } else {
       const double e = landing_restitution(scene_.contact.restitution, fastest, settle_velocity());
       const PlanarImpactInput one{
@@ -109,15 +119,26 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
 // where it would bounce off slower than the settling speed (settling.hpp), as on the flat ground. A
 // fold vertex of the type B block, sliding and turning in flight, bounced at e = 0.3 in flights of
 // 2e-6 s, was found 1e-11 m inside the seat after each and landed again as fast as before, without
-// end (record suite sample 116).
+// end (record suite sample 116). A rocking impact under the scene's rocking restitution also
+// leaves its landing point still, whatever e is.
 bool SeatSimulation::plastic_landing(const std::vector<SeatPair>& pairs) const {
   double fastest = 0.0;
+  std::vector<PlanarContact> contacts;
+  std::size_t landing = 0;
   for (const SeatPair& pair : pairs) {
-    fastest =
-        std::min(fastest, contact_velocity(contact_of(pair, state_), velocity_of(state_)).normal);
+    contacts.push_back(contact_of(pair, state_));
+    const double u_n = contact_velocity(contacts.back(), velocity_of(state_)).normal;
+    if (u_n < fastest) {
+      fastest = u_n;
+      landing = contacts.size() - 1;
+    }
   }
-  return fastest < -velocity_tol_ &&
-         lands_plastically(scene_.contact.restitution, fastest, settle_velocity());
+  if (!(fastest < -velocity_tol_)) return false;
+  if (lands_plastically(scene_.contact.restitution, fastest, settle_velocity())) return true;
+  const auto& rocking = scene_.contact.rocking_restitution;
+  return rocking &&
+         rocking_impact({contacts, landing, velocity_of(state_), geometry_.inertia_per_mass(),
+                         scene_.contact.friction, velocity_tol_, *rocking});
 }
 
 // At an event: the contacts that touch are put back where the drift left them, impacts while one

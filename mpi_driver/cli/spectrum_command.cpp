@@ -24,22 +24,30 @@ int finish_spectrum(const SpectrumConfig& config, const RunSettings& settings,
   {
     const RecordSpool spool(settings.records, config.hash, config.map_points(),
                             RecordSpool::Mode::resume);
-    tally = write_spectrum_output(config.output, config, spool, result.brackets);
+    tally = write_spectrum_output(config.output, config, spool, result.brackets, result.minimum);
   }
   remove_spectrum_files(config, settings, files);
   std::cerr << "wrote " << config.output.string() << " (" << result.map.computed
-            << " map points and " << result.midpoints
-            << " bisection midpoints computed in this run, " << result.rounds
-            << " bisection rounds, " << result.map.chunks << " map chunks handed out)\n"
+            << " map points and " << result.midpoints << " bisection midpoints and "
+            << result.minimum_midpoints << " minimum refinement midpoints computed in this run, "
+            << result.rounds << " bisection rounds, " << result.minimum_rounds
+            << " minimum refinement rounds, " << result.map.chunks << " map chunks handed out)\n"
             << "  map: " << tally.points << " points, " << tally.overturned << " overturned, "
             << tally.failed << " failed\n"
             << "  boundary: " << tally.onsets << " onsets of overturning and " << tally.island_edges
             << " ends of an overturning band (safe island edges); " << tally.converged << " of "
             << tally.onsets + tally.island_edges << " bisected to the tolerance "
-            << config.bisection_tolerance << '\n';
-  if (tally.failed > 0 || tally.converged < tally.onsets + tally.island_edges) {
-    std::cerr << "some points gave no verdict or some crossings were not bisected to the "
-                 "tolerance (/map/verdict 5 or 6, /boundary/state 2 or 3): exit code "
+            << config.bisection_tolerance << '\n'
+            << "  minimum overturning amplitude: found to the tolerance "
+            << config.minimum_overturning.tolerance << " at " << tally.minima_found << " of "
+            << config.frequency_ratio.size() << " frequencies, below the map's lowest onset at "
+            << tally.minima_lowered << ", below the grid at " << tally.minima_below_grid
+            << ", uncertain at " << tally.minima_uncertain << '\n';
+  if (tally.failed > 0 || tally.converged < tally.onsets + tally.island_edges ||
+      tally.minima_uncertain > 0) {
+    std::cerr << "some points gave no verdict or some crossings or minima were not bisected to "
+                 "the tolerance (/map/verdict 5 or 6, /boundary/state 2 or 3, "
+                 "/minimum_overturning/state 4 or 5): exit code "
               << exit_code_simulation_failed << '\n';
     return exit_code_simulation_failed;
   }
@@ -76,7 +84,7 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
 
   const OutputClaim claim =
       claim_output(comm, config.output, config.hash, "spectrum",
-                   {settings.checkpoint, files.bisection, files.round_checkpoint});
+                   {settings.checkpoint, files.bisection, files.minimum, files.round_checkpoint});
   if (claim.verdict == OutputVerdict::already_complete) {
     if (rank == 0) std::cerr << claim.message << '\n';
     return exit_code_success;

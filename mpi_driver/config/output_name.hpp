@@ -12,8 +12,9 @@ namespace blockfrag {
 // ends with another, and no output may end with one (nor with a temporary file's
 // ".tmp.XXXXXX"), so no output and none of its files can ever have the name of another output's
 // file: a run reads, replaces or removes only its own.
-inline constexpr std::array<std::string_view, 6> kSideFileEndings = {
-    ".checkpoint", ".records", ".bisection", ".round-checkpoint", ".round-records", ".lock"};
+inline constexpr std::array<std::string_view, 7> kSideFileEndings = {
+    ".checkpoint",       ".records",       ".bisection", ".minimum",
+    ".round-checkpoint", ".round-records", ".lock"};
 
 // Why `name` cannot name a file blockfrag writes (empty, a NUL byte, which would cut the name
 // short, a folder: ".", ".." or a trailing '/', or a name that ends as a run's own files do);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "engine/contact/model_choice.hpp"
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/polygon_properties.hpp"
 #include "engine/scene/seat.hpp"
@@ -13,6 +14,7 @@
 #include "mpi_driver/config/config_reader.hpp"
 #include "mpi_driver/config/dam_json.hpp"
 #include "mpi_driver/config/effects_json.hpp"
+#include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/polygon_json.hpp"
 #include "mpi_driver/config/pulse_json.hpp"
 #include "mpi_driver/config/record_file.hpp"
@@ -49,12 +51,38 @@ void read_block(ObjectReader reader, Scene& scene) {
   reader.finish();
 }
 
+// A number in (0, 1] or "housner" (engine/contact/rocking_restitution.hpp).
+std::optional<RockingRestitution> read_rocking_restitution(const json& value,
+                                                           const JsonPointer& path,
+                                                           ConfigErrors& errors) {
+  if (value == "housner") return RockingRestitution{true, 1.0};
+  if (!value.is_number()) {
+    errors.add(path,
+               "must be a number in (0, 1] or \"housner\" (got " +
+                   printable_excerpt(value.dump(-1, ' ', false, json::error_handler_t::replace)) +
+                   ")");
+    return std::nullopt;
+  }
+  const auto ratio = read_number(value, path, errors, Range::of(domain::rocking_restitution));
+  if (!ratio) return std::nullopt;
+  return RockingRestitution{false, *ratio};
+}
+
+json rocking_restitution_to_json(const RockingRestitution& rocking) {
+  if (rocking.housner) return "housner";
+  return rocking.ratio;
+}
+
 Contact read_contact(ObjectReader reader) {
   Contact contact;
   contact.friction =
       reader.required_number("friction", Range::of(domain::friction)).value_or(contact.friction);
   contact.restitution = reader.required_number("restitution", Range::of(domain::restitution))
                             .value_or(contact.restitution);
+  if (const json* rocking = reader.raw("rocking_restitution")) {
+    contact.rocking_restitution =
+        read_rocking_restitution(*rocking, reader.path_of("rocking_restitution"), reader.errors());
+  }
   reader.finish();
   return contact;
 }
@@ -287,6 +315,11 @@ Scene scene_from_json(const json& value, const JsonPointer& path, ConfigErrors& 
   read_block(root.required_object("block"), scene);
   const bool block_valid = errors.size() == errors_before_block;
   scene.contact = read_contact(root.required_object("contact"));
+  if (scene.contact.rocking_restitution && !has_rocking_impacts(scene.effects)) {
+    errors.add(path / "contact" / "rocking_restitution",
+               "needs a model with rocking impacts: effects \"auto\", the full model's or "
+               "[\"rocking\", \"impact\"]");
+  }
   scene.ground_motion = read_ground_motion(root.required_object("ground_motion"), base_folder);
   if (root.has("vertical_motion")) {
     scene.vertical_motion = read_ground_motion(root.object("vertical_motion"), base_folder);
@@ -337,8 +370,12 @@ json scene_to_json(const Scene& scene) {
               {"g", scene.g},
               {"solver", solver_to_json(scene.solver)},
               {"initial", {{"theta", scene.initial.theta}}}};
-  // Written only where given, so that a config without it keeps its hash.
+  // Written only where given, so that a config without them keeps its hash.
   if (scene.initial.omega != 0.0) out["initial"]["omega"] = scene.initial.omega;
+  if (scene.contact.rocking_restitution) {
+    out["contact"]["rocking_restitution"] =
+        rocking_restitution_to_json(*scene.contact.rocking_restitution);
+  }
   // A settling run has no duration, and a max_duration only when the scene gives one.
   if (scene.duration) out["duration"] = *scene.duration;
   if (scene.max_duration) out["max_duration"] = *scene.max_duration;

@@ -329,6 +329,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   config.max_iterations = static_cast<int>(bisection.integer_or(
       "max_iterations", config.max_iterations, Range::closed(1, kMaxBisectionIterations)));
   bisection.finish();
+  config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
   config.settle_allowance_tau =
       root.number_or("settle_allowance_tau", config.settle_allowance_tau, Range::closed(1, 1e6));
   if (const auto name = root.string("output")) {
@@ -364,12 +365,17 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   config.canonical["amplitude_ratio"] = amplitude.canonical;
   config.canonical["bisection"] = {{"tolerance", config.bisection_tolerance},
                                    {"max_iterations", config.max_iterations}};
+  config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
   config.canonical["settle_allowance_tau"] = config.settle_allowance_tau;
   config.canonical["output"] = config.output.string();
   config.canonical["checkpoint_interval_s"] = config.checkpoint_interval_s;
   json hashed = config.canonical;
   hashed.erase("output");
   hashed.erase("checkpoint_interval_s");
+  // The refinement only adds to the map and the bisection: a spec without the key hashes as it
+  // did before the key existed, so that its checkpoints and bisection state resume.
+  if (hashed["minimum_overturning"] == minimum_overturning_to_json({}))
+    hashed.erase("minimum_overturning");
   config.hash = fnv1a64("spectrum " + hashed.dump());
   return config;
 }

@@ -8,8 +8,9 @@
 //    "pulse": {"type": "cosine_pulse", "cycles": 1},
 //    "frequency_ratio": {"from": 0.5, "to": 20, "count": 400, "spacing": "log"} or {"values":
 //    [...]}, "amplitude_ratio": {"from": 0.5, "to": 10, "count": 400}, "bisection": {"tolerance":
-//    1e-7, "max_iterations": 60}, "settle_allowance_tau": 200, "solver": {...}, "g": 9.81,
-//    "output": "spectrum.h5", "checkpoint_interval_s": 60}
+//    1e-7, "max_iterations": 60}, "minimum_overturning": {"tolerance": 1e-3, ...},
+//    "settle_allowance_tau": 200, "solver": {...}, "g": 9.81, "output": "spectrum.h5",
+//    "checkpoint_interval_s": 60}
 // Every error names its JSON path, all are reported at once, and every rule (the pulse periods and
 // amplitudes the grid asks for inside the scene domains, the grid's size) is checked before any
 // work starts.
@@ -23,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/scene/scene.hpp"
+#include "mpi_driver/config/minimum_overturning_json.hpp"
 
 namespace blockfrag {
 
@@ -68,6 +70,8 @@ struct SpectrumConfig {
   std::vector<double> amplitude_ratio;  // a_p / (g tan alpha), increasing
   double bisection_tolerance = 1e-7;    // relative, in amplitude ratio
   int max_iterations = 60;              // bisection steps per crossing at most
+  // The refinement of each frequency's minimum overturning amplitude.
+  MinimumOverturningSettings minimum_overturning;
   // A run goes on at most this long after the pulse ends, in units of 1/p (tau = p t), so the cap
   // is the same for every block size.
   double settle_allowance_tau = 200.0;
@@ -75,7 +79,9 @@ struct SpectrumConfig {
   double checkpoint_interval_s = 60.0;
 
   nlohmann::json canonical;  // defaults filled, keys sorted
-  std::uint64_t hash = 0;    // of canonical without "output" and "checkpoint_interval_s"
+  // Of canonical without "output" and "checkpoint_interval_s", and without "minimum_overturning"
+  // when it holds the defaults.
+  std::uint64_t hash = 0;
 
   double alpha() const;      // atan(a / b), rad
   double tan_alpha() const;  // a / b

@@ -7,6 +7,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "engine/contact/model_choice.hpp"
 #include "engine/motion/ground_motion.hpp"
 #include "engine/motion/intensity_measures.hpp"
 #include "engine/scene/block_geometry.hpp"
@@ -29,14 +30,16 @@ const Range positive = Range::greater_than(0.0);
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 constexpr StudyInput all_inputs[] = {
-    StudyInput::friction, StudyInput::restitution, StudyInput::half_width, StudyInput::half_height,
-    StudyInput::alpha,    StudyInput::R,           StudyInput::period,     StudyInput::direction};
+    StudyInput::friction,   StudyInput::restitution, StudyInput::rocking_restitution,
+    StudyInput::half_width, StudyInput::half_height, StudyInput::alpha,
+    StudyInput::R,          StudyInput::period,      StudyInput::direction};
 
 // The domain every sample of an input must stay within: the scene parameter's it sets.
 const Domain& input_domain(StudyInput input) {
   switch (input) {
     case StudyInput::friction: return domain::friction;
     case StudyInput::restitution: return domain::restitution;
+    case StudyInput::rocking_restitution: return domain::rocking_restitution;
     case StudyInput::half_width:
     case StudyInput::half_height:
     case StudyInput::R: return domain::block_length;
@@ -186,6 +189,11 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
          {StudyInput::half_width, StudyInput::half_height, StudyInput::alpha, StudyInput::R}) {
       if (has(input)) reader.add_error(input_key(input), fixed);
     }
+  }
+  if (has(StudyInput::rocking_restitution) && !has_rocking_impacts(base.effects)) {
+    reader.add_error("rocking_restitution",
+                     "needs a model with rocking impacts: /scene/effects \"auto\", the full "
+                     "model's or [\"rocking\", \"impact\"]");
   }
   const bool has_motion = config.suite || !std::holds_alternative<NoMotion>(base.ground_motion);
   const bool periodic = std::holds_alternative<CosinePulse>(base.ground_motion) ||
@@ -418,6 +426,7 @@ const char* input_key(StudyInput input) {
   switch (input) {
     case StudyInput::friction: return "friction";
     case StudyInput::restitution: return "restitution";
+    case StudyInput::rocking_restitution: return "rocking_restitution";
     case StudyInput::half_width: return "half_width";
     case StudyInput::half_height: return "half_height";
     case StudyInput::alpha: return "alpha";

@@ -48,6 +48,7 @@ namespace blockfrag {
 enum class StudyInput {
   friction,
   restitution,
+  rocking_restitution,  // a given r (engine/contact/rocking_restitution.hpp)
   half_width,
   half_height,
   alpha,
@@ -57,7 +58,7 @@ enum class StudyInput {
 };
 
 // The config key (and the /samples column name) of an input: the enumerator's name ("friction",
-// "half_width", "alpha", "R", "period" (s, as in the scene), "direction").
+// "rocking_restitution", "half_width", "alpha", "R", "period" (s, as in the scene), "direction").
 const char* input_key(StudyInput input);
 
 struct StudyInputSpec {

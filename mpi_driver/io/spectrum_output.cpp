@@ -1,6 +1,7 @@
 #include "mpi_driver/io/spectrum_output.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "blockfrag/version.hpp"
 #include "mpi_driver/config/study_config.hpp"
@@ -149,17 +150,100 @@ void write_boundary(Hdf5Writer& file, const SpectrumConfig& config,
   }
 }
 
+// The map's own minimum of each frequency, without the refinement: its lowest onset as bisected
+// (the column's first crossing when that is an onset); none where the map has none or its lowest
+// amplitude overturns.
+std::vector<const SpectrumBracket*> map_minima(const SpectrumConfig& config,
+                                               const std::vector<SpectrumBracket>& brackets) {
+  std::vector<const SpectrumBracket*> minima(config.frequency_ratio.size(), nullptr);
+  std::vector<bool> seen(minima.size(), false);
+  for (const SpectrumBracket& b : brackets) {
+    const auto f = static_cast<std::size_t>(b.frequency_index);
+    if (seen[f]) continue;
+    seen[f] = true;
+    if (b.direction() > 0) minima[f] = &b;
+  }
+  return minima;
+}
+
+void write_minimum(Hdf5Writer& file, const SpectrumConfig& config,
+                   const std::vector<SpectrumBracket>& brackets, const MinimumRefinement& minimum,
+                   SpectrumTally& tally) {
+  const std::vector<FrequencyMinimum> minima = frequency_minima(minimum);
+  const std::vector<const SpectrumBracket*> unrefined = map_minima(config, brackets);
+  const auto column = [&](auto value) {
+    std::vector<decltype(value(minima.front()))> values;
+    for (const FrequencyMinimum& m : minima) values.push_back(value(m));
+    return values;
+  };
+  const std::string group = "/minimum_overturning";
+  file.create_group(group);
+  file.write_column(group + "/frequency_ratio", config.frequency_ratio);
+  file.write_column(group + "/amplitude_ratio",
+                    column([](const FrequencyMinimum& m) { return m.amplitude_ratio; }));
+  file.set_attribute(
+      group + "/amplitude_ratio", "meaning",
+      std::string("the minimum overturning amplitude ratio, refined: the midpoint of "
+                  "[amplitude_low, amplitude_high]; NaN where none was found (state "
+                  "2) or it lies below the grid (state 3)"));
+  file.write_column(group + "/amplitude_low",
+                    column([](const FrequencyMinimum& m) { return m.low; }));
+  file.write_column(group + "/amplitude_high",
+                    column([](const FrequencyMinimum& m) { return m.high; }));
+  file.write_column(group + "/verdict_high",
+                    column([](const FrequencyMinimum& m) { return m.verdict_high; }));
+  file.set_attribute(group + "/verdict_high", "meaning",
+                     "the verdict at amplitude_high (/map/verdict's codes: how the block "
+                     "overturns at its minimum), -1 where nothing overturned; " +
+                         spectrum_verdict_meaning());
+  std::vector<double> map_amplitude;
+  for (const SpectrumBracket* b : unrefined)
+    map_amplitude.push_back(b ? b->midpoint() : std::numeric_limits<double>::quiet_NaN());
+  file.write_column(group + "/map_amplitude_ratio", map_amplitude);
+  file.set_attribute(group + "/map_amplitude_ratio", "meaning",
+                     std::string("the minimum without the refinement: the map's lowest onset as "
+                                 "bisected (/boundary), NaN where the map has none or its lowest "
+                                 "amplitude overturns"));
+  file.write_column(group + "/state", column([](const FrequencyMinimum& m) { return m.state; }));
+  file.set_attribute(
+      group + "/state", "meaning",
+      std::string("1 found: amplitude_high overturns, amplitude_low stands, amplitude_high - "
+                  "amplitude_low <= tolerance x amplitude_high, and every interval below it "
+                  "between standing amplitudes with max |theta| / alpha >= near_overturning at "
+                  "an end was probed down to the resolution; 2 none: nothing overturned in the "
+                  "grid's range; 3 below the grid: the lowest map amplitude overturns "
+                  "(amplitude_high); 4 a point below the minimum failed; 5 max_midpoints ran out"));
+  file.write_column(group + "/midpoints",
+                    column([](const FrequencyMinimum& m) { return m.midpoints; }));
+  const MinimumOverturningSettings& settings = config.minimum_overturning;
+  file.set_attribute(group, "tolerance", settings.tolerance);
+  file.set_attribute(group, "resolution", settings.resolution);
+  file.set_attribute(group, "near_overturning", settings.near_overturning);
+  file.set_attribute(group, "max_midpoints", settings.max_midpoints);
+  for (std::size_t f = 0; f < minima.size(); ++f) {
+    const auto state = static_cast<MinimumState>(minima[f].state);
+    tally.minima_found += state == MinimumState::found ? 1 : 0;
+    tally.minima_below_grid += state == MinimumState::below_grid ? 1 : 0;
+    tally.minima_uncertain +=
+        state == MinimumState::failed || state == MinimumState::capped ? 1 : 0;
+    // A lower minimum lies wholly below the map's bracket; otherwise it is that bracket.
+    tally.minima_lowered += unrefined[f] && minima[f].high <= unrefined[f]->low ? 1 : 0;
+  }
+}
+
 }  // namespace
 
 SpectrumTally write_spectrum_output(const std::filesystem::path& path, const SpectrumConfig& config,
                                     const RecordSpool& spool,
-                                    const std::vector<SpectrumBracket>& brackets) {
+                                    const std::vector<SpectrumBracket>& brackets,
+                                    const MinimumRefinement& minimum) {
   SpectrumTally tally;
   replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
     Hdf5Writer file(temporary);
     write_root(file, config);
     tally = write_map(file, config, spool);
     write_boundary(file, config, brackets, tally);
+    write_minimum(file, config, brackets, minimum, tally);
     file.close();
   });
   return tally;

@@ -9,6 +9,9 @@
 //   /boundary    one entry per crossing: frequency_index, frequency_ratio, amplitude_ratio,
 //                amplitude_low, amplitude_high, direction, verdict_low, verdict_high, iterations,
 //                state
+//   /minimum_overturning   one entry per frequency: frequency_ratio, amplitude_ratio (refined),
+//                amplitude_low, amplitude_high, verdict_high, map_amplitude_ratio (the map's
+//                lowest onset, unrefined), state, midpoints
 //
 // Everything but the root's blockfrag_version depends only on the config.
 #pragma once
@@ -19,6 +22,7 @@
 
 #include "mpi_driver/config/spectrum_config.hpp"
 #include "mpi_driver/io/record_spool.hpp"
+#include "mpi_driver/study/minimum_overturning.hpp"
 #include "mpi_driver/study/spectrum_bisection.hpp"
 
 namespace blockfrag {
@@ -28,11 +32,16 @@ struct SpectrumTally {
   std::int64_t points = 0, overturned = 0, failed = 0;
   std::int64_t onsets = 0, island_edges = 0;  // crossings by direction
   std::int64_t converged = 0;                 // crossings bisected to the tolerance
+  // Frequencies whose minimum: the refinement found below the map's lowest onset; was found to its
+  // tolerance (state 1); lies below the grid; is uncertain (a failed point, or max_midpoints).
+  std::int64_t minima_lowered = 0, minima_found = 0, minima_below_grid = 0, minima_uncertain = 0;
 };
 
-// The spool holds every map point's record; brackets are the final crossings.
+// The spool holds every map point's record; brackets are the final crossings, minimum the final
+// minimum refinement.
 SpectrumTally write_spectrum_output(const std::filesystem::path& path, const SpectrumConfig& config,
                                     const RecordSpool& spool,
-                                    const std::vector<SpectrumBracket>& brackets);
+                                    const std::vector<SpectrumBracket>& brackets,
+                                    const MinimumRefinement& minimum);
 
 }  // namespace blockfrag

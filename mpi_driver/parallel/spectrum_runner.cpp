@@ -10,6 +10,7 @@
 #include "mpi_driver/io/record_spool.hpp"
 #include "mpi_driver/parallel/bisection_state.hpp"
 #include "mpi_driver/parallel/checkpoint.hpp"
+#include "mpi_driver/parallel/minimum_refinement_state.hpp"
 
 namespace blockfrag {
 namespace {
@@ -64,17 +65,28 @@ void for_each_record(const RecordSpool& spool, std::int64_t total,
   }
 }
 
-// The brackets of every column of the finished map, in order of frequency, then amplitude.
-std::vector<SpectrumBracket> map_brackets(const SpectrumConfig& config, const RecordSpool& spool) {
+// Calls visit(frequency index, column) for every column of the finished map, in order.
+void for_each_column(
+    const SpectrumConfig& config, const RecordSpool& spool,
+    const std::function<void(std::int64_t, const std::vector<SampleRecord>&)>& visit) {
   const std::size_t na = config.amplitude_ratio.size();
-  std::vector<SpectrumBracket> brackets;
-  std::vector<SpectrumVerdict> column(na);
+  std::vector<SampleRecord> column(na);
   for_each_record(spool, config.map_points(), [&](std::int64_t index, const SampleRecord& record) {
     const auto j = static_cast<std::size_t>(index) % na;
-    column[j] = spectrum_verdict(record);
-    if (j + 1 < na) return;
-    const auto found = column_brackets(index / static_cast<std::int64_t>(na),
-                                       config.amplitude_ratio, column, config.bisection_tolerance);
+    column[j] = record;
+    if (j + 1 == na) visit(index / static_cast<std::int64_t>(na), column);
+  });
+}
+
+// The brackets of every column of the finished map, in order of frequency, then amplitude.
+std::vector<SpectrumBracket> map_brackets(const SpectrumConfig& config, const RecordSpool& spool) {
+  std::vector<SpectrumBracket> brackets;
+  std::vector<SpectrumVerdict> verdicts;
+  for_each_column(config, spool, [&](std::int64_t i, const std::vector<SampleRecord>& column) {
+    verdicts.clear();
+    for (const SampleRecord& record : column) verdicts.push_back(spectrum_verdict(record));
+    const auto found =
+        column_brackets(i, config.amplitude_ratio, verdicts, config.bisection_tolerance);
     brackets.insert(brackets.end(), found.begin(), found.end());
   });
   return brackets;
@@ -82,6 +94,9 @@ std::vector<SpectrumBracket> map_brackets(const SpectrumConfig& config, const Re
 
 std::uint64_t round_hash(std::uint64_t config_hash, std::int64_t round) {
   return fnv1a64(hash_to_hex(config_hash) + " bisection round " + std::to_string(round));
+}
+std::uint64_t minimum_round_hash(std::uint64_t config_hash, std::int64_t round) {
+  return fnv1a64(hash_to_hex(config_hash) + " minimum round " + std::to_string(round));
 }
 
 // Rank 0, once the map is complete: every point is on disk and the checkpoint says so, so a run
@@ -99,6 +114,12 @@ std::int64_t max_brackets_of(const SpectrumConfig& config) {
          static_cast<std::int64_t>(config.amplitude_ratio.size() - 1);
 }
 
+// At most: a probe for every map interval, and two segments for every midpoint the refinement may
+// evaluate (kMaxSpectrumPoints over the whole spectrum).
+std::int64_t max_segments_of(const SpectrumConfig& config) {
+  return config.map_points() + 2 * kMaxSpectrumPoints;
+}
+
 // The bisection state at files.bisection, if there is one, checked against this spectrum: a
 // damaged file (CheckpointError) or another spectrum's (StudyMismatchError) is refused.
 std::optional<BisectionState> read_own_bisection_state(const SpectrumConfig& config,
@@ -114,6 +135,21 @@ std::optional<BisectionState> read_own_bisection_state(const SpectrumConfig& con
   return state;
 }
 
+// The minimum refinement at files.minimum, if there is one, checked as the bisection state is.
+std::optional<MinimumRefinement> read_own_minimum(const SpectrumConfig& config,
+                                                  const SpectrumFiles& files) {
+  auto refinement =
+      read_minimum_refinement(files.minimum, max_segments_of(config),
+                              static_cast<std::int64_t>(config.frequency_ratio.size()));
+  if (refinement && refinement->config_hash != config.hash) {
+    throw StudyMismatchError(
+        "refusing to resume: the minimum refinement " + files.minimum.string() +
+        " belongs to a different spectrum spec (spec hash " + hash_to_hex(refinement->config_hash) +
+        ", this spec " + hash_to_hex(config.hash) + "); remove it to start the refinement over");
+  }
+  return refinement;
+}
+
 // Rank 0: the bisection as it stood when the last run stopped, or its start from the map.
 BisectionState start_bisection(const SpectrumConfig& config, const RunSettings& settings,
                                const SpectrumFiles& files) {
@@ -123,6 +159,35 @@ BisectionState start_bisection(const SpectrumConfig& config, const RunSettings& 
   BisectionState state{config.hash, 0, map_brackets(config, spool)};
   write_bisection_state(files.bisection, state);
   return state;
+}
+
+// Rank 0, once every bracket is closed: the minimum refinement as it stood when the last run
+// stopped, or its start from the map's columns and their bisected crossings.
+MinimumRefinement start_minimum(const SpectrumConfig& config, const RunSettings& settings,
+                                const SpectrumFiles& files,
+                                const std::vector<SpectrumBracket>& brackets) {
+  if (auto refinement = read_own_minimum(config, files)) return std::move(*refinement);
+  const RecordSpool spool(settings.records, config.hash, config.map_points(),
+                          RecordSpool::Mode::resume);
+  std::vector<MinimumSegment> segments;
+  std::vector<MinimumPoint> points;
+  auto bracket = brackets.begin();
+  for_each_column(config, spool, [&](std::int64_t i, const std::vector<SampleRecord>& column) {
+    points.clear();
+    for (const SampleRecord& record : column)
+      points.push_back(minimum_point(record, config.alpha()));
+    const auto first = bracket;
+    while (bracket != brackets.end() && bracket->frequency_index == i) ++bracket;
+    const auto found = column_segments(i, config.amplitude_ratio, points,
+                                       std::span<const SpectrumBracket>(first, bracket),
+                                       config.minimum_overturning);
+    segments.insert(segments.end(), found.begin(), found.end());
+  });
+  MinimumRefinement refinement = start_minimum_refinement(
+      config.hash, static_cast<std::int64_t>(config.frequency_ratio.size()), std::move(segments),
+      config.minimum_overturning);
+  write_minimum_refinement(files.minimum, refinement);
+  return refinement;
 }
 
 // Rank 0, after a round: each open bracket narrowed by its midpoint's verdict, the round's
@@ -146,18 +211,105 @@ void finish_round(const SpectrumConfig& config, const SpectrumFiles& files, cons
   write_bisection_state(files.bisection, state);
 }
 
-// Rank 0, before the map: the bisection's files, checked as the map's are, so that a file the
-// spectrum cannot use is refused before hours of map and not after. A round's checkpoint belongs
-// to the round the bisection state is at; with no state, no round has started.
-void check_bisection_files(const SpectrumConfig& config, const SpectrumFiles& files) {
+// Rank 0, after a minimum round: the segments refined by their midpoints' points, then as
+// finish_round.
+void finish_minimum_round(const SpectrumConfig& config, const SpectrumFiles& files,
+                          const SampleJob& job, MinimumRefinement& refinement) {
+  const RecordSpool spool(files.round_records, job.hash, job.total, RecordSpool::Mode::resume);
+  std::vector<MinimumPoint> points;
+  points.reserve(static_cast<std::size_t>(job.total));
+  for_each_record(spool, job.total, [&](std::int64_t, const SampleRecord& record) {
+    points.push_back(minimum_point(record, config.alpha()));
+  });
+  refine_minimum(refinement, points, config.minimum_overturning);
+  std::filesystem::remove(files.round_checkpoint);
+  write_minimum_refinement(files.minimum, refinement);
+}
+
+// What a phase of rounds does on rank 0, for run_rounds.
+struct RoundPhase {
+  // The current round, and the (frequency ratio, amplitude ratio) pairs of its points.
+  std::function<std::int64_t(std::vector<double>& points)> next;
+  std::function<std::uint64_t(std::int64_t round)> hash;
+  std::function<void(const SampleJob& job)> finish;
+  const char* name;   // "bisection round"
+  const char* one;    // "crossing"
+  const char* many;   // "crossings"
+  const char* doing;  // "to narrow"
+};
+
+struct RoundsRun {
+  RunOutcome outcome = RunOutcome::completed;
+  std::int64_t rounds = 0, midpoints = 0;
+};
+
+// Collective: the phase's rounds, each one job of the study runner in the round files, until
+// rank 0 has no point left.
+RoundsRun run_rounds(MPI_Comm comm, const SpectrumConfig& config, const RunSettings& settings,
+                     const SpectrumFiles& files, const SceneEvaluator& evaluate,
+                     const RoundPhase& phase) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  RunSettings round_settings = settings;
+  round_settings.checkpoint = files.round_checkpoint;
+  round_settings.records = files.round_records;
+  round_settings.log = nullptr;
+  RoundsRun run;
+  std::vector<double> points;  // (frequency ratio, amplitude ratio) of each point
+  for (;;) {
+    std::int64_t header[2] = {0, 0};  // the round and its points
+    if (rank == 0) {
+      points.clear();
+      header[0] = phase.next(points);
+      header[1] = static_cast<std::int64_t>(points.size() / 2);
+    }
+    MPI_Bcast(header, 2, MPI_INT64_T, 0, comm);
+    if (header[1] == 0) return run;
+    points.resize(static_cast<std::size_t>(2 * header[1]));
+    MPI_Bcast(points.data(), static_cast<int>(points.size()), MPI_DOUBLE, 0, comm);
+    if (settings.log) {
+      *settings.log << phase.name << ' ' << header[0] + 1 << ": " << header[1] << ' '
+                    << (header[1] == 1 ? phase.one : phase.many) << ' ' << phase.doing << '\n';
+    }
+    const SampleJob job{.hash = phase.hash(header[0]),
+                        .total = header[1],
+                        .evaluate =
+                            [&](std::int64_t k) {
+                              const auto at = static_cast<std::size_t>(2 * k);
+                              return evaluate_spectrum_point(config, points[at], points[at + 1], k,
+                                                             evaluate);
+                            },
+                        .config_name = kSpectrumSpec,
+                        .config_word = kSpec};
+    const RunResult round = run_samples(comm, job, round_settings);
+    run.midpoints += round.computed;
+    if (interrupted_on_rank0(comm, round.outcome)) {
+      run.outcome = RunOutcome::interrupted;
+      return run;
+    }
+    on_rank0(comm, [&] { phase.finish(job); });
+    ++run.rounds;
+  }
+}
+
+// Rank 0, before the map: the rounds' files, checked as the map's are, so that a file the spectrum
+// cannot use is refused before hours of map and not after. A round's checkpoint belongs to the
+// round the phase in progress is at: the minimum's once it has started, else the bisection's;
+// with neither state, no round has started.
+void check_round_files(const SpectrumConfig& config, const SpectrumFiles& files) {
   const auto state = read_own_bisection_state(config, files);
+  const auto minimum = read_own_minimum(config, files);
   const auto round = read_checkpoint(files.round_checkpoint);
-  if (round && (!state || round->config_hash != round_hash(config.hash, state->round))) {
+  const std::optional<std::uint64_t> current =
+      minimum ? std::optional(minimum_round_hash(config.hash, minimum->round))
+      : state ? std::optional(round_hash(config.hash, state->round))
+              : std::nullopt;
+  if (round && round->config_hash != current) {
     throw StudyMismatchError("refusing to resume: the round checkpoint " +
                              files.round_checkpoint.string() + " (spec hash " +
                              hash_to_hex(round->config_hash) +
-                             ") is not of this spectrum's current bisection round; remove it to "
-                             "start the round over");
+                             ") is not of this spectrum's current round; remove it to start the "
+                             "round over");
   }
   read_record_spool_hash(files.round_records);
 }
@@ -170,17 +322,15 @@ SpectrumFiles SpectrumFiles::for_output(const std::filesystem::path& output) {
     path += suffix;
     return path;
   };
-  return {bisection_state_path_for(output), next_to(".round-checkpoint"),
-          next_to(".round-records")};
+  return {bisection_state_path_for(output), minimum_refinement_path_for(output),
+          next_to(".round-checkpoint"), next_to(".round-records")};
 }
 
 SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
                                const RunSettings& settings, const SpectrumFiles& files,
                                const SceneEvaluator& evaluate) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
   SpectrumRunResult result;
-  on_rank0(comm, [&] { check_bisection_files(config, files); });
+  on_rank0(comm, [&] { check_round_files(config, files); });
   const auto na = static_cast<std::int64_t>(config.amplitude_ratio.size());
   const SampleJob map_job{
       .hash = config.hash,
@@ -204,60 +354,72 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
     seal_map(config, settings);
     state = start_bisection(config, settings, files);
   });
-  RunSettings round_settings = settings;
-  round_settings.checkpoint = files.round_checkpoint;
-  round_settings.records = files.round_records;
-  round_settings.log = nullptr;
-  std::vector<double> points;  // (frequency ratio, amplitude ratio) of each open bracket's midpoint
-  for (;;) {
-    std::int64_t header[2] = {0, 0};  // the round and its midpoints
-    if (rank == 0) {
-      points.clear();
-      for (const SpectrumBracket& bracket : state.brackets) {
-        if (!bracket.is_open()) continue;
-        points.push_back(config.frequency_ratio[static_cast<std::size_t>(bracket.frequency_index)]);
-        points.push_back(bracket.midpoint());
-      }
-      header[0] = state.round;
-      header[1] = static_cast<std::int64_t>(points.size() / 2);
-    }
-    MPI_Bcast(header, 2, MPI_INT64_T, 0, comm);
-    if (header[1] == 0) break;
-    points.resize(static_cast<std::size_t>(2 * header[1]));
-    MPI_Bcast(points.data(), static_cast<int>(points.size()), MPI_DOUBLE, 0, comm);
-    if (settings.log) {
-      *settings.log << "bisection round " << header[0] + 1 << ": " << header[1]
-                    << (header[1] == 1 ? " crossing" : " crossings") << " to narrow\n";
-    }
-    const SampleJob job{.hash = round_hash(config.hash, header[0]),
-                        .total = header[1],
-                        .evaluate =
-                            [&](std::int64_t k) {
-                              const auto at = static_cast<std::size_t>(2 * k);
-                              return evaluate_spectrum_point(config, points[at], points[at + 1], k,
-                                                             evaluate);
-                            },
-                        .config_name = kSpectrumSpec,
-                        .config_word = kSpec};
-    const RunResult round = run_samples(comm, job, round_settings);
-    result.midpoints += round.computed;
-    if (interrupted_on_rank0(comm, round.outcome)) {
-      result.outcome = RunOutcome::interrupted;
-      return result;
-    }
-    on_rank0(comm, [&] { finish_round(config, files, job, state); });
-    ++result.rounds;
+  const RoundPhase bisection{
+      .next =
+          [&](std::vector<double>& points) {
+            for (const SpectrumBracket& bracket : state.brackets) {
+              if (!bracket.is_open()) continue;
+              points.push_back(
+                  config.frequency_ratio[static_cast<std::size_t>(bracket.frequency_index)]);
+              points.push_back(bracket.midpoint());
+            }
+            return state.round;
+          },
+      .hash = [&](std::int64_t round) { return round_hash(config.hash, round); },
+      .finish = [&](const SampleJob& job) { finish_round(config, files, job, state); },
+      .name = "bisection round",
+      .one = "crossing",
+      .many = "crossings",
+      .doing = "to narrow"};
+  const RoundsRun narrowed = run_rounds(comm, config, settings, files, evaluate, bisection);
+  result.rounds = narrowed.rounds;
+  result.midpoints = narrowed.midpoints;
+  if (narrowed.outcome == RunOutcome::interrupted) {
+    result.outcome = RunOutcome::interrupted;
+    return result;
+  }
+
+  MinimumRefinement minimum;
+  on_rank0(comm, [&] { minimum = start_minimum(config, settings, files, state.brackets); });
+  const RoundPhase refinement{
+      .next =
+          [&](std::vector<double>& points) {
+            for (const MinimumSegment& segment : minimum.segments) {
+              if (!segment.is_open()) continue;
+              points.push_back(
+                  config.frequency_ratio[static_cast<std::size_t>(segment.frequency_index)]);
+              points.push_back(segment.midpoint());
+            }
+            return minimum.round;
+          },
+      .hash = [&](std::int64_t round) { return minimum_round_hash(config.hash, round); },
+      .finish = [&](const SampleJob& job) { finish_minimum_round(config, files, job, minimum); },
+      .name = "minimum refinement round",
+      .one = "amplitude",
+      .many = "amplitudes",
+      .doing = "to probe"};
+  const RoundsRun refined = run_rounds(comm, config, settings, files, evaluate, refinement);
+  result.minimum_rounds = refined.rounds;
+  result.minimum_midpoints = refined.midpoints;
+  if (refined.outcome == RunOutcome::interrupted) {
+    result.outcome = RunOutcome::interrupted;
+    return result;
   }
   result.brackets = std::move(state.brackets);
+  result.minimum = std::move(minimum);
   return result;
 }
 
 void remove_spectrum_files(const SpectrumConfig& config, const RunSettings& settings,
                            const SpectrumFiles& files) {
   const auto state = read_own_bisection_state(config, files);
+  const auto minimum = read_own_minimum(config, files);
   const auto own_round = [&](std::uint64_t hash) {
     for (std::int64_t round = 0; state && round <= state->round; ++round) {
       if (hash == round_hash(config.hash, round)) return true;
+    }
+    for (std::int64_t round = 0; minimum && round <= minimum->round; ++round) {
+      if (hash == minimum_round_hash(config.hash, round)) return true;
     }
     return false;
   };
@@ -279,6 +441,7 @@ void remove_spectrum_files(const SpectrumConfig& config, const RunSettings& sett
   remove_when_own(files.round_checkpoint, checkpoint_hash, own_round);
   remove_when_own(files.round_records, read_record_spool_hash, own_round);
   if (state) std::filesystem::remove(files.bisection);
+  if (minimum) std::filesystem::remove(files.minimum);
 }
 
 }  // namespace blockfrag

@@ -74,6 +74,9 @@ Scene apply_sample(const StudyConfig& config, const std::vector<double>& values,
     switch (config.inputs[k].input) {
       case StudyInput::friction: scene.contact.friction = value; break;
       case StudyInput::restitution: scene.contact.restitution = value; break;
+      case StudyInput::rocking_restitution:
+        scene.contact.rocking_restitution = RockingRestitution{false, value};
+        break;
       case StudyInput::half_width: scene.block.half_width = value; break;
       case StudyInput::half_height: scene.block.half_height = value; break;
       case StudyInput::alpha: alpha = value; break;

@@ -5,12 +5,15 @@ Reads the output of `blockfrag spectrum`: /map/frequency_ratio (omega_p / p), /m
 (a_p / (g tan alpha)), /map/verdict [frequency][amplitude] (0 stands, 1 overturns with no impact,
 2 after one impact, 3 after more, 4 still moving at the cap, 5 failed, 6 rejected), /boundary (each
 crossing's frequency_index, amplitude_ratio and direction: +1 onset of overturning, -1 end of an
-overturning band) and the root attributes (alpha, pulse, config). The map is drawn as an image, one
-colour per verdict; a standing point above an overturning one of its frequency is a safe island
-and gets a colour of its own. The boundaries are lines through the crossings found by bisection:
-the lowest onset of each frequency (the minimum overturning amplitude) joined across frequencies,
-thick; every other crossing joined to the nearest crossing of the same direction at the next
-frequency when it lies within a few amplitude cells, so a line ends where its island or band ends.
+overturning band), /minimum_overturning (each frequency's minimum overturning amplitude, refined
+below the map's lowest onset) and the root attributes (alpha, pulse, config). The map is drawn as an
+image, one colour per verdict; a standing point above an overturning one of its frequency is a safe
+island and gets a colour of its own. The boundaries are lines through the crossings found by
+bisection: the lowest onset of each frequency (the map's minimum overturning amplitude) joined
+across frequencies, thick; every other crossing joined to the nearest crossing of the same
+direction at the next frequency when it lies within a few amplitude cells, so a line ends where its
+island or band ends. The refined minimum is a green line over it, with a dot where it lies below
+the map's lowest onset (a band the map stepped over); files without it are drawn without it.
 Several files are drawn as panels side by side (a map and a zoom into it, whose extent the first
 panel outlines); the frequency axis is logarithmic when the grid's is.
 
@@ -37,6 +40,8 @@ from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Patch, Rectangle  # noqa: E402
 from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter  # noqa: E402
 
+# The refined minimum overturning amplitude's colour (Okabe & Ito's bluish green).
+MINIMUM_COLOUR = "#009E73"
 # The classes drawn, in image order: (verdict code or "island", colour, legend label). Okabe & Ito's
 # colours, as the other plots use them.
 ISLAND = 7  # a drawn class of its own: stands, with an overturning point below it
@@ -68,7 +73,18 @@ def read_spectrum(path):
         config = plot_support.attribute(f, path, "config", lambda value: json.loads(text(value)))
         alpha = plot_support.attribute(f, path, "alpha", float)
         pulse = plot_support.attribute(f, path, "pulse", text)
+        minimum = None
+        if plot_support.has_group(f, "/minimum_overturning"):
+            minimum = {
+                key: plot_support.dataset(f, path, "/minimum_overturning/" + key, hint=hint)
+                for key in ("amplitude_ratio", "map_amplitude_ratio")
+            }
+            minimum["tolerance"] = plot_support.attribute(f["/minimum_overturning"], path, "tolerance",
+                                                          float)
     nf, na = len(frequency), len(amplitude)
+    if minimum is not None and any(len(minimum[key]) != nf for key in
+                                   ("amplitude_ratio", "map_amplitude_ratio")):
+        raise InputError(f"{path}: /minimum_overturning has not one value per frequency ({nf})")
     if verdict.shape != (nf, na) or nf < 1 or na < 2:
         raise InputError(f"{path}: /map/verdict has shape {verdict.shape}, not ({nf}, {na})")
     index = boundary["frequency_index"].astype(np.int64)
@@ -83,6 +99,7 @@ def read_spectrum(path):
         "config": config,
         "alpha": alpha,
         "pulse": pulse,
+        "minimum": minimum,
     }
 
 
@@ -188,6 +205,19 @@ def boundary_lines(data):
     return lines
 
 
+def minimum_line(data):
+    """The refined minimum as (frequencies, amplitudes, lowered): lowered where it lies below the
+    map's lowest onset by more than its tolerance (a band the map stepped over). None for a file
+    without it."""
+    minimum = data["minimum"]
+    if minimum is None:
+        return None
+    refined, unrefined = minimum["amplitude_ratio"], minimum["map_amplitude_ratio"]
+    with np.errstate(invalid="ignore"):
+        lowered = refined < unrefined * (1 - minimum["tolerance"])
+    return data["frequency"], refined, lowered
+
+
 def describe(data):
     c = data["config"]
     block = c.get("block", {})
@@ -198,9 +228,12 @@ def describe(data):
     family = data["pulse"] + (f", {pulse['cycles']:g} cycle(s)" if "cycles" in pulse else "") + (
         f", n = {pulse['n']}" if "n" in pulse else "")
     R = math.hypot(block.get("half_width", 0.0), block.get("half_height", 0.0))
+    rocking = contact.get("rocking_restitution")
+    rocking_text = "" if rocking is None else (
+        ", r = Housner's" if rocking == "housner" else f", r = {rocking:g}")
     return (f"{family}; block alpha = {math.degrees(data['alpha']):.2f} deg, R = {R:.4g} m; "
-            f"mu = {contact.get('friction', float('nan')):g}, e = {contact.get('restitution', float('nan')):g}; "
-            f"{model}")
+            f"mu = {contact.get('friction', float('nan')):g}, e = {contact.get('restitution', float('nan')):g}"
+            f"{rocking_text}; {model}")
 
 
 def draw_panel(ax, data, mark_frequency, mark_point, zoom_box):
@@ -232,6 +265,12 @@ def draw_panel(ax, data, mark_frequency, mark_point, zoom_box):
         single = len(fx) == 1 or few
         ax.plot(fx, fy, color="black", lw=2.0 if lowest else 1.0, ls="-" if direction > 0 else "--",
                 zorder=4, marker="o" if single else None, ms=2.5 if few else 1.5)
+    refined = minimum_line(data)
+    if refined is not None:
+        fx, fy, lowered = refined
+        ax.plot(fx, fy, color=MINIMUM_COLOUR, lw=1.4, zorder=5, marker="o" if few else None, ms=2.5)
+        ax.plot(fx[lowered], fy[lowered], ls="", marker="o", ms=4, color=MINIMUM_COLOUR, mec="black",
+                mew=0.5, zorder=6)
     groups = islands(classes)
     if groups:
         i, j = zip(*groups[0])
@@ -276,11 +315,19 @@ def plot(datasets, title, output, mark_frequency, mark_point):
     handles = [Patch(facecolor=colour, edgecolor="0.6", label=label)
                for code, colour, label in CLASSES if code in present]
     handles += [
-        Line2D([], [], color="black", lw=2.0, label="lowest onset of overturning (bisected)"),
+        Line2D([], [], color="black", lw=2.0, label="lowest onset of overturning on the map (bisected)"),
         Line2D([], [], color="black", lw=1.0, label="higher onsets (upper island edges)"),
         Line2D([], [], color="black", lw=1.0, ls="--", label="ends of overturning (lower island edges)"),
         Line2D([], [], color="0.35", lw=0.8, ls=":", label=r"static limit $a_p = g \tan\alpha$"),
     ]
+    refined = [data for data in datasets if data["minimum"] is not None]
+    if refined:
+        tolerances = sorted({data["minimum"]["tolerance"] for data in refined})
+        handles.append(Line2D([], [], color=MINIMUM_COLOUR, lw=1.4,
+                              label="minimum overturning amplitude, refined (tolerance "
+                                    + ", ".join(f"{t:g}" for t in tolerances) + ")"))
+        handles.append(Line2D([], [], ls="", marker="o", ms=4, color=MINIMUM_COLOUR, mec="black", mew=0.5,
+                              label="refined below the map's lowest onset"))
     if mark_point:
         handles.append(Line2D([], [], ls="", marker="*", ms=11, color="white", mec="black", mew=0.9,
                               label="marked: " + ", ".join(f"({a:g}, {b:g})" for a, b in mark_point)))

@@ -107,13 +107,14 @@ run_case accuracy_same_file_twice 2 "names the same file as another of this comm
 run_case run_output_side_file_name 2 'must not end in ".records"' "$B" run small.json --output x.h5.records
 
 # --- spectrum: another run's files, and its own checked before the map -----------------------------
-# spectrum_with AMPLITUDE_FROM AMPLITUDE_TO > file: a 4 x 5 spectrum of the paper's block.
+# spectrum_with AMPLITUDE_FROM AMPLITUDE_TO > file: a 4 x 5 spectrum of the paper's block, its
+# minima refined as coarsely as its boundaries are bisected (its round records stay small).
 spectrum_with() {
   cat <<JSON
 {"block": {"half_width": 0.5, "half_height": 1.0}, "contact": {"friction": 0.6, "restitution": 0.6},
  "pulse": {"type": "cosine_pulse"}, "frequency_ratio": {"from": 0.8, "to": 2.0, "count": 4},
  "amplitude_ratio": {"from": $1, "to": $2, "count": 5}, "bisection": {"tolerance": 1e-2},
- "output": "X.h5"}
+ "minimum_overturning": {"tolerance": 1e-2, "resolution": 1e-2}, "output": "X.h5"}
 JSON
 }
 # A study X.h5.round interrupted (its checkpoint and records kept), then a spectrum X.h5 that finds
@@ -136,7 +137,8 @@ if [[ $long_code -eq 4 && -e X.h5.round.checkpoint && -e X.h5.round.records ]]; 
 else
   fail "the study to interrupt: exit $long_code, $(tail -c 300 long.err)"
 fi
-# A bisection state that is not this spectrum's is refused before the map, not after it.
+# A bisection state or minimum refinement that is not this spectrum's is refused before the map,
+# not after it.
 spectrum_with 1.0 3.0 >spectrum.json
 sed 's/"X.h5"/"S.h5"/' spectrum.json >s_spectrum.json
 printf 'someone else' >S.h5.bisection
@@ -145,6 +147,12 @@ run_case spectrum_foreign_bisection 2 "S.h5.bisection: not a usable blockfrag bi
 [[ ! -e S.h5.records && ! -e S.h5.checkpoint ]] && pass ||
   fail "spectrum_foreign_bisection: the map ran before the bisection state was checked"
 rm S.h5.bisection
+printf 'someone else' >S.h5.minimum
+run_case spectrum_foreign_minimum 2 "S.h5.minimum: not a usable blockfrag minimum refinement" \
+  "$B" spectrum s_spectrum.json
+[[ ! -e S.h5.records && ! -e S.h5.checkpoint ]] && pass ||
+  fail "spectrum_foreign_minimum: the map ran before the minimum refinement was checked"
+rm S.h5.minimum
 mkfifo S.h5.round-records
 run_case spectrum_round_records_fifo 2 "S.h5.round-records: not a regular file" \
   "$B" spectrum s_spectrum.json
@@ -179,7 +187,8 @@ run_case full_disk_spectrum 1 "cannot write limited_spectrum/sp.h5: HDF5: " \
   bash -c 'trap "" XFSZ; ulimit -f 8; exec "$@"' -- "$B" spectrum limited_spectrum.json
 [[ -e limited_spectrum/sp.h5.checkpoint && -e limited_spectrum/sp.h5.bisection ]] && pass ||
   fail "full_disk_spectrum: the checkpoint or the bisection state is gone"
-run_case full_disk_spectrum.rerun 0 "(0 map points and 0 bisection midpoints computed in this run" \
+run_case full_disk_spectrum.rerun 0 \
+  "(0 map points and 0 bisection midpoints and 0 minimum refinement midpoints computed in this run" \
   "$B" spectrum limited_spectrum.json
 # A real full disk where a tmpfs can be mounted (as root).
 mkdir full

@@ -684,8 +684,9 @@ def test_fragility_pair_refuses_studies_that_measure_intensity_differently(work)
 # --- plot_spectrum.py ---------------------------------------------------------------------------------
 
 # plot_spectrum.py's colours: stands, safe island, overturns with no impact, after more impacts,
-# still moving.
+# still moving; the refined minimum.
 STANDS, ISLAND, NO_IMPACT, MORE_IMPACTS, MOVING = "#F2F2F2", "#56B4E9", "#D55E00", "#CC79A7", "#F0E442"
+REFINED_MINIMUM = "#009E73"
 
 
 def synthetic_spectrum(f_ratio, a_ratio):
@@ -698,9 +699,12 @@ def synthetic_spectrum(f_ratio, a_ratio):
     return 0
 
 
-def write_spectrum(path, frequency=np.geomspace(0.5, 3.0, 30), amplitude=np.linspace(0.9, 6.0, 50)):
+def write_spectrum(path, frequency=np.geomspace(0.5, 3.0, 30), amplitude=np.linspace(0.9, 6.0, 50),
+                   minimum=True):
     """A spectrum output as blockfrag writes it, from synthetic_spectrum, its crossings taken at
-    the first cell of each change (the script draws them, it does not check the bisection)."""
+    the first cell of each change (the script draws them, it does not check the bisection); with
+    `minimum`, a refined minimum 0.2 below the map's lowest onset at the frequencies below 1, equal
+    to it elsewhere."""
     verdict = np.array([[synthetic_spectrum(f, a) for a in amplitude] for f in frequency], dtype=np.int64)
     index, crossing, direction = [], [], []
     for i in range(len(frequency)):
@@ -722,6 +726,13 @@ def write_spectrum(path, frequency=np.geomspace(0.5, 3.0, 30), amplitude=np.lins
         f["boundary/frequency_index"] = np.array(index, dtype=np.int64)
         f["boundary/amplitude_ratio"] = np.array(crossing)
         f["boundary/direction"] = np.array(direction, dtype=np.int64)
+        if minimum:
+            lowest = np.array([min(c for c, i, d in zip(crossing, index, direction) if i == k and d > 0)
+                               for k in range(len(frequency))])
+            f["minimum_overturning/frequency_ratio"] = frequency
+            f["minimum_overturning/map_amplitude_ratio"] = lowest
+            f["minimum_overturning/amplitude_ratio"] = np.where(frequency < 1, lowest - 0.2, lowest)
+            f["minimum_overturning"].attrs["tolerance"] = 1e-3
     return verdict
 
 
@@ -743,6 +754,20 @@ def test_spectrum_plot_shows_the_verdicts_and_the_island(work):
     for colour, name in ((ISLAND, "safe island"), (NO_IMPACT, "no impact"), (MORE_IMPACTS, "more impacts")):
         assert colour_pixels(pixels, colour) > 2000, f"no {name} colour"
     assert colour_pixels(pixels, MOVING) == 0, "the still-moving colour without any such point"
+    assert colour_pixels(pixels, REFINED_MINIMUM) > 300, "no refined minimum"
+
+
+def test_spectrum_plot_marks_where_the_refined_minimum_is_lower(work):
+    write_spectrum(work / "s.h5")
+    spectrum = load(PLOT_SPECTRUM)
+    frequency, refined, lowered = spectrum.minimum_line(spectrum.read_spectrum(str(work / "s.h5")))
+    assert np.array_equal(lowered, frequency < 1), lowered
+    # A file written before the refinement existed is drawn without it.
+    write_spectrum(work / "old.h5", minimum=False)
+    assert spectrum.minimum_line(spectrum.read_spectrum(str(work / "old.h5"))) is None
+    result = call(PLOT_SPECTRUM, work / "old.h5", "-o", work / "old.png")
+    assert result.returncode == 0, result.stderr
+    assert colour_pixels(spectrum_png(work / "old.png"), REFINED_MINIMUM) == 0
 
 
 def test_spectrum_plot_draws_a_map_and_its_zoom(work):

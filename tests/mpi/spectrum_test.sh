@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # `blockfrag spectrum` end to end. A small spectrum of the paper's block gives a bitwise identical
 # file (h5diff: every dataset and attribute) on 1 rank (no mpirun), 2 ranks, and 3 ranks with
-# chunks of one point; killed with SIGKILL during the map, at the start of the bisection and inside
-# a bisection round, and resumed each time with the same command, it ends identical too, with its
-# own files gone; SIGTERM exits with code 4 and the rerun completes; a finished spectrum run again
+# chunks of one point; killed with SIGKILL during the map, at the start of the bisection, inside a
+# bisection round and in the minimum's refinement, and resumed each time with the same command, it
+# ends identical too, with its own files gone; SIGTERM exits with code 4 and the rerun completes; a finished spectrum run again
 # is reported complete and left alone. A bad config is refused before any work (exit 2, the file
 # and each JSON path named, nothing written). Every spectrum in configs/ runs, on a coarser grid.
 set -u
@@ -63,6 +63,12 @@ with h5py.File(sys.argv[1], "r") as f:
     assert (direction == 1).sum() >= 24 and (direction == -1).sum() >= 1, direction
     low, high = f["boundary/amplitude_low"][()], f["boundary/amplitude_high"][()]
     assert ((high - low) <= 1e-6 * high).all()
+    m = f["minimum_overturning"]
+    assert (m["state"][()] == 1).all(), m["state"][()]
+    refined, unrefined = m["amplitude_ratio"][()], m["map_amplitude_ratio"][()]
+    assert (m["amplitude_high"][()] <= m["amplitude_low"][()] * (1 + 1.001e-3)).all()
+    # Never above the map's own minimum (within the map bisection's 1e-6).
+    assert (refined <= unrefined * (1 + 1e-6)).all(), (refined, unrefined)
 PY
 then pass; else fail "the 1-rank output is not a complete spectrum"; fi
 
@@ -111,6 +117,10 @@ start_job
 wait_for s.h5.round-checkpoint
 kill_job
 [[ $landed -eq 1 && ! -e s.h5 ]] && pass || fail "the third kill missed the bisection"
+start_job
+wait_for s.h5.minimum
+kill_job
+[[ $landed -eq 1 && -e s.h5.minimum && ! -e s.h5 ]] && pass || fail "the fourth kill missed the minimum's refinement"
 start_job
 wait "$job"
 code=$?

@@ -74,7 +74,8 @@ Scene random_scene(const SceneDraws& d) {
   if (kind == 2) s.ground_motion = RectangularPulse{A, T};
   s.duration = std::min(10.0, 2 * T + 2);
   // The inputs of later issues: vertical motion (lift-off beyond 1 g), polygon blocks (a
-  // trapezoid, or a pentagon with a gable), a dam crest between the ground and the block.
+  // trapezoid, or a pentagon with a gable), a rocking restitution, a dam crest between the ground
+  // and the block.
   if (d.chance("vertical", 0.3)) {
     const double Av = d.log_uniform("vertical_amplitude", 0.05, 2.0) * d.sign("vertical_sign");
     const double Tv = d.log_uniform("vertical_period", 0.05, 5.0);
@@ -90,6 +91,11 @@ Scene random_scene(const SceneDraws& d) {
                {0.5 * (top_left + top_right), h * (1 + 0.3 * d.uniform("gable_height"))});
     }
     s.polygon = PolygonBlock{v, 1.0};
+  }
+  if (d.chance("rocking_restitution", 0.3)) {
+    s.contact.rocking_restitution =
+        d.chance("housner", 0.2) ? RockingRestitution{true, 1.0}
+                                 : RockingRestitution{false, d.uniform("rocking_ratio", 0.3, 1.0)};
   }
   if (d.chance("dam", 0.2))
     s.dam = DamCrest{DamPeriod{d.log_uniform("dam_period", 0.05, 0.5)}, 0.05, 1.0};

@@ -20,8 +20,13 @@ std::vector<std::filesystem::path> side_files_of(const std::filesystem::path& ou
   const SpectrumFiles spectrum = SpectrumFiles::for_output(output);
   auto lock = output;
   lock += ".lock";
-  return {checkpoint_path_for(output), record_spool_path_for(output), spectrum.bisection,
-          spectrum.round_checkpoint,   spectrum.round_records,        lock};
+  return {checkpoint_path_for(output),
+          record_spool_path_for(output),
+          spectrum.bisection,
+          spectrum.minimum,
+          spectrum.round_checkpoint,
+          spectrum.round_records,
+          lock};
 }
 
 TEST(SideFileNames, NoOutputMayHaveTheNameOfAnOutputsFile) {

@@ -54,6 +54,10 @@ TEST(SpectrumConfig, ReadsEveryValueWithItsDefaults) {
   EXPECT_EQ(config.base_scene.solver.tolerance, 1e-8);
   EXPECT_EQ(config.bisection_tolerance, 1e-7);
   EXPECT_EQ(config.max_iterations, 60);
+  EXPECT_EQ(config.minimum_overturning.tolerance, 1e-3);
+  EXPECT_EQ(config.minimum_overturning.resolution, 1e-3);
+  EXPECT_EQ(config.minimum_overturning.near_overturning, 0.5);
+  EXPECT_EQ(config.minimum_overturning.max_midpoints, 1000);
   EXPECT_EQ(config.settle_allowance_tau, 200.0);
   EXPECT_EQ(config.output, "paper.h5");
   EXPECT_EQ(config.checkpoint_interval_s, 5.0);
@@ -106,20 +110,28 @@ TEST(SpectrumConfig, HashCoversWhatChangesAResultOnly) {
   moved["checkpoint_interval_s"] = 99;
   EXPECT_EQ(parse_spectrum_config(moved, "spec.json").hash, base.hash);
   EXPECT_EQ(parse_spectrum_config(paper_spectrum(), "spec.json", "other.h5").hash, base.hash);
-  for (const auto& [pointer, value] :
-       std::vector<std::pair<std::string, json>>{{"/contact/restitution", 0.5},
-                                                 {"/amplitude_ratio/count", 6},
-                                                 {"/frequency_ratio/spacing", "linear"},
-                                                 {"/bisection", {{"tolerance", 1e-6}}},
-                                                 {"/settle_allowance_tau", 100},
-                                                 {"/effects", {"rocking", "impact"}},
-                                                 {"/pulse/cycles", 2}}) {
+  for (const auto& [pointer, value] : std::vector<std::pair<std::string, json>>{
+           {"/contact/restitution", 0.5},
+           {"/amplitude_ratio/count", 6},
+           {"/frequency_ratio/spacing", "linear"},
+           {"/bisection", {{"tolerance", 1e-6}}},
+           {"/minimum_overturning", {{"tolerance", 1e-4}}},
+           {"/minimum_overturning", {{"near_overturning", 0.7}}},
+           {"/settle_allowance_tau", 100},
+           {"/effects", {"rocking", "impact"}},
+           {"/pulse/cycles", 2}}) {
     json changed = paper_spectrum();
     changed[JsonPointer(pointer)] = value;
     EXPECT_NE(parse_spectrum_config(changed, "spec.json").hash, base.hash) << pointer;
   }
+  // The refinement's defaults written out hash as a spec without the key does (a spec of before
+  // the key existed), so its checkpoints resume.
+  json defaults = paper_spectrum();
+  defaults["minimum_overturning"] = {{"tolerance", 1e-3}, {"max_midpoints", 1000}};
+  EXPECT_EQ(parse_spectrum_config(defaults, "spec.json").hash, base.hash);
   // The canonical config has every default written out.
   EXPECT_EQ(base.canonical["bisection"]["max_iterations"], 60);
+  EXPECT_EQ(base.canonical["minimum_overturning"]["near_overturning"], 0.5);
   EXPECT_EQ(base.canonical["block"]["mass"], 1.0);
   EXPECT_EQ(base.canonical["pulse"]["cycles"], 1.0);
   EXPECT_EQ(base.canonical["solver"]["method"], "adaptive");
@@ -132,6 +144,11 @@ TEST(SpectrumConfig, ReportsEveryErrorAtItsPath) {
   document["amplitude_ratio"]["to"] = 0.5;
   document["bisection"] = {{"tolerance", 0}, {"max_iterations", 1000}};
   document["settle_alowance_tau"] = 10;
+  document["minimum_overturning"] = {{"tolerance", 0.5},
+                                     {"resolution", 0},
+                                     {"near_overturning", -0.1},
+                                     {"max_midpoints", 0},
+                                     {"tolerence", 1e-3}};
   const std::string errors = spectrum_errors(document);
   EXPECT_THAT(errors, HasSubstr("spec.json: /contact/friction: must be in [0, 10000] (got -1)"));
   EXPECT_THAT(errors, HasSubstr("spec.json: /pulse/amplitude_g: is set at each point of the grid"));
@@ -139,6 +156,16 @@ TEST(SpectrumConfig, ReportsEveryErrorAtItsPath) {
   EXPECT_THAT(errors, HasSubstr("spec.json: /bisection/tolerance: must be in [1e-14, 0.1]"));
   EXPECT_THAT(errors, HasSubstr("spec.json: /bisection/max_iterations: must be in [1, 200]"));
   EXPECT_THAT(errors, HasSubstr("spec.json: /settle_alowance_tau: unknown key"));
+  EXPECT_THAT(errors,
+              HasSubstr("spec.json: /minimum_overturning/tolerance: must be in [1e-09, 0.1]"));
+  EXPECT_THAT(errors,
+              HasSubstr("spec.json: /minimum_overturning/resolution: must be in [1e-09, 0.1]"));
+  EXPECT_THAT(errors,
+              HasSubstr("spec.json: /minimum_overturning/near_overturning: must be in [0, 1]"));
+  EXPECT_THAT(errors,
+              HasSubstr("spec.json: /minimum_overturning/max_midpoints: must be in [1, 100000]"));
+  EXPECT_THAT(errors, HasSubstr("spec.json: /minimum_overturning/tolerence: unknown key; did you "
+                                "mean \"tolerance\"?"));
 }
 
 TEST(SpectrumConfig, RefusesBlocksItCannotMap) {
