@@ -195,6 +195,10 @@ void validate_reservoir(const Scene& scene) {
             "impact, flight)");
     require(std::holds_alternative<NoMotion>(scene.vertical_motion),
             "a reservoir takes no vertical_motion (its pressures are in g alone)");
+    // The rocking rule turns the block alone about its new corner; the water's added mass would
+    // take part in the impact.
+    require(!scene.contact.rocking_restitution || water.hydrodynamic == Hydrodynamic::none,
+            "contact rocking_restitution is not taken with a reservoir's westergaard added mass");
   }
   if (!(water.depth >= wetted)) {
     refuse(
