@@ -18,6 +18,7 @@
 #include "engine/scene/scene_validation.hpp"
 #include "engine/seat/seat_simulation.hpp"
 #include "engine/tolerances.hpp"
+#include "engine/water/reservoir_load.hpp"
 
 namespace blockfrag {
 
@@ -368,6 +369,7 @@ ContactForces FlatGroundSimulation::forces_now() const {
 
 SimulationWithHistory run_scene(const Scene& scene, double output_interval) {
   validate_scene(scene);
+  if (reservoir_wets(scene)) return simulate_under_reservoir(scene, output_interval);
   if (scene.seat) return simulate_on_seat(scene, output_interval);
   FlatGroundSimulation simulation(scene, output_interval);
   return run_to_end(simulation);

@@ -187,6 +187,19 @@ void validate_reservoir(const Scene& scene) {
   require_in(domain::water_density, water.density, "reservoir density");
   require_in(domain::uplift_area_factor, water.uplift_area_factor, "reservoir uplift_area_factor");
   const double wetted = water.level - lowest_block_y(scene);
+  // Water against the block runs the full model on the seat's engine (engine/water/
+  // reservoir_load.hpp), with the water's pressures in g alone.
+  if (wetted > 0.0) {
+    require(model_named_by(scene.effects) == Model::full,
+            "effects with a reservoir must be \"auto\" or the full model's (rocking, sliding, "
+            "impact, flight)");
+    require(std::holds_alternative<NoMotion>(scene.vertical_motion),
+            "a reservoir takes no vertical_motion (its pressures are in g alone)");
+    // The rocking rule turns the block alone about its new corner; the water's added mass would
+    // take part in the impact.
+    require(!scene.contact.rocking_restitution || water.hydrodynamic == Hydrodynamic::none,
+            "contact rocking_restitution is not taken with a reservoir's westergaard added mass");
+  }
   if (!(water.depth >= wetted)) {
     refuse(
         "reservoir depth must be >= the water's depth at the block, level minus the block's "

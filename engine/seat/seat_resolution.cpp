@@ -67,10 +67,11 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
     // A rocking impact takes the scene's rocking restitution where it sets one, as on the flat
     // ground (engine/contact/rocking_restitution.hpp).
     const auto& rocking_restitution = scene_.contact.rocking_restitution;
-    const auto rocking = laid || !rocking_restitution
-                             ? std::nullopt
-                             : rocking_impact({all, static_cast<std::size_t>(first), velocity_of(s),
-                                               k2, mu, velocity_tol_, *rocking_restitution});
+    const auto rocking =
+        laid || !rocking_restitution
+            ? std::nullopt
+            : rocking_impact({all, static_cast<std::size_t>(first), velocity_of(s), inertia.k2, mu,
+                              velocity_tol_, *rocking_restitution});
     if (laid) {
       lay_on(pairs, s);
     } else if (rocking) {

@@ -10,8 +10,7 @@
 // the centripetal part of the face's acceleration, -omega^2 times its lever). The ground's
 // acceleration -lambda g drives the water as it drives the block: the ground frame's inertial
 // force lambda g on the added mass, (M_a lambda g, 0, -S_a lambda g). The derivatives of A are
-// central differences (steps 1e-4 of the block's size and 1e-4 rad: their error, of the order of
-// the step squared, is below the integrator's tolerance).
+// exact (engine/water/westergaard.hpp, westergaard_added_mass_with_rates).
 //
 // Left out, as Westergaard's model leaves them out: the water's compressibility (the reservoir's
 // resonance), cavitation where the pressure would fall below zero, the surface's waves, and the
@@ -23,6 +22,7 @@
 
 #include "engine/contact/body_load.hpp"
 #include "engine/water/water_load.hpp"
+#include "engine/water/westergaard.hpp"
 
 namespace blockfrag {
 
@@ -48,7 +48,7 @@ class HydrodynamicLoad : public ExternalLoad {
   struct Matrix {  // A's three entries, per unit mass
     double xx, xtheta, thetatheta;
   };
-  Matrix added(double y, double theta) const;
+  Matrix per_mass(const AddedMass& a) const;
 
   WettedBlock block_;
   double surface_, density_, reservoir_depth_;

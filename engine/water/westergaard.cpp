@@ -17,14 +17,63 @@ AddedMass depth_antiderivatives(double u, double z) {
           2.0 / 3.0 * z * z * u32 - 4.0 / 5.0 * z * u52 + 2.0 / 7.0 * u72};
 }
 
+// The integrands: the antiderivatives' derivatives in u, and in Z.
+AddedMass depth_integrands(double u, double z) {
+  const double root = std::sqrt(u);
+  return {root, root * (z - u), root * (z - u) * (z - u)};
+}
+AddedMass surface_height_derivatives(double u, double z) {
+  const double u32 = u * std::sqrt(u), u52 = u32 * u;
+  return {0.0, 2.0 / 3.0 * u32, 4.0 / 3.0 * z * u32 - 4.0 / 5.0 * u52};
+}
+
+void add_scaled(AddedMass& total, double scale, const AddedMass& a) {
+  total.mass += scale * a.mass;
+  total.first_moment += scale * a.first_moment;
+  total.second_moment += scale * a.second_moment;
+}
+
+void check_depth(double reservoir_depth) {
+  if (!(reservoir_depth > 0.0)) {
+    throw ContractViolation("westergaard_added_mass: the reservoir's depth must be > 0");
+  }
+}
+
 }  // namespace
+
+AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon, double surface,
+                                                     double density, double reservoir_depth,
+                                                     std::span<const std::size_t> crack_edges,
+                                                     const Vertex& centre) {
+  check_depth(reservoir_depth);
+  const double scale = 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
+  const double z = surface - centre[1];
+  AddedMassWithRates out;
+  out.at =
+      westergaard_added_mass(polygon, surface, density, reservoir_depth, crack_edges, centre[1]);
+  for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
+    const bool a_deeper = piece.depth_a > piece.depth_b;
+    const double deep = a_deeper ? piece.depth_a : piece.depth_b;
+    const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
+    const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
+    const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre[0];
+    const AddedMass f_deep = depth_integrands(deep, z), f_shallow = depth_integrands(shallow, z);
+    // Rising by dy: both depths and Z fall by dy.
+    add_scaled(out.d_dy, -scale, f_deep);
+    add_scaled(out.d_dy, scale, f_shallow);
+    add_scaled(out.d_dy, -scale, surface_height_derivatives(deep, z));
+    add_scaled(out.d_dy, scale, surface_height_derivatives(shallow, z));
+    // Turning by dtheta: a point at x from the centre rises by x dtheta.
+    add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
+    add_scaled(out.d_dtheta, scale * shallow_x, f_shallow);
+  });
+  return out;
+}
 
 AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, double density,
                                  double reservoir_depth, std::span<const std::size_t> crack_edges,
                                  double reference_y) {
-  if (!(reservoir_depth > 0.0)) {
-    throw ContractViolation("westergaard_added_mass: the reservoir's depth must be > 0");
-  }
+  check_depth(reservoir_depth);
   const double scale = 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
   const double z = surface - reference_y;  // the surface's height above the reference
   AddedMass total;

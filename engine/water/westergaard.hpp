@@ -42,4 +42,18 @@ AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, do
                                  double reservoir_depth, std::span<const std::size_t> crack_edges,
                                  double reference_y);
 
+// The added mass about the centre of mass `centre` (its y the reference), and how it changes as
+// the block rises (d/dy: every depth and the surface's height above the centre fall by dy) and
+// turns about its centre (d/dtheta: a point's depth falls by its x from the centre times dtheta).
+// A piece's integrals depend on its ends' depths alone, and their derivative in a depth is the
+// integrand there, which is zero at the surface: where a piece is cut by the surface, its cut end
+// counts nothing.
+struct AddedMassWithRates {
+  AddedMass at, d_dy, d_dtheta;
+};
+AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon, double surface,
+                                                     double density, double reservoir_depth,
+                                                     std::span<const std::size_t> crack_edges,
+                                                     const Vertex& centre);
+
 }  // namespace blockfrag

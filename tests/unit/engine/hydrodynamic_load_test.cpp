@@ -81,6 +81,39 @@ TEST(HydrodynamicLoad, FreeRockingKeepsBlockWaterAndGravityEnergy) {
   }
 }
 
+// The rates of the added mass against central differences of the added mass itself, for the
+// type A dam block's outline tilted, lifted and cut by the surface.
+TEST(HydrodynamicLoad, TheAddedMassRatesAreItsDerivatives) {
+  const std::vector<Vertex> body{{-5.0, -7.0}, {7.55, -7.0}, {5.0, -3.6}, {5.0, 9.7}, {-5.0, 9.7}};
+  const std::vector<std::size_t> base{0};
+  for (const double theta : {0.0, 0.07, -0.04}) {
+    for (const double surface : {9.7, 3.0}) {
+      SCOPED_TRACE(theta);
+      SCOPED_TRACE(surface);
+      const double y = 0.3;
+      const auto added = [&](double yy, double tt) {
+        return westergaard_added_mass(world_polygon(body, 0.0, yy, tt), surface, 1000.0, 100.0,
+                                      base, yy);
+      };
+      const AddedMassWithRates a = westergaard_added_mass_with_rates(
+          world_polygon(body, 0.0, y, theta), surface, 1000.0, 100.0, base, {0.0, y});
+      const double h = 1e-5;
+      const AddedMass up = added(y + h, theta), down = added(y - h, theta);
+      const AddedMass turned = added(y, theta + h), back = added(y, theta - h);
+      const auto near = [](double exact, double difference) {
+        EXPECT_NEAR(exact, difference, 1e-6 * std::max(1.0, std::abs(difference)));
+      };
+      near(a.d_dy.mass, (up.mass - down.mass) / (2 * h));
+      near(a.d_dy.first_moment, (up.first_moment - down.first_moment) / (2 * h));
+      near(a.d_dy.second_moment, (up.second_moment - down.second_moment) / (2 * h));
+      near(a.d_dtheta.mass, (turned.mass - back.mass) / (2 * h));
+      near(a.d_dtheta.first_moment, (turned.first_moment - back.first_moment) / (2 * h));
+      near(a.d_dtheta.second_moment, (turned.second_moment - back.second_moment) / (2 * h));
+      EXPECT_GT(std::abs(a.d_dtheta.second_moment), 1.0);
+    }
+  }
+}
+
 TEST(HydrodynamicLoad, TheAddedMassSlowsTheRocking) {
   const Scene scene = released_slice(0.2);
   const HydrodynamicLoad water(wetted_slice(), kSurface, kWaterDensity, kReservoirDepth);

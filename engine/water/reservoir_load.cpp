@@ -1,0 +1,68 @@
+#include "engine/water/reservoir_load.hpp"
+
+#include "engine/scene/block_geometry.hpp"
+#include "engine/scene/seat.hpp"
+#include "engine/seat/seat_simulation.hpp"
+#include "engine/water/block_outline.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+// The flat ground as a seat: one segment this many block sizes either side of the block, far past
+// any slide the ground's motions can give.
+constexpr double kFlatSeatHalfLength = 1e4;
+
+// The hydrostatic and uplift part of the reservoir: its added mass is HydrodynamicLoad's.
+Scene without_added_mass(Scene scene) {
+  scene.reservoir->hydrodynamic = Hydrodynamic::none;
+  return scene;
+}
+
+double block_mass(const Scene& scene) {
+  return scene.polygon ? scene.polygon->mass : scene.block.mass;
+}
+
+Scene on_flat_seat(Scene scene) {
+  if (scene.seat) return scene;
+  const BlockOutline outline(scene);
+  const double x = outline.rest_centre()[0];
+  const double reach = kFlatSeatHalfLength * scene_geometry(scene).size();
+  scene.seat = Seat{{{x - reach, outline.rest_bottom()}, {x + reach, outline.rest_bottom()}}};
+  return scene;
+}
+
+}  // namespace
+
+ReservoirLoad::ReservoirLoad(const Scene& scene)
+    : static_loads_(without_added_mass(scene)), mass_(block_mass(scene)) {
+  if (scene.reservoir->hydrodynamic == Hydrodynamic::westergaard) {
+    const BlockOutline outline(scene);
+    hydrodynamic_.emplace(WettedBlock{outline.body(), static_loads_.crack().edges, mass_,
+                                      scene_geometry(scene).size()},
+                          scene.reservoir->level, scene.reservoir->density, scene.reservoir->depth);
+  }
+}
+
+LoadAddition ReservoirLoad::at(const BlockState& s, double lambda, double g,
+                               Footing footing) const {
+  LoadAddition out = hydrodynamic_ ? hydrodynamic_->at(s, lambda, g, footing) : LoadAddition{};
+  const ReservoirLoadSet loads = static_loads_.at(
+      s, footing == Footing::seated ? CrackOpening::closed() : CrackOpening::whole());
+  out.force.x += (loads.hydrostatic.fx + loads.uplift.fx) / mass_;
+  out.force.y += (loads.hydrostatic.fy + loads.uplift.fy) / mass_;
+  out.moment += (loads.hydrostatic.moment + loads.uplift.moment) / mass_;
+  return out;
+}
+
+bool reservoir_wets(const Scene& scene) {
+  return scene.reservoir && scene.reservoir->level > BlockOutline(scene).rest_bottom();
+}
+
+SimulationWithHistory simulate_under_reservoir(const Scene& scene, double output_interval) {
+  const Scene seated = on_flat_seat(scene);
+  const ReservoirLoad load(seated);
+  return simulate_on_seat(seated, output_interval, &load);
+}
+
+}  // namespace blockfrag

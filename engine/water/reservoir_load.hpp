@@ -1,0 +1,36 @@
+// The reservoir in the block's equations of motion (engine/contact/body_load.hpp): the hydrostatic
+// push and the crack's uplift at the block's pose (engine/water/reservoir_loads.hpp), the uplift
+// under the scene's rule with the crack closed while the block is seated on its base and opened
+// whole while it rocks or flies, and Westergaard's added mass (engine/water/hydrodynamic_load.hpp).
+// A scene whose water wets the block runs on the seat's engine, the flat ground as a seat of one
+// long segment under the block's base (simulate_under_reservoir).
+#pragma once
+
+#include <optional>
+
+#include "engine/contact/body_load.hpp"
+#include "engine/simulate.hpp"
+#include "engine/water/hydrodynamic_load.hpp"
+#include "engine/water/reservoir_loads.hpp"
+
+namespace blockfrag {
+
+class ReservoirLoad : public ExternalLoad {
+ public:
+  // The scene must be valid and have a seat and a reservoir.
+  explicit ReservoirLoad(const Scene& scene);
+  LoadAddition at(const BlockState& s, double lambda, double g, Footing footing) const override;
+
+ private:
+  ReservoirLoads static_loads_;  // hydrostatic and uplift
+  std::optional<HydrodynamicLoad> hydrodynamic_;
+  double mass_;
+};
+
+// Whether the scene's reservoir wets its block at rest (level above the block's lowest point).
+bool reservoir_wets(const Scene& scene);
+
+// A valid scene whose reservoir wets its block.
+SimulationWithHistory simulate_under_reservoir(const Scene& scene, double output_interval);
+
+}  // namespace blockfrag
