@@ -128,12 +128,52 @@ std::optional<std::array<double, 2>> full_pivot_solve(std::array<std::array<doub
   return swap_columns ? std::array<double, 2>{c1, c0} : std::array<double, 2>{c0, c1};
 }
 
+// One contact under a coupled mass matrix (the reservoir's added mass): the same 2x2 or 1x1
+// system with M^-1 applied to each row in full.
+std::optional<FixedStateForces> coupled_one_contact_forces(const PlanarContact& c,
+                                                           ContactState state, const BlockState& s,
+                                                           const BodyLoad& load, double mu) {
+  FixedStateForces out;
+  const Eigen::Vector3d free_q = load.free_acceleration();
+  const RigidVelocity v{s.vx, s.vy, s.omega};
+  const Vec2 t = contact_tangent(c);
+  const Row3 jn = row_of(c, c.normal), jt = row_of(c, t);
+  const Eigen::Vector3d wn = load.inertia.inverse_times({jn.x, jn.y, jn.z});
+  const Eigen::Vector3d wt = load.inertia.inverse_times({jt.x, jt.y, jt.z});
+  const auto dot_w = [](Row3 r, const Eigen::Vector3d& w) {
+    return (r.x * w(0) + r.y * w(1)) + r.z * w(2);
+  };
+  const ContactAcceleration y =
+      contact_acceleration(c, v, BodyAcceleration{free_q(0), free_q(1), free_q(2)});
+  const int slip = slip_sign(state);
+  double normal = 0.0, tangent = 0.0;
+  if (slip == 0) {
+    const auto amounts =
+        full_pivot_solve({{{dot_w(jn, wn), dot_w(jn, wt)}, {dot_w(jt, wn), dot_w(jt, wt)}}},
+                         {-y.normal, -y.tangent});
+    if (!amounts) return std::nullopt;
+    normal = (*amounts)[0];
+    tangent = (*amounts)[1];
+  } else {
+    const double a = dot_w(jn, wn) - slip * mu * dot_w(jn, wt);
+    if (a == 0.0) return std::nullopt;
+    normal = -y.normal / a;
+    tangent = -slip * mu * normal;
+  }
+  out.normal[0] = normal;
+  out.tangent[0] = tangent;
+  out.total = {normal * c.normal.x + tangent * t.x, normal * c.normal.y + tangent * t.y};
+  const Eigen::Vector3d change = normal * wn + tangent * wt;
+  out.acceleration = {free_q(0) + change(0), free_q(1) + change(1), free_q(2) + change(2)};
+  return out;
+}
+
 }  // namespace
 
 std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
                                                    const BlockState& s, const BodyLoad& load,
                                                    double mu) {
-  if (load.inertia.coupled()) return std::nullopt;
+  if (load.inertia.coupled()) return coupled_one_contact_forces(c, state, s, load, mu);
   FixedStateForces out;
   const Eigen::Vector3d free_q = load.free_acceleration();
   const BodyAcceleration free{free_q(0), free_q(1), free_q(2)};

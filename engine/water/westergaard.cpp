@@ -49,14 +49,17 @@ AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon
   const double scale = 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
   const double z = surface - centre[1];
   AddedMassWithRates out;
-  out.at =
-      westergaard_added_mass(polygon, surface, density, reservoir_depth, crack_edges, centre[1]);
   for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
     const bool a_deeper = piece.depth_a > piece.depth_b;
     const double deep = a_deeper ? piece.depth_a : piece.depth_b;
     const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
     const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
     const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre[0];
+    const AddedMass at_deep = depth_antiderivatives(deep, z);
+    const AddedMass at_shallow = depth_antiderivatives(shallow, z);
+    out.at.mass += scale * (at_deep.mass - at_shallow.mass);
+    out.at.first_moment += scale * (at_deep.first_moment - at_shallow.first_moment);
+    out.at.second_moment += scale * (at_deep.second_moment - at_shallow.second_moment);
     const AddedMass f_deep = depth_integrands(deep, z), f_shallow = depth_integrands(shallow, z);
     // Rising by dy: both depths and Z fall by dy.
     add_scaled(out.d_dy, -scale, f_deep);

@@ -40,7 +40,7 @@ void for_each_wetted_piece(const WorldPolygon& polygon, double surface,
     // edge, whose end b is its lowest point.
     if (!(dy < 0.0) || !(b[1] < surface)) continue;
     if (std::find(crack_edges.begin(), crack_edges.end(), i) != crack_edges.end()) continue;
-    const double length = std::hypot(dx, dy);
+    const double length = std::sqrt(dx * dx + dy * dy);
     WettedPiece piece{a, b, {dy / length, -dx / length}, surface - a[1], surface - b[1]};
     if (!(a[1] < surface)) {  // the edge crosses the surface: its wetted part starts there
       const double t = (surface - a[1]) / dy;

@@ -58,6 +58,37 @@ TEST(OneContactForces, AgreeWithTheGeneralSolveOnRandomPosesAndVelocities) {
   EXPECT_GT(compared, 19900);
 }
 
+// Under a coupled mass matrix (an added mass with its lever arm, positive definite) and a moment.
+TEST(OneContactForces, AgreeWithTheGeneralSolveUnderACoupledMassMatrix) {
+  FixedUniforms u(20261207);
+  int compared = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const double turn = u(-3.2, 3.2);
+    const PlanarContact c{{u(-10, 10), u(-10, 10)},
+                          {std::cos(turn), std::sin(turn)},
+                          u(0, 1) < 0.5 ? ContactKind::block_vertex : ContactKind::seat_point};
+    const ContactState state = kStates[static_cast<std::size_t>(n % 3)];
+    const BlockState s{0.0, 0.0, u(-1, 1), u(-3, 3), u(-3, 3), u(-1, 1)};
+    const double k2 = u(1, 60), mu = u(0, 1.2);
+    const double added = u(0, 3), lever = u(-5, 5);  // the added mass a and its height z
+    const BodyLoad load{{u(-2, 2) * kG, -kG * (1 + u(-0.5, 0.5))},
+                        u(-20, 20) * kG,
+                        {k2, added, -added * lever, added * lever * lever * u(1, 1.5)}};
+    const auto one = one_contact_forces(c, state, s, load, mu);
+    if (!one) continue;
+    const FixedStateForces general =
+        fixed_state_forces(std::span(&c, 1), std::span(&state, 1), s, load, mu);
+    const double scale = 100 * kG;
+    expect_close(one->acceleration.x_dd, general.acceleration.x_dd, scale);
+    expect_close(one->acceleration.y_dd, general.acceleration.y_dd, scale);
+    expect_close(one->acceleration.theta_dd, general.acceleration.theta_dd, scale);
+    expect_close(one->normal[0], general.normal[0], scale);
+    expect_close(one->tangent[0], general.tangent[0], scale);
+    ++compared;
+  }
+  EXPECT_GT(compared, 19900);
+}
+
 // The flat ground's sticking_corner and slipping_corner are the one-contact system for the normal
 // (0, 1) under (lambda g, -g). Turning the normal, the corner's arm, the velocity and the applied
 // force together by any angle turns the accelerations and leaves the forces' normal and tangential
