@@ -44,7 +44,7 @@ TEST(PostEarthquakeCheck, AStandingBlockGetsItsFactorsUnderFullUplift) {
 }
 
 TEST(PostEarthquakeCheck, AnOverturnedBlockHasNone) {
-  const Summary summary = simulate(after_scene(true, 1.5, 4.0));
+  const Summary summary = simulate(after_scene(true, 2.0, 4.0));
   ASSERT_TRUE(summary.overturned);
   ASSERT_TRUE(summary.post_earthquake.has_value());
   EXPECT_FALSE(summary.post_earthquake->sliding_safety_factor.has_value());
