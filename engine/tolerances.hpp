@@ -45,6 +45,9 @@ inline constexpr double kFallDepth = 0.5;
 // Where rest on a seat ends: lambda is searched up to this (in g) for the thresholds; rest that
 // holds beyond it holds for any lambda.
 inline constexpr double kRestSearchLimit = 1024.0;
+// The flat ground under a reservoir runs as a seat of one segment this many block sizes either side
+// of the block (engine/water/reservoir_load.cpp): far past any slide a ground motion gives.
+inline constexpr double kFlatSeatHalfLength = 1e4;
 // A seat's simulation watches each block vertex and seat point not in contact for touching, one
 // guard each in a fixed array (engine/seat/seat_system.hpp): a scene on a seat has at most this
 // many together.

@@ -3,15 +3,12 @@
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/seat.hpp"
 #include "engine/seat/seat_simulation.hpp"
+#include "engine/tolerances.hpp"
 #include "engine/water/block_outline.hpp"
 
 namespace blockfrag {
 
 namespace {
-
-// The flat ground as a seat: one segment this many block sizes either side of the block, far past
-// any slide the ground's motions can give.
-constexpr double kFlatSeatHalfLength = 1e4;
 
 // The hydrostatic and uplift part of the reservoir: its added mass is HydrodynamicLoad's.
 Scene without_added_mass(Scene scene) {
