@@ -58,10 +58,16 @@ def check_complete(path, f):
         check_surface(path, f)
 
 
+def lost(f):
+    """The blocks that overturned or fell off their seat: both count as overturning
+    (mpi_driver/study/limit_states.cpp)."""
+    return (f["results/overturned"][()] != 0) | (f["results/fell"][()] != 0)
+
+
 def exceeded(f, group):
     """Which samples exceed the limit state, recounted from /results (successful ones only)."""
     ok = f["results/status"][()] == 0
-    overturned = ok & (f["results/overturned"][()] != 0)
+    overturned = ok & lost(f)
     nested = group.attrs["type"] != "overturning" and group.attrs["overturned_exceeds"]
     if group.attrs["type"] == "overturning":
         return overturned
@@ -102,7 +108,7 @@ def check_nested(path, f):
     if f["fragility"].attrs["scaling"] != "stripes":
         return
     ok = f["results/status"][()] == 0
-    overturned = ok & (f["results/overturned"][()] != 0)
+    overturned = ok & lost(f)
     levels = f["samples/level"][()]
     if "fragility_surface" in f:  # a surface's cells, to the first measure's levels
         levels = levels // len(next(iter(f["fragility_surface"].values()))["im2"])
