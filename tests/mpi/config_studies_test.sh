@@ -13,6 +13,9 @@ cd "$work" || exit 1
 
 for study in "$BLOCKFRAG_SOURCE_DIR"/configs/*_study.json; do
   name=$(basename "$study" .json)
+  # BLOCKFRAG_SKIP_STUDIES: names left out (CI's sanitizer stage leaves out the type B block's wet study,
+  # whose minutes of the seat's engine give the sanitizers nothing its unit tests do not).
+  [[ " ${BLOCKFRAG_SKIP_STUDIES:-} " == *" $name "* ]] && continue
   per_level=3
   if grep -q '"adaptive"' "$study"; then
     # At 3 samples a level an adaptive study's budget allows more batches than a design may have:
