@@ -55,7 +55,7 @@ Scene impulse_scene(const DoubleImpulseBlock& block, double velocity, double sec
   if (second_at >= 0.0) {
     for (const double t : {second_at, second_at + 0.5 * kImpulseWidth, second_at + kImpulseWidth})
       record.times.push_back(t);
-    for (const double a : {0.0, peak, 0.0}) record.acceleration_g.push_back(a);
+    for (const double value : {0.0, peak, 0.0}) record.acceleration_g.push_back(value);
   }
   Scene scene;
   scene.block = {std::sin(block.alpha), std::cos(block.alpha), 1.0};
@@ -126,7 +126,9 @@ INSTANTIATE_TEST_SUITE_P(
                       DoubleImpulseBlock{"alpha0_25_measured", 0.25, 0.873},
                       DoubleImpulseBlock{"alpha0_1_housner", 0.1, housner_ratio(0.1)},
                       DoubleImpulseBlock{"alpha0_15_r0_5", 0.15, 0.5}),
-    [](const ::testing::TestParamInfo<DoubleImpulseBlock>& info) { return info.param.name; });
+    [](const ::testing::TestParamInfo<DoubleImpulseBlock>& block_case) {
+      return block_case.param.name;
+    });
 
 // The first impulse's landing comes when free rocking from theta = 0 returns there: twice the
 // quarter swing after the pulse's centre. A pulse of width w is not quite an impulse: gravity turns
