@@ -14,6 +14,7 @@
 
 #include <Eigen/Dense>
 
+#include "engine/contact/crack_seating.hpp"
 #include "engine/contact/impact.hpp"
 #include "engine/scene/block_state.hpp"
 
@@ -87,7 +88,25 @@ class ExternalLoad {
  public:
   virtual ~ExternalLoad() = default;
   virtual LoadAddition at(const BlockState& s, double lambda, double g, Footing footing) const = 0;
+  // Whether the load on a seated block depends on how far the crack under its base has opened
+  // (the reservoir's "zero_in_gap" uplift): the engine then opens it from a lifting outermost
+  // contact's side just far enough to keep that contact's normal force from going negative
+  // (engine/seat/seated_load.hpp).
+  virtual bool opens_seated_crack() const { return false; }
+  // The load on the seated block with the crack opened over `fraction` of its length from `side`.
+  virtual LoadAddition seated_opened(const BlockState& s, double lambda, double g, LiftingSide,
+                                     double) const {
+    return at(s, lambda, g, Footing::seated);
+  }
 };
+
+inline BodyLoad with_addition(BodyLoad load, double inertia_per_mass, const LoadAddition& add) {
+  load.force.x += add.force.x;
+  load.force.y += add.force.y;
+  load.moment += add.moment;
+  load.inertia = {inertia_per_mass, add.xx, add.xtheta, add.thetatheta};
+  return load;
+}
 
 // The load on a block of k^2 = I/M under lambda, lambda_v and an external load (none: dry), the
 // block standing as `footing` says.
@@ -95,12 +114,17 @@ inline BodyLoad body_load(double inertia_per_mass, double lambda, double lambda_
                           const ExternalLoad* external, const BlockState& s, Footing footing) {
   BodyLoad load{{lambda * g, -g * (1.0 + lambda_v)}, 0.0, inertia_per_mass};
   if (external == nullptr) return load;
-  const LoadAddition add = external->at(s, lambda, g, footing);
-  load.force.x += add.force.x;
-  load.force.y += add.force.y;
-  load.moment += add.moment;
-  load.inertia = {inertia_per_mass, add.xx, add.xtheta, add.thetatheta};
-  return load;
+  return with_addition(load, inertia_per_mass, external->at(s, lambda, g, footing));
+}
+
+// The same for a seated block whose crack is opened over `fraction` of its length from `side`
+// (ExternalLoad::seated_opened).
+inline BodyLoad seated_body_load(double inertia_per_mass, double lambda, double lambda_v, double g,
+                                 const ExternalLoad& external, const BlockState& s,
+                                 LiftingSide side, double fraction) {
+  const BodyLoad load{{lambda * g, -g * (1.0 + lambda_v)}, 0.0, inertia_per_mass};
+  return with_addition(load, inertia_per_mass,
+                       external.seated_opened(s, lambda, g, side, fraction));
 }
 
 }  // namespace blockfrag

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
 
 #include "engine/seat/seat_ground.hpp"
+#include "engine/seat/seated_load.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
@@ -152,19 +154,15 @@ void SeatSimulation::project(const SeatMode& mode) {
 
 // Whether the block at rest on its active contacts stays at rest under lambda (with g).
 bool SeatSimulation::rest_holds(double lambda) const {
-  const BodyLoad load = body_load(geometry_.inertia_per_mass(), lambda, 0.0, scene_.g, external_,
-                                  state_, Footing::seated);
-  PlanarForcesInput in{{},
-                       {0.0, 0.0, 0.0},
-                       load.inertia,
-                       load.force,
-                       scene_.contact.friction,
-                       velocity_tol_,
-                       scene_.g,
-                       R_};
+  std::vector<PlanarContact> contacts;
+  for (const ActiveContact& a : mode_.active) contacts.push_back(contact_of(a.pair, state_));
+  const BodyLoad load = seated_load(
+      {geometry_.inertia_per_mass(), lambda, 0.0, scene_.g, scene_.contact.friction, external_},
+      state_, contacts, std::vector<ContactState>(contacts.size(), ContactState::stick));
+  PlanarForcesInput in{std::move(contacts),     {0.0, 0.0, 0.0}, load.inertia, load.force,
+                       scene_.contact.friction, velocity_tol_,   scene_.g,     R_};
   in.tolerance = kRestTolerance;
   in.applied_moment = load.moment;
-  for (const ActiveContact& a : mode_.active) in.contacts.push_back(contact_of(a.pair, state_));
   // The first consistent choice decides rest; whether others disagree does not matter here.
   return holds_at_rest(resolve_contact_forces(in, LcpSearch::first_consistent), in.tolerance);
 }

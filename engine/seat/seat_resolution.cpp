@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/contact/planar_impact.hpp"
 #include "engine/contact/rocking_restitution.hpp"
 #include "engine/errors.hpp"
 #include "engine/seat/seat_ground.hpp"
+#include "engine/seat/seated_load.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
@@ -237,23 +239,28 @@ void SeatSimulation::settle_or_lay(BlockState& s, const std::vector<SeatPair>& p
 // The touching contacts that can carry force (not leaving), and their contact problem at state_.
 SeatSimulation::CarryingContacts SeatSimulation::carrying_contacts(
     const std::vector<SeatPair>& pairs) const {
-  const BodyLoad load = load_at(t_, state_);
-  CarryingContacts carrying{{},
-                            {{},
-                             velocity_of(state_),
-                             load.inertia,
-                             load.force,
-                             scene_.contact.friction,
-                             velocity_tol_,
-                             scene_.g,
-                             R_}};
-  carrying.problem.applied_moment = load.moment;
+  std::vector<SeatPair> carrying_pairs;
+  std::vector<PlanarContact> contacts;
   for (const SeatPair& pair : pairs) {
     const PlanarContact c = contact_of(pair, state_);
     if (contact_velocity(c, velocity_of(state_)).normal > velocity_tol_) continue;
-    carrying.pairs.push_back(pair);
-    carrying.problem.contacts.push_back(c);
+    carrying_pairs.push_back(pair);
+    contacts.push_back(c);
   }
+  // A load that opens the seated crack opens it for the contacts that carry the block now (a
+  // landing block's crack was open while it rocked), as at rest.
+  const bool reseats =
+      external_ != nullptr && external_->opens_seated_crack() && contacts.size() >= 2;
+  const BodyLoad load =
+      reseats ? seated_load({geometry_.inertia_per_mass(), motion_.lambda(t_), vertical_.lambda(t_),
+                             scene_.g, scene_.contact.friction, external_},
+                            state_, contacts,
+                            std::vector<ContactState>(contacts.size(), ContactState::stick))
+              : load_at(t_, state_);
+  CarryingContacts carrying{std::move(carrying_pairs),
+                            {std::move(contacts), velocity_of(state_), load.inertia, load.force,
+                             scene_.contact.friction, velocity_tol_, scene_.g, R_}};
+  carrying.problem.applied_moment = load.moment;
   return carrying;
 }
 

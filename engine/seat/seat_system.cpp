@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "engine/seat/seated_load.hpp"
+
 namespace blockfrag {
 
 SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
@@ -61,9 +63,16 @@ const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const P
     states[at] = active_[at].state;
   }
   const auto n = static_cast<std::size_t>(count_);
+  const SeatedLoadInput in{c_.geometry->inertia_per_mass(),
+                           c_.piece->lambda(t),
+                           c_.vertical->lambda(t),
+                           c_.g,
+                           c_.mu,
+                           c_.external};
   const BodyLoad load =
-      body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t), c_.vertical->lambda(t), c_.g,
-                c_.external, s, count_ >= 2 ? Footing::seated : Footing::lifted);
+      count_ >= 2 ? seated_load(in, s, std::span(contacts).first(n), std::span(states).first(n))
+                  : body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, in.external, s,
+                              Footing::lifted);
   std::optional<FixedStateForces> one;
   if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, load, c_.mu);
   last_solve_ = {t, s,

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "engine/contact/crack_seating.hpp"
 #include "engine/errors.hpp"
 #include "engine/scene/block_geometry.hpp"
 #include "engine/sine_cosine.hpp"
@@ -64,6 +65,11 @@ struct RestingBlock {
   SplitLoad weight, hydrostatic, uplift;
   AddedMass added;  // about the centre of mass's height
   std::vector<Support> supports;
+  // Under "zero_in_gap" (the scene's rule): the crack about the centre of mass and its closed
+  // pressure at the mouth, c rho_w g h, to open it from a lifting corner.
+  bool opens_crack = false;
+  std::vector<Vertex> crack;
+  double crack_length = 0.0, mouth_pressure = 0.0;
 
   // The static loads' moment about p, and what a ground acceleration a adds to it per a (the
   // block's inertia -M a at the centre, the water's -M_a a at S_a / M_a above it).
@@ -76,6 +82,17 @@ struct RestingBlock {
   }
   Vertex static_force() const {
     return {hydrostatic.fx + uplift.fx, weight.fy + hydrostatic.fy + uplift.fy};
+  }
+  // The same block with its crack opened (the "zero_in_gap" pressure).
+  RestingBlock opened(CrackOpening open) const {
+    RestingBlock block = *this;
+    block.uplift = {};
+    const CrackPressure pressure =
+        crack_pressure(UpliftRule::zero_in_gap, crack_length, mouth_pressure, 0.0, open);
+    for_each_pressure_piece(crack, pressure, [&](const PressurePiece& piece) {
+      block.uplift.add(split_pressure(piece.a, piece.b, piece.p_a, piece.p_b, piece.outward));
+    });
+    return block;
   }
 };
 
@@ -127,6 +144,12 @@ RestingBlock resting_block(const Scene& scene, const BlockState& pose, UpliftUse
   for_each_pressure_piece(crack.points, pressure, [&](const PressurePiece& piece) {
     block.uplift.add(split_pressure(piece.a, piece.b, piece.p_a, piece.p_b, piece.outward));
   });
+  if (use == UpliftUse::scene_rule && water.uplift == UpliftRule::zero_in_gap) {
+    block.opens_crack = true;
+    block.crack = crack.points;
+    block.crack_length = crack.length();
+    block.mouth_pressure = area * unit_weight * head;
+  }
   return block;
 }
 
@@ -201,6 +224,62 @@ double rock_yield(const RestingBlock& block, const Vertex& p, double sense) {
   return sense * block.static_moment(p) / (per_acceleration * block.g);
 }
 
+// One way (sense +1: downstream, about the downstream support; -1: upstream, about the upstream
+// one), the pivot, the crack's side that lifts and the load's margin against rocking at a ground
+// acceleration of magnitude `acceleration` (in g) that way: the lifting corner's normal force times
+// the lever between the corners, >= 0 while the corner stays seated.
+struct RockingWay {
+  double sense;
+  Vertex pivot;
+  LiftingSide lifting;
+
+  double margin(const RestingBlock& block, double acceleration) const {
+    return sense * block.static_moment(pivot) -
+           acceleration * block.g * block.inertia_moment(pivot);
+  }
+};
+
+RockingWay rocking_way(const RestingBlock& block, double sense) {
+  const OutermostSupports outermost = outermost_supports(block.supports);
+  return sense > 0.0 ? RockingWay{sense, outermost.downstream, LiftingSide::upstream}
+                     : RockingWay{sense, outermost.upstream, LiftingSide::downstream};
+}
+
+// Under "zero_in_gap" the crack of the block at rest under a ground acceleration of magnitude
+// `acceleration` (in g) the way `way` rocks, opened from the lifting corner as far as that corner
+// needs (engine/contact/crack_seating.hpp): the block the dynamics hold at rest.
+RestingBlock seated_under(const RestingBlock& block, const RockingWay& way, double acceleration) {
+  const auto opened = [&](double f) {
+    return block.opened(CrackOpening::from_side(way.lifting, f));
+  };
+  return opened(seating_opening([&](double f) { return way.margin(opened(f), acceleration); }));
+}
+
+// The rocking yield under "zero_in_gap": the crack opens as far as the lifting corner needs, so
+// the block rocks where even a fully open crack leaves that corner in tension.
+double seated_rock_yield(const RestingBlock& block, double sense) {
+  const RockingWay way = rocking_way(block, sense);
+  return rock_yield(block.opened(CrackOpening::from_side(way.lifting, 1.0)), way.pivot, sense);
+}
+
+// The sliding yield under "zero_in_gap": below the closed crack's rocking yield the crack stays
+// closed; above it the block slides where the loads with the crack opened as far as the lifting
+// corner needs at that acceleration reach friction's limit (bisected: a larger acceleration opens
+// the crack further, which presses the block down).
+double seated_slide_yield(const RestingBlock& block, double sense) {
+  const double closed = slide_yield(block, sense);
+  const RockingWay way = rocking_way(block, sense);
+  double seated = rock_yield(block, way.pivot, sense);
+  if (!(closed > seated)) return closed;
+  double sliding = slide_yield(block.opened(CrackOpening::from_side(way.lifting, 1.0)), sense);
+  if (!std::isfinite(sliding)) return sliding;
+  for (;;) {
+    const double middle = 0.5 * (seated + sliding);
+    if (middle == seated || middle == sliding) return sliding;
+    (slide_yield(seated_under(block, way, middle), sense) > middle ? seated : sliding) = middle;
+  }
+}
+
 double ratio(double resisting, double driving) {
   if (!(driving > 0.0)) return kInfinity;
   return std::max(0.0, resisting) / driving;
@@ -241,15 +320,20 @@ RestingBlock block_at_rest(const Scene& scene) {
 BlockStatics block_statics(const Scene& scene) {
   const RestingBlock block = block_at_rest(scene);
   const OutermostSupports outermost = outermost_supports(block.supports);
-  return {
-      -block.weight.fy,
-      block.hydrostatic.fx,
-      block.hydrostatic.fy,
-      block.uplift.fx,
-      block.uplift.fy,
-      block.added.mass,
-      {slide_yield(block, 1.0), slide_yield(block, -1.0),
-       rock_yield(block, outermost.downstream, 1.0), rock_yield(block, outermost.upstream, -1.0)}};
+  const YieldAccelerations yield =
+      block.opens_crack
+          ? YieldAccelerations{seated_slide_yield(block, 1.0), seated_slide_yield(block, -1.0),
+                               seated_rock_yield(block, 1.0), seated_rock_yield(block, -1.0)}
+          : YieldAccelerations{slide_yield(block, 1.0), slide_yield(block, -1.0),
+                               rock_yield(block, outermost.downstream, 1.0),
+                               rock_yield(block, outermost.upstream, -1.0)};
+  return {-block.weight.fy,
+          block.hydrostatic.fx,
+          block.hydrostatic.fy,
+          block.uplift.fx,
+          block.uplift.fy,
+          block.added.mass,
+          yield};
 }
 
 SafetyFactors pseudo_static_safety_factors(const Scene& scene, double coefficient) {

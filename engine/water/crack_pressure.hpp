@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "engine/contact/crack_seating.hpp"
 #include "engine/scene/reservoir.hpp"
 #include "engine/water/water_load.hpp"
 
@@ -40,6 +41,13 @@ struct CrackOpening {
   static constexpr CrackOpening closed() { return {0.0, 0.0}; }
   // A block rocking about either end of its base (all but the pivot lifts) or in flight.
   static constexpr CrackOpening whole() { return {0.0, 1.0}; }
+  // A seated block's crack opened over `fraction` of its length from the side that lifts: from the
+  // mouth under a lifting heel, from the end under a lifting toe
+  // (engine/contact/crack_seating.hpp).
+  static constexpr CrackOpening from_side(LiftingSide side, double fraction) {
+    return side == LiftingSide::upstream ? CrackOpening{0.0, fraction}
+                                         : CrackOpening{1.0 - fraction, 1.0};
+  }
 };
 
 // The pressure over [from, to] of the crack's length (m), linear from p_from to p_to (Pa).

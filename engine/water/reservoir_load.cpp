@@ -43,9 +43,23 @@ ReservoirLoad::ReservoirLoad(const Scene& scene)
 
 LoadAddition ReservoirLoad::at(const BlockState& s, double lambda, double g,
                                Footing footing) const {
+  return with_crack(s, lambda, g, footing,
+                    footing == Footing::seated ? CrackOpening::closed() : CrackOpening::whole());
+}
+
+bool ReservoirLoad::opens_seated_crack() const {
+  return static_loads_.uplift_rule() == UpliftRule::zero_in_gap;
+}
+
+LoadAddition ReservoirLoad::seated_opened(const BlockState& s, double lambda, double g,
+                                          LiftingSide side, double fraction) const {
+  return with_crack(s, lambda, g, Footing::seated, CrackOpening::from_side(side, fraction));
+}
+
+LoadAddition ReservoirLoad::with_crack(const BlockState& s, double lambda, double g,
+                                       Footing footing, CrackOpening open) const {
   LoadAddition out = hydrodynamic_ ? hydrodynamic_->at(s, lambda, g, footing) : LoadAddition{};
-  const ReservoirLoadSet loads = static_loads_.at(
-      s, footing == Footing::seated ? CrackOpening::closed() : CrackOpening::whole());
+  const ReservoirLoadSet loads = static_loads_.at(s, open);
   out.force.x += (loads.hydrostatic.fx + loads.uplift.fx) / mass_;
   out.force.y += (loads.hydrostatic.fy + loads.uplift.fy) / mass_;
   out.moment += (loads.hydrostatic.moment + loads.uplift.moment) / mass_;

@@ -1,9 +1,11 @@
 // The reservoir in the block's equations of motion (engine/contact/body_load.hpp): the hydrostatic
 // push and the crack's uplift at the block's pose (engine/water/reservoir_loads.hpp), the uplift
-// under the scene's rule with the crack closed while the block is seated on its base and opened
-// whole while it rocks or flies, and Westergaard's added mass (engine/water/hydrodynamic_load.hpp).
-// A scene whose water wets the block runs on the seat's engine, the flat ground as a seat of one
-// long segment under the block's base (simulate_under_reservoir).
+// under the scene's rule with the crack closed while the block is seated on its base (under
+// "zero_in_gap" opened from a lifting corner as far as that corner needs:
+// engine/seat/seated_load.hpp) and opened whole while it rocks or flies, and Westergaard's added
+// mass (engine/water/hydrodynamic_load.hpp). A scene whose water wets the block runs on the seat's
+// engine, the flat ground as a seat of one long segment under the block's base
+// (simulate_under_reservoir).
 #pragma once
 
 #include <optional>
@@ -20,8 +22,16 @@ class ReservoirLoad : public ExternalLoad {
   // The scene must be valid and have a seat and a reservoir.
   explicit ReservoirLoad(const Scene& scene);
   LoadAddition at(const BlockState& s, double lambda, double g, Footing footing) const override;
+  // "zero_in_gap": a seated block's crack opens from the lifting side
+  // (engine/seat/seated_load.hpp).
+  bool opens_seated_crack() const override;
+  LoadAddition seated_opened(const BlockState& s, double lambda, double g, LiftingSide side,
+                             double fraction) const override;
 
  private:
+  LoadAddition with_crack(const BlockState& s, double lambda, double g, Footing footing,
+                          CrackOpening open) const;
+
   ReservoirLoads static_loads_;  // hydrostatic and uplift
   std::optional<HydrodynamicLoad> hydrodynamic_;
   double mass_;

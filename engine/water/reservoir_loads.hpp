@@ -40,6 +40,7 @@ class ReservoirLoads {
   // The crack at rest about the centre of mass, unturned (its points), and the block's edges along
   // it.
   const CrackPath& crack() const { return crack_; }
+  UpliftRule uplift_rule() const { return reservoir_.uplift; }
 
   // The loads at pose s (BlockState in the ground's frame: engine/water/block_outline.hpp), the
   // crack's part [open.from, open.to] opened (closed at rest and sliding, whole when rocking about

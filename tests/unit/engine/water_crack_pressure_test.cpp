@@ -9,7 +9,13 @@
 //     U = c rho g h B (1/2 - (0.4 - 0.08)) = 0.18 c rho g h B at 0.6 B; "full_head_in_gap" puts
 //     rho g h on the gap and c rho g h falling linearly to zero on the rest (USACE's partial
 //     crack): U = rho g h 0.4 B + 1/2 c rho g h 0.6 B;
-//   opened over [0.5 B, B] from the end: "full_head_in_gap" rho g h there and p(s) before it.
+//   opened over [0.5 B, B] from the end: "full_head_in_gap" rho g h there and p(s) before it;
+//   a seated block's crack opened over l = 0.3 B from a lifting heel (CrackOpening::from_side),
+//     "zero_in_gap": p(s) on [l, B], U = c rho g h (B - l)^2 / (2 B) = 0.245 c rho g h B at
+//     l + (B - l) / 3 = 0.5333 B, its moment about the toe c rho g h (B - l)^3 / (3 B)
+//     = 0.114333 c rho g h B^2; from a lifting toe, p(s) on [0, B - l]:
+//     U = c rho g h (B - l) (1 + l / B) / 2 = 0.455 c rho g h B, its moment about the mouth
+//     c rho g h ((B - l)^2 / 2 - (B - l)^3 / (3 B)) = 0.130667 c rho g h B^2.
 // A folded crack's pieces press along each piece's normal.
 #include <cmath>
 #include <vector>
@@ -108,6 +114,26 @@ TEST(CrackPressure, RefusesAnOpeningOutsideTheCrackOrBackwards) {
   for (const CrackOpening open :
        {CrackOpening{-0.1, 0.5}, CrackOpening{0.2, 1.5}, CrackOpening{0.6, 0.4}}) {
     EXPECT_THROW(crack_pressure(UpliftRule::zero_in_gap, 1.0, 1.0, 1.0, open), ContractViolation);
+  }
+}
+
+TEST(CrackPressure, ASeatedCrackOpenedFromItsLiftingSideKeepsTheLinearHeadOnTheClosedRest) {
+  const double p0 = kCrackArea * kCrackUnitWeight * kCrackHead;
+  const Resultant heel = straight_resultant(UpliftRule::zero_in_gap,
+                                            CrackOpening::from_side(LiftingSide::upstream, 0.3));
+  EXPECT_NEAR(heel.force, 0.245 * p0 * kCrackB, 1e-12 * p0 * kCrackB);
+  EXPECT_NEAR(heel.force * (kCrackB - heel.point), 0.343 / 3.0 * p0 * kCrackB * kCrackB,
+              1e-12 * p0 * kCrackB * kCrackB);
+  const Resultant toe = straight_resultant(UpliftRule::zero_in_gap,
+                                           CrackOpening::from_side(LiftingSide::downstream, 0.3));
+  EXPECT_NEAR(toe.force, 0.455 * p0 * kCrackB, 1e-12 * p0 * kCrackB);
+  EXPECT_NEAR(toe.force * toe.point, (0.245 - 0.343 / 3.0) * p0 * kCrackB * kCrackB,
+              1e-12 * p0 * kCrackB * kCrackB);
+  // Not opened: the closed crack's uplift, from either side.
+  for (const LiftingSide side : {LiftingSide::upstream, LiftingSide::downstream}) {
+    const Resultant closed =
+        straight_resultant(UpliftRule::zero_in_gap, CrackOpening::from_side(side, 0.0));
+    EXPECT_NEAR(closed.force, 0.5 * p0 * kCrackB, 1e-12 * p0 * kCrackB);
   }
 }
 
