@@ -4,7 +4,8 @@
 # (7/12) rho sqrt(H) d^(3/2), the yield accelerations' closed forms and the pseudo-static factors
 # of engine/water/block_statics.hpp), the type B block's folded crack against its hand integral,
 # both wet configs simulated with the post-earthquake keys in their summaries (and none in a dry
-# one's), a dry block's keys with zero water, the report, and bad input:
+# one's), a dry block's keys with zero water, the report, the zero_in_gap step scenes of
+# tests/data/uplift_steps/ (at rest after one event), and bad input:
 # a bad scene and a bad --coefficient exit 2 with the reason on stderr and nothing on stdout. Prints
 # "N passed, M failed" last; exits non-zero on any failure.
 set -u
@@ -105,6 +106,18 @@ run statics "$wet" --coefficient 0.1
 check "the report exits 0" test "$code" -eq 0
 check "the report names the water and each yield" grep -qE "^  slide downstream: 0\.2252" "$work/out"
 check "the report gives the pseudo-static factors" grep -qE "^  sliding safety factor: +1\.45" "$work/out"
+
+# --- zero_in_gap between the closed and the open crack's rocking yields: at rest, one event ----------
+for scene in "$BLOCKFRAG_SOURCE_DIR"/tests/data/uplift_steps/*.json; do
+  run simulate "$scene" --summary-json
+  check "$(basename "$scene") exits 0 (got $code)" test "$code" -eq 0
+  check "$(basename "$scene") stays at rest after one event" "$PYTHON" - "$work/out" <<'PY'
+import json, sys
+out = json.loads(open(sys.argv[1]).read())
+assert out["events"] == 1, out["events"]
+assert out["modes"][-1][1] == "rest", out["modes"][-1]
+PY
+done
 
 # --- Bad input ---------------------------------------------------------------------------------------
 run statics "$BLOCKFRAG_SOURCE_DIR/tests/data/bad_scenes/reservoir_without_level.json"
