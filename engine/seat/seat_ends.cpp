@@ -141,14 +141,14 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
     claims[g] = asked[g] && vertex_claim(step, v);
     ++g;
   }
-  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count(), once a point is asked
+  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count(), once asked for
   bool world_set = false;
   for (const Point& point : points_) {
-    if (asked[g] && !world_set) {
-      system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
+    if (asked[g] && point_claim(step, point)) {
+      if (!world_set) system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
       world_set = true;
+      claims[g] = !system_->c_.contacts->inside_block(point.k, world);
     }
-    claims[g] = asked[g] && point_claim(step, point, world);
     ++g;
   }
   return claims;
@@ -174,11 +174,9 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
 // edge's ends and, where its projection falls on the edge, from the edge's line. Where none of
 // these has a minimum inside the step (the line's distance keeping its sign, and off the line by
 // more than its rounding at the step's ends, so the point is on no edge there), no edge's distance
-// has, so it never reaches the boundary: outside at the step's start (`world`), the clearance is
-// least at an end.
-bool PivotSweep::point_claim(const ThetaStep& step, const Point& point,
-                             std::span<const Vec2> world) const {
-  if (system_->c_.contacts->inside_block(point.k, world)) return false;
+// has, so it never reaches the boundary: outside at the step's start (which claims() asks last,
+// the dearest to ask), the clearance is least at an end.
+bool PivotSweep::point_claim(const ThetaStep& step, const Point& point) const {
   for (const Sinusoid& corner : point.corners) {
     if (step.holds_minimum(corner)) return false;
   }

@@ -168,7 +168,7 @@ class PivotSweep {
     std::vector<Sinusoid> lines;    // signed distance from each block edge's line
   };
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
-  bool point_claim(const ThetaStep& step, const Point& point, std::span<const Vec2> world) const;
+  bool point_claim(const ThetaStep& step, const Point& point) const;
 
   const SeatSystem* system_;
   PivotChart chart_;
