@@ -22,6 +22,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -257,6 +258,16 @@ bool EventLoop<Ground>::advance_rest(const MotionPiece& piece, double t_stop, bo
   return false;
 }
 
+// A system that leaves some of its guard slots unused names the others (live_guards()).
+template <class Ode>
+GuardWatch<Ode::kGuards> watch_guards(const Ode& ode, double t, const OdeState<Ode::N>& q) {
+  if constexpr (requires { ode.live_guards(); }) {
+    return GuardWatch<Ode::kGuards>(ode.guards(t, q), ode.live_guards());
+  } else {
+    return GuardWatch<Ode::kGuards>(ode.guards(t, q));
+  }
+}
+
 template <class Ground>
 template <class Ode, class Stepper>
 auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece,
@@ -265,7 +276,7 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
   Ground& ground = self();
   auto q = ode.coordinates(state_);
   double t = t_;
-  GuardWatch<Ode::kGuards> watch(ode.guards(t, q));
+  GuardWatch<Ode::kGuards> watch = watch_guards(ode, t, q);
   const double cap = step_cap(piece);
   const auto forces_at = [&](double x) { return ode.forces(x, stepper.dense(x)); };
   const auto state_at = [&](double x) { return ode.full(x, stepper.dense(x)); };
@@ -292,8 +303,13 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
 
     const auto next = ode.guards(t, q);
     const auto guards_at = [&](double x) { return ode.guards(x, stepper.dense(x)); };
-    const auto least_at_ends = [&] {
-      return ode.least_at_ends(q0, q, [&](int i) { return stepper.moves_one_way(i); });
+    const auto least_at_ends = [&](const std::array<bool, Ode::kGuards>& asked) {
+      const auto one_way = [&](int i) { return stepper.moves_one_way(i); };
+      if constexpr (requires { ode.guard_claims(q0, q, one_way, asked); }) {
+        return ode.guard_claims(q0, q, one_way, asked);
+      } else {
+        return ode.least_at_ends(q0, q, one_way);
+      }
     };
     const auto crossing =
         ground.refine_crossing(ode, watch, guards_at, state_at, t0, t,

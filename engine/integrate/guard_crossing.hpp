@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <limits>
+#include <span>
 
 #include "engine/integrate/root_finding.hpp"
 #include "engine/tolerances.hpp"
@@ -20,8 +22,13 @@ namespace blockfrag {
 template <int G>
 class GuardWatch {
  public:
-  explicit GuardWatch(const std::array<double, G>& at_start) : value_(at_start) {
+  explicit GuardWatch(const std::array<double, G>& at_start) : GuardWatch(at_start, all_live()) {}
+  // Only the guards `live` names are watched: the others (unused slots of a system's guards) are
+  // positive throughout and never cross.
+  GuardWatch(const std::array<double, G>& at_start, const std::array<bool, G>& live)
+      : value_(at_start) {
     for (int i = 0; i < G; ++i) {
+      if (live[i]) live_[live_count_++] = i;
       armed_[i] = at_start[i] > kArmingMargin;
       // A start below -kArmingMargin (an unarmed guard's event leaves it there) must go lower
       // still to fire: fired at once (its value at the start already past the margin), a corner
@@ -38,80 +45,24 @@ class GuardWatch {
   };
 
   // The first crossing in the step [t0, t1] whose guards at t1 are `next`; guards_at(x) evaluates
-  // all guards on the step's dense output. least_at_ends() says which guards are known to be
-  // least at an end of this step (so no sample inside can find them lower); it is asked only when
-  // a guard near zero would be looked inside, and a guard clearly positive at both ends that it
-  // names is not: the samples were most of a rocking block's guard evaluations, and they find
-  // exactly what they found before.
+  // all guards on the step's dense output. least_at_ends(asked) says which of the guards `asked`
+  // names are known to be least at an end of this step (so no sample inside can find them lower);
+  // it is asked only for guards near zero that would be looked inside though clearly positive at
+  // both ends, and such a guard that it names is not: the samples were most of a rocking block's
+  // guard evaluations, and they find exactly what they found before.
   template <class GuardsAt, class LeastAtEnds>
   Crossing first_crossing(const GuardsAt& guards_at, double t0, double t1,
-                          const std::array<double, G>& next,
-                          const LeastAtEnds& least_at_ends) const {
+                          const std::array<double, G>& next, const LeastAtEnds& least_at_ends) {
     const double time_tolerance = kEventTimeTolerance * (1.0 + t1);
     Crossing found;
     found.before = t1;
-    // Set for every guard below before they are read (the samples up to seen_count only), so not
-    // zeroed first: G (kInteriorSamples + 1) doubles zeroed at every step were a quarter of the
-    // instructions of a block rocking on a seat (G = 64).
-    std::array<double, G> offset, a, fa, b, fb;
-    std::array<bool, G> sampled, looked_inside;
-    // The samples of each guard looked inside, up to its first one at or below zero.
-    std::array<std::array<double, kInteriorSamples + 1>, G> seen;
-    std::array<int, G> seen_count;
-    bool any_sampled = false;
-    bool ends_known = false;
-    std::array<bool, G> least_at_end{};
-    for (int i = 0; i < G; ++i) {
-      offset[i] = armed_[i] ? 0.0 : unarmed_offset_[i];
-      a[i] = t0;
-      fa[i] = std::max(value_[i] + offset[i], std::numeric_limits<double>::min());
-      b[i] = t1;
-      fb[i] = next[i] + offset[i];
-      // A guard close to zero may dip below it and come back inside one step: look inside.
-      sampled[i] = !armed_[i] || std::min(fa[i], fb[i]) < kNearZero;
-      // Clearly positive: above the guards' rounding noise by far.
-      if (sampled[i] && std::min(fa[i], fb[i]) > 0.5 * kArmingMargin) {
-        if (!ends_known) {
-          least_at_end = least_at_ends();
-          ends_known = true;
-        }
-        sampled[i] = !least_at_end[i];
-      }
-      looked_inside[i] = sampled[i];
-      seen[i][0] = fa[i];
-      seen_count[i] = 1;
-      any_sampled = any_sampled || sampled[i];
-    }
-    // One evaluation of all guards per interior sample serves every guard that is looked inside.
-    for (int k = 1; any_sampled && k < kInteriorSamples; ++k) {
-      const double x = t0 + (t1 - t0) * k / kInteriorSamples;
-      const std::array<double, G> at_x = guards_at(x);
-      any_sampled = false;
-      for (int i = 0; i < G; ++i) {
-        if (!sampled[i]) continue;
-        const double fx = at_x[i] + offset[i];
-        seen[i][seen_count[i]++] = fx;
-        if (fx <= 0) {
-          b[i] = x;
-          fb[i] = fx;
-          sampled[i] = false;
-          continue;
-        }
-        a[i] = x;
-        fa[i] = fx;
-        any_sampled = true;
-      }
-    }
-    for (int i = 0; i < G; ++i) {
-      if (!looked_inside[i]) continue;
-      if (sampled[i]) seen[i][seen_count[i]++] = fb[i];
-      find_dip_between_samples(guards_at, i, t0, (t1 - t0) / kInteriorSamples, offset[i], seen[i],
-                               seen_count[i], a[i], fa[i], b[i], fb[i]);
-    }
-    for (int i = 0; i < G; ++i) {
-      if (fb[i] > 0) continue;
-      const auto f = [&](double x) { return guards_at(x)[i] + offset[i]; };
-      const Bracket located = locate_crossing(f, a[i], b[i], fa[i], fb[i], time_tolerance);
+    Scan& scan = scan_;
+    if (start_scan(scan, t0, t1, next, least_at_ends)) sample_inside(scan, guards_at, t0, t1);
+    for (const int i : live()) {
+      if (scan.fb[i] > 0) continue;
+      const auto f = [&](double x) { return guards_at(x)[i] + scan.offset[i]; };
+      const Bracket located =
+          locate_crossing(f, scan.a[i], scan.b[i], scan.fa[i], scan.fb[i], time_tolerance);
       if (located.after < found.after) found = {i, located.after, located.before};
     }
     if (found.which >= 0) found = no_earlier_dip(guards_at, t0, found, time_tolerance);
@@ -123,11 +74,96 @@ class GuardWatch {
 
   // The step is kept: its end values become the next step's start.
   void advance(const std::array<double, G>& next) {
-    for (int i = 0; i < G; ++i) armed_[i] = armed_[i] || next[i] > kArmingMargin;
+    for (const int i : live()) armed_[i] = armed_[i] || next[i] > kArmingMargin;
     value_ = next;
   }
 
  private:
+  static std::array<bool, G> all_live() {
+    std::array<bool, G> live;
+    live.fill(true);
+    return live;
+  }
+  std::span<const int> live() const {
+    return std::span(live_).first(static_cast<std::size_t>(live_count_));
+  }
+
+  // A step's look at its live guards: each one's bracket [a, b] of its last sample above zero and
+  // its first at or below (offset added), whether it is looked inside, and its samples inside up to
+  // its first at or below zero (the first seen_count). Kept from step to step (scan_), each live
+  // guard's entries set before they are read: zeroed at every step, G (kInteriorSamples + 1)
+  // doubles were a quarter of the instructions of a block rocking on a seat (G = 64), and its
+  // brackets alone 2.5 %.
+  struct Scan {
+    std::array<double, G> offset{}, a{}, fa{}, b{}, fb{};
+    std::array<bool, G> sampled{}, looked_inside{};
+    std::array<std::array<double, kInteriorSamples + 1>, G> seen;
+    std::array<int, G> seen_count;
+  };
+
+  // The step's ends, and which guards are looked inside; returns whether any is.
+  template <class LeastAtEnds>
+  bool start_scan(Scan& scan, double t0, double t1, const std::array<double, G>& next,
+                  const LeastAtEnds& least_at_ends) const {
+    std::array<bool, G> asked{};
+    bool any_asked = false;
+    for (const int i : live()) {
+      scan.offset[i] = armed_[i] ? 0.0 : unarmed_offset_[i];
+      scan.a[i] = t0;
+      scan.fa[i] = std::max(value_[i] + scan.offset[i], std::numeric_limits<double>::min());
+      scan.b[i] = t1;
+      scan.fb[i] = next[i] + scan.offset[i];
+      const double least = std::min(scan.fa[i], scan.fb[i]);
+      // A guard close to zero may dip below it and come back inside one step: look inside.
+      scan.sampled[i] = !armed_[i] || least < kNearZero;
+      // Clearly positive: above the guards' rounding noise by far.
+      asked[i] = scan.sampled[i] && least > 0.5 * kArmingMargin;
+      any_asked = any_asked || asked[i];
+    }
+    const std::array<bool, G> claimed = any_asked ? least_at_ends(asked) : std::array<bool, G>{};
+    bool any_sampled = false;
+    for (const int i : live()) {
+      scan.sampled[i] = scan.sampled[i] && !(asked[i] && claimed[i]);
+      scan.looked_inside[i] = scan.sampled[i];
+      scan.seen[i][0] = scan.fa[i];
+      scan.seen_count[i] = 1;
+      any_sampled = any_sampled || scan.sampled[i];
+    }
+    return any_sampled;
+  }
+
+  // One evaluation of all guards per interior sample serves every guard that is looked inside.
+  template <class GuardsAt>
+  void sample_inside(Scan& scan, const GuardsAt& guards_at, double t0, double t1) const {
+    bool any_sampled = true;
+    for (int k = 1; any_sampled && k < kInteriorSamples; ++k) {
+      const double x = t0 + (t1 - t0) * k / kInteriorSamples;
+      const std::array<double, G> at_x = guards_at(x);
+      any_sampled = false;
+      for (const int i : live()) {
+        if (!scan.sampled[i]) continue;
+        const double fx = at_x[i] + scan.offset[i];
+        scan.seen[i][scan.seen_count[i]++] = fx;
+        if (fx <= 0) {
+          scan.b[i] = x;
+          scan.fb[i] = fx;
+          scan.sampled[i] = false;
+          continue;
+        }
+        scan.a[i] = x;
+        scan.fa[i] = fx;
+        any_sampled = true;
+      }
+    }
+    for (const int i : live()) {
+      if (!scan.looked_inside[i]) continue;
+      if (scan.sampled[i]) scan.seen[i][scan.seen_count[i]++] = scan.fb[i];
+      find_dip_between_samples(guards_at, i, t0, (t1 - t0) / kInteriorSamples, scan.offset[i],
+                               scan.seen[i], scan.seen_count[i], scan.a[i], scan.fa[i], scan.b[i],
+                               scan.fb[i]);
+    }
+  }
+
   // Before accepting an event, make sure no other armed guard dipped below zero earlier in the
   // step (near a singular boundary forces can swing through zero and back between samples).
   template <class GuardsAt>
@@ -141,7 +177,7 @@ class GuardWatch {
       const double x = t0 + (t_found - t0) * k / kInteriorSamples;
       const std::array<double, G> at_x = guards_at(x);
       bool dipped = false;
-      for (int i = 0; i < G; ++i) {
+      for (const int i : live()) {
         if (i == first_found || !armed_[i] || at_x[i] > 0) continue;
         const auto f = [&](double y) { return guards_at(y)[i]; };
         const Bracket located = locate_crossing(f, x_before, x, before[i], at_x[i], time_tolerance);
@@ -186,6 +222,9 @@ class GuardWatch {
   std::array<double, G> value_;
   std::array<double, G> unarmed_offset_{};  // an unarmed guard fires below minus this
   std::array<bool, G> armed_{};
+  std::array<int, G> live_{};  // the guards watched, in order
+  int live_count_ = 0;
+  Scan scan_;
 };
 
 }  // namespace blockfrag

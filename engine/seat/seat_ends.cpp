@@ -1,7 +1,7 @@
-// Which of a seat's guards are least at an end of a step (SeatSystem::least_at_ends and its
-// siblings): the guard watch samples a guard near zero inside a step only where this is not known.
+// Which of a seat's guards are least at an end of a step (SeatOde::guard_claims, SeatSystem's
+// claims): the guard watch samples a guard near zero inside a step only where this is not known.
 // Each claim holds of the guard as SeatSystem::guards computes it; where a case is not covered, the
-// guard is sampled.
+// guard is sampled. Only the guards asked about are looked at.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -30,12 +30,6 @@ int side_of(double x, const SeatContacts& seat) {
 }
 
 }  // namespace
-
-GuardClaims SeatSystem::unused_guards() const {
-  GuardClaims claims{};
-  for (std::size_t i = 0; i < claims.size(); ++i) claims[i] = events_[i] == SeatEvent::none;
-  return claims;
-}
 
 void SeatSystem::claim_overturn_and_fall(double x_lo, double x_hi, bool theta_one_way,
                                          bool vertices_linear, GuardClaims& claims) const {
@@ -88,10 +82,7 @@ bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
 // p + Rot(theta) w, and its height over a line of slope m through a is a sinusoid of theta. Seen
 // from the block, a seat point s moves on a circle about the pivot, at body + Rot(-theta) (s - p).
 PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
-    : system_(&system),
-      chart_(chart),
-      unused_(system.unused_guards()),
-      centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
+    : system_(&system), chart_(chart), centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
   const SeatContacts& seat = *system.c_.contacts;
   const Vec2 p = chart.point, body = chart.body;
   const int n = seat.vertex_count();
@@ -137,18 +128,29 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
   }
 }
 
-GuardClaims PivotSweep::claims(double theta0, double theta1) const {
-  GuardClaims claims = unused_;
+GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) const {
+  GuardClaims claims = system_->unused_guards();
   const double lo = std::min(theta0, theta1), hi = std::max(theta0, theta1);
   const ThetaStep step(lo, hi);
-  system_->claim_overturn_and_fall(step.least(centre_x_), step.largest(centre_x_), true, false,
-                                   claims);
+  if (asked[0] || asked[1]) {
+    system_->claim_overturn_and_fall(step.least(centre_x_), step.largest(centre_x_), true, false,
+                                     claims);
+  }
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
-  for (const Vertex& v : vertices_) claims[g++] = vertex_claim(step, v);
-  if (points_.empty()) return claims;
-  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
-  system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
-  for (const Point& point : points_) claims[g++] = point_claim(step, point, world);
+  for (const Vertex& v : vertices_) {
+    claims[g] = asked[g] && vertex_claim(step, v);
+    ++g;
+  }
+  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count(), once asked for
+  bool world_set = false;
+  for (const Point& point : points_) {
+    if (asked[g] && point_claim(step, point)) {
+      if (!world_set) system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
+      world_set = true;
+      claims[g] = !system_->c_.contacts->inside_block(point.k, world);
+    }
+    ++g;
+  }
   return claims;
 }
 
@@ -172,11 +174,9 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
 // edge's ends and, where its projection falls on the edge, from the edge's line. Where none of
 // these has a minimum inside the step (the line's distance keeping its sign, and off the line by
 // more than its rounding at the step's ends, so the point is on no edge there), no edge's distance
-// has, so it never reaches the boundary: outside at the step's start (`world`), the clearance is
-// least at an end.
-bool PivotSweep::point_claim(const ThetaStep& step, const Point& point,
-                             std::span<const Vec2> world) const {
-  if (system_->c_.contacts->inside_block(point.k, world)) return false;
+// has, so it never reaches the boundary: outside at the step's start (which claims() asks last,
+// the dearest to ask), the clearance is least at an end.
+bool PivotSweep::point_claim(const ThetaStep& step, const Point& point) const {
   for (const Sinusoid& corner : point.corners) {
     if (step.holds_minimum(corner)) return false;
   }
@@ -189,7 +189,7 @@ bool PivotSweep::point_claim(const ThetaStep& step, const Point& point,
   return true;
 }
 
-GuardClaims SeatSystem::slip_least_at_ends(bool place_one_way, bool rate_one_way) const {
+GuardClaims SeatSystem::slip_claims(bool place_one_way, bool rate_one_way) const {
   GuardClaims claims = unused_guards();
   claim_contact_guards(place_one_way, rate_one_way, claims);
   return claims;
@@ -198,23 +198,26 @@ GuardClaims SeatSystem::slip_least_at_ends(bool place_one_way, bool rate_one_way
 // Sliding, every vertex moves along the line by the same amount: its height over a segment is
 // linear in the place, and the least of such heights over a valley is concave in it. A seat point's
 // distance from a moving edge is convex in the place, and can be least inside: not claimed.
-GuardClaims SeatSystem::slide_least_at_ends(const BlockState& s0, const BlockState& s1,
-                                            bool place_one_way, bool rate_one_way) const {
+GuardClaims SeatSystem::slide_claims(const BlockState& s0, const BlockState& s1, bool place_one_way,
+                                     bool rate_one_way, const GuardClaims& asked) const {
   GuardClaims claims = unused_guards();
   claim_contact_guards(place_one_way, rate_one_way, claims);
   if (!place_one_way) return claims;
   claim_overturn_and_fall(std::min(s0.x, s1.x), std::max(s0.x, s1.x), true, true, claims);
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const int i : watched_vertices_) {
-    const double x0 = c_.contacts->vertex_at(i, s0).x, x1 = c_.contacts->vertex_at(i, s1).x;
-    claims[g++] =
-        clearance_least_at_ends(std::min(x0, x1), std::max(x0, x1), [](int) { return true; });
+    if (asked[g]) {
+      const double x0 = c_.contacts->vertex_at(i, s0).x, x1 = c_.contacts->vertex_at(i, s1).x;
+      claims[g] =
+          clearance_least_at_ends(std::min(x0, x1), std::max(x0, x1), [](int) { return true; });
+    }
+    ++g;
   }
   return claims;
 }
 
-GuardClaims SeatSystem::free_least_at_ends(double x0, double x1, bool x_one_way,
-                                           bool theta_one_way) const {
+GuardClaims SeatSystem::free_claims(double x0, double x1, bool x_one_way,
+                                    bool theta_one_way) const {
   GuardClaims claims = unused_guards();
   if (x_one_way) {
     claim_overturn_and_fall(std::min(x0, x1), std::max(x0, x1), theta_one_way, false, claims);

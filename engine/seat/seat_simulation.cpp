@@ -1,6 +1,7 @@
 #include "engine/seat/seat_simulation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -158,14 +159,18 @@ SeatSimulation::Crossing SeatSimulation::touch_before_an_end(const SeatSystem& s
                                                              const StateAt& state_at, double t0,
                                                              double t1) const {
   Crossing found;
+  const std::vector<int>& watched = system.watched_vertices();
+  if (watched.empty()) return found;
   const double first = contacts_.seat_point(0).x;
   const double last = contacts_.seat_point(contacts_.point_count() - 1).x;
   const double time_tolerance = kEventTimeTolerance * (1.0 + t1);
-  const std::vector<int>& watched = system.watched_vertices();
+  std::array<Vec2, kMaxSeatClearances> world0, world1;  // the first vertex_count() set here
+  contacts_.world_vertices(state_at(t0), world0);
+  contacts_.world_vertices(state_at(t1), world1);
   for (std::size_t k = 0; k < watched.size(); ++k) {
     const int i = watched[k];
-    const double x0 = contacts_.vertex_at(i, state_at(t0)).x;
-    const double x1 = contacts_.vertex_at(i, state_at(t1)).x;
+    const double x0 = world0[static_cast<std::size_t>(i)].x;
+    const double x1 = world1[static_cast<std::size_t>(i)].x;
     if (x0 < first || x0 > last || (x1 >= first && x1 <= last)) continue;
     // Inside the seat's range > 0: how far the vertex is from the end it passes.
     const double end = x1 > last ? last : first;
@@ -238,7 +243,7 @@ SeatSimulation::Crossing SeatSimulation::refine_crossing(
 template <class Ode, class StateAt, class ForcesAt>
 void SeatSimulation::note_contact_violation(const Ode& ode, double t, const StateAt& state_at,
                                             const ForcesAt&) {
-  const SeatSystem& system = ode.system();
+  SeatSystem& system = ode.system();
   if (system.active_count() == 0) return;
   const FixedStateForces f = system.solve(t, state_at(t));
   for (int i = 0; i < system.active_count(); ++i) {
@@ -290,7 +295,7 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) const {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
-  const SeatSystem next = system(piece);
+  SeatSystem next = system(piece);
   const auto guards = next.guards(t_, state_);
   for (int i = 0; i < SeatSystem::kGuards; ++i) {
     const SeatEvent e = next.event(i);
@@ -325,7 +330,7 @@ void SeatSimulation::place_at_start() {
 
 SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
   if (mode_.rest) return advance_rest(t_stop);
-  const SeatSystem moving = system(piece);
+  SeatSystem moving = system(piece);
   const ModeKind kind = kind_of(mode_);
   EventReport report;
   std::visit(
@@ -352,7 +357,7 @@ ContactForces SeatSimulation::forces_now() const {
     return {-f.x, -f.y};
   }
   if (!stopped_ && !mode_.active.empty()) {
-    const SeatSystem now = system(motion_.piece_at(t_));
+    SeatSystem now = system(motion_.piece_at(t_));
     return now.forces(t_, state_);
   }
   return {0.0, 0.0};

@@ -34,6 +34,13 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   for (std::size_t i = 0; i < watched; ++i) {
     events_[static_cast<std::size_t>(kFirstClearanceGuard) + i] = SeatEvent::touches;
   }
+  for (std::size_t i = 0; i < unused_.size(); ++i) unused_[i] = events_[i] == SeatEvent::none;
+}
+
+GuardClaims SeatSystem::live_guards() const {
+  GuardClaims live{};
+  for (std::size_t i = 0; i < live.size(); ++i) live[i] = !unused_[i];
+  return live;
 }
 
 SeatSystem::Poses SeatSystem::active_poses(const BlockState& s) const {
@@ -49,12 +56,15 @@ bool SeatSystem::solved_at(double t, const BlockState& s) const {
   return t == last_solve_.t && std::memcmp(&s, &last_solve_.s, sizeof s) == 0;
 }
 
-FixedStateForces SeatSystem::solve(double t, const BlockState& s) const {
-  return solved_at(t, s) ? last_solve_.forces : solve(t, s, active_poses(s));
+const FixedStateForces& SeatSystem::solve(double t, const BlockState& s) {
+  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, active_poses(s));
 }
 
-const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const Poses& poses) const {
-  if (solved_at(t, s)) return last_solve_.forces;
+const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const Poses& poses) {
+  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, poses);
+}
+
+const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, const Poses& poses) {
   std::array<PlanarContact, kMaxSeatContacts> contacts{};
   std::array<ContactState, kMaxSeatContacts> states{};
   for (int i = 0; i < count_; ++i) {
@@ -75,14 +85,15 @@ const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const P
                               Footing::lifted);
   std::optional<FixedStateForces> one;
   if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, load, c_.mu);
-  last_solve_ = {t, s,
-                 one ? *one
-                     : fixed_state_forces(std::span(contacts).first(n), std::span(states).first(n),
-                                          s, load, c_.mu)};
+  last_solve_.forces = one ? *one
+                           : fixed_state_forces(std::span(contacts).first(n),
+                                                std::span(states).first(n), s, load, c_.mu);
+  last_solve_.t = t;
+  last_solve_.s = s;
   return last_solve_.forces;
 }
 
-std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s) const {
+std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s) {
   std::array<double, kGuards> out;
   out.fill(1.0);
   const double R = c_.geometry->size();
@@ -126,7 +137,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   return out;
 }
 
-ContactForces SeatSystem::forces(double t, const BlockState& s) const {
+ContactForces SeatSystem::forces(double t, const BlockState& s) {
   const FixedStateForces f = solve(t, s);
   return {f.total.x, f.total.y};
 }

@@ -6,7 +6,6 @@
 #include <array>
 #include <cstddef>
 #include <limits>
-#include <optional>
 #include <span>
 #include <type_traits>
 #include <variant>
@@ -36,7 +35,8 @@ struct ActiveContact {
   ContactState state;  // stick, slip_positive or slip_negative
 };
 
-// Per guard: whether its least value over a step is known to be at an end of it.
+// Per guard: whether its least value over a step is known to be at an end of it (a claim); or, as
+// a question, which guards are asked about.
 using GuardClaims = std::array<bool, kSeatGuards>;
 
 // What a guard reaching zero means on a seat.
@@ -69,10 +69,14 @@ class SeatSystem {
   SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
              const std::vector<int>& watched_vertices, const std::vector<int>& watched_points);
 
-  std::array<double, kGuards> guards(double t, const BlockState& s) const;
+  // Not const: each remembers the last forces solved (a step's end is asked for by its guards, by
+  // the next step's first stage and by the checks of its forces).
+  std::array<double, kGuards> guards(double t, const BlockState& s);
+  ContactForces forces(double t, const BlockState& s);
+  const FixedStateForces& solve(double t, const BlockState& s);
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
-  ContactForces forces(double t, const BlockState& s) const;
-  FixedStateForces solve(double t, const BlockState& s) const;
+  // The guards whose slot is used (the others are 1 throughout).
+  GuardClaims live_guards() const;
   // The seat point a touching guard watches, or -1 (a block vertex's guard, or another guard).
   int watched_point(int guard) const {
     const int k = guard - kFirstClearanceGuard - static_cast<int>(watched_vertices_.size());
@@ -87,19 +91,19 @@ class SeatSystem {
   double length_scale() const { return c_.geometry->size(); }
   double g() const { return c_.g; }
 
-  // Which guards are least at an end of a step (engine/seat/seat_ends.cpp), claimed only where that
-  // is exactly true of guards() (docs/physics.md, "Contact on a seat"); turning about a fixed
-  // point, PivotSweep.
+  // The claims (GuardClaims) of the guards `asked` names over a step (engine/seat/seat_ends.cpp),
+  // made only where they are exactly true of guards() (docs/physics.md, "Contact on a seat"); a
+  // guard not asked is not looked at. Turning about a fixed point: PivotSweep.
   // A vertex slipping along a line, its place and its rate along it moving one way or not:
-  GuardClaims slip_least_at_ends(bool place_one_way, bool rate_one_way) const;
+  GuardClaims slip_claims(bool place_one_way, bool rate_one_way) const;
   // Sliding without turning between the states s0 and s1, its place and rate likewise:
-  GuardClaims slide_least_at_ends(const BlockState& s0, const BlockState& s1, bool place_one_way,
-                                  bool rate_one_way) const;
+  GuardClaims slide_claims(const BlockState& s0, const BlockState& s1, bool place_one_way,
+                           bool rate_one_way, const GuardClaims& asked) const;
   // Any other motion, the centre of mass's x from x0 to x1 (in flight theta is linear in time: it
   // moves one way):
-  GuardClaims free_least_at_ends(double x0, double x1, bool x_one_way, bool theta_one_way) const;
+  GuardClaims free_claims(double x0, double x1, bool x_one_way, bool theta_one_way) const;
   // The guards whose slot is unused: their value is 1 throughout.
-  GuardClaims unused_guards() const;
+  GuardClaims unused_guards() const { return unused_; }
 
  private:
   friend class PivotSweep;
@@ -123,22 +127,23 @@ class SeatSystem {
   Poses active_poses(const BlockState& s) const;
   // Whether the last forces solved are at this time and state.
   bool solved_at(double t, const BlockState& s) const;
-  // The forces with the active contacts' poses at s given.
-  const FixedStateForces& solve(double t, const BlockState& s, const Poses& poses) const;
+  // The forces with the active contacts' poses at s given; solve_anew does not look at the last.
+  const FixedStateForces& solve(double t, const BlockState& s, const Poses& poses);
+  const FixedStateForces& solve_anew(double t, const BlockState& s, const Poses& poses);
 
   SeatSystemContext c_;
   std::array<ActiveContact, kMaxSeatContacts> active_{};
   int count_ = 0;
   std::vector<int> watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
-  // The last forces solved, and the time and state they were solved at: a step's end is asked for
-  // by its guards, by the next step's first stage and by the checks of its forces.
+  GuardClaims unused_{};
+  // The last forces solved, and the time and state they were solved at.
   struct Solved {
     double t = std::numeric_limits<double>::quiet_NaN();
     BlockState s;
     FixedStateForces forces;
   };
-  mutable Solved last_solve_;
+  Solved last_solve_;
 };
 
 // Which guards are least at an end of a step while the block turns about a fixed point (a
@@ -149,7 +154,7 @@ class SeatSystem {
 class PivotSweep {
  public:
   PivotSweep(const SeatSystem& system, const PivotChart& chart);
-  GuardClaims claims(double theta0, double theta1) const;
+  GuardClaims claims(double theta0, double theta1, const GuardClaims& asked) const;
 
  private:
   struct Vertex {
@@ -163,26 +168,27 @@ class PivotSweep {
     std::vector<Sinusoid> lines;    // signed distance from each block edge's line
   };
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
-  bool point_claim(const ThetaStep& step, const Point& point, std::span<const Vec2> world) const;
+  bool point_claim(const ThetaStep& step, const Point& point) const;
 
   const SeatSystem* system_;
   PivotChart chart_;
-  GuardClaims unused_;
   Sinusoid centre_x_;
   std::vector<Vertex> vertices_;
   std::vector<Point> points_;
 };
 
-// The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp).
+// The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp). It holds
+// its system, which remembers the last forces solved, as the integration's one working copy.
 template <class Chart>
 class SeatOde {
  public:
   static constexpr int N = Chart::N;
   static constexpr int kGuards = kSeatGuards;
 
-  SeatOde(const SeatSystem& system, const Chart& chart) : system_(&system), chart_(chart) {}
+  SeatOde(SeatSystem& system, const Chart& chart)
+      : system_(&system), chart_(chart), sweep_(sweep_of(system, chart)) {}
 
-  const SeatSystem& system() const { return *system_; }
+  SeatSystem& system() const { return *system_; }
   OdeState<N> scale() const { return chart_.scale(system_->length_scale(), system_->g()); }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
     const BlockState s = chart_.full(t, q);
@@ -191,42 +197,49 @@ class SeatOde {
   std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
     return system_->guards(t, chart_.full(t, q));
   }
+  GuardClaims live_guards() const { return system_->live_guards(); }
   SeatEvent event(int guard) const { return system_->event(guard); }
   BlockState full(double t, const OdeState<N>& q) const { return chart_.full(t, q); }
   ContactForces forces(double t, const OdeState<N>& q) const {
     return system_->forces(t, chart_.full(t, q));
   }
   OdeState<N> coordinates(const BlockState& b) const { return chart_.coordinates(b); }
-  // Which guards' least value over a step from q0 to q1 is at one of its ends (so no sample inside
-  // can find it lower): one_way(i) says whether coordinate i of the dense output moves one way.
+  // The claims of the guards `asked` names over a step from q0 to q1 (a guard claimed is least at
+  // one of its ends, so no sample inside can find it lower): one_way(i) says whether coordinate i
+  // of the dense output moves one way.
   template <class OneWay>
-  GuardClaims least_at_ends(const OdeState<N>& q0, const OdeState<N>& q1,
-                            const OneWay& one_way) const {
+  GuardClaims guard_claims(const OdeState<N>& q0, const OdeState<N>& q1, const OneWay& one_way,
+                           const GuardClaims& asked) const {
     if constexpr (std::is_same_v<Chart, PivotChart>) {
       if (!one_way(0)) return system_->unused_guards();
-      if (!sweep_) sweep_.emplace(*system_, chart_);
-      return sweep_->claims(q0[0], q1[0]);
+      return sweep_.claims(q0[0], q1[0], asked);
     } else if constexpr (std::is_same_v<Chart, SlipChart>) {
-      return system_->slip_least_at_ends(one_way(2), one_way(3));
+      return system_->slip_claims(one_way(2), one_way(3));
     } else if constexpr (std::is_same_v<Chart, SlideChart>) {
-      return system_->slide_least_at_ends(chart_.full(0.0, q0), chart_.full(0.0, q1), one_way(0),
-                                          one_way(1));
+      return system_->slide_claims(chart_.full(0.0, q0), chart_.full(0.0, q1), one_way(0),
+                                   one_way(1), asked);
     } else if constexpr (std::is_same_v<Chart, FlightChart>) {
-      return system_->free_least_at_ends(chart_.full(chart_.t0, q0).x, chart_.full(chart_.t0, q1).x,
-                                         one_way(0), true);
+      return system_->free_claims(chart_.full(chart_.t0, q0).x, chart_.full(chart_.t0, q1).x,
+                                  one_way(0), true);
     } else {
-      return system_->free_least_at_ends(chart_.full(0.0, q0).x, chart_.full(0.0, q1).x, one_way(0),
-                                         one_way(2));
+      return system_->free_claims(chart_.full(0.0, q0).x, chart_.full(0.0, q1).x, one_way(0),
+                                  one_way(2));
     }
   }
 
  private:
-  const SeatSystem* system_;
+  using Sweep = std::conditional_t<std::is_same_v<Chart, PivotChart>, PivotSweep, std::monostate>;
+  static Sweep sweep_of(const SeatSystem& system, const Chart& chart) {
+    if constexpr (std::is_same_v<Chart, PivotChart>) {
+      return PivotSweep(system, chart);
+    } else {
+      return {};
+    }
+  }
+
+  SeatSystem* system_;
   Chart chart_;
-  // A pivot's sweep, built when first asked: a chart that is never near a guard's zero needs none.
-  mutable std::optional<
-      std::conditional_t<std::is_same_v<Chart, PivotChart>, PivotSweep, std::monostate>>
-      sweep_;
+  Sweep sweep_;
 };
 
 }  // namespace blockfrag

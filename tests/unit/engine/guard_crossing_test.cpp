@@ -11,7 +11,7 @@ namespace blockfrag {
 namespace {
 
 // Nothing is known about where a guard is least.
-std::array<bool, 1> unknown() { return {false}; }
+std::array<bool, 1> unknown(const std::array<bool, 1>&) { return {false}; }
 
 // A parabola with its minimum c below zero at t = m, scaled by k: zero at m -+ sqrt(c / k).
 struct Parabola {
@@ -22,7 +22,7 @@ struct Parabola {
 
 TEST(GuardCrossing, FindsAGuardThatEndsTheStepBelowZero) {
   const Parabola g{1.0, 1.2, 0.01};  // zero at 1.1
-  const GuardWatch<1> watch(g(0.0));
+  GuardWatch<1> watch(g(0.0));
   const auto crossing = watch.first_crossing(g, 0.0, 1.15, g(1.15), unknown);
   EXPECT_EQ(crossing.which, 0);
   EXPECT_NEAR(crossing.after, g.first_zero(), 1e-12);
@@ -38,7 +38,7 @@ TEST(GuardCrossing, FindsADipBetweenSamplesWhereTheSamplesTurnBackUp) {
   for (int k = 0; k <= kInteriorSamples; ++k) {
     ASSERT_GT(g(static_cast<double>(k) / kInteriorSamples)[0], 0.0) << k;
   }
-  const GuardWatch<1> watch(g(0.0));
+  GuardWatch<1> watch(g(0.0));
   const auto crossing = watch.first_crossing(g, 0.0, 1.0, g(1.0), unknown);
   EXPECT_EQ(crossing.which, 0);
   EXPECT_NEAR(crossing.after, g.first_zero(), 1e-12);
@@ -47,7 +47,7 @@ TEST(GuardCrossing, FindsADipBetweenSamplesWhereTheSamplesTurnBackUp) {
 TEST(GuardCrossing, AGuardThatStaysPositiveDoesNotCross) {
   // The same shape lifted above zero: the parabola's minimum is evaluated and found positive.
   const Parabola g{0.15, 0.53, -1e-5};
-  const GuardWatch<1> watch(g(0.0));
+  GuardWatch<1> watch(g(0.0));
   EXPECT_EQ(watch.first_crossing(g, 0.0, 1.0, g(1.0), unknown).which, -1);
 }
 
@@ -59,12 +59,14 @@ TEST(GuardCrossing, AGuardLeastAtTheStepsEndsIsNotLookedInside) {
     ++evaluations;
     return std::array<double, 1>{1e-3 + 0.01 * t};
   };
-  const GuardWatch<1> watch(g(0.0));
+  GuardWatch<1> watch(g(0.0));
   evaluations = 0;
   EXPECT_EQ(watch.first_crossing(g, 0.0, 1.0, {0.011}, unknown).which, -1);
   EXPECT_GT(evaluations, 0);
   evaluations = 0;
-  const auto least_at_start_or_end = [] { return std::array<bool, 1>{true}; };
+  const auto least_at_start_or_end = [](const std::array<bool, 1>&) {
+    return std::array<bool, 1>{true};
+  };
   EXPECT_EQ(watch.first_crossing(g, 0.0, 1.0, {0.011}, least_at_start_or_end).which, -1);
   EXPECT_EQ(evaluations, 0);
 }

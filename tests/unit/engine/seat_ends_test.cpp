@@ -25,6 +25,13 @@ using testing::FixedUniforms;
 
 constexpr int kSamples = 400;
 
+// Every guard is asked about.
+const GuardClaims kEveryGuard = [] {
+  GuardClaims every;
+  every.fill(true);
+  return every;
+}();
+
 struct TypeBSeat {
   SeatContacts contacts{kTypeB, kTypeBSeat};
   BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
@@ -114,13 +121,14 @@ TEST(SeatEnds, PivotClaimsHoldOverRandomSteps) {
                                          {0, 2}}};
   FixedUniforms u(33);
   for (const PivotCase& p : cases) {
-    const SeatSystem system = seat.system({p.contact}, p.vertices, p.points);
+    SeatSystem system = seat.system({p.contact}, p.vertices, p.points);
     const SeatOde ode(system, PivotChart{p.point, p.body});
     int claimed = 0;
     for (int n = 0; n < 300; ++n) {
       const double theta0 = u(-0.6, 0.6);
       const double theta1 = theta0 + (n % 2 == 0 ? u(-0.3, 0.3) : u(-1e-3, 1e-3));
-      const auto claims = ode.least_at_ends({theta0, 0.2}, {theta1, 0.2}, [](int) { return true; });
+      const auto claims = ode.guard_claims(
+          {theta0, 0.2}, {theta1, 0.2}, [](int) { return true; }, kEveryGuard);
       claimed += check_claims(system, claims, [&](double f) {
         return ode.guards(0.0, {theta0 + f * (theta1 - theta0), 0.2});
       });
@@ -136,18 +144,19 @@ TEST(SeatEnds, PivotClaimsHoldOverRandomSteps) {
 TEST(SeatEnds, RockingOnTheHeelTheFoldsClearancesAreLeastAtAnEnd) {
   const TypeBSeat seat;
   const SeatContacts& c = seat.contacts;
-  const SeatSystem system = seat.system({{{ContactKind::block_vertex, 0, 0}, ContactState::stick}},
-                                        {1, 2, 3, 4, 5}, {1, 2});
+  SeatSystem system = seat.system({{{ContactKind::block_vertex, 0, 0}, ContactState::stick}},
+                                  {1, 2, 3, 4, 5}, {1, 2});
   const SeatOde ode(system, PivotChart{c.seat_point(0), c.body_vertex(0)});
   for (const double theta : {1e-6, 1e-3, 0.1}) {
-    const auto claims =
-        ode.least_at_ends({theta, 0.1}, {theta * 1.01, 0.1}, [](int) { return true; });
+    const auto claims = ode.guard_claims(
+        {theta, 0.1}, {theta * 1.01, 0.1}, [](int) { return true; }, kEveryGuard);
     EXPECT_TRUE(claims[0]);                         // overturning
     EXPECT_TRUE(claims[kFirstClearanceGuard]);      // the fold's vertex over the seat
     EXPECT_TRUE(claims[kFirstClearanceGuard + 5]);  // the fold's seat point under the base
   }
   // theta not moving one way: nothing is claimed but the unused slots.
-  const auto none = ode.least_at_ends({0.1, 0.1}, {0.11, 0.1}, [](int) { return false; });
+  const auto none = ode.guard_claims(
+      {0.1, 0.1}, {0.11, 0.1}, [](int) { return false; }, kEveryGuard);
   EXPECT_FALSE(none[0]);
   EXPECT_FALSE(none[kFirstClearanceGuard]);
   EXPECT_TRUE(none[kSeatGuards - 1]);
@@ -159,12 +168,12 @@ TEST(SeatEnds, SlideAndSlipClaimsHoldOverRandomSteps) {
   const TypeBSeat seat;
   const SeatContacts& c = seat.contacts;
   const SeatLine line = c.segment_line(0);
-  const SeatSystem sliding =
+  SeatSystem sliding =
       seat.system({{{ContactKind::block_vertex, 0, 0}, ContactState::slip_positive},
                    {{ContactKind::block_vertex, 1, 0}, ContactState::slip_positive}},
                   {2, 3, 4, 5}, {1, 2});
   const SeatOde slide(sliding, SlideChart{{0.0, 0.0}, line, c.rest_centre().y, 0.0});
-  const SeatSystem slipping = seat.system(
+  SeatSystem slipping = seat.system(
       {{{ContactKind::block_vertex, 0, 0}, ContactState::slip_negative}}, {1, 2, 3, 4, 5}, {1, 2});
   const SeatOde slip(slipping, SlipChart{{0.0, 0.0}, line, c.body_vertex(0)});
   FixedUniforms u(34);
@@ -172,13 +181,15 @@ TEST(SeatEnds, SlideAndSlipClaimsHoldOverRandomSteps) {
   for (int n = 0; n < 300; ++n) {
     const OdeState<2> a{c.rest_centre().x + u(-8, 8), u(-1, 1)};
     const OdeState<2> b{a[0] + u(-3, 3), u(-1, 1)};
-    const auto claims = slide.least_at_ends(a, b, [](int) { return true; });
+    const auto claims = slide.guard_claims(
+        a, b, [](int) { return true; }, kEveryGuard);
     claimed += check_claims(sliding, claims, [&](double f) {
       return slide.guards(0.0, {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])});
     });
     const OdeState<4> p{u(0, 0.3), 0.2, u(-2, 8), u(-1, 0)};
     const OdeState<4> q{p[0] + u(-0.1, 0.1), 0.2, p[2] + u(-1, 1), u(-1, 0)};
-    const auto slip_claims = slip.least_at_ends(p, q, [](int i) { return i >= 2; });
+    const auto slip_claims = slip.guard_claims(
+        p, q, [](int i) { return i >= 2; }, kEveryGuard);
     EXPECT_TRUE(slip_claims[3]);  // the slip's velocity
     EXPECT_TRUE(slip_claims[4]);  // its distance from its run's ends
     check_claims(slipping, slip_claims, [&](double f) {
@@ -193,7 +204,7 @@ TEST(SeatEnds, SlideAndSlipClaimsHoldOverRandomSteps) {
 // way and stays on one side of the seat's ends.
 TEST(SeatEnds, FlightClaimsHoldOverRandomSteps) {
   const TypeBSeat seat;
-  const SeatSystem flying = seat.system({}, {0, 1, 2, 3, 4, 5}, {0, 1, 2});
+  SeatSystem flying = seat.system({}, {0, 1, 2, 3, 4, 5}, {0, 1, 2});
   FixedUniforms u(35);
   int claimed = 0;
   for (int n = 0; n < 300; ++n) {
@@ -202,7 +213,8 @@ TEST(SeatEnds, FlightClaimsHoldOverRandomSteps) {
     const OdeState<4> a{u(-3, 16), u(-2, 2), u(10, 12), 0.0};
     const double h = u(0.01, 0.5);
     const OdeState<4> b{a[0] + h * a[1], a[1], a[2], 0.0};
-    const auto claims = ode.least_at_ends(a, b, [](int i) { return i == 0; });
+    const auto claims = ode.guard_claims(
+        a, b, [](int i) { return i == 0; }, kEveryGuard);
     claimed += claims[0];
     check_claims(flying, claims, [&](double f) {
       return ode.guards(f * h, {a[0] + f * h * a[1], a[1], a[2], 0.0});
