@@ -62,6 +62,8 @@ def states_of_type(study, state_type):
 
 
 def fit_text(state):
+    if state["fit_status"] == "no_exceedances":
+        return "none exceeded, no fit"
     if not has_fit(state):
         return "no fit"
     return f"median {state['median']:.3g}, beta {state['beta']:.2f}"
@@ -127,7 +129,7 @@ def plot(studies, labels, title, output, kinds=None):
         axis.set_ylabel("P(exceed)")
         axis.grid(alpha=0.3)
         if kinds:
-            axis.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16))
+            axis.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2))
         else:
             axis.legend(fontsize=7, loc="upper left")
     for axis in list(axes.flat)[len(panels):]:
