@@ -15,7 +15,11 @@ animated GIF of several distinct frames, a polygon given in another frame drawn 
 rectangle, a one-line error for a scene that is not the history's; on a seat, the seat drawn (and
 no seat on the flat ground), a block that sinks into the seat or floats off it while touching
 refused, one that falls past the seat's end accepted. plot_motion_pair.py: two panels side by
-side, the seat drawn, each history checked against its scene. plot_spectrum.py: a PNG showing
+side, the seat drawn, each history checked against its scene. plot_fragility_pair.py: both studies'
+colours, a panel per limit state both have; with --kinds a panel per kind in the order asked, each
+kind's limit states by threshold, a kind one study lacks kept (the dry study's post-earthquake
+panel); one-line errors for studies that measure intensity differently and a kind neither has;
+exit code 2 for an unknown or missing kind. plot_spectrum.py: a PNG showing
 the colours of the verdicts present (a safe island's among them) and not of those absent, the
 islands found as connected cells above an overturning point, boundary lines that join neighbouring
 crossings and not distant ones, one-line errors for a missing file, a file that is not a spectrum
@@ -679,6 +683,65 @@ def test_fragility_pair_refuses_studies_that_measure_intensity_differently(work)
     assert not (work / "ab.png").exists()
     assert_clean_error(call(PLOT_FRAGILITY_PAIR, work / "a.h5", work / "absent.h5", "-o", work / "ab.png"),
                        "absent.h5")
+
+
+def add_post_earthquake_state(path):
+    """A wet study's post-earthquake limit state, and a second dislocation threshold, beside
+    write_study's two."""
+    with h5py.File(path, "r+") as f:
+        state = f["fragility"].create_group("unstable_after")
+        fill(state, BAKER_IM, BAKER_TRIALS, BAKER_EXCEED)
+        state.attrs.update({"median": 0.8, "beta": 0.4, "log_likelihood": -11.0, "fit_status": "ok",
+                            "type": "post_earthquake_unstable", "threshold": 1.0})
+        state = f["fragility"].create_group("slide_2cm")
+        fill(state, BAKER_IM, BAKER_TRIALS, BAKER_EXCEED)
+        state.attrs.update({"median": 0.9, "beta": 0.5, "log_likelihood": -11.0, "fit_status": "ok",
+                            "type": "residual_slide", "threshold": 0.02})
+
+
+def test_fragility_pair_draws_one_panel_per_kind(work):
+    write_study(work / "dry.h5")
+    write_study(work / "wet.h5")
+    add_post_earthquake_state(work / "wet.h5")
+    with h5py.File(work / "wet.h5", "r+") as f:  # the wet curves apart from the dry, at 1.6 times the intensity
+        for state in f["fragility"].values():
+            state["im"][...] = 1.6 * state["im"][...]
+            state.attrs["median"] = 1.6 * state.attrs["median"]
+    module = load(PLOT_FRAGILITY_PAIR)
+    studies = [module.read_study(work / "dry.h5"), module.read_study(work / "wet.h5")]
+    panels = module.panels_by_kind(studies, ["post_earthquake", "dislocation", "loss"])
+    # In the order asked; each kind's states by ascending threshold; the dry study has no
+    # post-earthquake state and its panel says so rather than vanishing.
+    assert [title.split(" ")[0] for title, _ in panels] == ["post-earthquake", "dislocation", "loss"], panels
+    names = [[[s["name"] for s in states] for states in per_study] for _, per_study in panels]
+    assert names == [[[], ["unstable_after"]], [["slide_5cm"], ["slide_2cm", "slide_5cm"]],
+                     [["overturn"], ["overturn"]]], names
+    result = call(PLOT_FRAGILITY_PAIR, work / "dry.h5", work / "wet.h5", "-o", work / "kinds.png",
+                  "--labels", "dry", "wet", "--kinds", "dislocation", "loss", "post_earthquake")
+    assert result.returncode == 0, result.stderr
+    width, height = png_size(work / "kinds.png")
+    assert width > 2.5 * height, f"three panels side by side: {width} x {height}"
+    pixels = check_plausible_png(work / "kinds.png", min_height=300)
+    assert colour_pixels(pixels, FIRST_STUDY) > 300, "the dry study is not drawn"
+    assert colour_pixels(pixels, SECOND_STUDY) > 300, "the wet study is not drawn"
+    result = call(PLOT_FRAGILITY_PAIR, work / "dry.h5", work / "wet.h5", "-o", work / "two.png", "--kinds", "loss",
+                  "dislocation")
+    assert result.returncode == 0, result.stderr
+    width, height = png_size(work / "two.png")
+    assert 1.5 * height < width < 2.5 * height, f"two panels side by side: {width} x {height}"
+
+
+def test_fragility_pair_refuses_a_kind_neither_study_has_and_an_unknown_kind(work):
+    write_study(work / "dry.h5")
+    write_study(work / "wet.h5")
+    assert_clean_error(call(PLOT_FRAGILITY_PAIR, work / "dry.h5", work / "wet.h5", "-o", work / "x.png",
+                            "--kinds", "loss", "rocking"), "neither study has a rocking limit state")
+    assert not (work / "x.png").exists()
+    result = call(PLOT_FRAGILITY_PAIR, work / "dry.h5", work / "wet.h5", "-o", work / "x.png", "--kinds", "damage")
+    assert result.returncode == 2 and "invalid choice: 'damage'" in result.stderr, result.stderr
+    result = call(PLOT_FRAGILITY_PAIR, work / "dry.h5", work / "wet.h5", "-o", work / "x.png", "--kinds")
+    assert result.returncode == 2 and "--kinds" in result.stderr, result.stderr
+    assert not (work / "x.png").exists()
 
 
 # --- plot_spectrum.py ---------------------------------------------------------------------------------
