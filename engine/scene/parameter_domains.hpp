@@ -77,6 +77,8 @@ inline constexpr Domain pulse_period{1e-3, 1e3, true, true, "s"};
 inline constexpr Domain pulse_cycles{0.0, 1e4, false, true, ""};
 // A rectangular pulse's length.
 inline constexpr Domain pulse_duration{1e-4, 1e4, true, true, "s"};
+// Makris's type C_n pulse: its number of main velocity cycles n.
+inline constexpr Domain makris_c_n{1.0, 1e3, true, true, ""};
 // A time inside a motion (a Ricker wavelet's centre, a Mavroeidis-Papageorgiou pulse's t0).
 inline constexpr Domain motion_time{0.0, 1e5, false, true, "s"};
 // A Mavroeidis-Papageorgiou pulse: its velocity amplitude, gamma (oscillations under the
