@@ -135,5 +135,20 @@ inline constexpr Domain tolerance{1e-14, 0.1, true, true, ""};
 inline constexpr Domain max_steps{1.0, 1e10, true, true, ""};
 inline constexpr Domain max_events{1.0, 1e9, true, true, ""};
 
+// --- Studies and spectra (mpi_driver/config/study_fields.hpp) ----------------------------------
+// Seconds between checkpoints: a millisecond to about eleven days.
+inline constexpr Domain checkpoint_interval_s{1e-3, 1e6, true, true, "s"};
+// The fraction of a study's samples that may fail or be rejected before its exit code says so.
+inline constexpr Domain allowed_failed_fraction{0.0, 1.0, true, true, ""};
+// Resamples of a fit's bootstrap (0: none).
+inline constexpr Domain bootstrap_resamples{0.0, 1e5, true, true, ""};
+// A spectrum's minimum overturning amplitude: its bracket and the narrowest interval probed below
+// it, both relative; the max |theta| / alpha at which a standing amplitude counts as near
+// overturning; the midpoints per frequency, which rank 0 keeps with the grid's 100,000 frequencies.
+inline constexpr Domain minimum_tolerance{1e-9, 0.1, true, true, ""};
+inline constexpr Domain minimum_resolution{1e-9, 0.1, true, true, ""};
+inline constexpr Domain near_overturning{0.0, 1.0, true, true, ""};
+inline constexpr Domain minimum_midpoints{1.0, 1e5, true, true, "", "1", "100000"};
+
 }  // namespace domain
 }  // namespace blockfrag

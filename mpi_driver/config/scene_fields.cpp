@@ -3,6 +3,8 @@
 #include <utility>
 #include <variant>
 
+#include "mpi_driver/config/study_fields.hpp"
+
 namespace blockfrag {
 
 namespace {
@@ -36,7 +38,8 @@ std::vector<KeyTable> scene_key_tables() {
           {"dam.", describe_fields<DamSize>(scene_fields::dam_size)},
           {"dam.", describe_fields<DamCrest>(scene_fields::dam)},
           {"reservoir.", describe_fields<Reservoir>(scene_fields::reservoir)},
-          {"", motion_fields(std::make_index_sequence<std::variant_size_v<GroundMotion>>{})}};
+          {"", motion_fields(std::make_index_sequence<std::variant_size_v<GroundMotion>>{})},
+          {"", describe_fields<StudyConfig>(study_fields::run)}};
 }
 
 }  // namespace blockfrag

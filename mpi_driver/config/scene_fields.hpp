@@ -177,8 +177,9 @@ struct MotionKeys<MavroeidisPapageorgiouPulse> {
        [](const Pulse& pulse) { return pulse.center(); }}};
 };
 
-// Every table above under the prefix docs/scenes.md's Domains table names its keys with
-// ("block.", "" for the scene's own keys and the ground motions').
+// Every table above, and a study's own (mpi_driver/config/study_fields.hpp), under the prefix
+// docs/scenes.md's Domains table names its keys with ("block.", "" for the scene's own keys, the
+// ground motions' and the study's).
 struct KeyTable {
   std::string prefix;
   std::vector<FieldDescription> fields;

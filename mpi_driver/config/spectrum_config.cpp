@@ -155,7 +155,7 @@ std::optional<PulseFamily> read_pulse(ObjectReader reader) {
     family.pulse = SpectrumPulse::makris_b;
   } else if (type == "makris_c") {
     family.pulse = SpectrumPulse::makris_c;
-    family.n = static_cast<int>(reader.integer_or("n", 1, Range::closed(1, 1000)));
+    family.n = static_cast<int>(reader.integer_or("n", 1, Range::of(domain::makris_c_n)));
   } else if (type == "ricker") {
     family.pulse = SpectrumPulse::ricker;
   }
@@ -343,8 +343,9 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
       errors.add_message(source + ": --output: " + *problem);
     config.output = *output;
   }
-  config.checkpoint_interval_s = root.number_or(
-      "checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
+  config.checkpoint_interval_s =
+      root.number_or("checkpoint_interval_s", config.checkpoint_interval_s,
+                     Range::of(domain::checkpoint_interval_s));
   root.finish();
 
   if (family) {
