@@ -324,14 +324,14 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   const Axis frequency = read_axis(root.required_object("frequency_ratio"), 1);
   const Axis amplitude = read_axis(root.required_object("amplitude_ratio"), 2);
   ObjectReader bisection = root.object("bisection");
-  config.bisection_tolerance =
-      bisection.number_or("tolerance", config.bisection_tolerance, Range::closed(1e-14, 0.1));
+  config.bisection_tolerance = bisection.number_or("tolerance", config.bisection_tolerance,
+                                                   Range::of(domain::bisection_tolerance));
   config.max_iterations = static_cast<int>(bisection.integer_or(
-      "max_iterations", config.max_iterations, Range::closed(1, kMaxBisectionIterations)));
+      "max_iterations", config.max_iterations, Range::of(domain::bisection_iterations)));
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
-  config.settle_allowance_tau =
-      root.number_or("settle_allowance_tau", config.settle_allowance_tau, Range::closed(1, 1e6));
+  config.settle_allowance_tau = root.number_or("settle_allowance_tau", config.settle_allowance_tau,
+                                               Range::of(domain::settle_allowance_tau));
   if (const auto name = root.string("output")) {
     if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
     config.output = *name;
