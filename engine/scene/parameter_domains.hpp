@@ -77,6 +77,8 @@ inline constexpr Domain pulse_period{1e-3, 1e3, true, true, "s"};
 inline constexpr Domain pulse_cycles{0.0, 1e4, false, true, ""};
 // A rectangular pulse's length.
 inline constexpr Domain pulse_duration{1e-4, 1e4, true, true, "s"};
+// Makris's type C_n pulse: its number of main velocity cycles n.
+inline constexpr Domain makris_c_n{1.0, 1e3, true, true, ""};
 // A time inside a motion (a Ricker wavelet's centre, a Mavroeidis-Papageorgiou pulse's t0).
 inline constexpr Domain motion_time{0.0, 1e5, false, true, "s"};
 // A Mavroeidis-Papageorgiou pulse: its velocity amplitude, gamma (oscillations under the
@@ -132,6 +134,41 @@ inline constexpr Domain tolerance{1e-14, 0.1, true, true, ""};
 // The step and event budgets.
 inline constexpr Domain max_steps{1.0, 1e10, true, true, ""};
 inline constexpr Domain max_events{1.0, 1e9, true, true, ""};
+
+// --- Studies and spectra (mpi_driver/config/study_fields.hpp) ----------------------------------
+// Seconds between checkpoints: a millisecond to about eleven days.
+inline constexpr Domain checkpoint_interval_s{1e-3, 1e6, true, true, "s"};
+// The fraction of a study's samples that may fail or be rejected before its exit code says so.
+inline constexpr Domain allowed_failed_fraction{0.0, 1.0, true, true, ""};
+// Resamples of a fit's bootstrap (0: none).
+inline constexpr Domain bootstrap_resamples{0.0, 1e5, true, true, ""};
+// A spectrum's minimum overturning amplitude: its bracket and the narrowest interval probed below
+// it, both relative; the max |theta| / alpha at which a standing amplitude counts as near
+// overturning; the midpoints per frequency, which rank 0 keeps with the grid's 100,000 frequencies.
+inline constexpr Domain minimum_tolerance{1e-9, 0.1, true, true, ""};
+inline constexpr Domain minimum_resolution{1e-9, 0.1, true, true, ""};
+inline constexpr Domain near_overturning{0.0, 1.0, true, true, ""};
+inline constexpr Domain minimum_midpoints{1.0, 1e5, true, true, "", "1", "100000"};
+// A spectrum's bisection: its relative bracket, and at most 200 iterations, so that no config asks
+// for an endless one.
+inline constexpr Domain bisection_tolerance{1e-14, 0.1, true, true, ""};
+inline constexpr Domain bisection_iterations{1.0, 200.0, true, true, ""};
+// A spectrum point's run after the pulse, in 1 / p.
+inline constexpr Domain settle_allowance_tau{1.0, 1e6, true, true, ""};
+// An Sa measure's oscillator period: design spectra end near 10 s.
+inline constexpr Domain sa_period{0.0, 10.0, false, true, "s"};
+// A cloud's factor on every record, and a suite record's weight.
+inline constexpr Domain cloud_scale{0.0, 1e3, false, true, ""};
+inline constexpr Domain record_weight{0.0, 1e6, false, true, ""};
+// Adaptive stripes: the median's 95 % interval width aimed at, relative; where a batch's pair of
+// levels lies on the fit (at least 0.01: the pair lies at most 2.33 beta from the median in
+// logarithm, where the fit still speaks of its data, not at the ends of the measure's range, as
+// p = 1e-300 would ask for 1e-72 g and 1000 g; at most 0.49, just short of both levels at the
+// median); the budget of samples in all batches (records stream to disk, so no memory limit, but
+// a budget is a promise about time and disk).
+inline constexpr Domain target_relative_width{0.0, 2.0, false, true, ""};
+inline constexpr Domain pair_probability{0.01, 0.49, true, true, ""};
+inline constexpr Domain adaptive_samples{1.0, 1e9, true, true, ""};
 
 }  // namespace domain
 }  // namespace blockfrag

@@ -7,15 +7,13 @@ AdaptiveDesign read_adaptive_design(ObjectReader reader) {
   const auto base = reader.choice("base", {"latin_hypercube", "monte_carlo"});
   design.base = base == "monte_carlo" ? Design::monte_carlo : Design::latin_hypercube;
   design.limit_state = reader.string_or("limit_state", "");
-  design.target_relative_width = reader.number_or(
-      "target_relative_width", design.target_relative_width, Range::left_open(0.0, 2.0));
+  design.target_relative_width =
+      reader.number_or("target_relative_width", design.target_relative_width,
+                       Range::of(domain::target_relative_width));
   design.pair_probability = reader.number_or("pair_probability", design.pair_probability,
-                                             Range::closed(kMinPairProbability, 0.49));
+                                             Range::of(domain::pair_probability));
   design.max_samples =
-      reader
-          .required_integer("max_samples",
-                            Range::closed(1, static_cast<double>(kMaxAdaptiveSamples)))
-          .value_or(0);
+      reader.required_integer("max_samples", Range::of(domain::adaptive_samples)).value_or(0);
   reader.finish();
   return design;
 }

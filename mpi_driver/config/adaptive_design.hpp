@@ -27,14 +27,7 @@ struct AdaptiveDesign {
   std::int64_t max_samples = 0;           // in all batches, the first included
 };
 
-// The smallest pair_probability (the largest is 0.49, just short of both levels at the median):
-// the pair lies at most 2.33 beta from the median in logarithm, where the fit still speaks of its
-// data, not at the ends of the measure's range (p = 1e-300 would ask for 1e-72 g and 1000 g).
-inline constexpr double kMinPairProbability = 0.01;
-
-// The largest budget: a study whose records stream to disk has no memory limit, but a budget is
-// a promise about time and disk.
-inline constexpr std::int64_t kMaxAdaptiveSamples = 1'000'000'000;
+// Its numbers' domains: engine/scene/parameter_domains.hpp.
 
 // The most batches a budget may allow: each costs a round of messages, a checkpoint and a fit.
 inline constexpr std::int64_t kMaxAdaptiveBatches = 10'000;

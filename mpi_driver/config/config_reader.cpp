@@ -71,7 +71,7 @@ bool check_range(double x, const std::string& shown, const JsonPointer& path, Co
   return false;
 }
 
-std::string quoted_list(std::initializer_list<std::string_view> words) {
+std::string quoted_list(std::span<const std::string_view> words) {
   std::string list;
   for (const auto word : words) {
     if (!list.empty()) list += ", ";
@@ -191,6 +191,12 @@ std::optional<std::string> read_string(const json& value, const JsonPointer& pat
 std::optional<std::string> read_choice(const json& value, const JsonPointer& path,
                                        ConfigErrors& errors,
                                        std::initializer_list<std::string_view> choices) {
+  return read_choice(value, path, errors, std::span(choices.begin(), choices.size()));
+}
+
+std::optional<std::string> read_choice(const json& value, const JsonPointer& path,
+                                       ConfigErrors& errors,
+                                       std::span<const std::string_view> choices) {
   if (!value.is_string()) {
     errors.add(path, "must be one of " + quoted_list(choices) + " (got " + describe(value) + ")");
     return std::nullopt;
@@ -291,13 +297,13 @@ std::string ObjectReader::string_or(std::string_view key, std::string fallback) 
 }
 
 std::optional<std::string> ObjectReader::choice(std::string_view key,
-                                                std::initializer_list<std::string_view> choices) {
+                                                std::span<const std::string_view> choices) {
   const json* value = find(key);
   return value ? read_choice(*value, path_of(key), *errors_, choices) : std::nullopt;
 }
 
 std::optional<std::string> ObjectReader::required_choice(
-    std::string_view key, std::initializer_list<std::string_view> choices) {
+    std::string_view key, std::span<const std::string_view> choices) {
   const json* value = find_required(key);
   return value ? read_choice(*value, path_of(key), *errors_, choices) : std::nullopt;
 }

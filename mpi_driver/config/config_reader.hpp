@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <limits>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -110,6 +111,9 @@ std::optional<std::string> read_string(const nlohmann::json& value, const JsonPo
                                        ConfigErrors& errors);
 std::optional<std::string> read_choice(const nlohmann::json& value, const JsonPointer& path,
                                        ConfigErrors& errors,
+                                       std::span<const std::string_view> choices);
+std::optional<std::string> read_choice(const nlohmann::json& value, const JsonPointer& path,
+                                       ConfigErrors& errors,
                                        std::initializer_list<std::string_view> choices);
 
 class ArrayReader;
@@ -152,9 +156,17 @@ class ObjectReader {
   std::string string_or(std::string_view key, std::string fallback);
 
   std::optional<std::string> choice(std::string_view key,
-                                    std::initializer_list<std::string_view> choices);
+                                    std::span<const std::string_view> choices);
   std::optional<std::string> required_choice(std::string_view key,
-                                             std::initializer_list<std::string_view> choices);
+                                             std::span<const std::string_view> choices);
+  std::optional<std::string> choice(std::string_view key,
+                                    std::initializer_list<std::string_view> choices) {
+    return choice(key, std::span(choices.begin(), choices.size()));
+  }
+  std::optional<std::string> required_choice(std::string_view key,
+                                             std::initializer_list<std::string_view> choices) {
+    return required_choice(key, std::span(choices.begin(), choices.size()));
+  }
 
   ObjectReader object(std::string_view key);           // inert when absent
   ObjectReader required_object(std::string_view key);  // inert when absent, after an error

@@ -131,13 +131,13 @@ IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type
     }
   }
   if (measure.type == ImType::sa) {
-    measure.period = reader.required_number("period", Range::left_open(0.0, 10.0)).value_or(1.0);
+    measure.period = reader.required_number("period", Range::of(domain::sa_period)).value_or(1.0);
     measure.damping = reader.number_or("damping", 0.05, Range::of(domain::dam_damping));
   }
   const auto scaling = reader.choice("scaling", {"stripes", "none"});
   measure.cloud = scaling == "none";
   if (measure.cloud) {
-    measure.scale = reader.number_or("scale", 1.0, Range::left_open(0.0, 1e3));
+    measure.scale = reader.number_or("scale", 1.0, Range::of(domain::cloud_scale));
     for (const char* key : {"levels", "from", "to", "count"}) {
       if (reader.has(key)) reader.add_error(key, "a cloud (\"scaling\": \"none\") has no levels");
     }

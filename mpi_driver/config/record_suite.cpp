@@ -76,7 +76,7 @@ std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
         record.vertical_file = *vertical;
         record.vertical = read_file(*vertical, entry.path_of("vertical"), errors, base_folder);
       }
-      record.weight = entry.number_or("weight", 1.0, Range::left_open(0.0, 1e6));
+      record.weight = entry.number_or("weight", 1.0, Range::of(domain::record_weight));
       entry.finish();
     } else {
       errors.add(array.path_of(k),

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -20,7 +21,7 @@ std::optional<Reservoir> read_reservoir(ObjectReader reader, std::optional<doubl
 // Every key, defaults included (a scene with a reservoir names all of it in its canonical form).
 nlohmann::json reservoir_to_json(const Reservoir& reservoir);
 
-const char* hydrodynamic_name(Hydrodynamic hydrodynamic);
-const char* uplift_rule_name(UpliftRule rule);
+std::string hydrodynamic_name(Hydrodynamic hydrodynamic);
+std::string uplift_rule_name(UpliftRule rule);
 
 }  // namespace blockfrag

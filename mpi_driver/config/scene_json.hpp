@@ -1,4 +1,4 @@
-// A Scene to and from JSON. The public form (more keys may come later):
+// A Scene to and from JSON (the keys read through a table: mpi_driver/config/scene_fields.hpp):
 //   {"block": {"half_width": 0.5, "half_height": 1.0, "mass": 1.0},
 //    "contact": {"friction": 0.6, "restitution": 0.6},
 //    "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 2.0, "cycles": 1},

@@ -155,7 +155,7 @@ std::optional<PulseFamily> read_pulse(ObjectReader reader) {
     family.pulse = SpectrumPulse::makris_b;
   } else if (type == "makris_c") {
     family.pulse = SpectrumPulse::makris_c;
-    family.n = static_cast<int>(reader.integer_or("n", 1, Range::closed(1, 1000)));
+    family.n = static_cast<int>(reader.integer_or("n", 1, Range::of(domain::makris_c_n)));
   } else if (type == "ricker") {
     family.pulse = SpectrumPulse::ricker;
   }
@@ -324,14 +324,14 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   const Axis frequency = read_axis(root.required_object("frequency_ratio"), 1);
   const Axis amplitude = read_axis(root.required_object("amplitude_ratio"), 2);
   ObjectReader bisection = root.object("bisection");
-  config.bisection_tolerance =
-      bisection.number_or("tolerance", config.bisection_tolerance, Range::closed(1e-14, 0.1));
+  config.bisection_tolerance = bisection.number_or("tolerance", config.bisection_tolerance,
+                                                   Range::of(domain::bisection_tolerance));
   config.max_iterations = static_cast<int>(bisection.integer_or(
-      "max_iterations", config.max_iterations, Range::closed(1, kMaxBisectionIterations)));
+      "max_iterations", config.max_iterations, Range::of(domain::bisection_iterations)));
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
-  config.settle_allowance_tau =
-      root.number_or("settle_allowance_tau", config.settle_allowance_tau, Range::closed(1, 1e6));
+  config.settle_allowance_tau = root.number_or("settle_allowance_tau", config.settle_allowance_tau,
+                                               Range::of(domain::settle_allowance_tau));
   if (const auto name = root.string("output")) {
     if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
     config.output = *name;
@@ -343,8 +343,9 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
       errors.add_message(source + ": --output: " + *problem);
     config.output = *output;
   }
-  config.checkpoint_interval_s = root.number_or(
-      "checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
+  config.checkpoint_interval_s =
+      root.number_or("checkpoint_interval_s", config.checkpoint_interval_s,
+                     Range::of(domain::checkpoint_interval_s));
   root.finish();
 
   if (family) {

@@ -92,11 +92,10 @@ struct SpectrumConfig {
   }
 };
 
-// Caps, so that no config exhausts memory (rank 0 holds the map's verdicts and brackets) or asks
-// for an endless bisection.
+// Caps, so that no config exhausts memory (rank 0 holds the map's verdicts and brackets); the
+// bisection's own cap is domain::bisection_iterations (engine/scene/parameter_domains.hpp).
 inline constexpr std::int64_t kMaxSpectrumAxis = 100'000;
 inline constexpr std::int64_t kMaxSpectrumPoints = 4'000'000;
-inline constexpr int kMaxBisectionIterations = 200;
 
 // The pulse of the family at a point: omega_p = frequency_ratio p; a period T = 2 pi / omega_p
 // (a rectangular pulse lasts half of it, t1 = pi / omega_p); amplitude_g = amplitude_ratio tan

@@ -19,6 +19,7 @@
 #include "mpi_driver/config/scene_json.hpp"
 #include "mpi_driver/config/stripe_scale.hpp"
 #include "mpi_driver/config/study_crest_check.hpp"
+#include "mpi_driver/config/study_fields.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 #include "sampling/validation.hpp"
 
@@ -426,20 +427,19 @@ json canonical_json(const StudyConfig& config) {
     scene["ground_motion"]["content_hash"] =
         hash_to_hex(config.suite->records.front().content_hash);
   }
-  return {{"scene", scene},
-          {"inputs", inputs},
-          {"intensity_measure", intensity_measure_to_json(config.intensity)},
-          {"samples_per_level", config.samples_per_level},
-          {"design",
-           config.adaptive
-               ? adaptive_design_to_json(*config.adaptive)
-               : json(config.design == Design::monte_carlo ? "monte_carlo" : "latin_hypercube")},
-          {"limit_states", limit_states},
-          {"seed", config.seed},
-          {"output", config.output.string()},
-          {"checkpoint_interval_s", config.checkpoint_interval_s},
-          {"allowed_failed_fraction", config.allowed_failed_fraction},
-          {"bootstrap_resamples", config.bootstrap_resamples}};
+  json out = {
+      {"scene", scene},
+      {"inputs", inputs},
+      {"intensity_measure", intensity_measure_to_json(config.intensity)},
+      {"samples_per_level", config.samples_per_level},
+      {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
+                                 : json(config.design == Design::monte_carlo ? "monte_carlo"
+                                                                             : "latin_hypercube")},
+      {"limit_states", limit_states},
+      {"seed", config.seed},
+      {"output", config.output.string()}};
+  write_fields<StudyConfig>(config, study_fields::run, out);
+  return out;
 }
 
 }  // namespace
@@ -574,12 +574,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
     // Without an output key the study writes STUDY.h5 in the working folder.
     config.output = std::filesystem::path(source).stem().string() + ".h5";
   }
-  config.checkpoint_interval_s = root.number_or(
-      "checkpoint_interval_s", config.checkpoint_interval_s, Range::closed(1e-3, 1e6));
-  config.allowed_failed_fraction = root.number_or(
-      "allowed_failed_fraction", config.allowed_failed_fraction, Range::closed(0.0, 1.0));
-  config.bootstrap_resamples = static_cast<int>(root.integer_or(
-      "bootstrap_resamples", config.bootstrap_resamples, Range::closed(0, 100'000)));
+  read_fields<StudyConfig>(root, study_fields::run, config);
   root.finish();
   if (errors.empty() && config.design == Design::latin_hypercube &&
       config.samples_per_level > kMaxLatinHypercubeLevel) {

@@ -1,0 +1,204 @@
+// One table per config struct: each entry is a JSON key, the member it fills, the member's domain
+// (engine/scene/parameter_domains.hpp) and whether the key is required. read_fields reads the
+// keys, write_fields writes them into the canonical form (the config hash) and describe_fields
+// lists them for the docs' key tables (tests/unit/driver/config_key_tables_test.cpp compares
+// docs/scenes.md with them), so a key added to a table is read, hashed and documented at once.
+// What a table cannot say (a key that selects other keys, a rule across keys) stays with the
+// struct's reader, which calls read_fields for the rest.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/scene/parameter_domains.hpp"
+#include "mpi_driver/config/config_reader.hpp"
+
+namespace blockfrag {
+
+enum class Presence { required, optional };
+
+enum class Written {
+  always,
+  // Only a value other than the struct's default: a key added after configs without it were
+  // hashed, so that those keep their hash.
+  unless_default,
+};
+
+// An enum member, read and written by the names of its EnumNames
+// (mpi_driver/config/enum_names.hpp).
+template <class Struct>
+struct ChoiceMember {
+  std::span<const std::string_view> names;
+  std::string_view (*get)(const Struct&);
+  void (*set)(Struct&, std::string_view);
+};
+
+namespace field_detail {
+template <class MemberPointer>
+struct MemberOf;
+template <class Struct, class Value>
+struct MemberOf<Value Struct::*> {
+  using type = Struct;
+};
+template <class... Visitors>
+struct Overloaded : Visitors... {
+  using Visitors::operator()...;
+};
+template <class... Visitors>
+Overloaded(Visitors...) -> Overloaded<Visitors...>;
+}  // namespace field_detail
+
+template <auto member, const auto& enum_names>
+constexpr auto choice_member() {
+  using Struct = typename field_detail::MemberOf<decltype(member)>::type;
+  return ChoiceMember<Struct>{
+      enum_names.names, [](const Struct& s) { return enum_names.name(s.*member); },
+      [](Struct& s, std::string_view name) { s.*member = *enum_names.value(name); }};
+}
+
+template <class Struct>
+struct Field {
+  using Member = std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*,
+                              int Struct::*, ChoiceMember<Struct>>;
+  std::string_view key;
+  Member member;
+  const Domain* domain;  // nullptr for a choice
+  Presence presence = Presence::optional;
+  Written written = Written::always;
+  // What the canonical form writes for an optional member, where its absence resolves to a value
+  // (a Ricker wavelet's centre): the form then names the same motion after any default changes.
+  // Without it an absent optional member is not written.
+  double (*resolved)(const Struct&) = nullptr;
+};
+
+// The keys that were given with a valid value.
+class FieldsRead {
+ public:
+  void add(std::string_view key) { valid_.push_back(key); }
+  bool valid(std::string_view key) const {
+    for (const std::string_view given : valid_) {
+      if (given == key) return true;
+    }
+    return false;
+  }
+
+ private:
+  std::vector<std::string_view> valid_;
+};
+
+// Reads every field's key into `out`, in the table's order; an absent optional key or an invalid
+// value leaves the member as it was (an optional<double> member is reset), the errors recorded at
+// the key's path. The reader's finish() stays with the caller.
+template <class Struct>
+FieldsRead read_fields(ObjectReader& reader,
+                       std::type_identity_t<std::span<const Field<Struct>>> fields, Struct& out) {
+  FieldsRead read;
+  for (const Field<Struct>& field : fields) {
+    const bool required = field.presence == Presence::required;
+    const Range range = field.domain ? Range::of(*field.domain) : Range::any();
+    const auto number = [&] {
+      return required ? reader.required_number(field.key, range) : reader.number(field.key, range);
+    };
+    const auto integer = [&] {
+      return required ? reader.required_integer(field.key, range)
+                      : reader.integer(field.key, range);
+    };
+    bool valid = false;
+    std::visit(field_detail::Overloaded{[&](double Struct::*member) {
+                                          const auto value = number();
+                                          if (value) out.*member = *value;
+                                          valid = value.has_value();
+                                        },
+                                        [&](std::optional<double> Struct::*member) {
+                                          out.*member = number();
+                                          valid = (out.*member).has_value();
+                                        },
+                                        [&](long Struct::*member) {
+                                          const auto value = integer();
+                                          if (value) out.*member = *value;
+                                          valid = value.has_value();
+                                        },
+                                        [&](int Struct::*member) {
+                                          const auto value = integer();
+                                          if (value) out.*member = static_cast<int>(*value);
+                                          valid = value.has_value();
+                                        },
+                                        [&](const ChoiceMember<Struct>& choice) {
+                                          const auto name =
+                                              required
+                                                  ? reader.required_choice(field.key, choice.names)
+                                                  : reader.choice(field.key, choice.names);
+                                          if (name) choice.set(out, *name);
+                                          valid = name.has_value();
+                                        }},
+               field.member);
+    if (valid) read.add(field.key);
+  }
+  return read;
+}
+
+// Writes every field of `in` into the object `out` (a member equal to its default too, unless the
+// field says Written::unless_default).
+template <class Struct>
+void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<Struct>>> fields,
+                  nlohmann::json& out) {
+  static const Struct defaults{};
+  for (const Field<Struct>& field : fields) {
+    const std::string key(field.key);
+    const auto write = [&](const auto& value, const auto& fallback) {
+      if (field.written == Written::unless_default && value == fallback) return;
+      out[key] = value;
+    };
+    std::visit(
+        field_detail::Overloaded{
+            [&](double Struct::*member) { write(in.*member, defaults.*member); },
+            [&](long Struct::*member) { write(in.*member, defaults.*member); },
+            [&](int Struct::*member) { write(in.*member, defaults.*member); },
+            [&](std::optional<double> Struct::*member) {
+              if (field.resolved) {
+                out[key] = field.resolved(in);
+              } else if (in.*member) {
+                out[key] = *(in.*member);
+              }
+            },
+            [&](const ChoiceMember<Struct>& choice) { out[key] = std::string(choice.get(in)); }},
+        field.member);
+  }
+}
+
+// What the docs' key tables say of a key.
+struct FieldDescription {
+  std::string key;
+  std::optional<Domain> domain;  // none: a choice
+  bool integer = false;
+  bool required = false;
+  std::vector<std::string> choices;
+};
+
+template <class Struct>
+std::vector<FieldDescription> describe_fields(
+    std::type_identity_t<std::span<const Field<Struct>>> fields) {
+  std::vector<FieldDescription> described;
+  for (const Field<Struct>& field : fields) {
+    FieldDescription description;
+    description.key = field.key;
+    if (field.domain) description.domain = *field.domain;
+    description.integer = std::holds_alternative<long Struct::*>(field.member) ||
+                          std::holds_alternative<int Struct::*>(field.member);
+    description.required = field.presence == Presence::required;
+    if (const auto* choice = std::get_if<ChoiceMember<Struct>>(&field.member)) {
+      description.choices.assign(choice->names.begin(), choice->names.end());
+    }
+    described.push_back(std::move(description));
+  }
+  return described;
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,137 @@
+#include "mpi_driver/config/ground_motion_json.hpp"
+
+#include <array>
+#include <cstddef>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+#include "engine/number_text.hpp"
+#include "engine/tolerances.hpp"
+#include "mpi_driver/config/record_file.hpp"
+#include "mpi_driver/config/scene_fields.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+using nlohmann::json;
+
+template <std::size_t... index>
+constexpr auto motion_types(std::index_sequence<index...>) {
+  return std::array<std::string_view, sizeof...(index)>{
+      MotionKeys<std::variant_alternative_t<index, GroundMotion>>::type...};
+}
+constexpr auto kMotionTypes =
+    motion_types(std::make_index_sequence<std::variant_size_v<GroundMotion>>{});
+
+// The samples are read here, so a record that cannot be used is refused with the scene, at
+// /ground_motion/file, with the reader's "<file>:<line>: <reason>".
+RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& base_folder) {
+  RecordedMotion motion;
+  const auto file = reader.required_string("file");
+  const auto scale = reader.number("scale", Range::of(domain::record_scale));
+  const auto target_pga = reader.number("target_pga_g", Range::of(domain::target_pga_g));
+  if (scale && target_pga)
+    reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
+  if (file && file->empty()) reader.add_error("file", "must not be empty");
+  if (!file || file->empty()) return motion;
+  motion.file = *file;
+  const std::filesystem::path path = base_folder / *file;  // an absolute file replaces the folder
+  try {
+    motion.record = std::make_shared<const Accelerogram>(read_accelerogram(path));
+  } catch (const RecordError& error) {
+    reader.add_error("file", error.what());
+    return motion;
+  }
+  motion.scale = scale.value_or(1.0);
+  if (target_pga) {
+    const double peak = peak_acceleration_g(*motion.record);
+    if (peak > 0) {
+      motion.scale = *target_pga / peak;
+    } else {
+      reader.add_error("target_pga_g",
+                       "cannot scale " + path.string() + " to a peak: its accelerations are all 0");
+    }
+  }
+  return motion;
+}
+
+// The rules a motion's table cannot say.
+template <class Motion>
+void read_beyond_table(Motion&, ObjectReader&, const FieldsRead&, const std::filesystem::path&) {}
+
+void read_beyond_table(RecordedMotion& motion, ObjectReader& reader, const FieldsRead&,
+                       const std::filesystem::path& base_folder) {
+  motion = read_record(reader, base_folder);
+}
+
+void read_beyond_table(MavroeidisPapageorgiouPulse& pulse, ObjectReader& reader,
+                       const FieldsRead& read, const std::filesystem::path&) {
+  if (pulse.t0 && read.valid("period") && read.valid("gamma") &&
+      *pulse.t0 < (1.0 - kGridRounding) * pulse.half_width()) {
+    reader.add_error("t0", "must be >= gamma period / 2 = " + format_number(pulse.half_width()) +
+                               " (the pulse starts at t >= 0) (got " + format_number(*pulse.t0) +
+                               ")");
+  }
+}
+
+template <std::size_t index>
+GroundMotion read_motion(ObjectReader& reader, const std::filesystem::path& base_folder) {
+  using Motion = std::variant_alternative_t<index, GroundMotion>;
+  Motion motion;
+  FieldsRead read;
+  // A motion without keys (none, a record's read by hand) instantiates no table code.
+  if constexpr (std::size(MotionKeys<Motion>::fields) > 0) {
+    read = read_fields<Motion>(reader, MotionKeys<Motion>::fields, motion);
+  }
+  read_beyond_table(motion, reader, read, base_folder);
+  return motion;
+}
+
+using MotionReader = GroundMotion (*)(ObjectReader&, const std::filesystem::path&);
+template <std::size_t... index>
+constexpr auto motion_readers(std::index_sequence<index...>) {
+  return std::array<MotionReader, sizeof...(index)>{&read_motion<index>...};
+}
+
+}  // namespace
+
+std::vector<std::string_view> ground_motion_types() {
+  return {kMotionTypes.begin(), kMotionTypes.end()};
+}
+
+GroundMotion read_ground_motion(ObjectReader reader, const std::filesystem::path& base_folder) {
+  const auto type = reader.required_choice("type", kMotionTypes);
+  // Without a valid type nobody knows which keys belong here: report nothing more.
+  if (!type) return NoMotion{};
+  static constexpr auto readers =
+      motion_readers(std::make_index_sequence<std::variant_size_v<GroundMotion>>{});
+  std::size_t index = 0;
+  while (kMotionTypes[index] != *type) ++index;
+  GroundMotion motion = readers[index](reader, base_folder);
+  reader.finish("for type \"" + *type + "\"");
+  return motion;
+}
+
+json ground_motion_to_json(const GroundMotion& motion) {
+  return std::visit(
+      [](const auto& given) {
+        using Motion = std::decay_t<decltype(given)>;
+        json out = {{"type", MotionKeys<Motion>::type}};
+        if constexpr (std::size(MotionKeys<Motion>::fields) > 0) {
+          write_fields<Motion>(given, MotionKeys<Motion>::fields, out);
+        }
+        if constexpr (std::is_same_v<Motion, RecordedMotion>) {
+          out["file"] = given.file;
+          out["scale"] = given.scale;
+        }
+        return out;
+      },
+      motion);
+}
+
+}  // namespace blockfrag

@@ -1,0 +1,45 @@
+#include "mpi_driver/config/scene_fields.hpp"
+
+#include <utility>
+#include <variant>
+
+#include "mpi_driver/config/study_fields.hpp"
+
+namespace blockfrag {
+
+namespace {
+
+template <class Motion>
+void add_motion_fields(std::vector<FieldDescription>& fields) {
+  for (FieldDescription& field : describe_fields<Motion>(MotionKeys<Motion>::fields)) {
+    fields.push_back(std::move(field));
+  }
+}
+
+template <std::size_t... index>
+std::vector<FieldDescription> motion_fields(std::index_sequence<index...>) {
+  std::vector<FieldDescription> fields;
+  (add_motion_fields<std::variant_alternative_t<index, GroundMotion>>(fields), ...);
+  return fields;
+}
+
+}  // namespace
+
+std::vector<KeyTable> scene_key_tables() {
+  return {{"block.", describe_fields<RectangularBlock>(scene_fields::rectangle)},
+          {"block.", describe_fields<PolygonBlock>(scene_fields::polygon_block)},
+          {"contact.", describe_fields<Contact>(scene_fields::contact)},
+          {"", describe_fields<Scene>(scene_fields::run)},
+          {"initial.", describe_fields<InitialState>(scene_fields::initial)},
+          {"solver.", describe_fields<SolverSettings>(scene_fields::rk4_step)},
+          {"solver.", describe_fields<SolverSettings>(scene_fields::step_control)},
+          {"solver.", describe_fields<SolverSettings>(scene_fields::budgets)},
+          {"dam.", describe_fields<DamPeriod>(scene_fields::dam_period)},
+          {"dam.", describe_fields<DamSize>(scene_fields::dam_size)},
+          {"dam.", describe_fields<DamCrest>(scene_fields::dam)},
+          {"reservoir.", describe_fields<Reservoir>(scene_fields::reservoir)},
+          {"", motion_fields(std::make_index_sequence<std::variant_size_v<GroundMotion>>{})},
+          {"", describe_fields<StudyConfig>(study_fields::run)}};
+}
+
+}  // namespace blockfrag

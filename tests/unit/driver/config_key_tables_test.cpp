@@ -1,0 +1,201 @@
+// docs/scenes.md's Domains table against the scene's key tables
+// (mpi_driver/config/scene_fields.hpp): every key a table reads is in the docs with its table's
+// domain, and every scene key the docs list is read, by a table or by the hand-written readers
+// named here.
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "mpi_driver/config/scene_fields.hpp"
+
+namespace blockfrag {
+namespace {
+
+// The scene keys the docs list that a hand-written reader reads, not a table.
+const std::set<std::string> hand_read_keys = {
+    "block.polygon", "seat", "contact.rocking_restitution", "scale", "target_pga_g"};
+
+struct DocsRow {
+  std::string name_cell;
+  std::vector<std::string> keys;  // the name cell's `quoted` words
+  std::string domain_cell;
+};
+
+std::string read_scenes_doc() {
+  std::ifstream in(std::string(BLOCKFRAG_SOURCE_DIR) + "/docs/scenes.md");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A table row's cells; "\|" is a bar inside a cell.
+std::vector<std::string> table_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    if (line[i] == '|' && line[i - 1] != '\\') {
+      const auto first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
+      cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
+      cell.clear();
+    } else {
+      cell += line[i];
+    }
+  }
+  return cells;
+}
+
+std::vector<std::string> quoted_words(const std::string& cell) {
+  std::vector<std::string> words;
+  for (std::size_t open = cell.find('`'); open != std::string::npos;) {
+    const std::size_t close = cell.find('`', open + 1);
+    if (close == std::string::npos) break;
+    words.push_back(cell.substr(open + 1, close - open - 1));
+    open = cell.find('`', close + 1);
+  }
+  return words;
+}
+
+// The rows of the "## Domains" section's table.
+std::vector<DocsRow> domain_rows(const std::string& doc) {
+  std::vector<DocsRow> rows;
+  std::istringstream lines(doc.substr(doc.find("\n## Domains") + 1));
+  std::string line;
+  std::getline(lines, line);
+  while (std::getline(lines, line) && line.rfind("## ", 0) != 0) {
+    if (line.rfind("|", 0) != 0) continue;
+    const auto cells = table_cells(line);
+    if (cells.size() < 2 || cells[0] == "value" || cells[0].rfind("---", 0) == 0) continue;
+    rows.push_back({cells[0], quoted_words(cells[0]), cells[1]});
+  }
+  return rows;
+}
+
+// A bound as the docs write it: digits, or a label ("pi/2") the domain names too.
+bool same_bound(std::string_view text, double value, const char* label) {
+  if (label) return text == label;
+  const std::string digits(text);
+  char* end = nullptr;
+  const double parsed = std::strtod(digits.c_str(), &end);
+  return end == digits.c_str() + digits.size() && parsed == value;
+}
+
+// Whether the docs' domain cell ("[1e-4, 1e4] m", "integer in [1, 1000]", "any positive finite
+// value, kg") starts with the field's domain.
+bool docs_domain_matches(std::string text, const FieldDescription& field) {
+  const Domain& domain = *field.domain;
+  const std::string integer_prefix = "integer in ";
+  const bool integer = text.rfind(integer_prefix, 0) == 0;
+  if (integer != field.integer) return false;
+  if (integer) text = text.substr(integer_prefix.size());
+  if (text.rfind("any positive finite value", 0) == 0) {
+    return domain.low == 0.0 && !domain.low_inclusive &&
+           domain.high == std::numeric_limits<double>::infinity();
+  }
+  const std::size_t comma = text.find(", "), close = text.find_first_of("])");
+  if (text.empty() || comma == std::string::npos || close == std::string::npos || close < comma) {
+    return false;
+  }
+  return (text[0] == '[') == domain.low_inclusive && (text[0] == '[' || text[0] == '(') &&
+         (text[close] == ']') == domain.high_inclusive &&
+         same_bound(std::string_view(text).substr(1, comma - 1), domain.low, domain.low_label) &&
+         same_bound(std::string_view(text).substr(comma + 2, close - comma - 2), domain.high,
+                    domain.high_label);
+}
+
+// Every disagreement between the docs' text and the key tables, one line each.
+std::vector<std::string> disagreements(const std::string& doc) {
+  const std::vector<DocsRow> rows = domain_rows(doc);
+  std::vector<std::string> problems;
+  std::set<std::string> table_keys;
+  for (const KeyTable& table : scene_key_tables()) {
+    for (const FieldDescription& field : table.fields) {
+      const std::string name = table.prefix + field.key;
+      table_keys.insert(name);
+      if (!field.domain) {
+        for (const std::string& choice : field.choices) {
+          if (doc.find("`\"" + choice + "\"`") == std::string::npos) {
+            problems.push_back(name + ": the docs do not name its choice \"" + choice + "\"");
+          }
+        }
+        continue;
+      }
+      bool named = false, matched = false;
+      for (const DocsRow& row : rows) {
+        for (const std::string& key : row.keys) {
+          if (key != name) continue;
+          named = true;
+          matched = matched || docs_domain_matches(row.domain_cell, field);
+        }
+      }
+      if (!named) problems.push_back(name + ": not in the docs' Domains table");
+      if (named && !matched) {
+        problems.push_back(name + ": no row of the docs' Domains table gives its domain " +
+                           (field.integer ? "integer " : "") + field.domain->rule());
+      }
+    }
+  }
+  // The names that select a table: a ground motion's type, a solver's method.
+  for (const std::string_view type : ground_motion_types()) table_keys.emplace(type);
+  for (const std::string_view method : method_names.names) table_keys.emplace(method);
+  for (const DocsRow& row : rows) {
+    const std::string& cell = row.name_cell;
+    const bool study_row = cell.find("study") != std::string::npos ||
+                           cell.find("Latin") != std::string::npos ||
+                           cell.find("cloud") != std::string::npos;
+    if (study_row) continue;
+    for (const std::string& key : row.keys) {
+      if (!table_keys.contains(key) && !hand_read_keys.contains(key)) {
+        problems.push_back(key + ": in the docs' Domains table, read by no key table");
+      }
+    }
+  }
+  return problems;
+}
+
+TEST(ConfigKeyTables, DocsDomainsTableAgreesWithTheSceneKeyTables) {
+  const std::vector<std::string> problems = disagreements(read_scenes_doc());
+  for (const std::string& problem : problems) ADD_FAILURE() << problem;
+}
+
+TEST(ConfigKeyTables, ATableKeyMissingFromTheDocsIsFound) {
+  std::string doc = read_scenes_doc();
+  const std::string row = "| `contact.restitution` | [0, 1] | |\n";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.erase(at, row.size());
+  EXPECT_EQ(disagreements(doc),
+            std::vector<std::string>{"contact.restitution: not in the docs' Domains table"});
+}
+
+TEST(ConfigKeyTables, ADocsDomainOtherThanTheTablesIsFound) {
+  std::string doc = read_scenes_doc();
+  const std::string row = "| `g` | [0.01, 1000] m/s^2 |";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.replace(at, row.size(), "| `g` | [0.01, 100] m/s^2 |");
+  EXPECT_EQ(disagreements(doc),
+            std::vector<std::string>{
+                "g: no row of the docs' Domains table gives its domain must be in [0.01, 1000]"});
+}
+
+TEST(ConfigKeyTables, ADocsKeyNoReaderReadsIsFound) {
+  std::string doc = read_scenes_doc();
+  const std::string row = "| `initial.omega` |";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.insert(at, "| `initial.phi` | [0, 1] rad | |\n");
+  EXPECT_EQ(
+      disagreements(doc),
+      std::vector<std::string>{"initial.phi: in the docs' Domains table, read by no key table"});
+}
+
+}  // namespace
+}  // namespace blockfrag
