@@ -20,10 +20,10 @@ inline std::string system_reason() {
         const std::string text = error->desc ? error->desc : "";
         const std::string marker = "error message = '";
         const auto start = text.find(marker);
-        auto& reason = *static_cast<std::string*>(found);
-        if (start != std::string::npos && reason.empty()) {
+        auto& first_reason = *static_cast<std::string*>(found);
+        if (start != std::string::npos && first_reason.empty()) {
           const auto from = start + marker.size();
-          reason = text.substr(from, text.find('\'', from) - from);
+          first_reason = text.substr(from, text.find('\'', from) - from);
         }
         return 0;
       },

@@ -14,7 +14,6 @@
 namespace blockfrag {
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr int kBandPoints = 200;
 
 // The intervals and the band from the refits that exist.

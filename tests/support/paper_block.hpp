@@ -1,5 +1,6 @@
 // The paper's block and gravity, which most physics tests share: a rectangle of half-width
 // a = 0.5 m and half-height b = 1 m (R = sqrt(1.25) m) under g = 9.81 m/s^2, the scenes' default.
+// Their names are long so that a test's own a, b and g (the paper's letters) never hide them.
 #pragma once
 
 #include <numbers>
@@ -8,10 +9,10 @@
 
 namespace blockfrag::testing {
 
-inline constexpr double g = 9.81;
-inline constexpr double a = 0.5;
-inline constexpr double b = 1.0;
+inline constexpr double kGravity = 9.81;
+inline constexpr double kPaperHalfWidth = 0.5;
+inline constexpr double kPaperHalfHeight = 1.0;
 inline constexpr double pi = std::numbers::pi;
-inline const BlockGeometry paper_block(RectangularBlock{a, b, 1.0});
+inline const BlockGeometry paper_block(RectangularBlock{kPaperHalfWidth, kPaperHalfHeight, 1.0});
 
 }  // namespace blockfrag::testing

@@ -17,7 +17,7 @@ namespace {
 
 using testing::block_scene;
 
-using testing::g;
+using testing::kGravity;
 using testing::pi;
 
 TEST(PulseResponse, MakrisTypesAAndBDriveTheSameSimulationAsOneCycleSineAndCosine) {
@@ -105,7 +105,7 @@ TEST(PulseResponse, RockingStartsWhereEachPulseFirstExceedsTheAspectRatio) {
     const auto excess = [&](double t) {
       const double x = omega * (t - t0);
       const double lambda =
-          vp * omega / (2 * g) *
+          vp * omega / (2 * kGravity) *
           (k * std::sin(k * x) * std::cos(x + nu) + (1 + std::cos(k * x)) * std::sin(x + nu));
       return std::abs(lambda) - beta;
     };

@@ -17,7 +17,7 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 using testing::pi;
 
 DamCrest dam_with(double period, double zeta) {
@@ -48,16 +48,18 @@ SteadyState steady_state(double excitation_period, double zeta) {
   const double cycles = std::ceil(16.0 / (zeta * omega) / excitation_period) + 3.0;
   const double duration = cycles * excitation_period;
   const GroundMotionPieces foundation(SinePulse{lambda, excitation_period, cycles});
-  const CrestHistory h = dam_crest_history(foundation, dam_with(dam_period, zeta), duration, g);
+  const CrestHistory h =
+      dam_crest_history(foundation, dam_with(dam_period, zeta), duration, kGravity);
   SteadyState s{0, 0, 0};
   for (std::size_t i = 0; i < h.times.size(); ++i) {
     if (h.times[i] < duration - 3 * excitation_period) continue;
-    s.pseudo_peak = std::max(s.pseudo_peak, omega * omega * std::abs(h.modal[i].q) / (lambda * g));
+    s.pseudo_peak =
+        std::max(s.pseudo_peak, omega * omega * std::abs(h.modal[i].q) / (lambda * kGravity));
     s.absolute_peak = std::max(s.absolute_peak, std::abs(h.crest_lambda[i]) / lambda);
   }
   // In the steady state q is a sinusoid at omega_g: its amplitude is sqrt(q^2 + (q'/omega_g)^2).
   const OscillatorState end = h.modal.back();
-  s.pseudo_exact = omega * omega * std::hypot(end.q, end.v / omega_g) / (lambda * g);
+  s.pseudo_exact = omega * omega * std::hypot(end.q, end.v / omega_g) / (lambda * kGravity);
   return s;
 }
 
@@ -160,7 +162,8 @@ TEST(DamCrestResponse, AResonantDamRocksABlockTheFoundationLeavesStanding) {
   // half its alpha, where the foundation's motion leaves it standing.
   EXPECT_GT(b.max_abs_theta, 0.25 * std::atan(tan_alpha)) << "max |theta| " << b.max_abs_theta;
   // Housner's onset on the crest's motion: the first time |lambda_crest| reaches a/b.
-  const GroundMotionPieces crest = dam_crest_motion(GroundMotionPieces(sine), *on_dam.dam, 4.0, g);
+  const GroundMotionPieces crest =
+      dam_crest_motion(GroundMotionPieces(sine), *on_dam.dam, 4.0, kGravity);
   double onset = -1;
   for (const MotionPiece& piece : crest.pieces()) {
     const double l0 = piece.lambda(piece.start()), l1 = piece.lambda(piece.end());

@@ -101,8 +101,8 @@ INSTANTIATE_TEST_SUITE_P(
                       DecayCase{"flat_r1", 1.0, false}, DecayCase{"flat_housner", {}, false},
                       DecayCase{"seat_r0.5", 0.5, true}, DecayCase{"seat_r0.9", 0.9, true},
                       DecayCase{"seat_r1", 1.0, true}, DecayCase{"seat_housner", {}, true}),
-    [](const ::testing::TestParamInfo<DecayCase>& info) {
-      std::string name = info.param.name;
+    [](const ::testing::TestParamInfo<DecayCase>& decay_case) {
+      std::string name = decay_case.param.name;
       for (char& ch : name) {
         if (ch == '.') ch = '_';
       }

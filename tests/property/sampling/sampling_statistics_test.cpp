@@ -208,9 +208,10 @@ TEST_P(SamplingStatistics, LevelsAreFilledAlike) {
 
 INSTANTIATE_TEST_SUITE_P(Designs, SamplingStatistics,
                          ::testing::Values(Design::monte_carlo, Design::latin_hypercube),
-                         [](const auto& info) {
-                           return info.param == Design::monte_carlo ? std::string("MonteCarlo")
-                                                                    : std::string("LatinHypercube");
+                         [](const auto& design) {
+                           return design.param == Design::monte_carlo
+                                      ? std::string("MonteCarlo")
+                                      : std::string("LatinHypercube");
                          });
 
 TEST(LatinHypercubeStatistics, UniformMeanHasTheStratifiedStandardError) {

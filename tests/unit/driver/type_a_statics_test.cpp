@@ -90,16 +90,16 @@ TEST(TypeAStatics, WetBlockMatchesTheHandComputations) {
 // The command's JSON: every key, the infinite factors of a dry block at rest as null.
 TEST(TypeAStatics, JsonHasEveryKey) {
   const Scene dry = type_a("dam_block_type_a.json");
-  const auto json =
+  const auto statics =
       statics_to_json(block_statics(dry), 0.0, pseudo_static_safety_factors(dry, 0.0));
   for (const char* key : {"weight_N", "hydrostatic_force_N", "uplift_force_N",
                           "uplift_horizontal_force_N", "added_mass_kg", "yield_acceleration_g",
                           "coefficient", "sliding_safety_factor", "overturning_safety_factor"}) {
-    EXPECT_TRUE(json.contains(key)) << key;
+    EXPECT_TRUE(statics.contains(key)) << key;
   }
-  EXPECT_TRUE(json["sliding_safety_factor"].is_null());
-  EXPECT_EQ(json["hydrostatic_force_N"], (nlohmann::json{0.0, 0.0}));
-  EXPECT_EQ(json["yield_acceleration_g"].size(), 4u);
+  EXPECT_TRUE(statics["sliding_safety_factor"].is_null());
+  EXPECT_EQ(statics["hydrostatic_force_N"], (nlohmann::json{0.0, 0.0}));
+  EXPECT_EQ(statics["yield_acceleration_g"].size(), 4u);
   EXPECT_FALSE(statics_to_json(block_statics(dry), std::nullopt, std::nullopt)
                    .contains("sliding_safety_factor"));
 }

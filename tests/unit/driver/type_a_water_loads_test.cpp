@@ -24,7 +24,7 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 using testing::kWaterDensity;
 constexpr double kDepth = 16.7, kBaseLength = 12.55, kPool = 100.0;
 
@@ -41,17 +41,17 @@ TEST(TypeABlockWaterLoads, ReservoirAtTheCrestMatchesTheHandValues) {
   ASSERT_EQ(outline[0], (Vertex{0.0, 0.0}));
   ASSERT_EQ(outline[1], (Vertex{kBaseLength, 0.0}));
   const Vertex centre = polygon_properties(outline).centroid;
-  const StillWater water{kDepth, kWaterDensity, g};
+  const StillWater water{kDepth, kWaterDensity, kGravity};
 
   const WaterLoad push = hydrostatic_load(outline, water, testing::kBaseEdge, centre);
-  const double push_hand = 0.5 * kWaterDensity * g * kDepth * kDepth;
+  const double push_hand = 0.5 * kWaterDensity * kGravity * kDepth * kDepth;
   EXPECT_NEAR(push.fx, push_hand, 1e-12 * push_hand);
   EXPECT_NEAR(push.fx / 1e6, 1.37, 0.005);
   EXPECT_EQ(push.fy, 0.0);
   EXPECT_NEAR(centre[1] - push.moment / push.fx, kDepth / 3, 1e-12 * kDepth);
 
   const UpliftLoad uplift = crack_uplift({0.0, kBaseLength, 0.0}, water, 1.0, centre);
-  const double uplift_hand = 0.5 * kWaterDensity * g * kDepth * kBaseLength;
+  const double uplift_hand = 0.5 * kWaterDensity * kGravity * kDepth * kBaseLength;
   EXPECT_NEAR(uplift.force, uplift_hand, 1e-12 * uplift_hand);
   EXPECT_NEAR(uplift.force / 1e6, 1.03, 0.005);
   EXPECT_NEAR(uplift.point_x, kBaseLength / 3, 1e-12);

@@ -19,7 +19,7 @@ using testing::flat_state;
 using testing::rectangle_kinetic_energy;
 using testing::turning_about;
 
-using testing::g;
+using testing::kGravity;
 
 TEST(ContactResolverImpact, ALandingCornerThatSticksWithoutBounceKeepsHousnersRatio) {
   // Rocking back about the right corner (omega = 1 rad/s counter-clockwise) to theta = 0, the
@@ -33,7 +33,7 @@ TEST(ContactResolverImpact, ALandingCornerThatSticksWithoutBounceKeepsHousnersRa
     SCOPED_TRACE(c.a);
     const double a = c.a, b = 1.0, omega = 1.0, x = 3.0;
     const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
-    const ContactResolver resolver(geometry, Contact{2.0, 0.0}, g);
+    const ContactResolver resolver(geometry, Contact{2.0, 0.0}, kGravity);
     const BlockState before = turning_about(a, b, 0.0, omega, x + a);
     const ContactOutcome out = resolver.resolve(before, 0.0);
     EXPECT_TRUE(out.impact);
@@ -65,7 +65,7 @@ TEST(ContactResolverImpact, AFlatBlockDroppedOnItsBaseBouncesStraightUpByNewtons
   const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
   for (const double e : {0.0, 0.3, 0.4}) {
     SCOPED_TRACE(e);
-    const ContactResolver resolver(geometry, Contact{0.6, e}, g);
+    const ContactResolver resolver(geometry, Contact{0.6, e}, kGravity);
     BlockState before = flat_state(b, 1.0);
     before.vy = vy;
     const ContactOutcome out = resolver.resolve(before, 0.0);
@@ -85,12 +85,13 @@ TEST(ContactResolverImpact, ALandingWhoseReboundWouldBeSlowerThanTheSettlingSpee
   // at Housner's ratio (as with e = 0). With e = 0.5 it leaves at 1.5 times that speed: it bounces.
   const double a = 0.5, b = 1.0, x = 3.0;
   const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
-  const double settle = kSettleVelocity * std::sqrt(g * geometry.size());
+  const double settle = kSettleVelocity * std::sqrt(kGravity * geometry.size());
   const double omega = 3.0 * settle / (2.0 * a);
   const BlockState before = turning_about(a, b, 0.0, omega, x + a);
   const double eta = 1.0 - 1.5 * a * a / (a * a + b * b);
   {
-    const ContactOutcome out = ContactResolver(geometry, Contact{2.0, 0.2}, g).resolve(before, 0.0);
+    const ContactOutcome out =
+        ContactResolver(geometry, Contact{2.0, 0.2}, kGravity).resolve(before, 0.0);
     EXPECT_TRUE(out.impact);
     const auto* rock = std::get_if<RockMode>(&out.mode);
     ASSERT_NE(rock, nullptr) << mode_name(mode_kind(out.mode));
@@ -98,7 +99,8 @@ TEST(ContactResolverImpact, ALandingWhoseReboundWouldBeSlowerThanTheSettlingSpee
     EXPECT_NEAR(out.state.omega, eta * omega, 1e-12 * omega);
   }
   {
-    const ContactOutcome out = ContactResolver(geometry, Contact{2.0, 0.5}, g).resolve(before, 0.0);
+    const ContactOutcome out =
+        ContactResolver(geometry, Contact{2.0, 0.5}, kGravity).resolve(before, 0.0);
     EXPECT_TRUE(out.impact);
     EXPECT_EQ(mode_kind(out.mode), ModeKind::flight);
     const CornerKinematics left = corner_kinematics(geometry, out.state, Corner::left);
@@ -112,8 +114,8 @@ TEST(ContactResolverImpact, AFlatLandingSlowerThanTheSettlingSpeedEndsASlipSlowe
   // faster than the settling speed; slipping at twice that speed, it goes on sliding.
   const double a = 0.5, b = 1.0;
   const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
-  const ContactResolver resolver(geometry, Contact{0.4, 0.7}, g);  // mu < a/b: slides flat
-  const double settle = kSettleVelocity * std::sqrt(g * geometry.size());
+  const ContactResolver resolver(geometry, Contact{0.4, 0.7}, kGravity);  // mu < a/b: slides flat
+  const double settle = kSettleVelocity * std::sqrt(kGravity * geometry.size());
   for (const double slip : {0.5, 2.0}) {
     SCOPED_TRACE(slip);
     BlockState before = flat_state(b, 1.0);
@@ -141,14 +143,14 @@ TEST(ContactResolverImpact, NoImpactGainsKineticEnergy) {
     const double a = b * std::exp(u(std::log(0.1), std::log(2.0)));
     const double mu = u(0.0, 2.0), e = u(0.0, 1.0), lambda = u(-2.0, 2.0);
     const double theta = u(0.0, 1.0) < 0.25 ? 0.0 : u(-1.4, 1.4);
-    const double v = std::sqrt(g * std::hypot(a, b));  // velocity scale sqrt(g R)
+    const double v = std::sqrt(kGravity * std::hypot(a, b));  // velocity scale sqrt(g R)
     // The lowest base corner: the right one when turned clockwise (theta < 0).
     const double corner_x = theta < 0 || (theta == 0 && u(0.0, 1.0) < 0.5) ? a : -a;
     BlockState s = turning_about(corner_x, b, theta, u(-3.0, 3.0) * v / b, u(-1.0, 1.0));
     s.vx += u(-1.0, 1.0) * v;
     s.vy -= u(0.01, 1.0) * v;  // the corner moves into the ground
     const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
-    const ContactResolver resolver(geometry, Contact{mu, e}, g);
+    const ContactResolver resolver(geometry, Contact{mu, e}, kGravity);
     const ContactOutcome out = resolver.resolve(s, lambda);
     const double before = rectangle_kinetic_energy(a, b, s);
     const double after = rectangle_kinetic_energy(a, b, out.state);

@@ -17,16 +17,16 @@ namespace {
 
 using testing::turning_about;
 
-using testing::a;
-using testing::b;
-using testing::g;
+using testing::kGravity;
+using testing::kPaperHalfHeight;
+using testing::kPaperHalfWidth;
 
 // The paper's block turning at omega about its right (corner_x = a) or left (-a) corner at x = 0.
 ContactOutcome resolve_turning(double corner_x, double theta, double omega, double lambda,
                                double mu, double extra_vx = 0.0) {
-  const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
-  const ContactResolver resolver(geometry, Contact{mu, 0.5}, g);
-  BlockState s = turning_about(corner_x, b, theta, omega, 0.0);
+  const BlockGeometry geometry(RectangularBlock{kPaperHalfWidth, kPaperHalfHeight, 1.0});
+  const ContactResolver resolver(geometry, Contact{mu, 0.5}, kGravity);
+  BlockState s = turning_about(corner_x, kPaperHalfHeight, theta, omega, 0.0);
   s.vx += extra_vx;
   return resolver.resolve(s, lambda);
 }
@@ -43,7 +43,7 @@ TEST(ContactResolverOneCorner, SticksWhileFrictionHoldsAndSlipsTheWayItFailsOthe
   // 11/30): theta'' = -0.1 (g - 1) 30/11 = -2.402727, V = 10.011364, x'' = -0.6 V + g = 3.803182,
   // corner x'' - theta'' r_y - w^2 r_x = 3.803182 - 2.402727 - 0.5 = 0.900455 > 0: consistent.
   {
-    const ContactOutcome out = resolve_turning(a, 0.0, -1.0, 1.0, 0.7);
+    const ContactOutcome out = resolve_turning(kPaperHalfWidth, 0.0, -1.0, 1.0, 0.7);
     const auto* rock = std::get_if<RockMode>(&out.mode);
     ASSERT_NE(rock, nullptr) << mode_name(mode_kind(out.mode));
     EXPECT_EQ(rock->pivot, Corner::right);
@@ -52,14 +52,14 @@ TEST(ContactResolverOneCorner, SticksWhileFrictionHoldsAndSlipsTheWayItFailsOthe
     EXPECT_DOUBLE_EQ(out.state.omega, -1.0);
   }
   {
-    const ContactOutcome out = resolve_turning(a, 0.0, -1.0, 1.0, 0.6);
+    const ContactOutcome out = resolve_turning(kPaperHalfWidth, 0.0, -1.0, 1.0, 0.6);
     const auto* slide_rock = std::get_if<SlideRockMode>(&out.mode);
     ASSERT_NE(slide_rock, nullptr) << mode_name(mode_kind(out.mode));
     EXPECT_EQ(slide_rock->pivot, Corner::right);
     EXPECT_EQ(slide_rock->slip_sign, 1);
   }
   {  // Mirrored: the left corner, omega = +1, lambda = -1.
-    const ContactOutcome out = resolve_turning(-a, 0.0, 1.0, -1.0, 0.6);
+    const ContactOutcome out = resolve_turning(-kPaperHalfWidth, 0.0, 1.0, -1.0, 0.6);
     const auto* slide_rock = std::get_if<SlideRockMode>(&out.mode);
     ASSERT_NE(slide_rock, nullptr) << mode_name(mode_kind(out.mode));
     EXPECT_EQ(slide_rock->pivot, Corner::left);
@@ -74,20 +74,23 @@ TEST(ContactResolverOneCorner, ATiltedCornerSticksJustInsideTheConeAndSlipsJustO
   // V = g - theta'' r_x = 10.976345, |F|/V = 0.410711 (computed below from the same equations).
   // 1 % inside the cone: rock. 1 % outside: slip to +x (F < 0), where slipping gives
   // D+ = 0.373683 > 0, V = 10.938404 > 0 and the corner's acceleration 0.201066 > 0.
-  const double theta = -0.2, lambda = 0.9, k2 = (a * a + b * b) / 3;
-  const double r_x = a * std::cos(theta) + b * std::sin(theta);
-  const double r_y = a * std::sin(theta) - b * std::cos(theta);
-  const double theta_dd = g * (r_x + lambda * r_y) / (k2 + r_x * r_x + r_y * r_y);
-  const double F = theta_dd * r_y - lambda * g, V = g - theta_dd * r_x;
+  const double theta = -0.2, lambda = 0.9,
+               k2 = (kPaperHalfWidth * kPaperHalfWidth + kPaperHalfHeight * kPaperHalfHeight) / 3;
+  const double r_x = kPaperHalfWidth * std::cos(theta) + kPaperHalfHeight * std::sin(theta);
+  const double r_y = kPaperHalfWidth * std::sin(theta) - kPaperHalfHeight * std::cos(theta);
+  const double theta_dd = kGravity * (r_x + lambda * r_y) / (k2 + r_x * r_x + r_y * r_y);
+  const double F = theta_dd * r_y - lambda * kGravity, V = kGravity - theta_dd * r_x;
   EXPECT_NEAR(std::abs(F) / V, 0.410711, 5e-7);
   {
-    const ContactOutcome out = resolve_turning(a, theta, 0.0, lambda, 1.01 * std::abs(F) / V);
+    const ContactOutcome out =
+        resolve_turning(kPaperHalfWidth, theta, 0.0, lambda, 1.01 * std::abs(F) / V);
     const auto* rock = std::get_if<RockMode>(&out.mode);
     ASSERT_NE(rock, nullptr) << mode_name(mode_kind(out.mode));
     EXPECT_EQ(rock->pivot, Corner::right);
   }
   {
-    const ContactOutcome out = resolve_turning(a, theta, 0.0, lambda, 0.99 * std::abs(F) / V);
+    const ContactOutcome out =
+        resolve_turning(kPaperHalfWidth, theta, 0.0, lambda, 0.99 * std::abs(F) / V);
     const auto* slide_rock = std::get_if<SlideRockMode>(&out.mode);
     ASSERT_NE(slide_rock, nullptr) << mode_name(mode_kind(out.mode));
     EXPECT_EQ(slide_rock->pivot, Corner::right);
@@ -100,7 +103,7 @@ TEST(ContactResolverOneCorner, ACornerWhoseStickNeedsAPullLiftsOffWhenItsFreeMot
   // either way, eq. 2.9 in eq. 2.7's V gives V = (g + w^2 r_y) (I/M) / D_s = -2.44 (5/12) / D_s:
   // -2.772727 (D+ = 11/30) and -1.051724 (D- = 29/30), a pull too. Free, the corner accelerates
   // upward at -g - w^2 r_y = 2.44 > 0: it lifts off.
-  const ContactOutcome out = resolve_turning(a, 0.0, -3.5, 0.0, 0.6);
+  const ContactOutcome out = resolve_turning(kPaperHalfWidth, 0.0, -3.5, 0.0, 0.6);
   EXPECT_EQ(mode_kind(out.mode), ModeKind::flight);
 }
 
@@ -111,7 +114,7 @@ TEST(ContactResolverOneCorner, ACornerWhoseStickNeedsAPullSlipsWhereSlippingStil
   // 0.209483, corner x'' - theta'' r_y - w^2 r_x = 0.209483 + 0.921724 - 4.5 = -3.368793 < 0:
   // consistent. To +x (D+ = 11/30): V = 0.920455 but the corner accelerates at -5.273182 < 0:
   // not. Slide-rock to -x.
-  const ContactOutcome out = resolve_turning(a, 0.0, -3.0, 0.0, 0.6);
+  const ContactOutcome out = resolve_turning(kPaperHalfWidth, 0.0, -3.0, 0.0, 0.6);
   const auto* slide_rock = std::get_if<SlideRockMode>(&out.mode);
   ASSERT_NE(slide_rock, nullptr) << mode_name(mode_kind(out.mode));
   EXPECT_EQ(slide_rock->pivot, Corner::right);
@@ -123,7 +126,7 @@ TEST(ContactResolverOneCorner, ASlippingCornerGoesOnSlippingWhereFrictionCouldHo
   // would need |F|/V = |-0.3 g + 0.5| / (0.85 g - 1) = 0.332902 < mu; but it slips, and slipping
   // is well posed (D+ = 2/3 - 0.45 > 0, D- = 2/3 + 0.45) with V = (g - 1)(5/12)/D > 0.
   for (const double u_x : {0.5, -0.5}) {
-    const ContactOutcome out = resolve_turning(a, 0.0, -1.0, 0.0, 0.9, u_x);
+    const ContactOutcome out = resolve_turning(kPaperHalfWidth, 0.0, -1.0, 0.0, 0.9, u_x);
     const auto* slide_rock = std::get_if<SlideRockMode>(&out.mode);
     ASSERT_NE(slide_rock, nullptr) << "u_x = " << u_x << ": " << mode_name(mode_kind(out.mode));
     EXPECT_EQ(slide_rock->pivot, Corner::right);
@@ -137,18 +140,18 @@ TEST(ContactResolverOneCorner, ASlipPastThePainleveBoundaryJamsIntoStick) {
   // impulse stops the corner (u_x = 0, u_y still 0) and takes kinetic energy away
   // (Delta T = -a3 u_x^2 / (2 det) < 0, engine/contact/impact.cpp); then friction mu = 2 holds it.
   const double u_x = 0.5;
-  const ContactOutcome out = resolve_turning(a, 0.0, -1.0, 0.0, 2.0, u_x);
+  const ContactOutcome out = resolve_turning(kPaperHalfWidth, 0.0, -1.0, 0.0, 2.0, u_x);
   EXPECT_TRUE(out.painleve);
   const auto* rock = std::get_if<RockMode>(&out.mode);
   ASSERT_NE(rock, nullptr) << mode_name(mode_kind(out.mode));
   EXPECT_EQ(rock->pivot, Corner::right);
   const BlockState& s = out.state;
-  EXPECT_NEAR(s.vx - s.omega * -b, 0.0, 1e-12);  // the corner's u_x
-  EXPECT_NEAR(s.vy + s.omega * a, 0.0, 1e-12);   // and u_y
-  BlockState before = turning_about(a, b, 0.0, -1.0, 0.0);
+  EXPECT_NEAR(s.vx - s.omega * -kPaperHalfHeight, 0.0, 1e-12);  // the corner's u_x
+  EXPECT_NEAR(s.vy + s.omega * kPaperHalfWidth, 0.0, 1e-12);    // and u_y
+  BlockState before = turning_about(kPaperHalfWidth, kPaperHalfHeight, 0.0, -1.0, 0.0);
   before.vx += u_x;
-  EXPECT_LT(testing::rectangle_kinetic_energy(a, b, s),
-            testing::rectangle_kinetic_energy(a, b, before));
+  EXPECT_LT(testing::rectangle_kinetic_energy(kPaperHalfWidth, kPaperHalfHeight, s),
+            testing::rectangle_kinetic_energy(kPaperHalfWidth, kPaperHalfHeight, before));
 }
 
 }  // namespace

@@ -16,7 +16,7 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 using testing::pi;
 
 DamCrest dam_with(double period, double zeta, double participation = 1.0) {
@@ -45,9 +45,9 @@ TEST(DamPeriod, FenvesChopraEstimateMatchesAHandComputation) {
 TEST(NigamJennings, StepResponseMatchesTheClosedForm) {
   for (const double zeta : {0.0, 0.05, 0.3}) {
     const double period = 0.3, w = 2 * pi / period, wd = w * std::sqrt(1 - zeta * zeta);
-    const double lambda = 0.4, a0 = -lambda * g;
+    const double lambda = 0.4, a0 = -lambda * kGravity;
     const GroundMotionPieces foundation(RectangularPulse{lambda, 10.0});
-    const CrestHistory h = dam_crest_history(foundation, dam_with(period, zeta), 3.0, g);
+    const CrestHistory h = dam_crest_history(foundation, dam_with(period, zeta), 3.0, kGravity);
     ASSERT_GT(h.times.size(), 900u);
     for (std::size_t i = 0; i < h.times.size(); ++i) {
       const double t = h.times[i], decay = std::exp(-zeta * w * t);
@@ -64,10 +64,10 @@ TEST(NigamJennings, StepResponseMatchesTheClosedForm) {
 // a(t) = r t: q = -(r / w^2)(t - 2 z / w) + e^{-z w t}(c1 cos wd t + c2 sin wd t), from rest.
 TEST(NigamJennings, RampResponseMatchesTheClosedForm) {
   const double zeta = 0.05, period = 0.25, w = 2 * pi / period, wd = w * std::sqrt(1 - zeta * zeta);
-  const double end = 2.0, lambda_end = 0.5, r = -lambda_end * g / end;  // a = -lambda g
+  const double end = 2.0, lambda_end = 0.5, r = -lambda_end * kGravity / end;  // a = -lambda g
   const GroundMotionPieces foundation(std::vector<double>{0.0, end},
                                       std::vector<double>{0.0, lambda_end});
-  const CrestHistory h = dam_crest_history(foundation, dam_with(period, zeta), end, g);
+  const CrestHistory h = dam_crest_history(foundation, dam_with(period, zeta), end, kGravity);
   const double c1 = -2 * zeta * r / (w * w * w), c2 = (r / (w * w) + zeta * w * c1) / wd;
   for (std::size_t i = 0; i < h.times.size(); ++i) {
     const double t = h.times[i], decay = std::exp(-zeta * w * t);
@@ -100,12 +100,12 @@ TEST(NigamJennings, ShortStepsFollowTheStepResponse) {
 TEST(NigamJennings, ZeroDampingConservesEnergyBetweenInputs) {
   const double period = 0.2, w = 2 * pi / period, pulse_end = 0.53, lambda = 0.3;
   const GroundMotionPieces foundation(RectangularPulse{lambda, pulse_end});
-  const CrestHistory h = dam_crest_history(foundation, dam_with(period, 0.0), 4.0, g);
+  const CrestHistory h = dam_crest_history(foundation, dam_with(period, 0.0), 4.0, kGravity);
   auto energy = [&](std::size_t i, double a) {
     const double shifted = h.modal[i].q + a / (w * w);
     return 0.5 * h.modal[i].v * h.modal[i].v + 0.5 * w * w * shifted * shifted;
   };
-  const double a0 = -lambda * g, during = energy(0, a0);
+  const double a0 = -lambda * kGravity, during = energy(0, a0);
   EXPECT_GT(during, 0.0);
   std::size_t after = 0, checked_during = 0;
   for (std::size_t i = 0; i < h.times.size(); ++i) {
@@ -129,7 +129,7 @@ TEST(DamCrestMotion, JumpsWhereTheFoundationJumpsUnlessTheParticipationIsOne) {
   const GroundMotionPieces foundation(RectangularPulse{lambda, pulse_end});
   for (const double gamma_phi : {1.0, 1.6}) {
     const GroundMotionPieces crest =
-        dam_crest_motion(foundation, dam_with(0.25, 0.05, gamma_phi), 2.0, g);
+        dam_crest_motion(foundation, dam_with(0.25, 0.05, gamma_phi), 2.0, kGravity);
     EXPECT_NEAR(crest.lambda(0.0), (1 - gamma_phi) * lambda, 1e-15);
     const double before = crest.lambda(std::nextafter(pulse_end, 0.0));
     const double after = crest.lambda(pulse_end);
@@ -141,7 +141,7 @@ TEST(DamCrestMotion, JumpsWhereTheFoundationJumpsUnlessTheParticipationIsOne) {
 // The dam rings on after the foundation stops, up to the scene's duration.
 TEST(DamCrestMotion, KeepsRingingAfterTheFoundationStops) {
   const GroundMotionPieces foundation(SinePulse{0.2, 0.25, 2.0});
-  const CrestHistory h = dam_crest_history(foundation, dam_with(0.25, 0.05), 3.0, g);
+  const CrestHistory h = dam_crest_history(foundation, dam_with(0.25, 0.05), 3.0, kGravity);
   EXPECT_EQ(h.times.back(), 3.0);
   double late_peak = 0.0;
   for (std::size_t i = 0; i < h.times.size(); ++i) {
@@ -152,7 +152,7 @@ TEST(DamCrestMotion, KeepsRingingAfterTheFoundationStops) {
 
 TEST(DamCrestMotion, RefusesAGridTooFineForTheDuration) {
   const GroundMotionPieces foundation(SinePulse{0.2, 1.0, 1.0});
-  EXPECT_THROW(dam_crest_history(foundation, dam_with(1e-6, 0.05), 100.0, g), InvalidInput);
+  EXPECT_THROW(dam_crest_history(foundation, dam_with(1e-6, 0.05), 100.0, kGravity), InvalidInput);
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 
 // EP 1110-2-12's example: T1 = 0.443 s, R_r = 1.110, R_f = 1.190, zeta1 = 7 %, zeta_r = 0.0158,
 // zeta_f = 0.0701 give T1' = 0.585 s and zeta1' = 12.33 %. By hand: 1.110 x 1.190 x 0.443 =
@@ -68,8 +68,8 @@ TEST(DamInteraction, CrestIsTheDryDamOfTheLengthenedPeriodAndAddedDamping) {
   dry.stiffness = DamPeriod{1.3 * 1.1 * 0.25};
   dry.damping = 0.05 / (1.3 * 1.1 * 1.1 * 1.1) + 0.02 + 0.04;
   dry.participation = 1.4;
-  const CrestHistory a = dam_crest_history(foundation, wet, 3.0, g);
-  const CrestHistory b = dam_crest_history(foundation, dry, 3.0, g);
+  const CrestHistory a = dam_crest_history(foundation, wet, 3.0, kGravity);
+  const CrestHistory b = dam_crest_history(foundation, dry, 3.0, kGravity);
   ASSERT_EQ(a.times.size(), b.times.size());
   EXPECT_EQ(a.times, b.times);
   EXPECT_EQ(a.crest_lambda, b.crest_lambda);
@@ -77,7 +77,7 @@ TEST(DamInteraction, CrestIsTheDryDamOfTheLengthenedPeriodAndAddedDamping) {
   DamCrest own = wet;
   own.reservoir_period_ratio = own.foundation_period_ratio = 1.0;
   own.reservoir_damping = own.foundation_damping = 0.0;
-  EXPECT_NE(dam_crest_history(foundation, own, 3.0, g).crest_lambda, a.crest_lambda);
+  EXPECT_NE(dam_crest_history(foundation, own, 3.0, kGravity).crest_lambda, a.crest_lambda);
 }
 
 }  // namespace

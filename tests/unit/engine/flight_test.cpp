@@ -12,14 +12,14 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 
 TEST(Flight, FlatBlockThrownUpLandsAfterTwiceTheRiseTime) {
   const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
   const FlightStart start{1.0, 0.0, 2.0, 0.0};  // on its base, rising at 2 m/s, not spinning
-  const auto landing = first_landing(block, start, g, 10.0, 1e-5);
+  const auto landing = first_landing(block, start, kGravity, 10.0, 1e-5);
   ASSERT_TRUE(landing.has_value());
-  EXPECT_NEAR(*landing, 2 * 2.0 / g, 1e-12);
+  EXPECT_NEAR(*landing, 2 * 2.0 / kGravity, 1e-12);
 }
 
 TEST(Flight, SpinningBlockLandsOnTheCornerItTurnsDown) {
@@ -29,13 +29,13 @@ TEST(Flight, SpinningBlockLandsOnTheCornerItTurnsDown) {
   const double a = 0.5, b = 1.0, w = 1.5, vy = 1.0;
   const BlockGeometry block(RectangularBlock{a, b, 1.0});
   const auto height = [&](double t) {
-    return b + vy * t - 0.5 * g * t * t - a * std::sin(w * t) - b * std::cos(w * t);
+    return b + vy * t - 0.5 * kGravity * t * t - a * std::sin(w * t) - b * std::cos(w * t);
   };
   double lo = 0.05, hi = 1.0;  // height(lo) > 0 > height(hi)
   ASSERT_GT(height(lo), 0);
   ASSERT_LT(height(hi), 0);
   for (int i = 0; i < 200; ++i) (height(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-  const auto landing = first_landing(block, FlightStart{b, 0.0, vy, w}, g, 10.0, 1e-5);
+  const auto landing = first_landing(block, FlightStart{b, 0.0, vy, w}, kGravity, 10.0, 1e-5);
   ASSERT_TRUE(landing.has_value());
   EXPECT_NEAR(*landing, 0.5 * (lo + hi), 1e-12);
 }
@@ -48,7 +48,7 @@ TEST(Flight, ACornerThatBarelyLeavesAndTurnsDownIsNotLost) {
   const double a = 0.17, b = 2.19, w = -0.743;
   const BlockGeometry block(RectangularBlock{a, b, 1.0});
   const double vy = 1e-8 - a * w;  // the right corner's u_y = vy + w r_x = 1e-8
-  const auto landing = first_landing(block, FlightStart{b, 0.0, vy, w}, g, 10.0, 1e-5);
+  const auto landing = first_landing(block, FlightStart{b, 0.0, vy, w}, kGravity, 10.0, 1e-5);
   ASSERT_TRUE(landing.has_value());
   EXPECT_LT(*landing, 1e-4);
 }
@@ -61,9 +61,10 @@ TEST(Flight, ACornerStartingAtTheGroundMovingDownLandsBeforeItSinks) {
   const double a = 4.9, b = 25.7, min_step = 1.8e-4;
   const BlockGeometry block(RectangularBlock{a, b, 1.0});
   const double R = block.size(), y0 = b - 1e-13 * R, vy = -4.5e-5;
-  const auto landing = first_landing(block, FlightStart{y0, 0.0, vy, 0.0}, g, 10.0, min_step);
+  const auto landing =
+      first_landing(block, FlightStart{y0, 0.0, vy, 0.0}, kGravity, 10.0, min_step);
   ASSERT_TRUE(landing.has_value());
-  const double base = flight_pose(FlightStart{y0, 0.0, vy, 0.0}, g, *landing).y - b;
+  const double base = flight_pose(FlightStart{y0, 0.0, vy, 0.0}, kGravity, *landing).y - b;
   EXPECT_GT(base, -1.1e-12 * R - 1e-13 * R);
   EXPECT_LT(*landing, min_step / 10);
 }
@@ -83,17 +84,17 @@ TEST(Flight, BouncesLandWhereAFineScanOfBothCornersFindsTheGround) {
     const BlockGeometry block(RectangularBlock{a, b, 1.0});
     const double R = block.size();
     const double theta0 = (unit(rng) - 0.5) * 0.2 * std::atan(a / b);
-    const double w = (2 * unit(rng) - 1) * 0.95 * std::sqrt(g / R);
+    const double w = (2 * unit(rng) - 1) * 0.95 * std::sqrt(kGravity / R);
     const std::array<Vec2, 2> arm = {block.corner_at(0, theta0), block.corner_at(1, theta0)};
     const int bouncing = arm[0].y < arm[1].y ? 0 : 1;
     const double u_y = std::pow(10.0, -5.0 + 5.0 * unit(rng));
     const FlightStart start{-arm[bouncing].y, theta0, u_y - w * arm[bouncing].x, w};
     const auto height = [&](int c, double t) {
       const double half_turn = std::sin(0.5 * w * t);
-      return (arm[c].y - arm[bouncing].y) + (start.vy * t - 0.5 * g * t * t) +
+      return (arm[c].y - arm[bouncing].y) + (start.vy * t - 0.5 * kGravity * t * t) +
              arm[c].x * std::sin(w * t) - 2.0 * arm[c].y * half_turn * half_turn;
     };
-    const double window = 3.0 * 2.0 * u_y / (g - w * w * R);
+    const double window = 3.0 * 2.0 * u_y / (kGravity - w * w * R);
     double reference = std::numeric_limits<double>::infinity(), speed = 0.0;
     for (int c = 0; c < 2; ++c) {
       const double dt = window / 4000;
@@ -104,13 +105,14 @@ TEST(Flight, BouncesLandWhereAFineScanOfBothCornersFindsTheGround) {
         for (int i = 0; i < 200; ++i) (height(c, 0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
         if (hi < reference) {
           reference = hi;
-          speed = std::abs(corner_kinematics(block, flight_pose(start, g, hi), c).u_y);
+          speed = std::abs(corner_kinematics(block, flight_pose(start, kGravity, hi), c).u_y);
         }
         break;
       }
     }
     ASSERT_TRUE(std::isfinite(reference)) << "trial " << trial;
-    const auto landing = first_landing(block, start, g, 10.0, 1e-5 * std::sqrt(R / g));
+    const auto landing =
+        first_landing(block, start, kGravity, 10.0, 1e-5 * std::sqrt(R / kGravity));
     ASSERT_TRUE(landing.has_value()) << "trial " << trial;
     const double resolution = 16 * std::numeric_limits<double>::epsilon() * (start.y + R) / speed;
     EXPECT_NEAR(*landing, reference, 1e-15 + resolution) << "trial " << trial << " u_y " << u_y;
@@ -119,13 +121,14 @@ TEST(Flight, BouncesLandWhereAFineScanOfBothCornersFindsTheGround) {
 
 TEST(Flight, NoLandingWithinTheWindow) {
   const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
-  EXPECT_FALSE(first_landing(block, FlightStart{1.0, 0.0, 2.0, 0.0}, g, 0.3, 1e-5).has_value());
+  EXPECT_FALSE(
+      first_landing(block, FlightStart{1.0, 0.0, 2.0, 0.0}, kGravity, 0.3, 1e-5).has_value());
 }
 
 TEST(Flight, PoseIsTheBallisticClosedForm) {
-  const BlockState s = flight_pose(FlightStart{1.0, 0.1, 3.0, -2.0}, g, 0.5);
-  EXPECT_DOUBLE_EQ(s.y, 1.0 + 1.5 - 0.5 * g * 0.25);
-  EXPECT_DOUBLE_EQ(s.vy, 3.0 - g * 0.5);
+  const BlockState s = flight_pose(FlightStart{1.0, 0.1, 3.0, -2.0}, kGravity, 0.5);
+  EXPECT_DOUBLE_EQ(s.y, 1.0 + 1.5 - 0.5 * kGravity * 0.25);
+  EXPECT_DOUBLE_EQ(s.vy, 3.0 - kGravity * 0.5);
   EXPECT_DOUBLE_EQ(s.theta, 0.1 - 1.0);
   EXPECT_EQ(s.omega, -2.0);
 }

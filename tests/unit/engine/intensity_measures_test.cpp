@@ -20,7 +20,7 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 using testing::pi;
 
 GroundMotionPieces record_motion(const std::vector<double>& times, const std::vector<double>& a_g,
@@ -53,7 +53,7 @@ double trapezoid_pgv(const std::function<double(double)>& lambda, double end, lo
   double v = 0.0, peak = 0.0, previous = lambda(0.0);
   for (long i = 1; i <= n; ++i) {
     const double next = lambda(static_cast<double>(i) * h);
-    v -= g * 0.5 * h * (previous + next);
+    v -= kGravity * 0.5 * h * (previous + next);
     peak = std::max(peak, std::abs(v));
     previous = next;
   }
@@ -137,26 +137,27 @@ TEST(PeakGroundAcceleration, IsThePulseAmplitudeOrTheRecordsLargestSample) {
 // magnitude 2 g A / w = g A T / pi is at t = T / 2.
 TEST(PeakGroundVelocity, OfOneSineCycleIsAgTOverPi) {
   const double A = 0.4, T = 0.8;
-  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(SinePulse{A, T, 1.0}), g), A * g * T / pi,
-              1e-13);
+  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(SinePulse{A, T, 1.0}), kGravity),
+              A * kGravity * T / pi, 1e-13);
 }
 
 // lambda = A cos(w t), one cycle: v = -g A sin(w t) / w, peak g A / w = g A T / (2 pi).
 TEST(PeakGroundVelocity, OfOneCosineCycleIsAgTOverTwoPi) {
   const double A = 0.25, T = 1.7;
-  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(CosinePulse{A, T, 1.0}), g),
-              A * g * T / (2.0 * pi), 1e-13);
+  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(CosinePulse{A, T, 1.0}), kGravity),
+              A * kGravity * T / (2.0 * pi), 1e-13);
 }
 
 TEST(PeakGroundVelocity, OfARectangularPulseIsAgTimesItsLength) {
-  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(RectangularPulse{-0.3, 0.45}), g),
-              0.3 * g * 0.45, 1e-14);
+  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(RectangularPulse{-0.3, 0.45}), kGravity),
+              0.3 * kGravity * 0.45, 1e-14);
 }
 
 // One linear piece from 0.2 g at 0.5 s to 0.5 g at 1.5 s (zero before and after): a keeps its
 // sign, so the velocity's largest magnitude is its last, the trapezoid g (0.2 + 0.5) / 2 x 1 s.
 TEST(PeakGroundVelocity, OfTwoSamplesIsTheirTrapezoid) {
-  EXPECT_NEAR(peak_ground_velocity(record_motion({0.5, 1.5}, {0.2, 0.5}), g), g * 0.35, 1e-14);
+  EXPECT_NEAR(peak_ground_velocity(record_motion({0.5, 1.5}, {0.2, 0.5}), kGravity),
+              kGravity * 0.35, 1e-14);
 }
 
 // Samples (0, 0), (1, 0.4), (2, -0.6), (3, 0.2), (4, 0) g. By hand, in g s: the velocity is 0.2 at
@@ -165,8 +166,8 @@ TEST(PeakGroundVelocity, OfTwoSamplesIsTheirTrapezoid) {
 // returns to 0 at 4 s. The peak, 0.28 g, lies inside a piece: the samples' largest is 0.2 g.
 TEST(PeakGroundVelocity, FindsTheExtremeWhereAcrossesZeroInsideAPiece) {
   const std::vector<double> times{0, 1, 2, 3, 4}, a{0.0, 0.4, -0.6, 0.2, 0.0};
-  const double pgv = peak_ground_velocity(record_motion(times, a), g);
-  EXPECT_NEAR(pgv, 0.28 * g, 1e-14);
+  const double pgv = peak_ground_velocity(record_motion(times, a), kGravity);
+  EXPECT_NEAR(pgv, 0.28 * kGravity, 1e-14);
   const auto lambda = [&](double t) { return -interpolate(times, a, t); };
   EXPECT_NEAR(pgv, trapezoid_pgv(lambda, 4.0, 1'000'000), 1e-10);
 }
@@ -178,7 +179,7 @@ TEST(PeakGroundVelocity, OfAMavroeidisPapageorgiouPulseWithoutPhaseIsVp) {
   pulse.velocity_amplitude = 0.6;
   pulse.period = 0.9;
   pulse.gamma = 2.3;
-  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(pulse, g), g), 0.6, 1e-14);
+  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(pulse, kGravity), kGravity), 0.6, 1e-14);
 }
 
 // The shapes whose PGV has no hand value here, against the trapezoid rule on 2 million steps of
@@ -196,16 +197,16 @@ TEST(PeakGroundVelocity, OfEveryPulseShapeMatchesAFineTrapezoidRule) {
   const std::vector<GroundMotion> motions{SinePulse{0.3, 0.7, 2.5}, CosinePulse{-0.2, 0.4, 3.25},
                                           MakrisPulseC{0.35, 0.9, 2}, ricker, phased};
   for (std::size_t i = 0; i < motions.size(); ++i) {
-    const GroundMotionPieces motion(motions[i], g);
-    const double pgv = peak_ground_velocity(motion, g);
+    const GroundMotionPieces motion(motions[i], kGravity);
+    const double pgv = peak_ground_velocity(motion, kGravity);
     const auto lambda = left_limits(motion);
     EXPECT_NEAR(pgv, trapezoid_pgv(lambda, motion.end_of_motion(), 2'000'000), 1e-9 * pgv)
         << "motion " << i;
   }
   // Ricker: v = -(g A / w) u exp(-u^2) with w = pi / Tp, whose extremes are at u = +-1/sqrt(2).
   const double w = pi / ricker.period;
-  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(ricker), g),
-              g * ricker.amplitude_g / w * std::exp(-0.5) / std::sqrt(2.0), 1e-8);
+  EXPECT_NEAR(peak_ground_velocity(GroundMotionPieces(ricker), kGravity),
+              kGravity * ricker.amplitude_g / w * std::exp(-0.5) / std::sqrt(2.0), 1e-8);
 }
 
 // --- D5-95 ---------------------------------------------------------------------------------------
@@ -242,7 +243,7 @@ TEST(SignificantDuration, OfEveryPulseShapeMatchesAFineTrapezoidRule) {
   const std::vector<GroundMotion> motions{SinePulse{0.3, 0.7, 2.5}, CosinePulse{-0.2, 0.4, 3.25},
                                           MakrisPulseC{0.35, 0.9, 2}, ricker, phased};
   for (std::size_t i = 0; i < motions.size(); ++i) {
-    const GroundMotionPieces motion(motions[i], g);
+    const GroundMotionPieces motion(motions[i], kGravity);
     const auto lambda = left_limits(motion);
     EXPECT_NEAR(significant_duration(motion),
                 trapezoid_d5_95(lambda, motion.end_of_motion(), 2'000'000),
@@ -419,7 +420,7 @@ TEST(SpectralAcceleration, OfSmoothPulsesMatchesRk4OfTheirFormulaToTheDrawingErr
   ricker.period = 0.5;
   const std::vector<GroundMotion> motions{SinePulse{0.3, 0.7, 2.0}, ricker, mp};
   for (std::size_t i = 0; i < motions.size(); ++i) {
-    const GroundMotionPieces motion(motions[i], g);
+    const GroundMotionPieces motion(motions[i], kGravity);
     const auto a_of_t = [&](double t) { return -motion.lambda(t); };
     for (const double T : {0.2, 0.7, 2.0}) {
       const double sa = spectral_acceleration_g(motion, T, 0.05);
@@ -455,8 +456,10 @@ TEST(IntensityMeasures, ScaleWithTheMotionAndKeepTheirDuration) {
   std::vector<double> times, a;
   random_record(7, 0.005, 1201, times, a);
   const std::vector<double> periods{0.15, 0.6, 2.4};
-  const IntensityMeasures base = intensity_measures(Accelerogram{times, a}, periods, 0.05, g);
-  const IntensityMeasures same = intensity_measures(record_motion(times, a), periods, 0.05, g);
+  const IntensityMeasures base =
+      intensity_measures(Accelerogram{times, a}, periods, 0.05, kGravity);
+  const IntensityMeasures same =
+      intensity_measures(record_motion(times, a), periods, 0.05, kGravity);
   EXPECT_EQ(base.pga_g, same.pga_g);
   EXPECT_EQ(base.pgv, same.pgv);
   EXPECT_EQ(base.significant_duration, same.significant_duration);
@@ -466,7 +469,7 @@ TEST(IntensityMeasures, ScaleWithTheMotionAndKeepTheirDuration) {
 
   for (const double k : {-1.0, -2.5, 0.3}) {
     const IntensityMeasures scaled =
-        intensity_measures(record_motion(times, a, k), periods, 0.05, g);
+        intensity_measures(record_motion(times, a, k), periods, 0.05, kGravity);
     EXPECT_NEAR(scaled.pga_g, std::abs(k) * base.pga_g, 1e-14) << k;
     EXPECT_NEAR(scaled.pgv, std::abs(k) * base.pgv, 1e-13 * base.pgv) << k;
     EXPECT_NEAR(scaled.significant_duration, base.significant_duration, 1e-10) << k;
@@ -478,12 +481,13 @@ TEST(IntensityMeasures, ScaleWithTheMotionAndKeepTheirDuration) {
 }
 
 TEST(IntensityMeasures, OfNoMotionAreZeroAndARecordIsChecked) {
-  const IntensityMeasures none = intensity_measures(GroundMotionPieces(NoMotion{}), {1.0}, 0.05, g);
+  const IntensityMeasures none =
+      intensity_measures(GroundMotionPieces(NoMotion{}), {1.0}, 0.05, kGravity);
   EXPECT_EQ(none.pga_g, 0.0);
   EXPECT_EQ(none.pgv, 0.0);
   EXPECT_EQ(none.significant_duration, 0.0);
   EXPECT_EQ(none.sa_g, std::vector<double>{0.0});
-  EXPECT_THROW(intensity_measures(Accelerogram{{0.0, 0.0}, {0.1, 0.2}}, {1.0}, 0.05, g),
+  EXPECT_THROW(intensity_measures(Accelerogram{{0.0, 0.0}, {0.1, 0.2}}, {1.0}, 0.05, kGravity),
                InvalidInput);
   EXPECT_THROW(intensity_measures(Accelerogram{{0.0, 1.0}, {0.1, 0.2}}, {1.0}, 0.05, 0.0),
                InvalidInput);

@@ -15,14 +15,14 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 using testing::paper_block;
 const double R = std::sqrt(1.25);
 const MotionPiece lambda_one({MotionPiece::Shape::constant, 1.0}, 0.0, 10.0);
 const MotionPiece lambda_zero({}, 0.0, 10.0);
 
 SystemContext context(const MotionPiece& horizontal, double mu) {
-  return {&paper_block, &horizontal, &lambda_zero, g, mu};
+  return {&paper_block, &horizontal, &lambda_zero, kGravity, mu};
 }
 
 // Rock (eqs. 2.6, 2.7), D = I/M + r^2 = 5/3: theta'' = g (r_x + lambda r_y) / D = g (0.5 - 1) 3/5
@@ -42,17 +42,17 @@ TEST(RockSystem, AngularAccelerationIsThePapersClosedForm) {
   const RockSystem unforced{context(lambda_zero, 0.6), Corner::right, 0.5};
   OdeState<2> dq{};
   unforced(0.0, {0.0, 0.0}, dq);
-  EXPECT_NEAR(dq[1], 0.3 * g, 1e-12);
+  EXPECT_NEAR(dq[1], 0.3 * kGravity, 1e-12);
 }
 
 TEST(RockSystem, ContactForcesFollowFromTheConstraint) {
   const RockSystem rock{context(lambda_one, 0.6), Corner::right, 0.5};
   const ContactForces still = rock.forces(0.0, {0.0, 0.0});
-  EXPECT_NEAR(still.friction, -0.7 * g, 1e-12);  // -6.867 N/kg
-  EXPECT_NEAR(still.normal, 1.15 * g, 1e-12);    // 11.2815 N/kg
+  EXPECT_NEAR(still.friction, -0.7 * kGravity, 1e-12);  // -6.867 N/kg
+  EXPECT_NEAR(still.normal, 1.15 * kGravity, 1e-12);    // 11.2815 N/kg
   const ContactForces turning = rock.forces(0.0, {0.0, -1.0});
-  EXPECT_NEAR(turning.friction, -0.7 * g + 0.5, 1e-12);
-  EXPECT_NEAR(turning.normal, 1.15 * g - 1.0, 1e-12);
+  EXPECT_NEAR(turning.friction, -0.7 * kGravity + 0.5, 1e-12);
+  EXPECT_NEAR(turning.normal, 1.15 * kGravity - 1.0, 1e-12);
 }
 
 TEST(RockSystem, GuardsMeasureWhatTheirEventsNeed) {
@@ -113,30 +113,30 @@ TEST(SlideRockSystem, AccelerationsFollowThePapersSlipEquations) {
   OdeState<4> dq{};
   forced(0.0, {0.0, 0.0, 0.5, 0.2}, dq);
   EXPECT_EQ(dq[0], 0.0);
-  EXPECT_NEAR(dq[1], -3 * g / 11, 1e-12);
+  EXPECT_NEAR(dq[1], -3 * kGravity / 11, 1e-12);
   EXPECT_EQ(dq[2], 0.2);
-  EXPECT_NEAR(dq[3], g / 22, 1e-12);
+  EXPECT_NEAR(dq[3], kGravity / 22, 1e-12);
   unforced(0.0, {0.0, 0.0, 0.5, 0.2}, dq);
-  EXPECT_NEAR(dq[1], -3 * g / 11, 1e-12);
-  EXPECT_NEAR(dq[3], -21 * g / 22, 1e-12);
+  EXPECT_NEAR(dq[1], -3 * kGravity / 11, 1e-12);
+  EXPECT_NEAR(dq[3], -21 * kGravity / 22, 1e-12);
   // w = -1: theta'' = -3 (g - 1) / 11; x'' = g - 15 (g - 1)/22; corner x'' - theta'' - 0.5.
   forced(0.0, {0.0, -1.0, 0.5, 0.2}, dq);
   EXPECT_EQ(dq[0], -1.0);
-  EXPECT_NEAR(dq[1], -3 * (g - 1) / 11, 1e-12);
-  EXPECT_NEAR(dq[3], g - 15 * (g - 1) / 22 - 3 * (g - 1) / 11 - 0.5, 1e-12);
+  EXPECT_NEAR(dq[1], -3 * (kGravity - 1) / 11, 1e-12);
+  EXPECT_NEAR(dq[3], kGravity - 15 * (kGravity - 1) / 22 - 3 * (kGravity - 1) / 11 - 0.5, 1e-12);
 }
 
 TEST(SlideRockSystem, FrictionIsMuTimesTheNormalForceAgainstTheSlip) {
   const SlideRockSystem to_plus{context(lambda_one, 0.6), Corner::right, 1};
   const ContactForces f = to_plus.forces(0.0, {0.0, 0.0, 0.5, 0.2});
-  EXPECT_NEAR(f.normal, 25 * g / 22, 1e-12);
-  EXPECT_NEAR(f.friction, -0.6 * 25 * g / 22, 1e-12);
+  EXPECT_NEAR(f.normal, 25 * kGravity / 22, 1e-12);
+  EXPECT_NEAR(f.friction, -0.6 * 25 * kGravity / 22, 1e-12);
   // Slipping to -x: D- = 5/12 + 1/4 + 0.3 = 29/30, theta'' = (0.5 + 0.6) g 30/29 = 33 g/29,
   // V = g - 0.5 theta'' = 25 g/58, F = +0.6 V.
   const SlideRockSystem to_minus{context(lambda_one, 0.6), Corner::right, -1};
   const ContactForces f_minus = to_minus.forces(0.0, {0.0, 0.0, 0.5, -0.2});
-  EXPECT_NEAR(f_minus.normal, 25 * g / 58, 1e-12);
-  EXPECT_NEAR(f_minus.friction, 0.6 * 25 * g / 58, 1e-12);
+  EXPECT_NEAR(f_minus.normal, 25 * kGravity / 58, 1e-12);
+  EXPECT_NEAR(f_minus.friction, 0.6 * 25 * kGravity / 58, 1e-12);
 }
 
 TEST(SlideRockSystem, GuardsMeasureWhatTheirEventsNeed) {
@@ -152,7 +152,7 @@ TEST(SlideRockSystem, GuardsMeasureWhatTheirEventsNeed) {
   const SlideRockSystem to_plus{context(lambda_one, 0.6), Corner::right, 1};
   const auto guard = to_plus.guards(0.0, {0.0, 0.0, 0.5, 0.2});
   EXPECT_NEAR(guard[SlideRockSystem::normal_force], 25.0 / 22, 1e-15);
-  EXPECT_NEAR(guard[SlideRockSystem::slip_velocity], 0.2 / std::sqrt(g * R), 1e-15);
+  EXPECT_NEAR(guard[SlideRockSystem::slip_velocity], 0.2 / std::sqrt(kGravity * R), 1e-15);
   EXPECT_NEAR(guard[SlideRockSystem::other_corner_height], 0.0, 1e-15);
   EXPECT_NEAR(guard[SlideRockSystem::overturn_margin], std::numbers::pi / 2, 1e-15);
   EXPECT_NEAR(guard[SlideRockSystem::painleve_distance], 0.88 - 1e-6, 1e-15);

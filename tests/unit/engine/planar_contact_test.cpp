@@ -18,12 +18,18 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 
 PlanarForcesInput one_contact(Vec2 r, const RigidVelocity& v, double k2, double lambda, double mu,
                               double length) {
-  return {{{r, {0.0, 1.0}, ContactKind::block_vertex}}, v, k2,    {lambda * g, -g}, mu,
-          kRestingVelocity * std::sqrt(g * length),     g, length};
+  return {{{r, {0.0, 1.0}, ContactKind::block_vertex}},
+          v,
+          k2,
+          {lambda * kGravity, -kGravity},
+          mu,
+          kRestingVelocity * std::sqrt(kGravity * length),
+          kGravity,
+          length};
 }
 
 // Random rectangles on one base corner with the corner at rest or slipping, random lambda, mu and
@@ -45,7 +51,8 @@ TEST(PlanarContactForces, OneCornerAgreesWithTodaysResolver) {
     const Vec2 r = rotate(geometry.base_corner(pivot), std::cos(theta), std::sin(theta));
     BlockState s{0.0, -r.y, theta, omega * r.y + slip_speed, -omega * r.x, omega};
 
-    const ContactOutcome today = ContactResolver(geometry, Contact{mu, 0.5}, g).resolve(s, lambda);
+    const ContactOutcome today =
+        ContactResolver(geometry, Contact{mu, 0.5}, kGravity).resolve(s, lambda);
     const PlanarForces here = resolve_contact_forces(one_contact(
         r, {s.vx, s.vy, s.omega}, geometry.inertia_per_mass(), lambda, mu, geometry.size()));
     // Where today's resolver needs its Painleve repair this one reports the case.
@@ -59,25 +66,26 @@ TEST(PlanarContactForces, OneCornerAgreesWithTodaysResolver) {
     if (const auto* rock = std::get_if<RockMode>(&today.mode)) {
       ASSERT_EQ(state, ContactState::stick) << trial;
       EXPECT_EQ(rock->pivot, pivot);
-      const CornerContact k = sticking_corner(r, omega, lambda, g, k2);
+      const CornerContact k = sticking_corner(r, omega, lambda, kGravity, k2);
       EXPECT_NEAR(here.acceleration.theta_dd, k.theta_dd, 1e-9 * (1 + std::abs(k.theta_dd)));
-      EXPECT_NEAR(here.normal[0], k.normal, 1e-9 * g);
-      EXPECT_NEAR(here.tangent[0], k.friction, 1e-9 * g);
+      EXPECT_NEAR(here.normal[0], k.normal, 1e-9 * kGravity);
+      EXPECT_NEAR(here.tangent[0], k.friction, 1e-9 * kGravity);
       ++stick;
     } else if (const auto* slide_rock = std::get_if<SlideRockMode>(&today.mode)) {
       ASSERT_EQ(state, slide_rock->slip_sign > 0 ? ContactState::slip_positive
                                                  : ContactState::slip_negative)
           << trial;
-      const CornerContact k = slipping_corner(r, omega, slide_rock->slip_sign, lambda, g, mu, k2);
+      const CornerContact k =
+          slipping_corner(r, omega, slide_rock->slip_sign, lambda, kGravity, mu, k2);
       EXPECT_NEAR(here.acceleration.theta_dd, k.theta_dd, 1e-8 * (1 + std::abs(k.theta_dd)));
-      EXPECT_NEAR(here.acceleration.x_dd, k.x_dd, 1e-8 * (g + std::abs(k.x_dd)));
-      EXPECT_NEAR(here.normal[0], k.normal, 1e-8 * g);
+      EXPECT_NEAR(here.acceleration.x_dd, k.x_dd, 1e-8 * (kGravity + std::abs(k.x_dd)));
+      EXPECT_NEAR(here.normal[0], k.normal, 1e-8 * kGravity);
       ++slip;
     } else {
       ASSERT_TRUE(std::holds_alternative<FlightMode>(today.mode));
       ASSERT_EQ(state, ContactState::off) << trial;
-      EXPECT_DOUBLE_EQ(here.acceleration.x_dd, lambda * g);
-      EXPECT_DOUBLE_EQ(here.acceleration.y_dd, -g);
+      EXPECT_DOUBLE_EQ(here.acceleration.x_dd, lambda * kGravity);
+      EXPECT_DOUBLE_EQ(here.acceleration.y_dd, -kGravity);
       EXPECT_DOUBLE_EQ(here.acceleration.theta_dd, 0.0);
       ++off;
     }
@@ -108,10 +116,11 @@ TEST(PlanarContactForces, FlatBlockAgreesWithTodaysResolver) {
     const double vx = unit(random) < 0.5 ? 0.0 : 2 * unit(random) - 1;
     const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
     BlockState s{0.0, b, 0.0, vx, 0.0, 0.0};
-    const ContactOutcome today = ContactResolver(geometry, Contact{mu, 0.5}, g).resolve(s, lambda);
+    const ContactOutcome today =
+        ContactResolver(geometry, Contact{mu, 0.5}, kGravity).resolve(s, lambda);
     // Today's resolver ends a flat block's slip slower than the settling speed (lay_flat): the
     // forces are compared at the velocity it keeps.
-    const double settle = kSettleVelocity * std::sqrt(g * geometry.size());
+    const double settle = kSettleVelocity * std::sqrt(kGravity * geometry.size());
     const double kept_vx = std::abs(vx) <= settle ? 0.0 : vx;
     PlanarForcesInput in = one_contact({-a, -b}, {kept_vx, 0, 0}, geometry.inertia_per_mass(),
                                        lambda, mu, geometry.size());
@@ -136,24 +145,26 @@ TEST(PlanarContactForces, FlatBlockAgreesWithTodaysResolver) {
     if (std::holds_alternative<RestMode>(today.mode)) {
       EXPECT_EQ(st[0], ContactState::stick) << trial;
       EXPECT_EQ(st[1], ContactState::stick) << trial;
-      EXPECT_NEAR(here.acceleration.x_dd, 0.0, 1e-9 * g) << trial;
+      EXPECT_NEAR(here.acceleration.x_dd, 0.0, 1e-9 * kGravity) << trial;
       ++rest;
-    } else if (const auto* m = std::get_if<SlideMode>(&today.mode)) {
-      EXPECT_EQ(st[0], slip_of(m->slip_sign)) << trial;
-      EXPECT_EQ(st[1], slip_of(m->slip_sign)) << trial;
-      EXPECT_NEAR(here.acceleration.x_dd, (lambda - m->slip_sign * mu) * g, 1e-9 * g) << trial;
+    } else if (const auto* sliding = std::get_if<SlideMode>(&today.mode)) {
+      EXPECT_EQ(st[0], slip_of(sliding->slip_sign)) << trial;
+      EXPECT_EQ(st[1], slip_of(sliding->slip_sign)) << trial;
+      EXPECT_NEAR(here.acceleration.x_dd, (lambda - sliding->slip_sign * mu) * kGravity,
+                  1e-9 * kGravity)
+          << trial;
       ++slide;
-    } else if (const auto* m = std::get_if<RockMode>(&today.mode)) {
-      const int k = m->pivot == Corner::left ? 0 : 1;
+    } else if (const auto* rocking = std::get_if<RockMode>(&today.mode)) {
+      const int k = rocking->pivot == Corner::left ? 0 : 1;
       EXPECT_EQ(st[k], ContactState::stick) << trial;
       EXPECT_EQ(st[1 - k], ContactState::off) << trial;
-      const CornerContact c = sticking_corner(geometry.base_corner(m->pivot), 0.0, lambda, g,
-                                              geometry.inertia_per_mass());
+      const CornerContact c = sticking_corner(geometry.base_corner(rocking->pivot), 0.0, lambda,
+                                              kGravity, geometry.inertia_per_mass());
       EXPECT_NEAR(here.acceleration.theta_dd, c.theta_dd, 1e-9 * (1 + std::abs(c.theta_dd)));
       ++rock;
-    } else if (const auto* m = std::get_if<SlideRockMode>(&today.mode)) {
-      const int k = m->pivot == Corner::left ? 0 : 1;
-      EXPECT_EQ(st[k], slip_of(m->slip_sign)) << trial;
+    } else if (const auto* slide_rocking = std::get_if<SlideRockMode>(&today.mode)) {
+      const int k = slide_rocking->pivot == Corner::left ? 0 : 1;
+      EXPECT_EQ(st[k], slip_of(slide_rocking->slip_sign)) << trial;
       EXPECT_EQ(st[1 - k], ContactState::off) << trial;
       ++slide_rock;
     } else {
@@ -220,8 +231,10 @@ struct TypeB {
             {{12.525 - cx, 5 - cy}, {-0.6, 0.8}}};
   }
   PlanarForcesInput at_rest(double lambda, double mu) const {
-    return {contacts(), {0, 0, 0}, k2, {lambda * g, -g}, mu, 1e-9 * std::sqrt(g * length),
-            g,          length};
+    return {contacts(), {0, 0, 0},
+            k2,         {lambda * kGravity, -kGravity},
+            mu,         1e-9 * std::sqrt(kGravity * length),
+            kGravity,   length};
   }
 };
 
@@ -239,9 +252,9 @@ void expect_balanced(const PlanarForces& f, const PlanarForcesInput& in, double 
     EXPECT_GE(f.normal[i], -1e-12);
     EXPECT_LE(std::abs(f.tangent[i]), mu * f.normal[i] + 1e-12);
   }
-  EXPECT_NEAR(fx, 0, 1e-9 * g);
-  EXPECT_NEAR(fy, 0, 1e-9 * g);
-  EXPECT_NEAR(moment, 0, 1e-9 * g * in.length);
+  EXPECT_NEAR(fx, 0, 1e-9 * kGravity);
+  EXPECT_NEAR(fy, 0, 1e-9 * kGravity);
+  EXPECT_NEAR(moment, 0, 1e-9 * kGravity * in.length);
 }
 
 TEST(PlanarContactForces, TypeBBlockRestsInItsFold) {
@@ -252,16 +265,16 @@ TEST(PlanarContactForces, TypeBBlockRestsInItsFold) {
     const PlanarForcesInput in = block.at_rest(lambda, 1.05);
     const PlanarForces f = resolve_contact_forces(in);
     EXPECT_EQ(f.determinacy, Determinacy::unique) << lambda;
-    EXPECT_NEAR(f.acceleration.x_dd, 0, 1e-9 * g) << lambda;
-    EXPECT_NEAR(f.acceleration.y_dd, 0, 1e-9 * g) << lambda;
-    EXPECT_NEAR(f.acceleration.theta_dd * block.length, 0, 1e-9 * g) << lambda;
+    EXPECT_NEAR(f.acceleration.x_dd, 0, 1e-9 * kGravity) << lambda;
+    EXPECT_NEAR(f.acceleration.y_dd, 0, 1e-9 * kGravity) << lambda;
+    EXPECT_NEAR(f.acceleration.theta_dd * block.length, 0, 1e-9 * kGravity) << lambda;
     expect_balanced(f, in, 1.05);
   }
   // Under gravity alone the heel and the fold carry it (its centre of mass is over the
   // horizontal part): the toe needs no push.
   const PlanarForces rest = resolve_contact_forces(block.at_rest(0.0, 1.05));
-  EXPECT_NEAR(rest.normal[2], 0, 1e-9 * g);
-  EXPECT_NEAR(rest.normal[0] + rest.normal[1], g, 1e-9 * g);
+  EXPECT_NEAR(rest.normal[2], 0, 1e-9 * kGravity);
+  EXPECT_NEAR(rest.normal[0] + rest.normal[1], kGravity, 1e-9 * kGravity);
 }
 
 TEST(PlanarContactForces, TypeBBlockRocksUpstreamAboutItsHeel) {
@@ -274,15 +287,15 @@ TEST(PlanarContactForces, TypeBBlockRocksUpstreamAboutItsHeel) {
   EXPECT_EQ(f.states[0], ContactState::stick);
   EXPECT_EQ(f.states[1], ContactState::off);
   EXPECT_EQ(f.states[2], ContactState::off);
-  const CornerContact k = sticking_corner({-block.cx, -block.cy}, 0.0, lambda, g, block.k2);
+  const CornerContact k = sticking_corner({-block.cx, -block.cy}, 0.0, lambda, kGravity, block.k2);
   EXPECT_GT(k.theta_dd, 0.0);
-  EXPECT_NEAR(f.acceleration.theta_dd, k.theta_dd, 1e-12 * g);
+  EXPECT_NEAR(f.acceleration.theta_dd, k.theta_dd, 1e-12 * kGravity);
   // Pushed upstream with friction 0.3 below the push: it slides towards the reservoir, on heel
   // and fold, away from the incline.
   const PlanarForces slide = resolve_contact_forces(block.at_rest(-0.4, 0.3));
   ASSERT_EQ(slide.determinacy, Determinacy::unique);
   EXPECT_EQ(slide.states[2], ContactState::off);
-  EXPECT_NEAR(slide.acceleration.x_dd, (-0.4 + 0.3) * g, 1e-9 * g);
+  EXPECT_NEAR(slide.acceleration.x_dd, (-0.4 + 0.3) * kGravity, 1e-9 * kGravity);
 }
 
 // A slender body slipping where the slip's normal force has no non-negative solution (Painleve,

@@ -18,7 +18,7 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 using testing::pi;
 
 // integral of f over [a, b]: 20-point Gauss-Legendre on 400 panels, exact to round-off for the
@@ -41,7 +41,7 @@ double integrate(const std::function<double(double)>& f, double a, double b) {
 
 TEST(PulseShapes, MakrisTypesAAndBAreOneSineAndOneCosineOfAcceleration) {
   const double A = 0.7, Tp = 0.8, w = 2 * pi / Tp;
-  const GroundMotionPieces a(MakrisPulseA{A, Tp}, g), b(MakrisPulseB{-A, Tp}, g);
+  const GroundMotionPieces a(MakrisPulseA{A, Tp}, kGravity), b(MakrisPulseB{-A, Tp}, kGravity);
   for (const double t : {0.0, 0.1, 0.2, 0.37, 0.6, 0.79}) {
     EXPECT_NEAR(a.lambda(t), A * std::sin(w * t), 1e-15) << t;
     EXPECT_NEAR(b.lambda(t), -A * std::cos(w * t), 1e-15) << t;
@@ -67,7 +67,7 @@ TEST(PulseShapes, MakrisPhaseSolvesTheZeroDisplacementEquation) {
 TEST(PulseShapes, MakrisTypeCReturnsTheGroundToRest) {
   const double A = 1.3, Tp = 0.6, w = 2 * pi / Tp;
   for (const int n : {1, 2, 4}) {
-    const GroundMotionPieces c(MakrisPulseC{A, Tp, n}, g);
+    const GroundMotionPieces c(MakrisPulseC{A, Tp, n}, kGravity);
     const double phi = pulse::makris_c_phase(n);
     const double end = c.pieces().front().end();
     EXPECT_NEAR(end, (n + 0.5 - phi / pi) * Tp, 1e-14);
@@ -79,9 +79,9 @@ TEST(PulseShapes, MakrisTypeCReturnsTheGroundToRest) {
     // Ground velocity -g integral lambda and displacement -g integral (end - s) lambda(s) ds (the
     // twice-repeated integral), in m/s and m; the pulse's own scale is A g Tp / (2 pi) ~ 1.2 m/s.
     const auto lambda = [&](double s) { return c.pieces().front().lambda(s); };
-    const double velocity = -g * integrate(lambda, 0.0, end);
+    const double velocity = -kGravity * integrate(lambda, 0.0, end);
     const double displacement =
-        -g * integrate([&](double s) { return (end - s) * lambda(s); }, 0.0, end);
+        -kGravity * integrate([&](double s) { return (end - s) * lambda(s); }, 0.0, end);
     EXPECT_NEAR(velocity, 0.0, 1e-12) << n;
     EXPECT_NEAR(displacement, 0.0, 1e-12) << n;
     // Not zero by accident: halfway through, the ground is moving.
@@ -92,7 +92,7 @@ TEST(PulseShapes, MakrisTypeCReturnsTheGroundToRest) {
 TEST(PulseShapes, RickerWaveletFollowsItsFormulaInsideItsWindow) {
   const double A = -0.9, Tp = 0.5;
   const RickerWavelet wavelet{A, Tp, {}};
-  const GroundMotionPieces r(wavelet, g);
+  const GroundMotionPieces r(wavelet, kGravity);
   const double t0 = 1.5 * Tp;  // the documented default
   EXPECT_EQ(wavelet.center(), t0);
   const auto formula = [&](double t) {
@@ -108,14 +108,14 @@ TEST(PulseShapes, RickerWaveletFollowsItsFormulaInsideItsWindow) {
   EXPECT_EQ(r.lambda(2 * t0), 0.0);
   EXPECT_EQ(r.lambda(3.0), 0.0);
   // A centre given explicitly moves the window with it.
-  const GroundMotionPieces late(RickerWavelet{A, Tp, 2.0}, g);
+  const GroundMotionPieces late(RickerWavelet{A, Tp, 2.0}, kGravity);
   EXPECT_DOUBLE_EQ(late.lambda(2.0), A);
   EXPECT_EQ(late.lambda(4.0), 0.0);
 }
 
 TEST(PulseShapes, RickerExtremaAreAtTheCentreAndItsSideLobes) {
   const double Tp = 0.5, t0 = 0.75, side = std::sqrt(1.5) * Tp / pi;
-  const GroundMotionPieces wavelet(RickerWavelet{1.0, Tp, {}}, g);
+  const GroundMotionPieces wavelet(RickerWavelet{1.0, Tp, {}}, kGravity);
   const MotionPiece& piece = wavelet.pieces().front();
   const auto extrema = piece.extrema_between(0.0, 1.5);
   ASSERT_EQ(extrema.size(), 3u);
@@ -142,7 +142,8 @@ struct MpVelocity {
 
 TEST(PulseShapes, MavroeidisPapageorgiouAccelerationIsTheVelocitysDerivative) {
   const MpVelocity v{0.8, 0.9, 2.3, 0.7, 1.5};
-  const GroundMotionPieces mp(MavroeidisPapageorgiouPulse{v.vp, v.tp, v.gamma, v.nu, v.t0}, g);
+  const GroundMotionPieces mp(MavroeidisPapageorgiouPulse{v.vp, v.tp, v.gamma, v.nu, v.t0},
+                              kGravity);
   const double start = v.t0 - v.gamma * v.tp / 2, end = v.t0 + v.gamma * v.tp / 2;
   ASSERT_EQ(mp.pieces().size(), 3u);  // rest, the pulse, rest forever
   EXPECT_NEAR(mp.pieces()[0].end(), start, 1e-15);
@@ -151,20 +152,20 @@ TEST(PulseShapes, MavroeidisPapageorgiouAccelerationIsTheVelocitysDerivative) {
   double peak = 0.0;
   for (double t = start + 0.01; t < end - 0.01; t += 0.0371) {
     const double a = (v(t + h) - v(t - h)) / (2 * h);  // central difference, error ~ h^2 v''' / 6
-    EXPECT_NEAR(mp.lambda(t), -a / g, 1e-9) << t;
-    peak = std::max(peak, std::abs(a / g));
+    EXPECT_NEAR(mp.lambda(t), -a / kGravity, 1e-9) << t;
+    peak = std::max(peak, std::abs(a / kGravity));
   }
   EXPECT_GT(peak, 0.1);  // the comparison is not between zeros
   for (const double t : {0.0, start - 1e-9, end, end + 0.5}) EXPECT_EQ(mp.lambda(t), 0.0) << t;
   // Its acceleration integrates back to v(t) (-g lambda from the start).
   const auto lambda = [&](double s) { return mp.pieces()[1].lambda(s); };
   for (const double t : {start + 0.2, v.t0, v.t0 + 0.33, end}) {
-    EXPECT_NEAR(-g * integrate(lambda, start, t), v(t), 1e-12) << t;
+    EXPECT_NEAR(-kGravity * integrate(lambda, start, t), v(t), 1e-12) << t;
   }
 }
 
 TEST(PulseShapes, MavroeidisPapageorgiouStartsAtZeroByDefault) {
-  const GroundMotionPieces mp(MavroeidisPapageorgiouPulse{1.0, 1.0, 3.0, 0.0, {}}, g);
+  const GroundMotionPieces mp(MavroeidisPapageorgiouPulse{1.0, 1.0, 3.0, 0.0, {}}, kGravity);
   ASSERT_EQ(mp.pieces().size(), 2u);  // no rest before the pulse
   EXPECT_NEAR(mp.pieces()[0].end(), 3.0, 1e-15);
   // Both ends are smooth: the envelope and its slope vanish there.
@@ -206,7 +207,7 @@ TEST(PulseShapes, MavroeidisPapageorgiouExtremaAreAllFound) {
     for (const double nu : {0.0, 0.9, pi / 2, 2.5}) {
       SCOPED_TRACE(::testing::Message() << "gamma " << gamma << " nu " << nu);
       const MavroeidisPapageorgiouPulse pulse{0.5, 0.7, gamma, nu, {}};
-      const GroundMotionPieces pieces(pulse, g);
+      const GroundMotionPieces pieces(pulse, kGravity);
       const MotionPiece& piece = pieces.pieces().front();
       // Roughly two extrema per carrier period over the gamma periods of the envelope.
       expect_extrema_found(piece, 0.0, gamma * 0.7, static_cast<std::size_t>(gamma));
@@ -226,13 +227,15 @@ TEST(PulseShapes, ZeroSearchFindsTwoZerosInsideOneCell) {
 }
 
 TEST(PulseShapes, PeakLambdaIsTheLargestValueOverAllPieces) {
-  EXPECT_NEAR(GroundMotionPieces(RickerWavelet{-0.4, 1.0, {}}, g).peak_abs_lambda(), 0.4, 1e-15);
-  EXPECT_NEAR(GroundMotionPieces(MakrisPulseC{0.6, 1.0, 2}, g).peak_abs_lambda(), 0.6, 1e-15);
+  EXPECT_NEAR(GroundMotionPieces(RickerWavelet{-0.4, 1.0, {}}, kGravity).peak_abs_lambda(), 0.4,
+              1e-15);
+  EXPECT_NEAR(GroundMotionPieces(MakrisPulseC{0.6, 1.0, 2}, kGravity).peak_abs_lambda(), 0.6,
+              1e-15);
   // nu = pi/2, gamma large: at tau = 0 the three sines add to 2 (Vp Omega / (2 g)).
   const double vp = 0.3, omega = 2 * pi / 0.5;
-  EXPECT_NEAR(GroundMotionPieces(MavroeidisPapageorgiouPulse{vp, 0.5, 5.0, pi / 2, {}}, g)
+  EXPECT_NEAR(GroundMotionPieces(MavroeidisPapageorgiouPulse{vp, 0.5, 5.0, pi / 2, {}}, kGravity)
                   .peak_abs_lambda(),
-              vp * omega / g, 1e-12);
+              vp * omega / kGravity, 1e-12);
 }
 
 }  // namespace

@@ -20,17 +20,17 @@ namespace {
 using testing::flat_state;
 using testing::turning_about;
 
-using testing::a;
-using testing::b;
-using testing::g;
+using testing::kGravity;
+using testing::kPaperHalfHeight;
+using testing::kPaperHalfWidth;
 // The paper's block: R = sqrt(1.25), sqrt(g R) = 3.311784 m/s, base width 2a = 1 m.
 using testing::paper_block;
-const double sqrt_gR = std::sqrt(g * std::hypot(a, b));
+const double sqrt_gR = std::sqrt(kGravity * std::hypot(kPaperHalfWidth, kPaperHalfHeight));
 
 TEST(HousnerRules, StartsToRockOnlyPastTheTipThresholdAboutThePushedCorner) {
-  const HousnerRules rules(paper_block, true, g);
+  const HousnerRules rules(paper_block, true, kGravity);
   for (const double lambda : {0.0, 0.49, -0.49, 0.5, -0.5}) {  // |lambda| <= a/b = 0.5
-    const ContactOutcome out = rules.start(flat_state(b, 2.0), lambda);
+    const ContactOutcome out = rules.start(flat_state(kPaperHalfHeight, 2.0), lambda);
     EXPECT_EQ(mode_kind(out.mode), ModeKind::rest) << "lambda = " << lambda;
   }
   // Past a/b: about the right corner (x + a = 2.5) for lambda > 0, the left (1.5) for lambda < 0;
@@ -41,7 +41,7 @@ TEST(HousnerRules, StartsToRockOnlyPastTheTipThresholdAboutThePushedCorner) {
     double pivot_x;
   } cases[] = {{0.51, Corner::right, 2.5}, {3.0, Corner::right, 2.5}, {-0.51, Corner::left, 1.5}};
   for (const auto& c : cases) {
-    const ContactOutcome out = rules.start(flat_state(b, 2.0), c.lambda);
+    const ContactOutcome out = rules.start(flat_state(kPaperHalfHeight, 2.0), c.lambda);
     const auto* rock = std::get_if<RockMode>(&out.mode);
     ASSERT_NE(rock, nullptr) << "lambda = " << c.lambda;
     EXPECT_EQ(rock->pivot, c.pivot);
@@ -54,7 +54,8 @@ TEST(HousnerRules, ABlockReleasedTiltedRocksOnItsLowerCorner) {
   // Tilted clockwise (theta < 0) the right corner is the lower one, whatever lambda says.
   for (const double lambda : {0.0, -2.0}) {
     const ContactOutcome out =
-        HousnerRules(paper_block, true, g).start(turning_about(a, b, -0.1, 0.0, 4.0), lambda);
+        HousnerRules(paper_block, true, kGravity)
+            .start(turning_about(kPaperHalfWidth, kPaperHalfHeight, -0.1, 0.0, 4.0), lambda);
     const auto* rock = std::get_if<RockMode>(&out.mode);
     ASSERT_NE(rock, nullptr) << "lambda = " << lambda;
     EXPECT_EQ(rock->pivot, Corner::right);
@@ -68,13 +69,15 @@ TEST(HousnerRules, ALandingHandsOverToTheOtherCornerWithHousnersRatio) {
   // at omega+ x (centre - corner) = (-omega+ b, omega+ a) = (-0.7, 0.35).
   EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::right), 0.7, 1e-15);
   EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::left), 0.7, 1e-15);
-  const ContactOutcome out = HousnerRules(paper_block, true, g)
-                                 .impact(turning_about(a, b, 0.0, 1.0, a), Corner::right, 0.0);
+  const ContactOutcome out =
+      HousnerRules(paper_block, true, kGravity)
+          .impact(turning_about(kPaperHalfWidth, kPaperHalfHeight, 0.0, 1.0, kPaperHalfWidth),
+                  Corner::right, 0.0);
   EXPECT_TRUE(out.impact);
   const auto* rock = std::get_if<RockMode>(&out.mode);
   ASSERT_NE(rock, nullptr);
   EXPECT_EQ(rock->pivot, Corner::left);
-  EXPECT_NEAR(rock->pivot_x, -a, 1e-15);
+  EXPECT_NEAR(rock->pivot_x, -kPaperHalfWidth, 1e-15);
   EXPECT_NEAR(out.state.omega, 0.7, 1e-15);
   EXPECT_NEAR(out.state.vx, -0.7, 1e-15);
   EXPECT_NEAR(out.state.vy, 0.35, 1e-15);
@@ -83,13 +86,15 @@ TEST(HousnerRules, ALandingHandsOverToTheOtherCornerWithHousnersRatio) {
 
 TEST(HousnerRules, WithoutImpactLossesTheHandOverKeepsOmega) {
   // effects ["rocking"]: the pivot changes, omega and the energy do not; no impact is counted.
-  const ContactOutcome out = HousnerRules(paper_block, false, g)
-                                 .impact(turning_about(-a, b, 0.0, -2.0, -a), Corner::left, 0.0);
+  const ContactOutcome out =
+      HousnerRules(paper_block, false, kGravity)
+          .impact(turning_about(-kPaperHalfWidth, kPaperHalfHeight, 0.0, -2.0, -kPaperHalfWidth),
+                  Corner::left, 0.0);
   EXPECT_FALSE(out.impact);
   const auto* rock = std::get_if<RockMode>(&out.mode);
   ASSERT_NE(rock, nullptr);
   EXPECT_EQ(rock->pivot, Corner::right);
-  EXPECT_NEAR(rock->pivot_x, a, 1e-15);
+  EXPECT_NEAR(rock->pivot_x, kPaperHalfWidth, 1e-15);
   EXPECT_EQ(out.state.omega, -2.0);
 }
 
@@ -99,14 +104,16 @@ TEST(HousnerRules, ALandingSlowerThanTheSettleVelocityLaysTheBlockFlat) {
   // 1.4e-4 m/s (flat, at rest under lambda = 0), 2.2e-4 leaves 1.54e-4 (rocks on). Without losses
   // 2e-4 stays 2e-4: it rocks on. Flat under lambda = 0.6 > a/b it starts to rock again at once.
   ASSERT_NEAR(kSettleVelocity * sqrt_gR, 1.4803675e-4, 5e-12);
-  const HousnerRules lossy(paper_block, true, g), lossless(paper_block, false, g);
+  const HousnerRules lossy(paper_block, true, kGravity), lossless(paper_block, false, kGravity);
   const auto after = [&](const HousnerRules& rules, double omega, double lambda) {
-    return rules.impact(turning_about(a, b, 0.0, omega, a), Corner::right, lambda);
+    return rules.impact(
+        turning_about(kPaperHalfWidth, kPaperHalfHeight, 0.0, omega, kPaperHalfWidth),
+        Corner::right, lambda);
   };
   const ContactOutcome settled = after(lossy, 2e-4, 0.0);
   EXPECT_EQ(mode_kind(settled.mode), ModeKind::rest);
   EXPECT_EQ(settled.state.omega, 0.0);
-  EXPECT_EQ(settled.state.y, b);
+  EXPECT_EQ(settled.state.y, kPaperHalfHeight);
   EXPECT_EQ(mode_kind(after(lossy, 2.2e-4, 0.0).mode), ModeKind::rock);
   EXPECT_EQ(mode_kind(after(lossless, 2e-4, 0.0).mode), ModeKind::rock);
   const ContactOutcome pushed = after(lossy, 2e-4, 0.6);
@@ -117,14 +124,14 @@ TEST(HousnerRules, ALandingSlowerThanTheSettleVelocityLaysTheBlockFlat) {
 }
 
 TEST(NewmarkRules, SlidesFromRestOnlyPastFriction) {
-  const NewmarkRules rules(paper_block, 0.3, g);
+  const NewmarkRules rules(paper_block, 0.3, kGravity);
   for (const double lambda : {0.0, 0.29, -0.3}) {
-    EXPECT_EQ(mode_kind(rules.resolve(flat_state(b), lambda).mode), ModeKind::rest)
+    EXPECT_EQ(mode_kind(rules.resolve(flat_state(kPaperHalfHeight), lambda).mode), ModeKind::rest)
         << "lambda = " << lambda;
   }
   // Past mu the way lambda pushes; never rocks, even past a/b = 0.5.
   for (const double lambda : {0.31, -0.31, 0.9, -5.0}) {
-    const ContactOutcome out = rules.resolve(flat_state(b), lambda);
+    const ContactOutcome out = rules.resolve(flat_state(kPaperHalfHeight), lambda);
     const auto* slide = std::get_if<SlideMode>(&out.mode);
     ASSERT_NE(slide, nullptr) << "lambda = " << lambda;
     EXPECT_EQ(slide->slip_sign, lambda > 0 ? 1 : -1) << "lambda = " << lambda;
@@ -133,9 +140,9 @@ TEST(NewmarkRules, SlidesFromRestOnlyPastFriction) {
 
 TEST(NewmarkRules, KeepsSlidingWhileTheBaseMovesAndRestsOnceItStops) {
   // The resting velocity is kRestingVelocity sqrt(g R) = 3.311784e-9 m/s.
-  const NewmarkRules rules(paper_block, 0.3, g);
+  const NewmarkRules rules(paper_block, 0.3, kGravity);
   const auto moving = [&](double vx) {
-    BlockState s = flat_state(b);
+    BlockState s = flat_state(kPaperHalfHeight);
     s.vx = vx;
     return s;
   };

@@ -19,8 +19,8 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
 using testing::kBaseEdge;
+using testing::kGravity;
 using testing::kWaterDensity;
 using testing::rectangle_outline;
 
@@ -42,9 +42,11 @@ double action_height(const WaterLoad& load, const Vertex& reference) {
 TEST(Hydrostatic, VerticalFaceTakesHalfRhoGDSquaredAtAThirdOfTheDepth) {
   for (const double d : {0.5, 3.0, 8.0}) {
     const Vertex centre{2.0, 4.0};
-    const WaterLoad load =
-        hydrostatic_load(rectangle_outline(4.0, 8.0), {d, kWaterDensity, g}, kBaseEdge, centre);
-    EXPECT_NEAR(load.fx, 0.5 * kWaterDensity * g * d * d, 1e-12 * kWaterDensity * g * d * d) << d;
+    const WaterLoad load = hydrostatic_load(rectangle_outline(4.0, 8.0),
+                                            {d, kWaterDensity, kGravity}, kBaseEdge, centre);
+    EXPECT_NEAR(load.fx, 0.5 * kWaterDensity * kGravity * d * d,
+                1e-12 * kWaterDensity * kGravity * d * d)
+        << d;
     EXPECT_EQ(load.fy, 0.0) << d;
     EXPECT_NEAR(action_height(load, centre), d / 3, 1e-12 * d) << d;
   }
@@ -56,9 +58,10 @@ TEST(Hydrostatic, VerticalFaceTakesHalfRhoGDSquaredAtAThirdOfTheDepth) {
 TEST(Hydrostatic, SlopingFaceAddsTheWeightOfTheWaterAboveIt) {
   const double w = 3.0, h = 10.0, d = 6.0;
   const WorldPolygon trapezoid{{-w, 0}, {5.0, 0}, {5.0, h}, {0, h}};
-  const WaterLoad load = hydrostatic_load(trapezoid, {d, kWaterDensity, g}, kBaseEdge, {1.0, 4.0});
-  EXPECT_NEAR(load.fx, 0.5 * kWaterDensity * g * d * d, 1e-9);
-  EXPECT_NEAR(load.fy, -kWaterDensity * g * 0.5 * d * (w * d / h), 1e-9);
+  const WaterLoad load =
+      hydrostatic_load(trapezoid, {d, kWaterDensity, kGravity}, kBaseEdge, {1.0, 4.0});
+  EXPECT_NEAR(load.fx, 0.5 * kWaterDensity * kGravity * d * d, 1e-9);
+  EXPECT_NEAR(load.fy, -kWaterDensity * kGravity * 0.5 * d * (w * d / h), 1e-9);
 }
 
 // A face of two edges (a kink in the upstream face) against the same face as one edge: the push
@@ -67,8 +70,10 @@ TEST(Hydrostatic, SplitFaceAddsUp) {
   const WorldPolygon whole = rectangle_outline(4.0, 8.0);
   const WorldPolygon split{{0, 0}, {4.0, 0}, {4.0, 8.0}, {0, 8.0}, {0, 2.5}};
   for (const double surface : {2.0, 6.0}) {
-    const WaterLoad a = hydrostatic_load(whole, {surface, kWaterDensity, g}, kBaseEdge, {1.0, 3.0});
-    const WaterLoad b = hydrostatic_load(split, {surface, kWaterDensity, g}, kBaseEdge, {1.0, 3.0});
+    const WaterLoad a =
+        hydrostatic_load(whole, {surface, kWaterDensity, kGravity}, kBaseEdge, {1.0, 3.0});
+    const WaterLoad b =
+        hydrostatic_load(split, {surface, kWaterDensity, kGravity}, kBaseEdge, {1.0, 3.0});
     EXPECT_NEAR(a.fx, b.fx, 1e-9 * a.fx);
     EXPECT_NEAR(a.moment, b.moment, 1e-9 * std::abs(a.moment));
   }
@@ -80,7 +85,7 @@ TEST(Hydrostatic, NoWaterAtOrBelowTheLowestPointIsExactlyZero) {
   for (const Vertex& v : tilted) lowest = std::min(lowest, v[1]);
   for (const double surface : {lowest, lowest - 1.0}) {
     const WaterLoad load =
-        hydrostatic_load(tilted, {surface, kWaterDensity, g}, kBaseEdge, {2.0, 4.0});
+        hydrostatic_load(tilted, {surface, kWaterDensity, kGravity}, kBaseEdge, {2.0, 4.0});
     EXPECT_EQ(load.fx, 0.0);
     EXPECT_EQ(load.fy, 0.0);
     EXPECT_EQ(load.moment, 0.0);
@@ -101,7 +106,7 @@ WaterLoad quadrature(const WorldPolygon& polygon, double surface, const Vertex& 
     for (int k = 0; k < n; ++k) {
       const double t = (k + 0.5) / n;
       const double x = a[0] + t * dx, y = a[1] + t * dy;
-      const double force = kWaterDensity * g * std::max(0.0, surface - y) * length / n;
+      const double force = kWaterDensity * kGravity * std::max(0.0, surface - y) * length / n;
       sum.fx -= nx * force;
       sum.fy -= ny * force;
       sum.moment += (x - c[0]) * (-ny * force) - (y - c[1]) * (-nx * force);
@@ -122,14 +127,15 @@ TEST(Hydrostatic, TiltedBlockMatchesAQuadratureOfItsRotatedFace) {
     const WorldPolygon tilted = rotated(upright, pivot, theta);
     const Vertex centre = rotated(WorldPolygon{Vertex{5.6, 7.9}}, pivot, theta)[0];
     const WaterLoad exact =
-        hydrostatic_load(tilted, {surface, kWaterDensity, g}, kBaseEdge, centre);
+        hydrostatic_load(tilted, {surface, kWaterDensity, kGravity}, kBaseEdge, centre);
     const WaterLoad sum = quadrature(tilted, surface, centre, 400'000);
-    const double scale = 0.5 * kWaterDensity * g * surface * surface;
+    const double scale = 0.5 * kWaterDensity * kGravity * surface * surface;
     EXPECT_NEAR(exact.fx, sum.fx, 1e-5 * scale) << theta;
     EXPECT_NEAR(exact.fy, sum.fy, 1e-5 * scale) << theta;
     EXPECT_NEAR(exact.moment, sum.moment, 1e-5 * scale * 16.7) << theta;
     const double heel_depth = surface - tilted[0][1];
-    EXPECT_NEAR(exact.fx, 0.5 * kWaterDensity * g * heel_depth * heel_depth, 1e-9 * scale) << theta;
+    EXPECT_NEAR(exact.fx, 0.5 * kWaterDensity * kGravity * heel_depth * heel_depth, 1e-9 * scale)
+        << theta;
     EXPECT_GT(std::abs(exact.fy), 1e-3 * scale) << theta;  // the face is no longer vertical
     EXPECT_EQ(exact.fy > 0, theta > 0) << "an overhanging face is pushed up";
   }

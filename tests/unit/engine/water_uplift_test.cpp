@@ -14,7 +14,7 @@
 namespace blockfrag {
 namespace {
 
-using testing::g;
+using testing::kGravity;
 using testing::kWaterDensity;
 
 TEST(CrackUplift, FullCrackTakesHalfRhoGHBAtAThirdFromTheMouth) {
@@ -23,8 +23,8 @@ TEST(CrackUplift, FullCrackTakesHalfRhoGHBAtAThirdFromTheMouth) {
   for (const double factor : {1.0, 0.85}) {
     for (const Vertex& reference : {Vertex{6.0, 5.0}, Vertex{-3.0, 0.0}}) {
       const UpliftLoad uplift =
-          crack_uplift(crack, {crack.y + head, kWaterDensity, g}, factor, reference);
-      const double expected = 0.5 * factor * kWaterDensity * g * head * length;
+          crack_uplift(crack, {crack.y + head, kWaterDensity, kGravity}, factor, reference);
+      const double expected = 0.5 * factor * kWaterDensity * kGravity * head * length;
       EXPECT_NEAR(uplift.force, expected, 1e-12 * expected);
       EXPECT_DOUBLE_EQ(uplift.point_x, 2.0 + length / 3);
       // Upward at x: a counter-clockwise moment (x - c_x) U about c.
@@ -36,14 +36,15 @@ TEST(CrackUplift, FullCrackTakesHalfRhoGHBAtAThirdFromTheMouth) {
 TEST(CrackUplift, NoHeadIsExactlyZero) {
   const Crack crack{0.0, 10.0, 3.0};
   for (const double surface : {3.0, 1.0}) {
-    const UpliftLoad uplift = crack_uplift(crack, {surface, kWaterDensity, g}, 1.0, {5.0, 8.0});
+    const UpliftLoad uplift =
+        crack_uplift(crack, {surface, kWaterDensity, kGravity}, 1.0, {5.0, 8.0});
     EXPECT_EQ(uplift.force, 0.0);
     EXPECT_EQ(uplift.moment, 0.0);
   }
 }
 
 TEST(CrackUplift, RefusesABackwardCrackOrAFactorOutsideZeroToOne) {
-  const StillWater water{10.0, kWaterDensity, g};
+  const StillWater water{10.0, kWaterDensity, kGravity};
   EXPECT_THROW(crack_uplift({5.0, 5.0, 0.0}, water, 1.0, {0, 0}), ContractViolation);
   EXPECT_THROW(crack_uplift({0.0, 5.0, 0.0}, water, 1.5, {0, 0}), ContractViolation);
   EXPECT_THROW(crack_uplift({0.0, 5.0, 0.0}, water, -0.1, {0, 0}), ContractViolation);

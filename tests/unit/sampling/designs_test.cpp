@@ -18,7 +18,7 @@
 namespace blockfrag {
 namespace {
 
-constexpr std::uint64_t seed = 20240611;
+constexpr std::uint64_t kDesignsSeed = 20240611;
 
 std::vector<std::uint32_t> identity(std::uint32_t n) {
   std::vector<std::uint32_t> values(n);
@@ -32,8 +32,8 @@ std::uint32_t stratum_of(double u, std::uint32_t n) {
 
 TEST(Designs, MonteCarloUsesTheSampleIndexAsCounter) {
   for (std::uint64_t index = 0; index < 100; ++index) {
-    EXPECT_EQ(design_uniform(Design::monte_carlo, seed, 5, 10, index),
-              uniform_open01(seed, 5, index));
+    EXPECT_EQ(design_uniform(Design::monte_carlo, kDesignsSeed, 5, 10, index),
+              uniform_open01(kDesignsSeed, 5, index));
   }
 }
 
@@ -44,12 +44,13 @@ TEST(Designs, PermutationFollowsTheDocumentedFisherYates) {
     for (std::uint64_t level = 0; level < 5; ++level) {
       auto expected = identity(n);
       for (std::uint32_t k = n - 1; k > 0; --k) {
-        const std::uint64_t bits = random_bits(seed, 9, level, 0x8000'0000u + k);
+        const std::uint64_t bits = random_bits(kDesignsSeed, 9, level, 0x8000'0000u + k);
         __extension__ using Wide = unsigned __int128;
         const auto r = static_cast<std::uint32_t>((Wide{bits} * (k + 1)) >> 64);
         std::swap(expected[k], expected[r]);
       }
-      EXPECT_EQ(latin_hypercube_permutation(seed, 9, level, n), expected) << n << " " << level;
+      EXPECT_EQ(latin_hypercube_permutation(kDesignsSeed, 9, level, n), expected)
+          << n << " " << level;
     }
   }
 }
@@ -59,7 +60,7 @@ TEST(Designs, EveryLevelAndInputFillsEachStratumExactlyOnce) {
                                               stream_id("half_width"), 0u, 0xffffffffu};
   for (const std::uint32_t n : {1u, 2u, 7u, 100u, 1000u}) {
     for (std::uint64_t level = 0; level < 4; ++level) {
-      const LatinHypercubeLevel hypercube(seed, streams, level, n);
+      const LatinHypercubeLevel hypercube(kDesignsSeed, streams, level, n);
       for (std::size_t dimension = 0; dimension < streams.size(); ++dimension) {
         std::vector<int> hits(n, 0);
         for (std::uint32_t j = 0; j < n; ++j) {
@@ -79,10 +80,10 @@ TEST(Designs, EveryLevelAndInputFillsEachStratumExactlyOnce) {
 TEST(Designs, PositionInsideTheStratumIsTheSamplesOwnUniform) {
   const std::uint32_t n = 50;
   const std::uint64_t level = 3;
-  const auto permutation = latin_hypercube_permutation(seed, 4, level, n);
+  const auto permutation = latin_hypercube_permutation(kDesignsSeed, 4, level, n);
   for (std::uint32_t j = 0; j < n; ++j) {
-    const double u = latin_hypercube_uniform(seed, 4, level, n, j);
-    EXPECT_NEAR(u * n - permutation[j], uniform_open01(seed, 4, level * n + j), 1e-13);
+    const double u = latin_hypercube_uniform(kDesignsSeed, 4, level, n, j);
+    EXPECT_NEAR(u * n - permutation[j], uniform_open01(kDesignsSeed, 4, level * n + j), 1e-13);
   }
 }
 
@@ -91,50 +92,51 @@ TEST(Designs, TopStratumNeverReachesOne) {
   EXPECT_EQ((2 + max_open01) / 3, 1.0);
   for (const std::uint32_t n : {3u, 1000u, 0x8000'0000u}) {
     for (std::uint64_t index = 0; index < 1000; ++index) {
-      EXPECT_LT(latin_hypercube_uniform_in_stratum(seed, 1, index, n - 1, n), 1.0);
-      EXPECT_GT(latin_hypercube_uniform_in_stratum(seed, 1, index, 0, n), 0.0);
+      EXPECT_LT(latin_hypercube_uniform_in_stratum(kDesignsSeed, 1, index, n - 1, n), 1.0);
+      EXPECT_GT(latin_hypercube_uniform_in_stratum(kDesignsSeed, 1, index, 0, n), 0.0);
     }
   }
 }
 
 TEST(Designs, PermutationsDifferBetweenLevelsStreamsAndSeeds) {
   const std::uint32_t n = 50;  // two equal permutations by chance: 1 in 50! ~ 3e64
-  const auto base = latin_hypercube_permutation(seed, 1, 0, n);
+  const auto base = latin_hypercube_permutation(kDesignsSeed, 1, 0, n);
   EXPECT_NE(base, identity(n));
-  EXPECT_NE(latin_hypercube_permutation(seed, 1, 1, n), base);
-  EXPECT_NE(latin_hypercube_permutation(seed, 2, 0, n), base);
-  EXPECT_NE(latin_hypercube_permutation(seed + 1, 1, 0, n), base);
-  EXPECT_EQ(latin_hypercube_permutation(seed, 1, 0, n), base);
+  EXPECT_NE(latin_hypercube_permutation(kDesignsSeed, 1, 1, n), base);
+  EXPECT_NE(latin_hypercube_permutation(kDesignsSeed, 2, 0, n), base);
+  EXPECT_NE(latin_hypercube_permutation(kDesignsSeed + 1, 1, 0, n), base);
+  EXPECT_EQ(latin_hypercube_permutation(kDesignsSeed, 1, 0, n), base);
 }
 
 TEST(Designs, SingleSampleFunctionEqualsThePrecomputedLevel) {
   const std::vector<std::uint32_t> streams = {11u, stream_id("mu")};
   const std::uint32_t n = 64;
   for (std::uint64_t level = 0; level < 3; ++level) {
-    const LatinHypercubeLevel hypercube(seed, streams, level, n);
+    const LatinHypercubeLevel hypercube(kDesignsSeed, streams, level, n);
     for (std::size_t dimension = 0; dimension < streams.size(); ++dimension) {
       for (std::uint32_t j = 0; j < n; ++j) {
-        const double single = latin_hypercube_uniform(seed, streams[dimension], level, n, j);
+        const double single =
+            latin_hypercube_uniform(kDesignsSeed, streams[dimension], level, n, j);
         EXPECT_EQ(hypercube.uniform(dimension, j), single);
-        EXPECT_EQ(
-            design_uniform(Design::latin_hypercube, seed, streams[dimension], n, level * n + j),
-            single);
+        EXPECT_EQ(design_uniform(Design::latin_hypercube, kDesignsSeed, streams[dimension], n,
+                                 level * n + j),
+                  single);
       }
     }
   }
 }
 
 TEST(Designs, RefusesAnEmptyLevelAndOutOfRangeSamples) {
-  EXPECT_THROW(latin_hypercube_permutation(seed, 1, 0, 0), ContractViolation);
-  EXPECT_THROW(latin_hypercube_uniform(seed, 1, 0, 4, 4), ContractViolation);
-  const LatinHypercubeLevel hypercube(seed, {1u}, 0, 4);
+  EXPECT_THROW(latin_hypercube_permutation(kDesignsSeed, 1, 0, 0), ContractViolation);
+  EXPECT_THROW(latin_hypercube_uniform(kDesignsSeed, 1, 0, 4, 4), ContractViolation);
+  const LatinHypercubeLevel hypercube(kDesignsSeed, {1u}, 0, 4);
   EXPECT_THROW(hypercube.uniform(1, 0), ContractViolation);
   EXPECT_THROW(hypercube.uniform(0, 4), ContractViolation);
 }
 
 SamplingPlan example_plan(Design design) {
   SamplingPlan plan;
-  plan.seed = seed;
+  plan.seed = kDesignsSeed;
   plan.design = design;
   plan.samples_per_level = 20;
   plan.levels = 5;
