@@ -68,6 +68,30 @@ inline constexpr double kRestTolerance = 1e-13;
 // Two seat segments whose directions' cross product is within this of zero (and whose lines are
 // within the contact height) are on one line: a flat seat given as a polyline rounds to 1e-16.
 inline constexpr double kCollinearSine = 1e-12;
+// Two block edges at a vertex whose normals' nearness to the seat's upward direction differs by
+// less than this (times that direction's length) are equally near it: a tilt of the block by about
+// this much (rad) would swap them.
+inline constexpr double kEdgeNormalTie = 1e-6;
+// A seat point's rates along the two block edges at a vertex, below this fraction of the sum of the
+// contact velocities there, are the velocities' rounding: they say nothing about where it goes.
+inline constexpr double kSeatPointRateRounding = 1e-9;
+// A vertex this close to a seat's end (over R) may pass it, where its clearance becomes its
+// distance from the end.
+inline constexpr double kSeatEndMargin = 1e-9;
+// A seat point this close to a block edge's line (over R) may be on the edge: its distance's
+// sinusoid is not told from zero.
+inline constexpr double kSeatLineMargin = 1e-12;
+// A step's range of theta is widened by this (rad) either way where it asks whether a sinusoid's
+// minimum lies in it: rounding moves where the slope changes sign by a few ulps.
+inline constexpr double kThetaStepMarginRad = 1e-9;
+// A seat carries the block's weight at rest when a combination of its contacts' wrenches with
+// non-negative weights matches the weight to this, relative to the weight; two of its contacts'
+// unit normals this close (the sum of their components' differences) are one direction.
+inline constexpr double kCarriedWeightResidual = 1e-9;
+inline constexpr double kSameSeatNormal = 1e-12;
+// Two supports' unit normals this close (the length of their difference) are one direction where
+// the block's statics under water look for the lines it can slide along.
+inline constexpr double kSameSupportDirection = 1e-9;
 
 // --- Events: where a mode ends -------------------------------------------------------------------
 // A guard this close to zero when a mode starts is armed only once it has moved away: the event
