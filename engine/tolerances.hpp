@@ -33,6 +33,21 @@ inline constexpr double kPainleveMargin = 1e-6;
 // on the friction cone's edge, stick needing exactly mu V): a few hundred ulps of the values
 // compared, far below any physical difference.
 inline constexpr double kImpactRounding = 1e-12;
+// Relative to g: accelerations this close count as equal, forces this far outside their cones
+// as inside, in the contact problem between events. Loose enough for the drift of an integrated
+// state between events; a question asked of a state laid exactly on its contacts (where rest ends)
+// can ask it tighter (kRestTolerance).
+inline constexpr double kContactProblemTolerance = 1e-9;
+// Consistent choices of the contact problem whose results differ by less than this many of its
+// tolerances are the same motion (a statically indeterminate set's force distributions, a tie at a
+// friction cone's edge).
+inline constexpr double kSameContactResult = 1e3;
+// Relative to the fastest contact speed: a simultaneous impact's velocities this close count as
+// equal.
+inline constexpr double kImpactVelocityTolerance = 1e-9;
+// Halvings of the restitution coefficient that find the largest one whose simultaneous impact adds
+// no kinetic energy: 2^-30 of e, below 1e-9.
+inline constexpr int kRestitutionHalvings = 30;
 
 // --- A seat: contacts that drift, blocks that fall ----------------------------------------------
 // An active contact on a seat whose gap has drifted this far (over R) while its mode was
