@@ -130,6 +130,15 @@ inline bool reached(double t, double end) {
 // Rest ends where lambda is past a threshold by this much (in units of lambda), so the modes it
 // leads to see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
 inline constexpr double kOnsetMargin = 1e-12;
+// A search for a guard's crossing or a corner's landing stops after this many steps with the
+// bracket it has: a safeguard for a bracket that stops narrowing (a guard noisy at the tolerance).
+inline constexpr int kMaxBracketSteps = 200;
+// A corner's landing in closed-form flight is located to this relative accuracy (of 1 + its time
+// from the flight's start, s): two ulps, since its height is exact to rounding.
+inline constexpr double kLandingTimeTolerance = 4e-16;
+// An extremum of theta or x inside a step is located to this fraction of the step: they are flat
+// there, so a time error dt changes them by O(dt^2).
+inline constexpr double kStateExtremumTimeTolerance = 1e-8;
 // A fixed-step method that crosses an event retakes the step, ending this fraction of the
 // remainder past the located event.
 inline constexpr double kRetakeOvershoot = 0.01;
@@ -142,6 +151,11 @@ inline constexpr double kStepsPerPieceTimeScale = 16.0;
 inline constexpr double kRestChecksPerTimeScale = 64.0;
 // No step is longer than half the block's time scale sqrt(R/g).
 inline constexpr double kMaxStepOverBlockTime = 0.5;
+// The adaptive stepper fails a step shorter than this many ulps of t (it cannot usefully be
+// shorter) or after this many consecutive rejections (each shrinks the step by at least 10%: a
+// controller that needs more is not converging).
+inline constexpr double kMinStepUlps = 16.0;
+inline constexpr int kMaxConsecutiveRejections = 100;
 // The closed-form landing search in flight steps at least this (over sqrt(R/g)).
 inline constexpr double kFlightMinStep = 1e-4;
 // A corner that starts a flight at the ground may sink this far (over R) before it is seen landing
