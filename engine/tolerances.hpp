@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace blockfrag {
 
@@ -171,6 +172,23 @@ inline constexpr double kLandingSinkAllowance = 1e-12;
 inline constexpr double kExtremumCellsPerPeriod = 64.0;
 inline constexpr double kNegligibleExtremumPair = 1e-15;
 inline constexpr double kSlopeZeroTolerance = 1e-12;
+// A dam's crest history has this many nodes per period of the fastest thing it carries (the
+// foundation's oscillation or the dam's own ringing): a sinusoid drawn linearly between nodes h
+// apart errs by at most (omega h)^2 / 8 of its amplitude, 5e-4 at 100 nodes per period. The same
+// bound covers sampling a smooth foundation piece as linear segments for the filter.
+inline constexpr double kCrestNodesPerPeriod = 100.0;
+
+// --- Intensity measures (engine/motion/intensity_measures.hpp) -----------------------------------
+// The D5-95 crossings are located to this fraction of their piece's length (a cubic or a closed
+// form bisected): below any sampling interval of a record or period of a pulse.
+inline constexpr double kDurationCrossingTolerance = 1e-12;
+// An extremum of the oscillator's u inside a step is located to this fraction of the step: u is
+// flat there, so a time off by delta changes u by |u''| delta^2 / 2, with |u''| = |a + omega^2 u|
+// at the extremum: at most 2e-21 (1 + PGA / Sa) of |u| with h = T / 100.
+inline constexpr double kSpectrumExtremumTimeTolerance = 1e-9;
+// A maximum and a minimum of the ground velocity this close (over the pulse's velocity scale,
+// peak |lambda| g / omega) are one flat point: far below every other error here.
+inline constexpr double kNegligibleVelocityPair = 1e-15;
 
 // --- Rounding: comparisons of values computed two ways -------------------------------------------
 // A history row due at time t belongs to the step that ends within this relative distance of t.
@@ -178,6 +196,10 @@ inline constexpr double kOutputTimeRounding = 1e-15;
 // A record resampled onto a step grid keeps a last sample within this relative distance of a grid
 // point; a given pulse start t0 within this of its lower bound is at the bound.
 inline constexpr double kGridRounding = 1e-12;
+// A record's sample time within this relative distance (of the larger of it and the step) of a
+// multiple of a fixed step is on that step's grid: the times' decimal digits carry rounding, and
+// RK4 steps the record without resampling it.
+inline constexpr double kStepGridRounding = 1e-9;
 
 // --- Settling: the run without a duration -------------------------------------------------------
 // A run that has not settled stops this long after the last excitation ends (unless the scene
@@ -196,6 +218,12 @@ inline constexpr long kDefaultMaxEvents = 1'000'000;
 // The step budget is checked every this many steps (and at every event): a power of two minus
 // one, masked.
 inline constexpr long kBudgetCheckMask = 1023;
+// Sa's steps (period / 100 each) before it refuses a motion (InvalidInput): a few seconds of work.
+// A 10 ms oscillator under a 100 s record takes a million.
+inline constexpr long kMaxSpectrumSteps = 200'000'000;
+// Too many nodes would exhaust memory before the block moves: a dam period far shorter than the
+// scene's duration (period / 100 per node) is refused with InvalidInput.
+inline constexpr std::size_t kMaxCrestNodes = 2'000'000;
 // Contact changes within this (s, relative to 1 + t) are at one instant: a block held by several
 // contacts, whose forces the contact problem cannot tell apart, can flip between its equally valid
 // force distributions 4e-11 s apart, each a new time, at a millisecond of CPU each. Most such
