@@ -172,6 +172,10 @@ inline constexpr double kLandingSinkAllowance = 1e-12;
 inline constexpr double kExtremumCellsPerPeriod = 64.0;
 inline constexpr double kNegligibleExtremumPair = 1e-15;
 inline constexpr double kSlopeZeroTolerance = 1e-12;
+// A cell is proved empty of zeros only where its ends' values exceed by this factor (beside their
+// round-off) what the slope's bound lets them reach: a bound that is attained must not prove too
+// much.
+inline constexpr double kSlopeBoundFactor = 1.001;
 // A dam's crest history has this many nodes per period of the fastest thing it carries (the
 // foundation's oscillation or the dam's own ringing): a sinusoid drawn linearly between nodes h
 // apart errs by at most (omega h)^2 / 8 of its amplitude, 5e-4 at 100 nodes per period. The same
