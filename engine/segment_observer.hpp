@@ -72,10 +72,9 @@ class SegmentObserver {
                         double BlockState::*rate) {
     const double sign = rate0 > 0 ? 1.0 : -1.0;
     const auto f = [&](double t) { return sign * (state_at(t).*rate); };
-    // theta and x are flat at the extremum: a time error dt changes them by O(dt^2), so 1e-8 of
-    // the step is ample; and a tolerance below a few ulps of t could never be met.
-    const double tolerance =
-        std::max(1e-8 * (t1 - t0), 8 * std::numeric_limits<double>::epsilon() * std::abs(t1));
+    // A tolerance below a few ulps of t could never be met.
+    const double tolerance = std::max(kStateExtremumTimeTolerance * (t1 - t0),
+                                      8 * std::numeric_limits<double>::epsilon() * std::abs(t1));
     const Bracket at = locate_crossing(f, t0, t1, f(t0), f(t1), tolerance);
     observe_state(state_at(at.after));
   }

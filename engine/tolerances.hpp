@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace blockfrag {
 
@@ -33,6 +34,21 @@ inline constexpr double kPainleveMargin = 1e-6;
 // on the friction cone's edge, stick needing exactly mu V): a few hundred ulps of the values
 // compared, far below any physical difference.
 inline constexpr double kImpactRounding = 1e-12;
+// Relative to g: accelerations this close count as equal, forces this far outside their cones
+// as inside, in the contact problem between events. Loose enough for the drift of an integrated
+// state between events; a question asked of a state laid exactly on its contacts (where rest ends)
+// can ask it tighter (kRestTolerance).
+inline constexpr double kContactProblemTolerance = 1e-9;
+// Consistent choices of the contact problem whose results differ by less than this many of its
+// tolerances are the same motion (a statically indeterminate set's force distributions, a tie at a
+// friction cone's edge).
+inline constexpr double kSameContactResult = 1e3;
+// Relative to the fastest contact speed: a simultaneous impact's velocities this close count as
+// equal.
+inline constexpr double kImpactVelocityTolerance = 1e-9;
+// Halvings of the restitution coefficient that find the largest one whose simultaneous impact adds
+// no kinetic energy: 2^-30 of e, below 1e-9.
+inline constexpr int kRestitutionHalvings = 30;
 
 // --- A seat: contacts that drift, blocks that fall ----------------------------------------------
 // An active contact on a seat whose gap has drifted this far (over R) while its mode was
@@ -68,6 +84,30 @@ inline constexpr double kRestTolerance = 1e-13;
 // Two seat segments whose directions' cross product is within this of zero (and whose lines are
 // within the contact height) are on one line: a flat seat given as a polyline rounds to 1e-16.
 inline constexpr double kCollinearSine = 1e-12;
+// Two block edges at a vertex whose normals' nearness to the seat's upward direction differs by
+// less than this (times that direction's length) are equally near it: a tilt of the block by about
+// this much (rad) would swap them.
+inline constexpr double kEdgeNormalTie = 1e-6;
+// A seat point's rates along the two block edges at a vertex, below this fraction of the sum of the
+// contact velocities there, are the velocities' rounding: they say nothing about where it goes.
+inline constexpr double kSeatPointRateRounding = 1e-9;
+// A vertex this close to a seat's end (over R) may pass it, where its clearance becomes its
+// distance from the end.
+inline constexpr double kSeatEndMargin = 1e-9;
+// A seat point this close to a block edge's line (over R) may be on the edge: its distance's
+// sinusoid is not told from zero.
+inline constexpr double kSeatLineMargin = 1e-12;
+// A step's range of theta is widened by this (rad) either way where it asks whether a sinusoid's
+// minimum lies in it: rounding moves where the slope changes sign by a few ulps.
+inline constexpr double kThetaStepMarginRad = 1e-9;
+// A seat carries the block's weight at rest when a combination of its contacts' wrenches with
+// non-negative weights matches the weight to this, relative to the weight; two of its contacts'
+// unit normals this close (the sum of their components' differences) are one direction.
+inline constexpr double kCarriedWeightResidual = 1e-9;
+inline constexpr double kSameSeatNormal = 1e-12;
+// Two supports' unit normals this close (the length of their difference) are one direction where
+// the block's statics under water look for the lines it can slide along.
+inline constexpr double kSameSupportDirection = 1e-9;
 
 // --- Events: where a mode ends -------------------------------------------------------------------
 // A guard this close to zero when a mode starts is armed only once it has moved away: the event
@@ -91,6 +131,15 @@ inline bool reached(double t, double end) {
 // Rest ends where lambda is past a threshold by this much (in units of lambda), so the modes it
 // leads to see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
 inline constexpr double kOnsetMargin = 1e-12;
+// A search for a guard's crossing or a corner's landing stops after this many steps with the
+// bracket it has: a safeguard for a bracket that stops narrowing (a guard noisy at the tolerance).
+inline constexpr int kMaxBracketSteps = 200;
+// A corner's landing in closed-form flight is located to this relative accuracy (of 1 + its time
+// from the flight's start, s): two ulps, since its height is exact to rounding.
+inline constexpr double kLandingTimeTolerance = 4e-16;
+// An extremum of theta or x inside a step is located to this fraction of the step: they are flat
+// there, so a time error dt changes them by O(dt^2).
+inline constexpr double kStateExtremumTimeTolerance = 1e-8;
 // A fixed-step method that crosses an event retakes the step, ending this fraction of the
 // remainder past the located event.
 inline constexpr double kRetakeOvershoot = 0.01;
@@ -103,6 +152,11 @@ inline constexpr double kStepsPerPieceTimeScale = 16.0;
 inline constexpr double kRestChecksPerTimeScale = 64.0;
 // No step is longer than half the block's time scale sqrt(R/g).
 inline constexpr double kMaxStepOverBlockTime = 0.5;
+// The adaptive stepper fails a step shorter than this many ulps of t (it cannot usefully be
+// shorter) or after this many consecutive rejections (each shrinks the step by at least 10%: a
+// controller that needs more is not converging).
+inline constexpr double kMinStepUlps = 16.0;
+inline constexpr int kMaxConsecutiveRejections = 100;
 // The closed-form landing search in flight steps at least this (over sqrt(R/g)).
 inline constexpr double kFlightMinStep = 1e-4;
 // A corner that starts a flight at the ground may sink this far (over R) before it is seen landing
@@ -118,6 +172,27 @@ inline constexpr double kLandingSinkAllowance = 1e-12;
 inline constexpr double kExtremumCellsPerPeriod = 64.0;
 inline constexpr double kNegligibleExtremumPair = 1e-15;
 inline constexpr double kSlopeZeroTolerance = 1e-12;
+// A cell is proved empty of zeros only where its ends' values exceed by this factor (beside their
+// round-off) what the slope's bound lets them reach: a bound that is attained must not prove too
+// much.
+inline constexpr double kSlopeBoundFactor = 1.001;
+// A dam's crest history has this many nodes per period of the fastest thing it carries (the
+// foundation's oscillation or the dam's own ringing): a sinusoid drawn linearly between nodes h
+// apart errs by at most (omega h)^2 / 8 of its amplitude, 5e-4 at 100 nodes per period. The same
+// bound covers sampling a smooth foundation piece as linear segments for the filter.
+inline constexpr double kCrestNodesPerPeriod = 100.0;
+
+// --- Intensity measures (engine/motion/intensity_measures.hpp) -----------------------------------
+// The D5-95 crossings are located to this fraction of their piece's length (a cubic or a closed
+// form bisected): below any sampling interval of a record or period of a pulse.
+inline constexpr double kDurationCrossingTolerance = 1e-12;
+// An extremum of the oscillator's u inside a step is located to this fraction of the step: u is
+// flat there, so a time off by delta changes u by |u''| delta^2 / 2, with |u''| = |a + omega^2 u|
+// at the extremum: at most 2e-21 (1 + PGA / Sa) of |u| with h = T / 100.
+inline constexpr double kSpectrumExtremumTimeTolerance = 1e-9;
+// A maximum and a minimum of the ground velocity this close (over the pulse's velocity scale,
+// peak |lambda| g / omega) are one flat point: far below every other error here.
+inline constexpr double kNegligibleVelocityPair = 1e-15;
 
 // --- Rounding: comparisons of values computed two ways -------------------------------------------
 // A history row due at time t belongs to the step that ends within this relative distance of t.
@@ -125,6 +200,10 @@ inline constexpr double kOutputTimeRounding = 1e-15;
 // A record resampled onto a step grid keeps a last sample within this relative distance of a grid
 // point; a given pulse start t0 within this of its lower bound is at the bound.
 inline constexpr double kGridRounding = 1e-12;
+// A record's sample time within this relative distance (of the larger of it and the step) of a
+// multiple of a fixed step is on that step's grid: the times' decimal digits carry rounding, and
+// RK4 steps the record without resampling it.
+inline constexpr double kStepGridRounding = 1e-9;
 
 // --- Settling: the run without a duration -------------------------------------------------------
 // A run that has not settled stops this long after the last excitation ends (unless the scene
@@ -143,6 +222,12 @@ inline constexpr long kDefaultMaxEvents = 1'000'000;
 // The step budget is checked every this many steps (and at every event): a power of two minus
 // one, masked.
 inline constexpr long kBudgetCheckMask = 1023;
+// Sa's steps (period / 100 each) before it refuses a motion (InvalidInput): a few seconds of work.
+// A 10 ms oscillator under a 100 s record takes a million.
+inline constexpr long kMaxSpectrumSteps = 200'000'000;
+// Too many nodes would exhaust memory before the block moves: a dam period far shorter than the
+// scene's duration (period / 100 per node) is refused with InvalidInput.
+inline constexpr std::size_t kMaxCrestNodes = 2'000'000;
 // Contact changes within this (s, relative to 1 + t) are at one instant: a block held by several
 // contacts, whose forces the contact problem cannot tell apart, can flip between its equally valid
 // force distributions 4e-11 s apart, each a new time, at a millisecond of CPU each. Most such

@@ -17,9 +17,6 @@ namespace blockfrag {
 
 namespace {
 
-// Consistent choices whose results differ by less than this many tolerances are the same motion
-// (a statically indeterminate set's force distributions, a tie at a friction cone's edge).
-constexpr double kSameResult = 1e3;
 // More contacts than this would make trying every choice (4^n) too slow to be exact.
 constexpr std::size_t kMaxContacts = 6;
 
@@ -256,7 +253,7 @@ LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search) {
     if (!solution) continue;
     if (consistent == 0) {
       chosen = *solution;
-    } else if (difference(p, solution->change, chosen.change) > kSameResult * p.tolerance) {
+    } else if (difference(p, solution->change, chosen.change) > kSameContactResult * p.tolerance) {
       differ = true;
     }
     ++consistent;

@@ -8,6 +8,7 @@
 #include "engine/contact/body_load.hpp"
 #include "engine/contact/impact.hpp"
 #include "engine/scene/block_geometry.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -62,11 +63,6 @@ enum class Determinacy { unique, indeterminate, inconsistent };
 // first_consistent: the same choice without looking further (its determinacy says only whether
 // one was found), for questions the choice alone answers, such as whether a body stays at rest.
 enum class LcpSearch { every_choice, first_consistent };
-
-// Relative to g: accelerations this close count as equal, forces this far outside their cones
-// as inside. Loose enough for the drift of an integrated state between events; a question asked
-// of a state laid exactly on its contacts (where rest ends) can ask it tighter.
-inline constexpr double kContactProblemTolerance = 1e-9;
 
 struct PlanarForcesInput {
   std::vector<PlanarContact> contacts;  // touching, normal velocity zero

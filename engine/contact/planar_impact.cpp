@@ -5,14 +5,11 @@
 #include <cstddef>
 
 #include "engine/contact/contact_lcp.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
 namespace {
-
-// Relative to the fastest contact speed: velocities this close count as equal.
-constexpr double kImpactTolerance = 1e-9;
-constexpr int kRestitutionHalvings = 30;
 
 double kinetic(const RigidVelocity& v, const BodyInertia& inertia) {
   return 0.5 * inertia.twice_kinetic(v);
@@ -32,7 +29,7 @@ PlanarImpact newton_impact(const PlanarImpactInput& in, double e) {
     const ContactVelocity u = contact_velocity(c, in.velocity);
     fastest = std::max({fastest, std::abs(u.normal), std::abs(u.tangent)});
   }
-  LcpProblem problem{{}, in.inertia, in.friction, kImpactTolerance * fastest, in.length};
+  LcpProblem problem{{}, in.inertia, in.friction, kImpactVelocityTolerance * fastest, in.length};
   for (const PlanarContact& c : in.contacts) {
     const ContactVelocity u = contact_velocity(c, in.velocity);
     problem.contacts.push_back({contact_row(c, c.normal), contact_row(c, contact_tangent(c)),

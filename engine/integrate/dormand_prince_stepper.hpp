@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "engine/integrate/ode_state.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -110,10 +111,6 @@ class DormandPrinceStepper {
   static constexpr double kBeta = 0.04;
   static constexpr double kExponent = 0.2 - 0.75 * kBeta;
   static constexpr double kLogMinErrorMemory = -9.210340371976184;  // ln(1e-4), as DOPRI5
-  // A step cannot usefully be shorter than a few ulps of t; a controller that needs more than this
-  // many consecutive rejections (each shrinks the step by at least 10%) is not converging either.
-  static constexpr double kMinStepUlps = 16.0;
-  static constexpr int kMaxConsecutiveRejections = 100;
 
   static constexpr double kC2 = 1.0 / 5.0, kC3 = 3.0 / 10.0, kC4 = 4.0 / 5.0, kC5 = 8.0 / 9.0;
   static constexpr double kA21 = 1.0 / 5.0;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/tolerances.hpp"
+
 namespace blockfrag {
 
 struct Bracket {
@@ -25,7 +27,7 @@ Bracket locate_crossing(F&& f, double a, double b, double fa, double fb, double 
                         double value_tolerance = 0.0) {
   int side = 0, without_halving = 0;
   double last_halving_width = b - a;
-  for (int iteration = 0; iteration < 200 && b - a > time_tolerance; ++iteration) {
+  for (int iteration = 0; iteration < kMaxBracketSteps && b - a > time_tolerance; ++iteration) {
     const double inside = std::max(0.5 * time_tolerance, 0.01 * (b - a));
     double c = 0.5 * (a + b);
     if (without_halving < 4 && fa != fb) {

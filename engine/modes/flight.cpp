@@ -57,7 +57,7 @@ double parabola_step(const CornerHeight::Sample& s, double acceleration, double 
 double locate_landing(const CornerHeight& h, double lo, double hi, CornerHeight::Sample s,
                       double time_tolerance, double height_noise) {
   double x = lo;
-  for (int iteration = 0; iteration < 200 && hi - lo > time_tolerance; ++iteration) {
+  for (int iteration = 0; iteration < kMaxBracketSteps && hi - lo > time_tolerance; ++iteration) {
     const double inside = 0.5 * time_tolerance;
     double next = x + parabola_step(s, h.acceleration(s), lo - x, hi - x);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -159,7 +159,7 @@ std::optional<double> first_landing(const BlockGeometry& geometry, const FlightS
     const CornerHeight h{geometry, f, g, corner};
     const CornerHeight::Sample now = k < 2 ? base[static_cast<std::size_t>(corner)] : h.at(0.0);
     const double limit = first < kNoLanding ? first : tau_max;
-    const double tolerance = 4e-16 * (1.0 + limit);
+    const double tolerance = kLandingTimeTolerance * (1.0 + limit);
     // A corner's height is y plus an arm of size R: its rounding error is a few ulps of their sum.
     const double height_noise =
         4 * std::numeric_limits<double>::epsilon() * (std::abs(f.y) + geometry.size());

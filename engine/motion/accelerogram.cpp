@@ -33,7 +33,7 @@ double peak_acceleration_g(const Accelerogram& record) {
 bool on_step_grid(const Accelerogram& record, double step) {
   return std::all_of(record.times.begin(), record.times.end(), [step](double t) {
     const double k = std::round(t / step);
-    return std::abs(t - k * step) <= 1e-9 * std::max(t, step);
+    return std::abs(t - k * step) <= kStepGridRounding * std::max(t, step);
   });
 }
 

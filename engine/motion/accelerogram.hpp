@@ -19,7 +19,7 @@ void check_accelerogram(const Accelerogram& record);
 // max |a| in g: the peak ground acceleration.
 double peak_acceleration_g(const Accelerogram& record);
 
-// Whether every sample time is a multiple of step, to a relative 1e-9.
+// Whether every sample time is a multiple of step, to a relative kStepGridRounding.
 bool on_step_grid(const Accelerogram& record, double step);
 
 // The record's piecewise-linear a(t) (zero before the first sample) sampled at k step for every

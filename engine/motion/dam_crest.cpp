@@ -17,12 +17,6 @@ namespace {
 constexpr double kMetresPerFoot = 0.3048;
 constexpr double kPascalsPerPsi = 6894.757293168361;  // 1 lbf / in^2
 
-// Nodes per period of the fastest thing the crest carries (the foundation's oscillation or the
-// dam's own ringing): a sinusoid drawn linearly between nodes h apart errs by at most
-// (omega h)^2 / 8 of its amplitude, 5e-4 at 100 nodes per period. The same bound covers sampling
-// a smooth foundation piece as linear segments for the filter.
-constexpr double kNodesPerPeriod = 100.0;
-
 // Below this omega h the closed-form coefficients lose more digits to cancellation (terms of size
 // 1 / (omega^2 h) cancel down to h) than a third-order Taylor step loses to truncation
 // ((omega h)^3): about 2e-12 against 2e-13 of the state's scale here.
@@ -32,7 +26,7 @@ constexpr double kTaylorBelow = 1e-4;
 
 PieceGrid piece_grid(const MotionPiece& piece, double duration, double period) {
   const double end = std::min(piece.end(), duration);
-  const double max_step = std::min(period, piece.time_scale()) / kNodesPerPeriod;
+  const double max_step = std::min(period, piece.time_scale()) / kCrestNodesPerPeriod;
   const long steps = std::max(1L, static_cast<long>(std::ceil((end - piece.start()) / max_step)));
   return {&piece, piece.start(), end, steps};
 }

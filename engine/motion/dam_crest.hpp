@@ -82,14 +82,10 @@ struct CrestHistory {
   std::vector<double> crest_lambda;             // -a_crest / g
 };
 
-// Too many nodes would exhaust memory before the block moves: a dam period far shorter than the
-// scene's duration (period / 100 per node) is refused with InvalidInput.
-constexpr std::size_t kMaxCrestNodes = 2'000'000;
-
 // The nodes of the crest history up to `duration` under a dam of this period, counted without
 // building it (a ringing crest followed until_quiet may stop earlier, but is refused on this count
 // all the same): a config reader decides with it, before any work, what dam_crest_history would
-// refuse.
+// refuse (more nodes than kMaxCrestNodes, engine/tolerances.hpp).
 std::size_t dam_crest_nodes(const GroundMotionPieces& foundation, double period, double duration);
 
 // Up to `duration`; with until_quiet, the history ends earlier once the foundation has stopped

@@ -176,7 +176,7 @@ void for_each_moving_piece(const GroundMotionPieces& motion, Visit&& visit) {
 // most the piece's whole integral: it grows with t, so bisection keeps the first crossing.
 double arias_crossing(const MotionPiece& piece, double needed) {
   double low = piece.start(), high = piece.end();
-  const double width = kCrossingTolerance * (high - low);
+  const double width = kDurationCrossingTolerance * (high - low);
   while (high - low > width) {
     const double mid = 0.5 * (low + high);
     if (mid <= low || mid >= high) break;  // adjacent doubles
@@ -258,7 +258,7 @@ std::vector<double> step_extrema(double omega, double zeta, double h, double a0,
   // The zero of f in (low, high), where f changes sign, by bisection. The sign at low is given:
   // at tau = 0 the step would have length 0, which Nigam-Jennings cannot take.
   const auto zero_of = [&](auto&& f, double low, double high, bool low_positive) {
-    while (high - low > kExtremumTimeTolerance * h) {
+    while (high - low > kSpectrumExtremumTimeTolerance * h) {
       const double mid = 0.5 * (low + high);
       if (mid <= low || mid >= high) break;
       ((f(mid) > 0.0) == low_positive ? low : high) = mid;

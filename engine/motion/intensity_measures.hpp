@@ -19,7 +19,8 @@
 // - D5-95 (Trifunac & Brady 1975): the Arias integral of a^2 is in closed form per piece too (a
 //   linear piece's is a cubic, a cosine's t/2 + sin(2 theta)/(4 omega), a Ricker wavelet's an erf
 //   and a Gaussian, a Mavroeidis-Papageorgiou pulse's three squares and three products of sines);
-//   the 5 % and 95 % crossings are bisected inside their piece to kCrossingTolerance of its length.
+//   the 5 % and 95 % crossings are bisected inside their piece to kDurationCrossingTolerance of its
+//   length.
 // - Sa. The oscillator u'' + 2 zeta omega u' + omega^2 u = -a(t), from rest, is stepped with
 //   NigamJenningsStep (engine/motion/dam_crest.hpp, exact when a is linear over the step) on the
 //   dam filter's grid (piece_grid): steps of at most min(T, the piece's time scale) / 100, so a
@@ -33,10 +34,10 @@
 //   and u' has at most one extremum there. So u' has one zero where it changes sign over the step,
 //   two where it keeps its sign but its extremum (u'' = 0, located first) has the other sign, and
 //   none otherwise; each zero is located by bisection with the exact solution over part of the
-//   step, to kExtremumTimeTolerance of the step, where u is flat to round-off. After the motion
-//   ends the oscillator rings freely: its largest |u| from then on is at the end or at its first
-//   extremum after it (closed form, one Nigam-Jennings step of a = 0; each later extremum is the
-//   one before times exp(-zeta omega T_d / 2) <= 1), however long the ringing takes.
+//   step, to kSpectrumExtremumTimeTolerance of the step, where u is flat to round-off. After the
+//   motion ends the oscillator rings freely: its largest |u| from then on is at the end or at its
+//   first extremum after it (closed form, one Nigam-Jennings step of a = 0; each later extremum is
+//   the one before times exp(-zeta omega T_d / 2) <= 1), however long the ringing takes.
 #pragma once
 
 #include <vector>
@@ -45,6 +46,7 @@
 #include "engine/motion/dam_crest.hpp"
 #include "engine/motion/ground_motion.hpp"
 #include "engine/scene/parameter_domains.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -52,21 +54,6 @@ namespace blockfrag {
 inline constexpr Domain kSpectralPeriodDomain{0.0, 10.0, false, true, "s"};
 // Its damping, of critical: the Nigam-Jennings step is for underdamped oscillators only.
 inline constexpr Domain kSpectralDampingDomain{0.0, 1.0, true, false, ""};
-
-// Sa's steps (period / 100 each) before it refuses a motion (InvalidInput): a few seconds of work.
-// A 10 ms oscillator under a 100 s record takes a million.
-inline constexpr long kMaxSpectrumSteps = 200'000'000;
-
-// The D5-95 crossings are located to this fraction of their piece's length (a cubic or a closed
-// form bisected): below any sampling interval of a record or period of a pulse.
-inline constexpr double kCrossingTolerance = 1e-12;
-// An extremum of u inside a step is located to this fraction of the step: u is flat there, so a
-// time off by delta changes u by |u''| delta^2 / 2, with |u''| = |a + omega^2 u| at the extremum:
-// at most 2e-21 (1 + PGA / Sa) of |u| with h = T / 100.
-inline constexpr double kExtremumTimeTolerance = 1e-9;
-// A maximum and a minimum of the ground velocity this close (over the pulse's velocity scale,
-// peak |lambda| g / omega) are one flat point: far below every other error here.
-inline constexpr double kNegligibleVelocityPair = 1e-15;
 
 // max |lambda|, in g: the peak ground acceleration.
 double peak_ground_acceleration_g(const GroundMotionPieces& motion);
@@ -85,8 +72,8 @@ double spectral_acceleration_g(const GroundMotionPieces& motion, double period, 
 
 // The times in (0, h) where u' = 0 over one step of the oscillator (omega = 2 pi / T, damping
 // zeta) with a linear from a0 to a1, from the state `start` to `end` (the step's Nigam-Jennings
-// result): the extremes of u between the nodes, in order, each to kExtremumTimeTolerance of h. The
-// step must be shorter than T_d / 2 (above: u'' then changes sign at most once in it).
+// result): the extremes of u between the nodes, in order, each to kSpectrumExtremumTimeTolerance of
+// h. The step must be shorter than T_d / 2 (above: u'' then changes sign at most once in it).
 std::vector<double> step_extrema(double omega, double zeta, double h, double a0, double a1,
                                  const OscillatorState& start, const OscillatorState& end);
 

@@ -43,7 +43,7 @@ struct ZeroSearch {
 
   // A zero z in [a, b] needs |f(a)| <= bound (z - a) and |f(b)| <= bound (b - z).
   void cell(double a, double fa, double b, double fb) const {
-    if (std::abs(fa) + std::abs(fb) > 1.001 * slope_bound * (b - a) + slack) return;
+    if (std::abs(fa) + std::abs(fb) > kSlopeBoundFactor * slope_bound * (b - a) + slack) return;
     const bool crosses = (fa > 0.0) != (fb > 0.0);
     if (b - a <= min_width) {
       if (crosses) zeros.push_back(bisect(a, fa, b));

@@ -20,7 +20,7 @@ double run_end_time(const Scene& scene, const GroundMotionPieces& motion,
                     const GroundMotionPieces& vertical);
 
 // The crest history a scene's run needs: its nodes, which scene_motion refuses beyond
-// kMaxCrestNodes (engine/motion/dam_crest.hpp), and the time it covers (s). None without a dam.
+// kMaxCrestNodes (engine/tolerances.hpp), and the time it covers (s). None without a dam.
 struct CrestExtent {
   std::size_t nodes = 0;
   double horizon = 0.0;

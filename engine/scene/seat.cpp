@@ -11,16 +11,11 @@
 #include "engine/errors.hpp"
 #include "engine/number_text.hpp"
 #include "engine/scene/block_geometry.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
 namespace {
-
-// The weight is carried when a combination of the contacts' wrenches with non-negative weights
-// matches it to this, relative to the weight.
-constexpr double kCarriedResidual = 1e-9;
-// Two unit normals this close are the same direction.
-constexpr double kSameNormal = 1e-12;
 
 struct Point {
   double x, y;
@@ -95,7 +90,7 @@ bool weight_carried(const std::vector<RestContact>& contacts, Point centroid, do
     const double moment = cross(minus(at(c.point), centroid), at(c.normal)) / length;
     const auto same = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
       return std::abs(g.normal[0] - c.normal[0]) + std::abs(g.normal[1] - c.normal[1]) <=
-             kSameNormal;
+             kSameSeatNormal;
     });
     if (same == groups.end()) {
       groups.push_back({c.normal, moment, moment});
@@ -118,7 +113,8 @@ bool weight_carried(const std::vector<RestContact>& contacts, Point centroid, do
       a.col(static_cast<Eigen::Index>(k)) << c.normal[0], c.normal[1], c.moment;
     }
     const Eigen::VectorXd push = a.colPivHouseholderQr().solve(weight);
-    return push.minCoeff() >= -kCarriedResidual && (a * push - weight).norm() <= kCarriedResidual;
+    return push.minCoeff() >= -kCarriedWeightResidual &&
+           (a * push - weight).norm() <= kCarriedWeightResidual;
   };
   for (std::size_t i = 0; i < n; ++i) {
     if (fits({i})) return true;

@@ -18,11 +18,6 @@ Vec2 minus(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
 double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
-// Two block edges at a vertex whose normals' nearness to the seat's upward direction differs by
-// less than this (times that direction's length) are equally near it: a tilt of the block by about
-// this much (rad) would swap them.
-constexpr double kNormalTie = 1e-6;
-
 // The segment from a to b: its unit direction, its left normal (up for a seat segment, inward
 // for a counter-clockwise block's edge) and its length.
 struct SegmentFrame {
@@ -180,7 +175,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
         const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
         // How much nearer the seat's upward direction this edge's normal is than the other's.
         const double nearer_up = dot(p.contact.normal, up) - dot(other.normal, up);
-        if (k == arrived && std::abs(nearer_up) <= kNormalTie * norm(up)) {
+        if (k == arrived && std::abs(nearer_up) <= kEdgeNormalTie * norm(up)) {
           // The normals do not tell the edges apart (the block's fold in the seat's fold, its two
           // edges symmetric about the seat's upward direction there): the point goes on along the
           // edge whose range it moves into (the block's base as the block slides over it), or,
@@ -191,8 +186,9 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
           // The point moves along an edge at minus the block's tangential velocity there; the
           // other edge meets this vertex at its other end.
           // Rates below the velocities' rounding say nothing.
-          const double noise = 1e-9 * (std::abs(here.tangent) + std::abs(there.tangent) +
-                                       std::abs(here.normal) + std::abs(there.normal));
+          const double noise =
+              kSeatPointRateRounding * (std::abs(here.tangent) + std::abs(there.tangent) +
+                                        std::abs(here.normal) + std::abs(there.normal));
           const bool enters_here = at_start ? here.tangent < -noise : here.tangent > noise;
           const bool enters_there = at_start ? there.tangent > noise : there.tangent < -noise;
           // Into both: the edge it moves more nearly along (a seat point at the joint of two

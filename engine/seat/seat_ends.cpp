@@ -11,17 +11,11 @@
 #include <utility>
 
 #include "engine/seat/seat_system.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
 namespace {
-
-// A vertex this close to a seat's end (times R) may pass it, where its clearance becomes its
-// distance from the end.
-constexpr double kEndMargin = 1e-9;
-// A seat point this close to a block edge's line (times R) may be on the edge: its distance's
-// sinusoid is not told from zero.
-constexpr double kLineMargin = 1e-12;
 
 // Where x lies against the seat's range: -1 past its first point, 0 over it, 1 past its last.
 int side_of(double x, const SeatContacts& seat) {
@@ -58,7 +52,7 @@ bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
                                          const HeightLeastAtEnds& height_least_at_ends) const {
   const SeatContacts& seat = *c_.contacts;
   const int last = seat.point_count() - 1;
-  const double margin = kEndMargin * length_scale();
+  const double margin = kSeatEndMargin * length_scale();
   if (!(x_lo >= seat.seat_point(0).x + margin && x_hi <= seat.seat_point(last).x - margin)) {
     return false;
   }
@@ -159,7 +153,7 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
 bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const {
   const SeatContacts& seat = *system_->c_.contacts;
   const double x_lo = step.least(vertex.x), x_hi = step.largest(vertex.x);
-  const double margin = kEndMargin * system_->length_scale();
+  const double margin = kSeatEndMargin * system_->length_scale();
   if (x_hi <= seat.seat_point(0).x - margin) return !step.holds_minimum(vertex.ends[0]);
   if (x_lo >= seat.seat_point(seat.point_count() - 1).x + margin) {
     return !step.holds_minimum(vertex.ends[1]);
@@ -180,7 +174,7 @@ bool PivotSweep::point_claim(const ThetaStep& step, const Point& point) const {
   for (const Sinusoid& corner : point.corners) {
     if (step.holds_minimum(corner)) return false;
   }
-  const double off = kLineMargin * system_->length_scale();
+  const double off = kSeatLineMargin * system_->length_scale();
   for (const Sinusoid& line : point.lines) {
     const double at_lo = line.at(step.lo()), at_hi = line.at(step.hi());
     const bool above = at_lo > off && at_hi > off, below = at_lo < -off && at_hi < -off;

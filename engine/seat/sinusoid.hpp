@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "engine/sine_cosine.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -20,19 +21,18 @@ struct Sinusoid {
   Sinusoid operator-() const { return {-c, -a, -b}; }
 };
 
-// A step's range of theta, [lo, hi], widened by kMargin (rad) either way where it asks whether a
-// sinusoid's minimum lies in it: rounding moves where the slope changes sign by a few ulps.
+// A step's range of theta, [lo, hi], widened by kThetaStepMarginRad either way where it asks
+// whether a sinusoid's minimum lies in it.
 class ThetaStep {
  public:
-  static constexpr double kMargin = 1e-9;
-
   ThetaStep(double lo, double hi)
       : lo_(sine_cosine(lo)),
         hi_(sine_cosine(hi)),
-        // sin and cos kMargin further out: cos(kMargin) is 1 and sin(kMargin) kMargin in doubles.
-        lo_wide_{lo_.sin - kMargin * lo_.cos, lo_.cos + kMargin * lo_.sin},
-        hi_wide_{hi_.sin + kMargin * hi_.cos, hi_.cos - kMargin * hi_.sin},
-        wide_(hi - lo + 2 * kMargin >= std::numbers::pi) {}
+        // sin and cos the margin further out: cos(margin) is 1 and sin(margin) the margin in
+        // doubles.
+        lo_wide_{lo_.sin - kThetaStepMarginRad * lo_.cos, lo_.cos + kThetaStepMarginRad * lo_.sin},
+        hi_wide_{hi_.sin + kThetaStepMarginRad * hi_.cos, hi_.cos - kThetaStepMarginRad * hi_.sin},
+        wide_(hi - lo + 2 * kThetaStepMarginRad >= std::numbers::pi) {}
 
   SineCosine lo() const { return lo_; }
   SineCosine hi() const { return hi_; }

@@ -22,8 +22,6 @@ namespace blockfrag {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// Two supports' unit normals this close are one direction.
-constexpr double kSameDirection = 1e-9;
 
 // A load split into its horizontal and vertical parts with their first moments (integrals of y dF_x
 // and of x dF_y), so the moment of either part about any point follows. Coordinates are about the
@@ -161,7 +159,8 @@ struct SlideLine {
 };
 
 bool on_line(const Support& s, const SlideLine& line, double tolerance) {
-  return std::hypot(s.normal[0] - line.normal[0], s.normal[1] - line.normal[1]) <= kSameDirection &&
+  return std::hypot(s.normal[0] - line.normal[0], s.normal[1] - line.normal[1]) <=
+             kSameSupportDirection &&
          std::abs(s.normal[0] * s.point[0] + s.normal[1] * s.point[1] - line.offset) <= tolerance;
 }
 

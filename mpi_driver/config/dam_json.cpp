@@ -7,6 +7,7 @@
 #include "engine/motion/dam_crest.hpp"
 #include "engine/motion/scene_motion.hpp"
 #include "engine/number_text.hpp"
+#include "engine/tolerances.hpp"
 #include "mpi_driver/config/scene_fields.hpp"
 
 namespace blockfrag {

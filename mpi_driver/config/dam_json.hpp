@@ -20,7 +20,7 @@ std::optional<DamCrest> read_dam(ObjectReader reader);
 nlohmann::json dam_to_json(const DamCrest& dam);
 
 // Why the scene's run cannot follow its dam's crest, if it cannot: the crest history it needs has
-// more than kMaxCrestNodes nodes (engine/motion/dam_crest.hpp: a dam period far shorter than the
+// more than kMaxCrestNodes nodes (engine/tolerances.hpp: a dam period far shorter than the
 // run), which the engine would refuse only once the run starts. For a valid scene.
 std::optional<std::string> crest_history_problem(const Scene& scene);
 
