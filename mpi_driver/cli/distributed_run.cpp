@@ -155,6 +155,12 @@ void abort_run(MPI_Comm comm, int rank, const std::exception& error) {
   std::abort();
 }
 
+int refuse_bad_input(MPI_Comm comm, int rank, const std::exception& error) {
+  if (rank == 0) std::cerr << error.what() << '\n' << std::flush;
+  MPI_Barrier(comm);
+  return exit_code_bad_input;
+}
+
 int finish_on_rank0(MPI_Comm comm, const std::function<int()>& finish) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

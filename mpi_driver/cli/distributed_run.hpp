@@ -57,6 +57,11 @@ int exit_code_for(const std::exception& error);
 // with the exit code of the error's kind.
 [[noreturn]] void abort_run(MPI_Comm comm, int rank, const std::exception& error);
 
+// Collective over comm: bad input found on every rank before any work. Rank 0 reports it on
+// stderr, then all ranks return exit code 2 together: mpirun aborts the job at the first
+// non-zero exit, which could otherwise kill rank 0 before its message is out.
+int refuse_bad_input(MPI_Comm comm, int rank, const std::exception& error);
+
 // Collective: rank 0 runs `finish` (writing the output) alone; whatever happens there, every rank
 // learns its exit code (a rank left waiting on the broadcast would hang the job), then rank 0
 // rethrows its error, to be reported the usual way.

@@ -67,9 +67,8 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
   StudyConfig config;
   try {
     config = read_study_config(options.study_path, {options.output, options.samples_per_level});
-  } catch (const InvalidInput&) {
-    if (rank == 0) throw;
-    return exit_code_bad_input;
+  } catch (const InvalidInput& error) {
+    return refuse_bad_input(comm, rank, error);
   }
 
   RunSettings settings;
@@ -88,8 +87,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
     return 0;
   }
   if (claim.verdict == OutputVerdict::refused) {
-    if (rank == 0) throw ConfigError({claim.message});
-    return exit_code_bad_input;
+    return refuse_bad_input(comm, rank, ConfigError({claim.message}));
   }
 
   const SceneEvaluator engine =
@@ -116,8 +114,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
       result = run_study_samples(comm, config, settings, engine);
     }
   } catch (const StudyMismatchError& error) {
-    if (rank == 0) throw ConfigError({error.what()});
-    return exit_code_bad_input;
+    return refuse_bad_input(comm, rank, ConfigError({error.what()}));
   } catch (const std::exception& error) {
     abort_run(comm, rank, error);
   }

@@ -67,9 +67,8 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
   SpectrumConfig config;
   try {
     config = read_spectrum_config(options.spectrum_path, options.output);
-  } catch (const InvalidInput&) {
-    if (rank == 0) throw;
-    return exit_code_bad_input;
+  } catch (const InvalidInput& error) {
+    return refuse_bad_input(comm, rank, error);
   }
 
   RunSettings settings;
@@ -90,8 +89,7 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
     return exit_code_success;
   }
   if (claim.verdict == OutputVerdict::refused) {
-    if (rank == 0) throw ConfigError({claim.message});
-    return exit_code_bad_input;
+    return refuse_bad_input(comm, rank, ConfigError({claim.message}));
   }
 
   const SceneEvaluator engine =
@@ -109,8 +107,7 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
   try {
     result = run_spectrum(comm, config, settings, files, engine);
   } catch (const StudyMismatchError& error) {
-    if (rank == 0) throw ConfigError({error.what()});
-    return exit_code_bad_input;
+    return refuse_bad_input(comm, rank, ConfigError({error.what()}));
   } catch (const std::exception& error) {
     abort_run(comm, rank, error);
   }
