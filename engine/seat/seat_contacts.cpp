@@ -46,6 +46,7 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
   double size = 0.0;
   for (const Vec2& r : body_) size = std::max(size, norm(r));
   straight_ = straight(kContactHeight * size);
+  end_depth_ = kContactHeight * size;
   // A seat point between two collinear segments cannot touch a block edge without a vertex of
   // that edge on the seat's line, where that vertex's own contact carries the block. Taken as a
   // contact, the joint under a block rocking down onto its far corner would touch (its gap within
@@ -218,10 +219,20 @@ void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) cons
   }
 }
 
+bool SeatContacts::under_end_segment(Vec2 p, bool last_end) const {
+  const std::size_t k = last_end ? segments_.size() - 1 : 0;
+  const Segment& segment = segments_[k];
+  // Only an end segment that leans away from its end has such points past its end's x.
+  const bool leans = last_end ? segment.direction.y > 0 : segment.direction.y < 0;
+  const Vec2 ap = minus(p, seat_[k]);
+  const double along = dot(segment.direction, ap);
+  return leans && dot(segment.normal, ap) < -end_depth_ && along >= 0 && along <= segment.length;
+}
+
 double SeatContacts::clearance_at(Vec2 p) const {
   const Vec2 first = seat_.front(), last = seat_.back();
-  if (p.x < first.x) return norm(minus(p, first));
-  if (p.x > last.x) return norm(minus(p, last));
+  if (p.x < first.x && !under_end_segment(p, false)) return norm(minus(p, first));
+  if (p.x > last.x && !under_end_segment(p, true)) return norm(minus(p, last));
   const auto right = std::upper_bound(seat_.begin() + 1, seat_.end() - 1, p.x,
                                       [](double x, const Vec2& v) { return x < v.x; });
   const Vec2 a = *(right - 1), b = *right;

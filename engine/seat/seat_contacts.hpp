@@ -86,6 +86,15 @@ class SeatContacts {
   // (off the line through its neighbours by more than the contact height).
   bool touches_edges(int k) const { return point_touches_edges_[static_cast<std::size_t>(k)]; }
 
+  // Whether p, past the first point's x (last_end false) or the last's, lies under the end
+  // segment's line (by more than the contact height) with its projection on that segment: where the
+  // segment leans away from its end (the type B seat's incline rising to its last point), that is
+  // the segment's contact region (SeatContacts::touching takes a vertex there on it). Taken as past
+  // the end, a vertex there would not be under the seat, and a block corner leaving the seat's
+  // corner tip to tip (the type B block's toe bouncing off the incline's top, landing 1e-8 m past
+  // it) would go down past it, its base edge crossing the incline with no vertex or seat point
+  // inside the other.
+  bool under_end_segment(Vec2 p, bool last_end) const;
   // Whether the seat's points lie on one line (a flat seat, within `tolerance` m).
   bool straight(double tolerance) const;
   // How far theta is from overturning (> 0 inside): on a straight seat the flat ground's rule (the
@@ -106,7 +115,9 @@ class SeatContacts {
   bool inside_block(int k, std::span<const Vec2> world) const;
 
   // How far block vertex i is above the seat (its height over the seat for x within the seat's
-  // ends, else its distance from the nearer end): <= 0 where it touches or is below.
+  // ends, else its distance from the nearer end): <= 0 where it touches or is below. A vertex past
+  // an end's x but under the end segment, its projection on that segment, is below: its height
+  // over the segment's line (see under_end_segment).
   double vertex_clearance(int i, const BlockState& s) const;
   // Seat point k's signed distance from the block's boundary: > 0 outside, < 0 inside.
   double point_clearance(int k, const BlockState& s) const;
@@ -128,6 +139,9 @@ class SeatContacts {
   std::vector<Segment> segments_;
   Vec2 centre_;
   bool straight_ = false;  // set from the block's size: see the constructor
+  // The contact height (m): a vertex at a seat's end, the type B block rocking on its toe there, is
+  // under the end segment's line or past its end by rounding only.
+  double end_depth_ = 0.0;
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
   TurnCache turn_;

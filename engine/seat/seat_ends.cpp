@@ -149,14 +149,24 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
 }
 
 // Over the seat, the vertex's clearance is its height over it; past an end, its distance from that
-// end, whose square is a sinusoid too.
+// end, whose square is a sinusoid too, while the vertex stays above the line of an end segment
+// that leans away from that end (under it, the clearance is the height over it:
+// SeatContacts::under_end_segment).
 bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const {
   const SeatContacts& seat = *system_->c_.contacts;
   const double x_lo = step.least(vertex.x), x_hi = step.largest(vertex.x);
   const double margin = kSeatEndMargin * system_->length_scale();
-  if (x_hi <= seat.seat_point(0).x - margin) return !step.holds_minimum(vertex.ends[0]);
-  if (x_lo >= seat.seat_point(seat.point_count() - 1).x + margin) {
-    return !step.holds_minimum(vertex.ends[1]);
+  const int last = seat.point_count() - 1;
+  const auto above_end_segment = [&](int k, bool leans) {
+    return !leans || step.least(vertex.heights[static_cast<std::size_t>(k)]) > margin;
+  };
+  if (x_hi <= seat.seat_point(0).x - margin) {
+    return above_end_segment(0, seat.seat_point(1).y < seat.seat_point(0).y) &&
+           !step.holds_minimum(vertex.ends[0]);
+  }
+  if (x_lo >= seat.seat_point(last).x + margin) {
+    return above_end_segment(last - 1, seat.seat_point(last).y > seat.seat_point(last - 1).y) &&
+           !step.holds_minimum(vertex.ends[1]);
   }
   return system_->clearance_least_at_ends(x_lo, x_hi, [&](int k) {
     return !step.holds_minimum(vertex.heights[static_cast<std::size_t>(k)]);

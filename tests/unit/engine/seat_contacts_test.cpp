@@ -3,6 +3,7 @@
 #include "engine/seat/seat_contacts.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -65,6 +66,36 @@ TEST(SeatContacts, AtTheSeatsEndTheHeelCarriesTheBlockWhicheverWayItMoves) {
     EXPECT_FALSE(found(pairs, {ContactKind::seat_point, 0, 0})) << omega;
     EXPECT_FALSE(found(pairs, {ContactKind::seat_point, 5, 0})) << omega;
   }
+}
+
+// The type B block moved 1e-5 m right and 1e-4 m down from rest: its toe is past the seat's end
+// in x, but under the incline's line with its projection on the incline, where its contact with
+// the incline touches. Its clearance is its height over the incline's line (vertical: 1.25 times
+// its gap), not its distance from the incline's top point P: taken as that, the toe went on into
+// the incline (reservoir study sample 342). Moved 1e-4 m right instead, the toe is beyond the
+// incline's normal at P, past the end: its clearance is its distance from P.
+TEST(SeatContacts, AToePastTheInclinesTopButUnderItIsInTheSeat) {
+  const SeatContacts contacts(kTypeB, kTypeBSeat);
+  const Vec2 centre = contacts.rest_centre();
+  constexpr int kToe = 2;
+  BlockState under;
+  under.x = centre.x + 1e-5;
+  under.y = centre.y - 1e-4;
+  const Vec2 toe = contacts.vertex_at(kToe, under);
+  ASSERT_GT(toe.x, kTypeBSeat.back()[0]);
+  const PairPose on_incline = contacts.pose({ContactKind::block_vertex, kToe, 1}, under);
+  ASSERT_LT(on_incline.along, on_incline.length);
+  EXPECT_NEAR(contacts.vertex_clearance(kToe, under), 1.25 * on_incline.gap, 1e-12);
+  EXPECT_LT(contacts.vertex_clearance(kToe, under), -7e-5);
+  EXPECT_GT(contacts.penetration(under), 7e-5);
+
+  BlockState beyond = under;
+  beyond.x = centre.x + 1e-4;
+  const Vec2 past = contacts.vertex_at(kToe, beyond);
+  const PairPose off_incline = contacts.pose({ContactKind::block_vertex, kToe, 1}, beyond);
+  ASSERT_GT(off_incline.along, off_incline.length);
+  EXPECT_DOUBLE_EQ(contacts.vertex_clearance(kToe, beyond),
+                   std::hypot(past.x - kTypeBSeat.back()[0], past.y - kTypeBSeat.back()[1]));
 }
 
 }  // namespace
