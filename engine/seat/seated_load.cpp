@@ -34,7 +34,9 @@ BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
                      std::span<const ContactState> states) {
   const BodyLoad closed =
       body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, in.external, s, Footing::seated);
-  if (in.external == nullptr || !in.external->opens_seated_crack() || contacts.size() < 2) {
+  const SeatedCrack crack =
+      in.external == nullptr ? SeatedCrack::unaffected : in.external->seated_crack();
+  if (crack == SeatedCrack::unaffected || contacts.size() < 2) {
     return closed;
   }
   std::size_t upstream = 0, downstream = 0;
@@ -61,14 +63,20 @@ BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
     return seated_body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, *in.external, s,
                             lifting.side, fraction);
   };
-  const double at_rest = seating_opening(
-      [&](double f) { return lifting.sense * moment_about(opened(f), contacts[lifting.pivot]); });
-  if (held) return opened(at_rest);
+  const auto quasi_static = [&] {
+    return seating_opening(
+        [&](double f) { return lifting.sense * moment_about(opened(f), contacts[lifting.pivot]); });
+  };
+  if (held) return opened(quasi_static());
   const auto corner_force = [&](double fraction) {
     return fixed_state_forces(contacts, states, s, opened(fraction), in.mu).normal[lifting.corner];
   };
-  if (!(corner_force(at_rest) >= 0.0)) return opened(at_rest);
-  return opened(at_rest * seating_opening([&](double x) { return corner_force(x * at_rest); }));
+  // Filled with the full head, the opening lifts the corner further at rest, and seats a slipping
+  // one only where it lightens the friction that tips the block onto its other corner: the least
+  // opening that seats it is looked for over the whole crack.
+  const double reach = crack == SeatedCrack::fills ? 1.0 : quasi_static();
+  if (!(corner_force(reach) >= 0.0)) return opened(reach);
+  return opened(reach * seating_opening([&](double x) { return corner_force(x * reach); }));
 }
 
 }  // namespace blockfrag

@@ -4,7 +4,8 @@
 // that motion, that way. Each case's friction makes the motion tested the first to start in its
 // direction. The type B block's three contacts at rest (heel, fold, toe) carry forces that are not
 // unique: under "zero_in_gap" its crack opens where the loads turn it about the other outermost
-// contact, as in the statics.
+// contact, as in the statics. Under "full_head_in_gap" a block at rest has its crack closed: it
+// lifts a corner where the closed crack's loads lift it, and the full head fills the crack after.
 #include <string>
 #include <vector>
 
@@ -85,7 +86,10 @@ TEST(ReservoirOnset, TheDynamicsStartEachMotionAtItsStaticYieldAcceleration) {
       {"rock downstream", 2.0, 1, ModeKind::rock},
       {"slide upstream", 0.5, -1, ModeKind::slide},
   };
-  expect_onsets_at_yields(wet_type_a, UpliftRule::unchanged, cases);
+  for (const UpliftRule rule : {UpliftRule::unchanged, UpliftRule::full_head_in_gap}) {
+    SCOPED_TRACE(static_cast<int>(rule));
+    expect_onsets_at_yields(wet_type_a, rule, cases);
+  }
 }
 
 TEST(ReservoirOnset, OnItsSeatTheTypeBBlockStartsEachMotionAtItsStaticYield) {
@@ -94,7 +98,8 @@ TEST(ReservoirOnset, OnItsSeatTheTypeBBlockStartsEachMotionAtItsStaticYield) {
       {"rock upstream", 1.05, -1, ModeKind::rock},
       {"slide upstream", 0.3, -1, ModeKind::slide},
   };
-  for (const UpliftRule rule : {UpliftRule::unchanged, UpliftRule::zero_in_gap}) {
+  for (const UpliftRule rule :
+       {UpliftRule::unchanged, UpliftRule::zero_in_gap, UpliftRule::full_head_in_gap}) {
     SCOPED_TRACE(static_cast<int>(rule));
     expect_onsets_at_yields(wet_type_b, rule, cases);
   }
