@@ -99,7 +99,7 @@ SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
-  const SineCosine turn = turn_(s.theta);
+  const SineCosine turn = cached_turn(s.theta);
   const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
   return {s.x + r.x, s.y + r.y};
 }
@@ -212,7 +212,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
 }
 
 void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
-  const SineCosine turn = turn_(s.theta);
+  const SineCosine turn = cached_turn(s.theta);
   for (std::size_t i = 0; i < body_.size(); ++i) {
     const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
     out[i] = {s.x + r.x, s.y + r.y};
