@@ -262,6 +262,16 @@ bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {
   const Vec2 p = seat_[static_cast<std::size_t>(k)];
   bool inside = false;
   const std::size_t n = body_.size();
+  // Beside the block by more than the crossing test's rounding (a few ulps of its x's), the point
+  // is left of every edge it is level with, of which there are an even number, or right of all:
+  // outside, without the test's divisions (a seat's far ends, every guard evaluation).
+  double left = world[0].x, right = world[0].x;
+  for (std::size_t i = 1; i < n; ++i) {
+    left = std::min(left, world[i].x);
+    right = std::max(right, world[i].x);
+  }
+  const double rounding = 1e-9 * (std::abs(left) + std::abs(right) + (right - left));
+  if (p.x < left - rounding || p.x > right + rounding) return false;
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2 a = world[i], b = world[j];
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
