@@ -250,7 +250,10 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2 a = world[i], b = world[j];
     const Vec2 d = minus(b, a), ap = minus(p, a);
-    const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
+    // Clamped as the quotient would be, without dividing where it is clamped (a point off the
+    // edge's ends: a seat's far ends at every guard evaluation).
+    const double along = dot(d, ap), squared_length = dot(d, d);
+    const double t = along <= 0.0 ? 0.0 : along >= squared_length ? 1.0 : along / squared_length;
     const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
     squared = std::min(squared, dot(off, off));
   }
@@ -262,21 +265,18 @@ bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {
   const Vec2 p = seat_[static_cast<std::size_t>(k)];
   bool inside = false;
   const std::size_t n = body_.size();
-  // Beside the block by more than the crossing test's rounding (a few ulps of its x's), the point
-  // is left of every edge it is level with, of which there are an even number, or right of all:
-  // outside, without the test's divisions (a seat's far ends, every guard evaluation).
-  double left = world[0].x, right = world[0].x;
-  for (std::size_t i = 1; i < n; ++i) {
-    left = std::min(left, world[i].x);
-    right = std::max(right, world[i].x);
-  }
-  const double rounding = 1e-9 * (std::abs(left) + std::abs(right) + (right - left));
-  if (p.x < left - rounding || p.x > right + rounding) return false;
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2 a = world[i], b = world[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
-      inside = !inside;
+    if ((a.y > p.y) == (b.y > p.y)) continue;
+    // The edge's x at the point's level lies between a.x and b.x but for a few ulps of them: a
+    // point beside both by more is left or right of it without the division (a seat's far ends at
+    // every guard evaluation).
+    const double rounding = 1e-9 * (std::abs(a.x) + std::abs(b.x));
+    bool left_of_edge = p.x < std::min(a.x, b.x) - rounding;
+    if (!left_of_edge && !(p.x > std::max(a.x, b.x) + rounding)) {
+      left_of_edge = p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
     }
+    if (left_of_edge) inside = !inside;
   }
   return inside;
 }
