@@ -65,8 +65,10 @@ struct PivotChart {
   PivotChart(Vec2 point_, Vec2 body_) : point(point_), body(body_) {}
 
   OdeState<N> scale(double R, double g) const { return {1.0, std::sqrt(g / R)}; }
+  // The pivot less the centre of mass at theta.
+  Vec2 arm(double theta) const { return seat_chart_detail::turned(body, theta); }
   BlockState full(double, const OdeState<N>& q) const {
-    const Vec2 r = seat_chart_detail::turned(body, q[0]);
+    const Vec2 r = arm(q[0]);
     return {point.x - r.x, point.y - r.y, q[0], q[1] * r.y, -q[1] * r.x, q[1]};
   }
   OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }

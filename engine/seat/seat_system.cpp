@@ -95,6 +95,18 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, co
   return last_solve_.forces;
 }
 
+std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) const {
+  if (count_ != 1) return std::nullopt;
+  const BodyLoad load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
+                                  c_.vertical->lambda(t), c_.g, c_.external, s, Footing::lifted);
+  const BodyInertia& m = load.inertia;
+  const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
+  const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta
+  const double inertia = along_x * r.y + r.x * r.x + along_theta;
+  const double load_along = load.force.x * r.y - load.force.y * r.x + load.moment;
+  return (load_along - s.omega * s.omega * r.x * (along_x - r.y)) / inertia;
+}
+
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s) {
   std::array<double, kGuards> out;
   out.fill(1.0);

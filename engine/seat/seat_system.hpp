@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <variant>
@@ -74,6 +75,13 @@ class SeatSystem {
   std::array<double, kGuards> guards(double t, const BlockState& s);
   ContactForces forces(double t, const BlockState& s);
   const FixedStateForces& solve(double t, const BlockState& s);
+  // theta'' of the block turning about the fixed point at r from its centre of mass, where one
+  // sticking contact holds it there (a PivotChart's); none with two contacts or more. The contact
+  // force does no work on the turning: with J = d(x, y, theta)/d theta = (r_y, -r_x, 1) and the
+  // constraint's acceleration c = (r_x, r_y, 0) omega^2, Lagrange's equation
+  // J^T (M (J theta'' + c) - Q) = 0 gives theta'' without solving for the force, which only the
+  // guards ask for, at a step's ends.
+  std::optional<double> pivot_turning(double t, const BlockState& s, Vec2 r) const;
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
   // The guards whose slot is used (the others are 1 throughout).
   GuardClaims live_guards() const;
@@ -192,6 +200,12 @@ class SeatOde {
   OdeState<N> scale() const { return chart_.scale(system_->length_scale(), system_->g()); }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
     const BlockState s = chart_.full(t, q);
+    if constexpr (std::is_same_v<Chart, PivotChart>) {
+      if (const std::optional<double> turning = system_->pivot_turning(t, s, chart_.arm(q[0]))) {
+        dq = {q[1], *turning};
+        return;
+      }
+    }
     dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
   }
   std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
