@@ -169,6 +169,11 @@ inline constexpr Domain record_weight{0.0, 1e6, false, true, ""};
 inline constexpr Domain target_relative_width{0.0, 2.0, false, true, ""};
 inline constexpr Domain pair_probability{0.01, 0.49, true, true, ""};
 inline constexpr Domain adaptive_samples{1.0, 1e9, true, true, ""};
+// A study's PGV levels, m/s (its other measures' are intensity_g's), and the count of levels
+// from/to/count makes (at most kMaxIntensityLevels in all).
+inline constexpr Domain pgv_level{0.0, 100.0, false, true, "m/s"};
+inline constexpr double kMaxIntensityLevels = 1'000'000;
+inline constexpr Domain intensity_level_count{2.0, kMaxIntensityLevels, true, true, ""};
 
 }  // namespace domain
 }  // namespace blockfrag

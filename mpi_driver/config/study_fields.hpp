@@ -1,12 +1,24 @@
-// The key tables (mpi_driver/config/field_table.hpp) of a study's and a spectrum's own settings.
+// The key tables (mpi_driver/config/field_table.hpp) of a study's and a spectrum's own settings,
+// and the JSON names of the study's enums. docs/studies.md's Domains table names each key by its
+// object's path ("intensity_measure.period"; a limit state's keys as "limit_states[].threshold_m").
 #pragma once
 
 #include "engine/scene/parameter_domains.hpp"
+#include "mpi_driver/config/enum_names.hpp"
 #include "mpi_driver/config/field_table.hpp"
 #include "mpi_driver/config/minimum_overturning_json.hpp"
 #include "mpi_driver/config/study_config.hpp"
 
-namespace blockfrag::study_fields {
+namespace blockfrag {
+
+inline constexpr EnumNames<ImType, 5> im_type_names{
+    {ImType::pulse_amplitude, ImType::pga, ImType::pgv, ImType::sa, ImType::pga_over_g_tan_alpha},
+    {"pulse_amplitude", "pga", "pgv", "sa", "pga_over_g_tan_alpha"}};
+// "scaling": stripes scale every motion to a level; "none" leaves a cloud of motions as they are.
+inline constexpr EnumNames<bool, 2> scaling_names{{false, true}, {"stripes", "none"}};
+namespace study_fields {
+
+using enum Presence;
 
 // What changes no sample's result (output, checkpoints, the failures allowed) is not hashed: the
 // study's reader takes those keys out of the hashed form.
@@ -16,10 +28,24 @@ inline constexpr Field<StudyConfig> run[] = {
      &domain::allowed_failed_fraction},
     {"bootstrap_resamples", &StudyConfig::bootstrap_resamples, &domain::bootstrap_resamples}};
 
+// "type" (its default depends on the ground motion: the reader sets it first), then the keys it
+// selects; "scaling", then a cloud's. The levels and a surface's "second" are read by
+// intensity_measure.cpp.
+inline constexpr Field<IntensityMeasure> measure_type[] = {
+    {"type", choice_member<&IntensityMeasure::type, im_type_names>(), nullptr}};
+inline constexpr Field<IntensityMeasure> sa[] = {
+    {"period", &IntensityMeasure::period, &domain::sa_period, required},
+    {"damping", &IntensityMeasure::damping, &domain::dam_damping}};
+inline constexpr Field<IntensityMeasure> scaling[] = {
+    {"scaling", choice_member<&IntensityMeasure::cloud, scaling_names>(), nullptr}};
+inline constexpr Field<IntensityMeasure> cloud[] = {
+    {"scale", &IntensityMeasure::scale, &domain::cloud_scale}};
+
 inline constexpr Field<MinimumOverturningSettings> minimum_overturning[] = {
     {"tolerance", &MinimumOverturningSettings::tolerance, &domain::minimum_tolerance},
     {"resolution", &MinimumOverturningSettings::resolution, &domain::minimum_resolution},
     {"near_overturning", &MinimumOverturningSettings::near_overturning, &domain::near_overturning},
     {"max_midpoints", &MinimumOverturningSettings::max_midpoints, &domain::minimum_midpoints}};
 
-}  // namespace blockfrag::study_fields
+}  // namespace study_fields
+}  // namespace blockfrag
