@@ -427,17 +427,15 @@ json canonical_json(const StudyConfig& config) {
     scene["ground_motion"]["content_hash"] =
         hash_to_hex(config.suite->records.front().content_hash);
   }
-  json out = {
-      {"scene", scene},
-      {"inputs", inputs},
-      {"intensity_measure", intensity_measure_to_json(config.intensity)},
-      {"samples_per_level", config.samples_per_level},
-      {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
-                                 : json(config.design == Design::monte_carlo ? "monte_carlo"
-                                                                             : "latin_hypercube")},
-      {"limit_states", limit_states},
-      {"seed", config.seed},
-      {"output", config.output.string()}};
+  json out = {{"scene", scene},
+              {"inputs", inputs},
+              {"intensity_measure", intensity_measure_to_json(config.intensity)},
+              {"samples_per_level", config.samples_per_level},
+              {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
+                                         : json(std::string(design_names.name(config.design)))},
+              {"limit_states", limit_states},
+              {"seed", config.seed},
+              {"output", config.output.string()}};
   write_fields<StudyConfig>(config, study_fields::run, out);
   return out;
 }
@@ -549,10 +547,9 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
     object.finish();
     config.design = config.adaptive->base;
   } else {
-    const auto name = root.has("design")
-                          ? root.required_choice("design", {"monte_carlo", "latin_hypercube"})
-                          : std::optional<std::string>("monte_carlo");
-    config.design = name == "latin_hypercube" ? Design::latin_hypercube : Design::monte_carlo;
+    const auto name =
+        root.has("design") ? root.required_choice("design", design_names.names) : std::nullopt;
+    if (name) config.design = *design_names.value(*name);
   }
   read_limit_states(root.required_array("limit_states"), root, config, scene_valid);
   if (config.adaptive) check_adaptive(root, config);

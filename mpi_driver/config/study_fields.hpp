@@ -16,6 +16,12 @@ inline constexpr EnumNames<ImType, 5> im_type_names{
     {"pulse_amplitude", "pga", "pgv", "sa", "pga_over_g_tan_alpha"}};
 // "scaling": stripes scale every motion to a level; "none" leaves a cloud of motions as they are.
 inline constexpr EnumNames<bool, 2> scaling_names{{false, true}, {"stripes", "none"}};
+// A study's "design", and an adaptive design's "base" (its default first).
+inline constexpr EnumNames<Design, 2> design_names{{Design::monte_carlo, Design::latin_hypercube},
+                                                   {"monte_carlo", "latin_hypercube"}};
+inline constexpr EnumNames<Design, 2> adaptive_base_names{
+    {Design::latin_hypercube, Design::monte_carlo}, {"latin_hypercube", "monte_carlo"}};
+
 namespace study_fields {
 
 using enum Presence;
@@ -40,6 +46,15 @@ inline constexpr Field<IntensityMeasure> scaling[] = {
     {"scaling", choice_member<&IntensityMeasure::cloud, scaling_names>(), nullptr}};
 inline constexpr Field<IntensityMeasure> cloud[] = {
     {"scale", &IntensityMeasure::scale, &domain::cloud_scale}};
+
+// "design": {"adaptive": {...}}; its "limit_state", a name, is read by adaptive_design.cpp.
+inline constexpr Field<AdaptiveDesign> adaptive_base[] = {
+    {"base", choice_member<&AdaptiveDesign::base, adaptive_base_names>(), nullptr}};
+inline constexpr Field<AdaptiveDesign> adaptive[] = {
+    {"target_relative_width", &AdaptiveDesign::target_relative_width,
+     &domain::target_relative_width},
+    {"pair_probability", &AdaptiveDesign::pair_probability, &domain::pair_probability},
+    {"max_samples", &AdaptiveDesign::max_samples, &domain::adaptive_samples, required}};
 
 inline constexpr Field<MinimumOverturningSettings> minimum_overturning[] = {
     {"tolerance", &MinimumOverturningSettings::tolerance, &domain::minimum_tolerance},
