@@ -174,6 +174,9 @@ inline constexpr Domain adaptive_samples{1.0, 1e9, true, true, ""};
 inline constexpr Domain pgv_level{0.0, 100.0, false, true, "m/s"};
 inline constexpr double kMaxIntensityLevels = 1'000'000;
 inline constexpr Domain intensity_level_count{2.0, kMaxIntensityLevels, true, true, ""};
+// A limit state's threshold: a rotation over alpha, a slide in m or a safety factor, positive.
+inline constexpr Domain limit_state_threshold{0.0, std::numeric_limits<double>::infinity(), false,
+                                              false, ""};
 
 }  // namespace domain
 }  // namespace blockfrag

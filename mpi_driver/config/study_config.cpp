@@ -1,7 +1,6 @@
 #include "mpi_driver/config/study_config.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -21,6 +20,7 @@
 #include "mpi_driver/config/study_crest_check.hpp"
 #include "mpi_driver/config/study_fields.hpp"
 #include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/config/study_limit_states.hpp"
 #include "sampling/validation.hpp"
 
 namespace blockfrag {
@@ -28,7 +28,6 @@ namespace {
 
 using nlohmann::json;
 
-const Range positive = Range::greater_than(0.0);
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 constexpr StudyInput all_inputs[] = {
@@ -234,79 +233,6 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
   }
 }
 
-}  // namespace
-
-// An HDF5 group name of its own: starts with a letter, digit or '_' ("." and ".." name the group
-// itself and its parent), then letters, digits, '_', '-' and '.'.
-bool valid_limit_state_name(const std::string& name) {
-  if (name.empty() || !(std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_'))
-    return false;
-  for (const char c : name) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
-      return false;
-  }
-  return true;
-}
-
-namespace {
-
-void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& config,
-                       bool scene_valid) {
-  if (array.valid() && array.size() == 0)
-    root.add_error("limit_states", "must name at least one limit state");
-  for (std::size_t k = 0; k < array.size(); ++k) {
-    ObjectReader reader = array.object(k);
-    if (!reader.valid()) continue;
-    LimitState state;
-    const auto name = reader.required_string("name");
-    if (name && !valid_limit_state_name(*name)) {
-      reader.add_error(
-          "name",
-          "must start with a letter, digit or '_', then letters, digits, '_', '-' or '.' (got \"" +
-              printable_excerpt(*name) + "\")");
-    }
-    for (const auto& other : config.limit_states) {
-      if (name && other.name == *name)
-        reader.add_error("name", "\"" + *name + "\" is used by another limit state");
-    }
-    const auto type = reader.required_choice(
-        "type", {"overturning", "max_rotation", "residual_slide", "post_earthquake_unstable"});
-    if (type == "max_rotation") {
-      state.kind = LimitStateKind::max_rotation;
-      state.threshold = reader.required_number("theta_over_alpha", positive).value_or(0.0);
-    } else if (type == "residual_slide") {
-      state.kind = LimitStateKind::residual_slide;
-      state.threshold = reader.required_number("threshold_m", positive).value_or(0.0);
-    } else if (type == "post_earthquake_unstable") {
-      state.kind = LimitStateKind::post_earthquake_unstable;
-      state.threshold = reader.number_or("threshold", 1.0, positive);
-      if (scene_valid && !config.base_scene.reservoir) {
-        reader.add_error("type",
-                         "\"post_earthquake_unstable\" needs a reservoir in /scene (the safety "
-                         "factors after the earthquake are the reservoir's)");
-      }
-    }
-    if (type != "overturning") {
-      state.overturned_exceeds = reader.boolean_or("overturned_exceeds", true);
-    }
-    reader.finish(type ? "for type \"" + *type + "\"" : std::string{});
-    if (name) {
-      state.name = *name;
-      config.limit_states.push_back(state);
-    }
-  }
-}
-
-json limit_state_to_json(const LimitState& state) {
-  json out = {{"name", state.name}, {"type", limit_state_kind_name(state.kind)}};
-  if (state.kind == LimitStateKind::max_rotation) out["theta_over_alpha"] = state.threshold;
-  if (state.kind == LimitStateKind::residual_slide) out["threshold_m"] = state.threshold;
-  if (state.kind == LimitStateKind::post_earthquake_unstable) out["threshold"] = state.threshold;
-  if (state.kind != LimitStateKind::overturning)
-    out["overturned_exceeds"] = state.overturned_exceeds;
-  return out;
-}
-
 // A scene's errors come back with paths inside the scene; put them under /scene. A record suite
 // (studies only) is read here; the scene reader sees no ground motion in its place.
 void read_scene(const json& value, const std::string& source, ConfigErrors& errors,
@@ -468,16 +394,6 @@ const char* input_key(StudyInput input) {
     case StudyInput::period: return "period";
     case StudyInput::reservoir_level: return "reservoir_level";
     case StudyInput::direction: return "direction";
-  }
-  return "";
-}
-
-const char* limit_state_kind_name(LimitStateKind kind) {
-  switch (kind) {
-    case LimitStateKind::overturning: return "overturning";
-    case LimitStateKind::max_rotation: return "max_rotation";
-    case LimitStateKind::residual_slide: return "residual_slide";
-    case LimitStateKind::post_earthquake_unstable: return "post_earthquake_unstable";
   }
   return "";
 }

@@ -16,6 +16,10 @@ inline constexpr EnumNames<ImType, 5> im_type_names{
     {"pulse_amplitude", "pga", "pgv", "sa", "pga_over_g_tan_alpha"}};
 // "scaling": stripes scale every motion to a level; "none" leaves a cloud of motions as they are.
 inline constexpr EnumNames<bool, 2> scaling_names{{false, true}, {"stripes", "none"}};
+inline constexpr EnumNames<LimitStateKind, 4> limit_state_kind_names{
+    {LimitStateKind::overturning, LimitStateKind::max_rotation, LimitStateKind::residual_slide,
+     LimitStateKind::post_earthquake_unstable},
+    {"overturning", "max_rotation", "residual_slide", "post_earthquake_unstable"}};
 // A study's "design", and an adaptive design's "base" (its default first).
 inline constexpr EnumNames<Design, 2> design_names{{Design::monte_carlo, Design::latin_hypercube},
                                                    {"monte_carlo", "latin_hypercube"}};
@@ -46,6 +50,18 @@ inline constexpr Field<IntensityMeasure> scaling[] = {
     {"scaling", choice_member<&IntensityMeasure::cloud, scaling_names>(), nullptr}};
 inline constexpr Field<IntensityMeasure> cloud[] = {
     {"scale", &IntensityMeasure::scale, &domain::cloud_scale}};
+
+// A limit state's "name" and "overturned_exceeds" are read by study_limit_states.cpp; its "type"
+// selects the threshold's key.
+inline constexpr Field<LimitState> limit_state_type[] = {
+    {"type", choice_member<&LimitState::kind, limit_state_kind_names>(), nullptr, required}};
+inline constexpr Field<LimitState> max_rotation[] = {
+    {"theta_over_alpha", &LimitState::threshold, &domain::limit_state_threshold, required}};
+inline constexpr Field<LimitState> residual_slide[] = {
+    {"threshold_m", &LimitState::threshold, &domain::limit_state_threshold, required}};
+// Its threshold defaults to 1: the reader sets it first.
+inline constexpr Field<LimitState> post_earthquake_unstable[] = {
+    {"threshold", &LimitState::threshold, &domain::limit_state_threshold}};
 
 // "design": {"adaptive": {...}}; its "limit_state", a name, is read by adaptive_design.cpp.
 inline constexpr Field<AdaptiveDesign> adaptive_base[] = {
