@@ -177,6 +177,11 @@ inline constexpr Domain intensity_level_count{2.0, kMaxIntensityLevels, true, tr
 // A limit state's threshold: a rotation over alpha, a slide in m or a safety factor, positive.
 inline constexpr Domain limit_state_threshold{0.0, std::numeric_limits<double>::infinity(), false,
                                               false, ""};
+// A sampled input's distribution parameters: any number here; the distribution's support is
+// checked against the input's own domain after.
+inline constexpr Domain distribution_parameter{-std::numeric_limits<double>::infinity(),
+                                               std::numeric_limits<double>::infinity(), true, false,
+                                               ""};
 
 }  // namespace domain
 }  // namespace blockfrag

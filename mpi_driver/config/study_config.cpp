@@ -13,6 +13,7 @@
 #include "engine/scene/parameter_domains.hpp"
 #include "engine/scene/seat.hpp"
 #include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/distribution_json.hpp"
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/output_name.hpp"
 #include "mpi_driver/config/scene_json.hpp"
@@ -60,39 +61,6 @@ bool within(const Domain& domain, double low, double high, bool log_normal) {
   return (domain.contains(low) || open_at_zero) && domain.contains(high);
 }
 
-std::optional<Distribution> read_distribution(ObjectReader reader) {
-  const auto kind =
-      reader.required_choice("distribution", {"fixed", "uniform", "normal", "lognormal"});
-  if (!kind) return std::nullopt;
-  Distribution distribution = Fixed{};
-  bool complete = true;
-  const auto need = [&](std::string_view key) {
-    const auto value = reader.required_number(key);
-    complete = complete && value.has_value();
-    return value.value_or(0.0);
-  };
-  if (*kind == "fixed") {
-    distribution = Fixed{need("value")};
-  } else if (*kind == "uniform") {
-    distribution = Uniform{need("min"), need("max")};
-  } else if (*kind == "normal") {
-    const double mean = need("mean"), std_dev = need("std_dev");
-    distribution = Normal{mean, std_dev, reader.number("lower"), reader.number("upper")};
-  } else {
-    const double median = need("median"), beta = need("beta");
-    distribution = LogNormal{median, beta, reader.number("lower"), reader.number("upper")};
-  }
-  reader.finish("for distribution \"" + *kind + "\"");
-  if (!complete) return std::nullopt;
-  bool valid = true;
-  for (const auto& violation : validate(distribution)) {
-    reader.errors().add(violation.field.empty() ? reader.path() : reader.path_of(violation.field),
-                        violation.message);
-    valid = false;
-  }
-  return valid ? std::optional<Distribution>(distribution) : std::nullopt;
-}
-
 // direction: {"distribution": "random_sign"} or {"distribution": "fixed", "value": 1 or -1}.
 std::optional<Distribution> read_direction(ObjectReader reader) {
   const auto kind = reader.required_choice("distribution", {"random_sign", "fixed"});
@@ -111,31 +79,11 @@ std::optional<Distribution> read_direction(ObjectReader reader) {
   return distribution;
 }
 
-json distribution_to_json(StudyInput input, const Distribution& distribution) {
-  if (input == StudyInput::direction) {
-    if (const auto* fixed = std::get_if<Fixed>(&distribution))
-      return {{"distribution", "fixed"}, {"value", fixed->value}};
-    return {{"distribution", "random_sign"}};
-  }
-  return std::visit(
-      [](const auto& d) -> json {
-        using T = std::decay_t<decltype(d)>;
-        json out;
-        if constexpr (std::is_same_v<T, Fixed>)
-          out = {{"distribution", "fixed"}, {"value", d.value}};
-        if constexpr (std::is_same_v<T, Uniform>)
-          out = {{"distribution", "uniform"}, {"min", d.min}, {"max", d.max}};
-        if constexpr (std::is_same_v<T, Normal>)
-          out = {{"distribution", "normal"}, {"mean", d.mean}, {"std_dev", d.std_dev}};
-        if constexpr (std::is_same_v<T, LogNormal>)
-          out = {{"distribution", "lognormal"}, {"median", d.median}, {"beta", d.beta}};
-        if constexpr (std::is_same_v<T, Normal> || std::is_same_v<T, LogNormal>) {
-          if (d.lower) out["lower"] = *d.lower;
-          if (d.upper) out["upper"] = *d.upper;
-        }
-        return out;
-      },
-      distribution);
+// A direction's random sign is drawn as Uniform{-1, 1}: its name says what it is.
+json direction_to_json(const Distribution& distribution) {
+  if (const auto* fixed = std::get_if<Fixed>(&distribution))
+    return {{"distribution", "fixed"}, {"value", fixed->value}};
+  return {{"distribution", "random_sign"}};
 }
 
 // Why a study cannot draw the block's size, if it cannot: sampling draws a rectangle's sizes, so a
@@ -343,7 +291,9 @@ void check_surface(ObjectReader& root, const StudyConfig& config, bool scene_val
 json canonical_json(const StudyConfig& config) {
   json inputs = json::object();
   for (const auto& spec : config.inputs)
-    inputs[input_key(spec.input)] = distribution_to_json(spec.input, spec.distribution);
+    inputs[input_key(spec.input)] = spec.input == StudyInput::direction
+                                        ? direction_to_json(spec.distribution)
+                                        : distribution_to_json(spec.distribution);
   json limit_states = json::array();
   for (const auto& state : config.limit_states) limit_states.push_back(limit_state_to_json(state));
   json scene = scene_to_json(config.base_scene);
