@@ -182,6 +182,9 @@ inline constexpr Domain limit_state_threshold{0.0, std::numeric_limits<double>::
 inline constexpr Domain distribution_parameter{-std::numeric_limits<double>::infinity(),
                                                std::numeric_limits<double>::infinity(), true, false,
                                                ""};
+// A study's samples per level and its seed (any non-negative integer).
+inline constexpr Domain samples_per_level{1.0, 2147483648.0, true, true, ""};
+inline constexpr Domain seed{0.0, std::numeric_limits<double>::infinity(), true, false, ""};
 
 }  // namespace domain
 }  // namespace blockfrag

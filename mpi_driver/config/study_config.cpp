@@ -396,7 +396,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
                    "scales the pulse's peak acceleration, but /scene/ground_motion has "
                    "velocity_amplitude 0");
   }
-  const Range samples_range = Range::closed(1, 2147483648.0);
+  const Range samples_range = Range::of(domain::samples_per_level);
   const auto samples = root.required_integer("samples_per_level", samples_range);
   if (overrides.samples_per_level) {
     if (!samples_range.contains(static_cast<double>(*overrides.samples_per_level))) {
@@ -420,8 +420,8 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   read_limit_states(root.required_array("limit_states"), root, config, scene_valid);
   if (config.adaptive) check_adaptive(root, config);
   if (config.intensity.surface()) check_surface(root, config, scene_valid);
-  config.seed =
-      static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
+  config.seed = static_cast<std::uint64_t>(
+      root.required_integer("seed", Range::of(domain::seed)).value_or(0));
   const auto output = root.string("output");
   if (output) {
     if (const auto problem = output_name_problem(*output)) root.add_error("output", *problem);
