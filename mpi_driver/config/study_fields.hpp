@@ -79,4 +79,9 @@ inline constexpr Field<MinimumOverturningSettings> minimum_overturning[] = {
     {"max_midpoints", &MinimumOverturningSettings::max_midpoints, &domain::minimum_midpoints}};
 
 }  // namespace study_fields
+
+// The tables of a study's keys above and its distributions' (distribution_json.hpp), under the
+// prefix docs/studies.md's Domains table names them with ("intensity_measure.", "inputs.*.").
+std::vector<KeyTable> study_key_tables();
+
 }  // namespace blockfrag
