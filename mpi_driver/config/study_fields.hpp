@@ -72,6 +72,11 @@ inline constexpr Field<AdaptiveDesign> adaptive[] = {
     {"pair_probability", &AdaptiveDesign::pair_probability, &domain::pair_probability},
     {"max_samples", &AdaptiveDesign::max_samples, &domain::adaptive_samples, required}};
 
+// A record suite's entry given as an object: its "file" and "vertical" are read by
+// record_suite.cpp.
+inline constexpr Field<SuiteRecord> suite_record[] = {
+    {"weight", &SuiteRecord::weight, &domain::record_weight}};
+
 inline constexpr Field<MinimumOverturningSettings> minimum_overturning[] = {
     {"tolerance", &MinimumOverturningSettings::tolerance, &domain::minimum_tolerance},
     {"resolution", &MinimumOverturningSettings::resolution, &domain::minimum_resolution},
