@@ -13,6 +13,7 @@
 #include "mpi_driver/config/field_table.hpp"
 #include "mpi_driver/config/output_name.hpp"
 #include "mpi_driver/config/scene_json.hpp"
+#include "mpi_driver/config/study_fields.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 
 namespace blockfrag {
@@ -324,14 +325,10 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   const Axis frequency = read_axis(root.required_object("frequency_ratio"), 1);
   const Axis amplitude = read_axis(root.required_object("amplitude_ratio"), 2);
   ObjectReader bisection = root.object("bisection");
-  config.bisection_tolerance = bisection.number_or("tolerance", config.bisection_tolerance,
-                                                   Range::of(domain::bisection_tolerance));
-  config.max_iterations = static_cast<int>(bisection.integer_or(
-      "max_iterations", config.max_iterations, Range::of(domain::bisection_iterations)));
+  read_fields<SpectrumConfig>(bisection, study_fields::spectrum_bisection, config);
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
-  config.settle_allowance_tau = root.number_or("settle_allowance_tau", config.settle_allowance_tau,
-                                               Range::of(domain::settle_allowance_tau));
+  read_fields<SpectrumConfig>(root, study_fields::spectrum_settle, config);
   if (const auto name = root.string("output")) {
     if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
     config.output = *name;
@@ -343,9 +340,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
       errors.add_message(source + ": --output: " + *problem);
     config.output = *output;
   }
-  config.checkpoint_interval_s =
-      root.number_or("checkpoint_interval_s", config.checkpoint_interval_s,
-                     Range::of(domain::checkpoint_interval_s));
+  read_fields<SpectrumConfig>(root, study_fields::spectrum_checkpoint, config);
   root.finish();
 
   if (family) {
@@ -364,12 +359,13 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   config.canonical["pulse"] = family->canonical;
   config.canonical["frequency_ratio"] = frequency.canonical;
   config.canonical["amplitude_ratio"] = amplitude.canonical;
-  config.canonical["bisection"] = {{"tolerance", config.bisection_tolerance},
-                                   {"max_iterations", config.max_iterations}};
+  config.canonical["bisection"] = json::object();
+  write_fields<SpectrumConfig>(config, study_fields::spectrum_bisection,
+                               config.canonical["bisection"]);
   config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
-  config.canonical["settle_allowance_tau"] = config.settle_allowance_tau;
+  write_fields<SpectrumConfig>(config, study_fields::spectrum_settle, config.canonical);
   config.canonical["output"] = config.output.string();
-  config.canonical["checkpoint_interval_s"] = config.checkpoint_interval_s;
+  write_fields<SpectrumConfig>(config, study_fields::spectrum_checkpoint, config.canonical);
   json hashed = config.canonical;
   hashed.erase("output");
   hashed.erase("checkpoint_interval_s");

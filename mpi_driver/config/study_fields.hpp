@@ -7,6 +7,7 @@
 #include "mpi_driver/config/enum_names.hpp"
 #include "mpi_driver/config/field_table.hpp"
 #include "mpi_driver/config/minimum_overturning_json.hpp"
+#include "mpi_driver/config/spectrum_config.hpp"
 #include "mpi_driver/config/study_config.hpp"
 
 namespace blockfrag {
@@ -76,6 +77,17 @@ inline constexpr Field<AdaptiveDesign> adaptive[] = {
 // record_suite.cpp.
 inline constexpr Field<SuiteRecord> suite_record[] = {
     {"weight", &SuiteRecord::weight, &domain::record_weight}};
+
+// A spectrum's "bisection" object, and its own keys (read before and after "output": three tables
+// keep the order its errors are reported in).
+inline constexpr Field<SpectrumConfig> spectrum_bisection[] = {
+    {"tolerance", &SpectrumConfig::bisection_tolerance, &domain::bisection_tolerance},
+    {"max_iterations", &SpectrumConfig::max_iterations, &domain::bisection_iterations}};
+inline constexpr Field<SpectrumConfig> spectrum_settle[] = {
+    {"settle_allowance_tau", &SpectrumConfig::settle_allowance_tau, &domain::settle_allowance_tau}};
+inline constexpr Field<SpectrumConfig> spectrum_checkpoint[] = {
+    {"checkpoint_interval_s", &SpectrumConfig::checkpoint_interval_s,
+     &domain::checkpoint_interval_s}};
 
 inline constexpr Field<MinimumOverturningSettings> minimum_overturning[] = {
     {"tolerance", &MinimumOverturningSettings::tolerance, &domain::minimum_tolerance},
