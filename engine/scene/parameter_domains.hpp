@@ -155,6 +155,11 @@ inline constexpr Domain bisection_tolerance{1e-14, 0.1, true, true, ""};
 inline constexpr Domain bisection_iterations{1.0, 200.0, true, true, ""};
 // A spectrum point's run after the pulse, in 1 / p.
 inline constexpr Domain settle_allowance_tau{1.0, 1e6, true, true, ""};
+// A spectrum's frequency and amplitude ratios, positive; an axis given by from/to/count has 2 to
+// 100,000 values.
+inline constexpr Domain spectrum_ratio{0.0, std::numeric_limits<double>::infinity(), false, false,
+                                       ""};
+inline constexpr Domain spectrum_axis_count{2.0, 1e5, true, true, ""};
 // An Sa measure's oscillator period: design spectra end near 10 s.
 inline constexpr Domain sa_period{0.0, 10.0, false, true, "s"};
 // A cloud's factor on every record, and a suite record's weight.

@@ -36,8 +36,8 @@ struct Axis {
 Axis read_axis(ObjectReader reader, std::size_t min_count) {
   Axis axis;
   if (!reader.valid()) return axis;
-  const Range positive = Range::greater_than(0.0);
-  const double max_count = static_cast<double>(kMaxSpectrumAxis);
+  static_assert(domain::spectrum_axis_count.high == static_cast<double>(kMaxSpectrumAxis));
+  const Range positive = Range::of(domain::spectrum_ratio);
   if (reader.has("values")) {
     for (const char* key : {"from", "to", "count", "spacing"}) {
       if (reader.has(key)) reader.add_error(key, "give either values or from/to/count, not both");
@@ -65,8 +65,7 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
   }
   const auto from = reader.required_number("from", positive);
   const auto to = reader.required_number("to", positive);
-  const auto count = reader.required_integer(
-      "count", Range::closed(static_cast<double>(std::max<std::size_t>(min_count, 2)), max_count));
+  const auto count = reader.required_integer("count", Range::of(domain::spectrum_axis_count));
   const std::string spacing = reader.choice("spacing", {"linear", "log"}).value_or("linear");
   reader.finish();
   if (!from || !to || !count) return axis;
