@@ -155,6 +155,11 @@ inline constexpr Domain bisection_tolerance{1e-14, 0.1, true, true, ""};
 inline constexpr Domain bisection_iterations{1.0, 200.0, true, true, ""};
 // A spectrum point's run after the pulse, in 1 / p.
 inline constexpr Domain settle_allowance_tau{1.0, 1e6, true, true, ""};
+// A spectrum's frequency and amplitude ratios, positive; an axis given by from/to/count has 2 to
+// 100,000 values.
+inline constexpr Domain spectrum_ratio{0.0, std::numeric_limits<double>::infinity(), false, false,
+                                       ""};
+inline constexpr Domain spectrum_axis_count{2.0, 1e5, true, true, ""};
 // An Sa measure's oscillator period: design spectra end near 10 s.
 inline constexpr Domain sa_period{0.0, 10.0, false, true, "s"};
 // A cloud's factor on every record, and a suite record's weight.
@@ -169,6 +174,22 @@ inline constexpr Domain record_weight{0.0, 1e6, false, true, ""};
 inline constexpr Domain target_relative_width{0.0, 2.0, false, true, ""};
 inline constexpr Domain pair_probability{0.01, 0.49, true, true, ""};
 inline constexpr Domain adaptive_samples{1.0, 1e9, true, true, ""};
+// A study's PGV levels, m/s (its other measures' are intensity_g's), and the count of levels
+// from/to/count makes (at most kMaxIntensityLevels in all).
+inline constexpr Domain pgv_level{0.0, 100.0, false, true, "m/s"};
+inline constexpr double kMaxIntensityLevels = 1'000'000;
+inline constexpr Domain intensity_level_count{2.0, kMaxIntensityLevels, true, true, ""};
+// A limit state's threshold: a rotation over alpha, a slide in m or a safety factor, positive.
+inline constexpr Domain limit_state_threshold{0.0, std::numeric_limits<double>::infinity(), false,
+                                              false, ""};
+// A sampled input's distribution parameters: any number here; the distribution's support is
+// checked against the input's own domain after.
+inline constexpr Domain distribution_parameter{-std::numeric_limits<double>::infinity(),
+                                               std::numeric_limits<double>::infinity(), true, false,
+                                               ""};
+// A study's samples per level and its seed (any non-negative integer).
+inline constexpr Domain samples_per_level{1.0, 2147483648.0, true, true, ""};
+inline constexpr Domain seed{0.0, std::numeric_limits<double>::infinity(), true, false, ""};
 
 }  // namespace domain
 }  // namespace blockfrag

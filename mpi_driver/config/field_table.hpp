@@ -182,6 +182,12 @@ struct FieldDescription {
   std::vector<std::string> choices;
 };
 
+// A table's descriptions under the prefix a docs' key table names its keys with ("block.").
+struct KeyTable {
+  std::string prefix;
+  std::vector<FieldDescription> fields;
+};
+
 template <class Struct>
 std::vector<FieldDescription> describe_fields(
     std::type_identity_t<std::span<const Field<Struct>>> fields) {

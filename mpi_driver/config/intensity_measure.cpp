@@ -3,23 +3,25 @@
 #include <cstdio>
 
 #include "engine/scene/parameter_domains.hpp"
+#include "mpi_driver/config/study_fields.hpp"
 
 namespace blockfrag {
 namespace {
 
-// Intensity levels a study may have: a fine grid for a smooth curve is a few hundred; a grid of
-// single amplitudes (one sample each) a few tens of thousands.
-constexpr double kMaxLevels = 1'000'000;
+// Intensity levels a study may have (domain::kMaxIntensityLevels): a fine grid for a smooth curve
+// is a few hundred; a grid of single amplitudes (one sample each) a few tens of thousands.
+constexpr double kMaxLevels = domain::kMaxIntensityLevels;
 
 // The levels' domain in the measure's unit: far past any earthquake, finite.
 Range level_range(ImType type) {
-  if (type == ImType::pgv) return Range::left_open(0.0, largest_level(type));  // m/s
-  return Range::of(domain::intensity_g);  // g, or dimensionless
+  return Range::of(type == ImType::pgv ? domain::pgv_level : domain::intensity_g);
 }
 
 }  // namespace
 
-double largest_level(ImType type) { return type == ImType::pgv ? 100.0 : domain::intensity_g.high; }
+double largest_level(ImType type) {
+  return type == ImType::pgv ? domain::pgv_level.high : domain::intensity_g.high;
+}
 
 namespace {
 
@@ -50,7 +52,7 @@ std::vector<double> read_levels(ObjectReader& reader, const Range& range) {
   }
   const auto from = reader.required_number("from", range);
   const auto to = reader.required_number("to", range);
-  const auto count = reader.required_integer("count", Range::closed(2, kMaxLevels));
+  const auto count = reader.required_integer("count", Range::of(domain::intensity_level_count));
   if (from && to && *to <= *from) {
     reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
   }
@@ -86,16 +88,7 @@ void read_second_axis(ObjectReader reader, IntensityMeasure& measure) {
 
 }  // namespace
 
-const char* im_type_name(ImType type) {
-  switch (type) {
-    case ImType::pulse_amplitude: return "pulse_amplitude";
-    case ImType::pga: return "pga";
-    case ImType::pgv: return "pgv";
-    case ImType::sa: return "sa";
-    case ImType::pga_over_g_tan_alpha: return "pga_over_g_tan_alpha";
-  }
-  return "";
-}
+const char* im_type_name(ImType type) { return im_type_names.name(type).data(); }
 
 const char* im_unit(ImType type) {
   switch (type) {
@@ -123,21 +116,11 @@ std::string im_label(const IntensityMeasure& measure) {
 IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type) {
   IntensityMeasure measure;
   measure.type = default_type;
-  if (const auto type =
-          reader.choice("type", {"pulse_amplitude", "pga", "pgv", "sa", "pga_over_g_tan_alpha"})) {
-    for (const ImType candidate : {ImType::pulse_amplitude, ImType::pga, ImType::pgv, ImType::sa,
-                                   ImType::pga_over_g_tan_alpha}) {
-      if (*type == im_type_name(candidate)) measure.type = candidate;
-    }
-  }
-  if (measure.type == ImType::sa) {
-    measure.period = reader.required_number("period", Range::of(domain::sa_period)).value_or(1.0);
-    measure.damping = reader.number_or("damping", 0.05, Range::of(domain::dam_damping));
-  }
-  const auto scaling = reader.choice("scaling", {"stripes", "none"});
-  measure.cloud = scaling == "none";
+  read_fields<IntensityMeasure>(reader, study_fields::measure_type, measure);
+  if (measure.type == ImType::sa) read_fields<IntensityMeasure>(reader, study_fields::sa, measure);
+  read_fields<IntensityMeasure>(reader, study_fields::scaling, measure);
   if (measure.cloud) {
-    measure.scale = reader.number_or("scale", 1.0, Range::of(domain::cloud_scale));
+    read_fields<IntensityMeasure>(reader, study_fields::cloud, measure);
     for (const char* key : {"levels", "from", "to", "count"}) {
       if (reader.has(key)) reader.add_error(key, "a cloud (\"scaling\": \"none\") has no levels");
     }
@@ -150,14 +133,12 @@ IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type
 }
 
 nlohmann::json intensity_measure_to_json(const IntensityMeasure& measure) {
-  nlohmann::json out = {{"type", im_type_name(measure.type)},
-                        {"scaling", measure.cloud ? "none" : "stripes"}};
-  if (measure.type == ImType::sa) {
-    out["period"] = measure.period;
-    out["damping"] = measure.damping;
-  }
+  nlohmann::json out = nlohmann::json::object();
+  write_fields<IntensityMeasure>(measure, study_fields::measure_type, out);
+  if (measure.type == ImType::sa) write_fields<IntensityMeasure>(measure, study_fields::sa, out);
+  write_fields<IntensityMeasure>(measure, study_fields::scaling, out);
   if (measure.cloud) {
-    out["scale"] = measure.scale;
+    write_fields<IntensityMeasure>(measure, study_fields::cloud, out);
   } else {
     out["levels"] = measure.levels;
   }

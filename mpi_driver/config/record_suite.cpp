@@ -1,6 +1,7 @@
 #include "mpi_driver/config/record_suite.hpp"
 
 #include "mpi_driver/config/record_file.hpp"
+#include "mpi_driver/config/study_fields.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 
 namespace blockfrag {
@@ -76,7 +77,7 @@ std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
         record.vertical_file = *vertical;
         record.vertical = read_file(*vertical, entry.path_of("vertical"), errors, base_folder);
       }
-      record.weight = entry.number_or("weight", 1.0, Range::of(domain::record_weight));
+      read_fields<SuiteRecord>(entry, study_fields::suite_record, record);
       entry.finish();
     } else {
       errors.add(array.path_of(k),
@@ -105,8 +106,8 @@ std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
 nlohmann::json record_suite_to_json(const RecordSuite& suite) {
   nlohmann::json records = nlohmann::json::array();
   for (const auto& r : suite.records) {
-    nlohmann::json entry = {
-        {"file", r.file}, {"weight", r.weight}, {"content_hash", hash_to_hex(r.content_hash)}};
+    nlohmann::json entry = {{"file", r.file}, {"content_hash", hash_to_hex(r.content_hash)}};
+    write_fields<SuiteRecord>(r, study_fields::suite_record, entry);
     if (!r.vertical_file.empty()) entry["vertical"] = r.vertical_file;
     records.push_back(std::move(entry));
   }

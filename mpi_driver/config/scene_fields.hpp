@@ -180,10 +180,6 @@ struct MotionKeys<MavroeidisPapageorgiouPulse> {
 // Every table above, and a study's own (mpi_driver/config/study_fields.hpp), under the prefix
 // docs/scenes.md's Domains table names its keys with ("block.", "" for the scene's own keys, the
 // ground motions' and the study's).
-struct KeyTable {
-  std::string prefix;
-  std::vector<FieldDescription> fields;
-};
 std::vector<KeyTable> scene_key_tables();
 
 // The ground motions' "type" names, in GroundMotion's order.

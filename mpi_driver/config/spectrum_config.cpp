@@ -3,12 +3,17 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
+#include <string>
 
 #include "engine/motion/ground_motion.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/enum_names.hpp"
+#include "mpi_driver/config/field_table.hpp"
 #include "mpi_driver/config/output_name.hpp"
 #include "mpi_driver/config/scene_json.hpp"
+#include "mpi_driver/config/study_fields.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 
 namespace blockfrag {
@@ -31,8 +36,8 @@ struct Axis {
 Axis read_axis(ObjectReader reader, std::size_t min_count) {
   Axis axis;
   if (!reader.valid()) return axis;
-  const Range positive = Range::greater_than(0.0);
-  const double max_count = static_cast<double>(kMaxSpectrumAxis);
+  static_assert(domain::spectrum_axis_count.high == static_cast<double>(kMaxSpectrumAxis));
+  const Range positive = Range::of(domain::spectrum_ratio);
   if (reader.has("values")) {
     for (const char* key : {"from", "to", "count", "spacing"}) {
       if (reader.has(key)) reader.add_error(key, "give either values or from/to/count, not both");
@@ -60,8 +65,7 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
   }
   const auto from = reader.required_number("from", positive);
   const auto to = reader.required_number("to", positive);
-  const auto count = reader.required_integer(
-      "count", Range::closed(static_cast<double>(std::max<std::size_t>(min_count, 2)), max_count));
+  const auto count = reader.required_integer("count", Range::of(domain::spectrum_axis_count));
   const std::string spacing = reader.choice("spacing", {"linear", "log"}).value_or("linear");
   reader.finish();
   if (!from || !to || !count) return axis;
@@ -131,11 +135,31 @@ struct PulseFamily {
   json canonical;
 };
 
+constexpr EnumNames<SpectrumPulse, 7> spectrum_pulse_names{
+    {SpectrumPulse::cosine, SpectrumPulse::sine, SpectrumPulse::rectangular,
+     SpectrumPulse::makris_a, SpectrumPulse::makris_b, SpectrumPulse::makris_c,
+     SpectrumPulse::ricker},
+    {"cosine_pulse", "sine_pulse", "rectangular_pulse", "makris_a", "makris_b", "makris_c",
+     "ricker"}};
+
+// The family's "type" selects its shape's key: a cosine or sine pulse's cycles, makris_c's n.
+constexpr Field<PulseFamily> pulse_type_field[] = {
+    {"type", choice_member<&PulseFamily::pulse, spectrum_pulse_names>(), nullptr,
+     Presence::required}};
+constexpr Field<PulseFamily> periodic_family[] = {
+    {"cycles", &PulseFamily::cycles, &domain::pulse_cycles}};
+constexpr Field<PulseFamily> makris_c_family[] = {{"n", &PulseFamily::n, &domain::makris_c_n}};
+
+std::span<const Field<PulseFamily>> family_shape_fields(SpectrumPulse pulse) {
+  if (pulse == SpectrumPulse::cosine || pulse == SpectrumPulse::sine) return periodic_family;
+  if (pulse == SpectrumPulse::makris_c) return makris_c_family;
+  return {};
+}
+
 std::optional<PulseFamily> read_pulse(ObjectReader reader) {
   if (!reader.valid()) return std::nullopt;
-  const auto type =
-      reader.required_choice("type", {"cosine_pulse", "sine_pulse", "rectangular_pulse", "makris_a",
-                                      "makris_b", "makris_c", "ricker"});
+  PulseFamily family;
+  const bool typed = read_fields<PulseFamily>(reader, pulse_type_field, family).valid("type");
   for (const char* key : {"amplitude_g", "period", "duration", "t0"}) {
     if (reader.has(key)) {
       reader.add_error(key,
@@ -143,28 +167,13 @@ std::optional<PulseFamily> read_pulse(ObjectReader reader) {
                        "leave it out");
     }
   }
-  PulseFamily family;
-  if (type == "cosine_pulse" || type == "sine_pulse") {
-    family.pulse = type == "cosine_pulse" ? SpectrumPulse::cosine : SpectrumPulse::sine;
-    family.cycles = reader.number_or("cycles", 1.0, Range::of(domain::pulse_cycles));
-  } else if (type == "rectangular_pulse") {
-    family.pulse = SpectrumPulse::rectangular;
-  } else if (type == "makris_a") {
-    family.pulse = SpectrumPulse::makris_a;
-  } else if (type == "makris_b") {
-    family.pulse = SpectrumPulse::makris_b;
-  } else if (type == "makris_c") {
-    family.pulse = SpectrumPulse::makris_c;
-    family.n = static_cast<int>(reader.integer_or("n", 1, Range::of(domain::makris_c_n)));
-  } else if (type == "ricker") {
-    family.pulse = SpectrumPulse::ricker;
-  }
-  reader.finish(type ? "for type \"" + *type + "\"" : std::string{});
-  if (!type) return std::nullopt;
-  family.canonical = {{"type", *type}};
-  if (family.pulse == SpectrumPulse::cosine || family.pulse == SpectrumPulse::sine)
-    family.canonical["cycles"] = family.cycles;
-  if (family.pulse == SpectrumPulse::makris_c) family.canonical["n"] = family.n;
+  if (typed) read_fields<PulseFamily>(reader, family_shape_fields(family.pulse), family);
+  reader.finish(typed ? "for type \"" + std::string(spectrum_pulse_name(family.pulse)) + "\""
+                      : std::string{});
+  if (!typed) return std::nullopt;
+  family.canonical = json::object();
+  write_fields<PulseFamily>(family, pulse_type_field, family.canonical);
+  write_fields<PulseFamily>(family, family_shape_fields(family.pulse), family.canonical);
   return family;
 }
 
@@ -225,16 +234,7 @@ void check_grid(const SpectrumConfig& config, const Axis& frequency, const Axis&
 }  // namespace
 
 const char* spectrum_pulse_name(SpectrumPulse pulse) {
-  switch (pulse) {
-    case SpectrumPulse::cosine: return "cosine_pulse";
-    case SpectrumPulse::sine: return "sine_pulse";
-    case SpectrumPulse::rectangular: return "rectangular_pulse";
-    case SpectrumPulse::makris_a: return "makris_a";
-    case SpectrumPulse::makris_b: return "makris_b";
-    case SpectrumPulse::makris_c: return "makris_c";
-    case SpectrumPulse::ricker: return "ricker";
-  }
-  return "";
+  return spectrum_pulse_names.name(pulse).data();
 }
 
 std::string spectrum_verdict_meaning() {
@@ -324,14 +324,10 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   const Axis frequency = read_axis(root.required_object("frequency_ratio"), 1);
   const Axis amplitude = read_axis(root.required_object("amplitude_ratio"), 2);
   ObjectReader bisection = root.object("bisection");
-  config.bisection_tolerance = bisection.number_or("tolerance", config.bisection_tolerance,
-                                                   Range::of(domain::bisection_tolerance));
-  config.max_iterations = static_cast<int>(bisection.integer_or(
-      "max_iterations", config.max_iterations, Range::of(domain::bisection_iterations)));
+  read_fields<SpectrumConfig>(bisection, study_fields::spectrum_bisection, config);
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
-  config.settle_allowance_tau = root.number_or("settle_allowance_tau", config.settle_allowance_tau,
-                                               Range::of(domain::settle_allowance_tau));
+  read_fields<SpectrumConfig>(root, study_fields::spectrum_settle, config);
   if (const auto name = root.string("output")) {
     if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
     config.output = *name;
@@ -343,9 +339,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
       errors.add_message(source + ": --output: " + *problem);
     config.output = *output;
   }
-  config.checkpoint_interval_s =
-      root.number_or("checkpoint_interval_s", config.checkpoint_interval_s,
-                     Range::of(domain::checkpoint_interval_s));
+  read_fields<SpectrumConfig>(root, study_fields::spectrum_checkpoint, config);
   root.finish();
 
   if (family) {
@@ -364,12 +358,13 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   config.canonical["pulse"] = family->canonical;
   config.canonical["frequency_ratio"] = frequency.canonical;
   config.canonical["amplitude_ratio"] = amplitude.canonical;
-  config.canonical["bisection"] = {{"tolerance", config.bisection_tolerance},
-                                   {"max_iterations", config.max_iterations}};
+  config.canonical["bisection"] = json::object();
+  write_fields<SpectrumConfig>(config, study_fields::spectrum_bisection,
+                               config.canonical["bisection"]);
   config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
-  config.canonical["settle_allowance_tau"] = config.settle_allowance_tau;
+  write_fields<SpectrumConfig>(config, study_fields::spectrum_settle, config.canonical);
   config.canonical["output"] = config.output.string();
-  config.canonical["checkpoint_interval_s"] = config.checkpoint_interval_s;
+  write_fields<SpectrumConfig>(config, study_fields::spectrum_checkpoint, config.canonical);
   json hashed = config.canonical;
   hashed.erase("output");
   hashed.erase("checkpoint_interval_s");

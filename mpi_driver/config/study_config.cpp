@@ -1,7 +1,6 @@
 #include "mpi_driver/config/study_config.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -14,6 +13,7 @@
 #include "engine/scene/parameter_domains.hpp"
 #include "engine/scene/seat.hpp"
 #include "mpi_driver/config/config_reader.hpp"
+#include "mpi_driver/config/distribution_json.hpp"
 #include "mpi_driver/config/input_file.hpp"
 #include "mpi_driver/config/output_name.hpp"
 #include "mpi_driver/config/scene_json.hpp"
@@ -21,6 +21,7 @@
 #include "mpi_driver/config/study_crest_check.hpp"
 #include "mpi_driver/config/study_fields.hpp"
 #include "mpi_driver/config/study_hash.hpp"
+#include "mpi_driver/config/study_limit_states.hpp"
 #include "sampling/validation.hpp"
 
 namespace blockfrag {
@@ -28,7 +29,6 @@ namespace {
 
 using nlohmann::json;
 
-const Range positive = Range::greater_than(0.0);
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 constexpr StudyInput all_inputs[] = {
@@ -61,39 +61,6 @@ bool within(const Domain& domain, double low, double high, bool log_normal) {
   return (domain.contains(low) || open_at_zero) && domain.contains(high);
 }
 
-std::optional<Distribution> read_distribution(ObjectReader reader) {
-  const auto kind =
-      reader.required_choice("distribution", {"fixed", "uniform", "normal", "lognormal"});
-  if (!kind) return std::nullopt;
-  Distribution distribution = Fixed{};
-  bool complete = true;
-  const auto need = [&](std::string_view key) {
-    const auto value = reader.required_number(key);
-    complete = complete && value.has_value();
-    return value.value_or(0.0);
-  };
-  if (*kind == "fixed") {
-    distribution = Fixed{need("value")};
-  } else if (*kind == "uniform") {
-    distribution = Uniform{need("min"), need("max")};
-  } else if (*kind == "normal") {
-    const double mean = need("mean"), std_dev = need("std_dev");
-    distribution = Normal{mean, std_dev, reader.number("lower"), reader.number("upper")};
-  } else {
-    const double median = need("median"), beta = need("beta");
-    distribution = LogNormal{median, beta, reader.number("lower"), reader.number("upper")};
-  }
-  reader.finish("for distribution \"" + *kind + "\"");
-  if (!complete) return std::nullopt;
-  bool valid = true;
-  for (const auto& violation : validate(distribution)) {
-    reader.errors().add(violation.field.empty() ? reader.path() : reader.path_of(violation.field),
-                        violation.message);
-    valid = false;
-  }
-  return valid ? std::optional<Distribution>(distribution) : std::nullopt;
-}
-
 // direction: {"distribution": "random_sign"} or {"distribution": "fixed", "value": 1 or -1}.
 std::optional<Distribution> read_direction(ObjectReader reader) {
   const auto kind = reader.required_choice("distribution", {"random_sign", "fixed"});
@@ -112,31 +79,11 @@ std::optional<Distribution> read_direction(ObjectReader reader) {
   return distribution;
 }
 
-json distribution_to_json(StudyInput input, const Distribution& distribution) {
-  if (input == StudyInput::direction) {
-    if (const auto* fixed = std::get_if<Fixed>(&distribution))
-      return {{"distribution", "fixed"}, {"value", fixed->value}};
-    return {{"distribution", "random_sign"}};
-  }
-  return std::visit(
-      [](const auto& d) -> json {
-        using T = std::decay_t<decltype(d)>;
-        json out;
-        if constexpr (std::is_same_v<T, Fixed>)
-          out = {{"distribution", "fixed"}, {"value", d.value}};
-        if constexpr (std::is_same_v<T, Uniform>)
-          out = {{"distribution", "uniform"}, {"min", d.min}, {"max", d.max}};
-        if constexpr (std::is_same_v<T, Normal>)
-          out = {{"distribution", "normal"}, {"mean", d.mean}, {"std_dev", d.std_dev}};
-        if constexpr (std::is_same_v<T, LogNormal>)
-          out = {{"distribution", "lognormal"}, {"median", d.median}, {"beta", d.beta}};
-        if constexpr (std::is_same_v<T, Normal> || std::is_same_v<T, LogNormal>) {
-          if (d.lower) out["lower"] = *d.lower;
-          if (d.upper) out["upper"] = *d.upper;
-        }
-        return out;
-      },
-      distribution);
+// A direction's random sign is drawn as Uniform{-1, 1}: its name says what it is.
+json direction_to_json(const Distribution& distribution) {
+  if (const auto* fixed = std::get_if<Fixed>(&distribution))
+    return {{"distribution", "fixed"}, {"value", fixed->value}};
+  return {{"distribution", "random_sign"}};
 }
 
 // Why a study cannot draw the block's size, if it cannot: sampling draws a rectangle's sizes, so a
@@ -232,79 +179,6 @@ void read_inputs(ObjectReader reader, const Scene& base, bool scene_valid, Study
     reader.add_error("direction",
                      "needs a ground motion in /scene/ground_motion (its type is \"none\")");
   }
-}
-
-}  // namespace
-
-// An HDF5 group name of its own: starts with a letter, digit or '_' ("." and ".." name the group
-// itself and its parent), then letters, digits, '_', '-' and '.'.
-bool valid_limit_state_name(const std::string& name) {
-  if (name.empty() || !(std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_'))
-    return false;
-  for (const char c : name) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'))
-      return false;
-  }
-  return true;
-}
-
-namespace {
-
-void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& config,
-                       bool scene_valid) {
-  if (array.valid() && array.size() == 0)
-    root.add_error("limit_states", "must name at least one limit state");
-  for (std::size_t k = 0; k < array.size(); ++k) {
-    ObjectReader reader = array.object(k);
-    if (!reader.valid()) continue;
-    LimitState state;
-    const auto name = reader.required_string("name");
-    if (name && !valid_limit_state_name(*name)) {
-      reader.add_error(
-          "name",
-          "must start with a letter, digit or '_', then letters, digits, '_', '-' or '.' (got \"" +
-              printable_excerpt(*name) + "\")");
-    }
-    for (const auto& other : config.limit_states) {
-      if (name && other.name == *name)
-        reader.add_error("name", "\"" + *name + "\" is used by another limit state");
-    }
-    const auto type = reader.required_choice(
-        "type", {"overturning", "max_rotation", "residual_slide", "post_earthquake_unstable"});
-    if (type == "max_rotation") {
-      state.kind = LimitStateKind::max_rotation;
-      state.threshold = reader.required_number("theta_over_alpha", positive).value_or(0.0);
-    } else if (type == "residual_slide") {
-      state.kind = LimitStateKind::residual_slide;
-      state.threshold = reader.required_number("threshold_m", positive).value_or(0.0);
-    } else if (type == "post_earthquake_unstable") {
-      state.kind = LimitStateKind::post_earthquake_unstable;
-      state.threshold = reader.number_or("threshold", 1.0, positive);
-      if (scene_valid && !config.base_scene.reservoir) {
-        reader.add_error("type",
-                         "\"post_earthquake_unstable\" needs a reservoir in /scene (the safety "
-                         "factors after the earthquake are the reservoir's)");
-      }
-    }
-    if (type != "overturning") {
-      state.overturned_exceeds = reader.boolean_or("overturned_exceeds", true);
-    }
-    reader.finish(type ? "for type \"" + *type + "\"" : std::string{});
-    if (name) {
-      state.name = *name;
-      config.limit_states.push_back(state);
-    }
-  }
-}
-
-json limit_state_to_json(const LimitState& state) {
-  json out = {{"name", state.name}, {"type", limit_state_kind_name(state.kind)}};
-  if (state.kind == LimitStateKind::max_rotation) out["theta_over_alpha"] = state.threshold;
-  if (state.kind == LimitStateKind::residual_slide) out["threshold_m"] = state.threshold;
-  if (state.kind == LimitStateKind::post_earthquake_unstable) out["threshold"] = state.threshold;
-  if (state.kind != LimitStateKind::overturning)
-    out["overturned_exceeds"] = state.overturned_exceeds;
-  return out;
 }
 
 // A scene's errors come back with paths inside the scene; put them under /scene. A record suite
@@ -417,7 +291,9 @@ void check_surface(ObjectReader& root, const StudyConfig& config, bool scene_val
 json canonical_json(const StudyConfig& config) {
   json inputs = json::object();
   for (const auto& spec : config.inputs)
-    inputs[input_key(spec.input)] = distribution_to_json(spec.input, spec.distribution);
+    inputs[input_key(spec.input)] = spec.input == StudyInput::direction
+                                        ? direction_to_json(spec.distribution)
+                                        : distribution_to_json(spec.distribution);
   json limit_states = json::array();
   for (const auto& state : config.limit_states) limit_states.push_back(limit_state_to_json(state));
   json scene = scene_to_json(config.base_scene);
@@ -427,17 +303,15 @@ json canonical_json(const StudyConfig& config) {
     scene["ground_motion"]["content_hash"] =
         hash_to_hex(config.suite->records.front().content_hash);
   }
-  json out = {
-      {"scene", scene},
-      {"inputs", inputs},
-      {"intensity_measure", intensity_measure_to_json(config.intensity)},
-      {"samples_per_level", config.samples_per_level},
-      {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
-                                 : json(config.design == Design::monte_carlo ? "monte_carlo"
-                                                                             : "latin_hypercube")},
-      {"limit_states", limit_states},
-      {"seed", config.seed},
-      {"output", config.output.string()}};
+  json out = {{"scene", scene},
+              {"inputs", inputs},
+              {"intensity_measure", intensity_measure_to_json(config.intensity)},
+              {"samples_per_level", config.samples_per_level},
+              {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
+                                         : json(std::string(design_names.name(config.design)))},
+              {"limit_states", limit_states},
+              {"seed", config.seed},
+              {"output", config.output.string()}};
   write_fields<StudyConfig>(config, study_fields::run, out);
   return out;
 }
@@ -470,16 +344,6 @@ const char* input_key(StudyInput input) {
     case StudyInput::period: return "period";
     case StudyInput::reservoir_level: return "reservoir_level";
     case StudyInput::direction: return "direction";
-  }
-  return "";
-}
-
-const char* limit_state_kind_name(LimitStateKind kind) {
-  switch (kind) {
-    case LimitStateKind::overturning: return "overturning";
-    case LimitStateKind::max_rotation: return "max_rotation";
-    case LimitStateKind::residual_slide: return "residual_slide";
-    case LimitStateKind::post_earthquake_unstable: return "post_earthquake_unstable";
   }
   return "";
 }
@@ -532,7 +396,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
                    "scales the pulse's peak acceleration, but /scene/ground_motion has "
                    "velocity_amplitude 0");
   }
-  const Range samples_range = Range::closed(1, 2147483648.0);
+  const Range samples_range = Range::of(domain::samples_per_level);
   const auto samples = root.required_integer("samples_per_level", samples_range);
   if (overrides.samples_per_level) {
     if (!samples_range.contains(static_cast<double>(*overrides.samples_per_level))) {
@@ -549,16 +413,15 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
     object.finish();
     config.design = config.adaptive->base;
   } else {
-    const auto name = root.has("design")
-                          ? root.required_choice("design", {"monte_carlo", "latin_hypercube"})
-                          : std::optional<std::string>("monte_carlo");
-    config.design = name == "latin_hypercube" ? Design::latin_hypercube : Design::monte_carlo;
+    const auto name =
+        root.has("design") ? root.required_choice("design", design_names.names) : std::nullopt;
+    if (name) config.design = *design_names.value(*name);
   }
   read_limit_states(root.required_array("limit_states"), root, config, scene_valid);
   if (config.adaptive) check_adaptive(root, config);
   if (config.intensity.surface()) check_surface(root, config, scene_valid);
-  config.seed =
-      static_cast<std::uint64_t>(root.required_integer("seed", Range::at_least(0)).value_or(0));
+  config.seed = static_cast<std::uint64_t>(
+      root.required_integer("seed", Range::of(domain::seed)).value_or(0));
   const auto output = root.string("output");
   if (output) {
     if (const auto problem = output_name_problem(*output)) root.add_error("output", *problem);

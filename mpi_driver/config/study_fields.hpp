@@ -1,12 +1,35 @@
-// The key tables (mpi_driver/config/field_table.hpp) of a study's and a spectrum's own settings.
+// The key tables (mpi_driver/config/field_table.hpp) of a study's and a spectrum's own settings,
+// and the JSON names of the study's enums. docs/studies.md's Domains table names each key by its
+// object's path ("intensity_measure.period"; a limit state's keys as "limit_states[].threshold_m").
 #pragma once
 
 #include "engine/scene/parameter_domains.hpp"
+#include "mpi_driver/config/enum_names.hpp"
 #include "mpi_driver/config/field_table.hpp"
 #include "mpi_driver/config/minimum_overturning_json.hpp"
+#include "mpi_driver/config/spectrum_config.hpp"
 #include "mpi_driver/config/study_config.hpp"
 
-namespace blockfrag::study_fields {
+namespace blockfrag {
+
+inline constexpr EnumNames<ImType, 5> im_type_names{
+    {ImType::pulse_amplitude, ImType::pga, ImType::pgv, ImType::sa, ImType::pga_over_g_tan_alpha},
+    {"pulse_amplitude", "pga", "pgv", "sa", "pga_over_g_tan_alpha"}};
+// "scaling": stripes scale every motion to a level; "none" leaves a cloud of motions as they are.
+inline constexpr EnumNames<bool, 2> scaling_names{{false, true}, {"stripes", "none"}};
+inline constexpr EnumNames<LimitStateKind, 4> limit_state_kind_names{
+    {LimitStateKind::overturning, LimitStateKind::max_rotation, LimitStateKind::residual_slide,
+     LimitStateKind::post_earthquake_unstable},
+    {"overturning", "max_rotation", "residual_slide", "post_earthquake_unstable"}};
+// A study's "design", and an adaptive design's "base" (its default first).
+inline constexpr EnumNames<Design, 2> design_names{{Design::monte_carlo, Design::latin_hypercube},
+                                                   {"monte_carlo", "latin_hypercube"}};
+inline constexpr EnumNames<Design, 2> adaptive_base_names{
+    {Design::latin_hypercube, Design::monte_carlo}, {"latin_hypercube", "monte_carlo"}};
+
+namespace study_fields {
+
+using enum Presence;
 
 // What changes no sample's result (output, checkpoints, the failures allowed) is not hashed: the
 // study's reader takes those keys out of the hashed form.
@@ -16,10 +39,66 @@ inline constexpr Field<StudyConfig> run[] = {
      &domain::allowed_failed_fraction},
     {"bootstrap_resamples", &StudyConfig::bootstrap_resamples, &domain::bootstrap_resamples}};
 
+// "type" (its default depends on the ground motion: the reader sets it first), then the keys it
+// selects; "scaling", then a cloud's. The levels and a surface's "second" are read by
+// intensity_measure.cpp.
+inline constexpr Field<IntensityMeasure> measure_type[] = {
+    {"type", choice_member<&IntensityMeasure::type, im_type_names>(), nullptr}};
+inline constexpr Field<IntensityMeasure> sa[] = {
+    {"period", &IntensityMeasure::period, &domain::sa_period, required},
+    {"damping", &IntensityMeasure::damping, &domain::dam_damping}};
+inline constexpr Field<IntensityMeasure> scaling[] = {
+    {"scaling", choice_member<&IntensityMeasure::cloud, scaling_names>(), nullptr}};
+inline constexpr Field<IntensityMeasure> cloud[] = {
+    {"scale", &IntensityMeasure::scale, &domain::cloud_scale}};
+
+// A limit state's "name" and "overturned_exceeds" are read by study_limit_states.cpp; its "type"
+// selects the threshold's key.
+inline constexpr Field<LimitState> limit_state_type[] = {
+    {"type", choice_member<&LimitState::kind, limit_state_kind_names>(), nullptr, required}};
+inline constexpr Field<LimitState> max_rotation[] = {
+    {"theta_over_alpha", &LimitState::threshold, &domain::limit_state_threshold, required}};
+inline constexpr Field<LimitState> residual_slide[] = {
+    {"threshold_m", &LimitState::threshold, &domain::limit_state_threshold, required}};
+// Its threshold defaults to 1: the reader sets it first.
+inline constexpr Field<LimitState> post_earthquake_unstable[] = {
+    {"threshold", &LimitState::threshold, &domain::limit_state_threshold}};
+
+// "design": {"adaptive": {...}}; its "limit_state", a name, is read by adaptive_design.cpp.
+inline constexpr Field<AdaptiveDesign> adaptive_base[] = {
+    {"base", choice_member<&AdaptiveDesign::base, adaptive_base_names>(), nullptr}};
+inline constexpr Field<AdaptiveDesign> adaptive[] = {
+    {"target_relative_width", &AdaptiveDesign::target_relative_width,
+     &domain::target_relative_width},
+    {"pair_probability", &AdaptiveDesign::pair_probability, &domain::pair_probability},
+    {"max_samples", &AdaptiveDesign::max_samples, &domain::adaptive_samples, required}};
+
+// A record suite's entry given as an object: its "file" and "vertical" are read by
+// record_suite.cpp.
+inline constexpr Field<SuiteRecord> suite_record[] = {
+    {"weight", &SuiteRecord::weight, &domain::record_weight}};
+
+// A spectrum's "bisection" object, and its own keys (read before and after "output": three tables
+// keep the order its errors are reported in).
+inline constexpr Field<SpectrumConfig> spectrum_bisection[] = {
+    {"tolerance", &SpectrumConfig::bisection_tolerance, &domain::bisection_tolerance},
+    {"max_iterations", &SpectrumConfig::max_iterations, &domain::bisection_iterations}};
+inline constexpr Field<SpectrumConfig> spectrum_settle[] = {
+    {"settle_allowance_tau", &SpectrumConfig::settle_allowance_tau, &domain::settle_allowance_tau}};
+inline constexpr Field<SpectrumConfig> spectrum_checkpoint[] = {
+    {"checkpoint_interval_s", &SpectrumConfig::checkpoint_interval_s,
+     &domain::checkpoint_interval_s}};
+
 inline constexpr Field<MinimumOverturningSettings> minimum_overturning[] = {
     {"tolerance", &MinimumOverturningSettings::tolerance, &domain::minimum_tolerance},
     {"resolution", &MinimumOverturningSettings::resolution, &domain::minimum_resolution},
     {"near_overturning", &MinimumOverturningSettings::near_overturning, &domain::near_overturning},
     {"max_midpoints", &MinimumOverturningSettings::max_midpoints, &domain::minimum_midpoints}};
 
-}  // namespace blockfrag::study_fields
+}  // namespace study_fields
+
+// The tables of a study's keys above and its distributions' (distribution_json.hpp), under the
+// prefix docs/studies.md's Domains table names them with ("intensity_measure.", "inputs.*.").
+std::vector<KeyTable> study_key_tables();
+
+}  // namespace blockfrag

@@ -1,12 +1,13 @@
-// docs/scenes.md's Domains table against the scene's key tables
-// (mpi_driver/config/scene_fields.hpp): every key a table reads is in the docs with its table's
-// domain, and every scene key the docs list is read, by a table or by the hand-written readers
-// named here.
+// docs/scenes.md's and docs/studies.md's Domains tables against the key tables
+// (mpi_driver/config/scene_fields.hpp, study_fields.hpp): every key a table reads is in the docs
+// with its table's domain, and every key the docs list is read, by a table or by the hand-written
+// readers named here.
 #include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <optional>
 #include <set>
+#include <span>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -14,14 +15,49 @@
 
 #include <gtest/gtest.h>
 
+#include "mpi_driver/config/distribution_json.hpp"
 #include "mpi_driver/config/scene_fields.hpp"
+#include "mpi_driver/config/study_fields.hpp"
 
 namespace blockfrag {
 namespace {
 
-// The scene keys the docs list that a hand-written reader reads, not a table.
-const std::set<std::string> hand_read_keys = {
-    "block.polygon", "seat", "contact.rocking_restitution", "scale", "target_pga_g"};
+// What one docs file's Domains table is checked against: the key tables, the names that select a
+// table (a ground motion's type: not keys, but quoted in the name cells), the keys a hand-written
+// reader reads, and whether the rows of another file's keys (scenes.md's study rows) are skipped.
+struct DocsCheck {
+  std::string file;
+  std::vector<KeyTable> tables;
+  std::set<std::string> selectors;
+  std::set<std::string> hand_read_keys;
+  bool skip_study_rows = false;
+};
+
+DocsCheck scenes_check() {
+  DocsCheck check{"scenes.md", scene_key_tables(), {}, {}, true};
+  check.hand_read_keys = {"block.polygon", "seat", "contact.rocking_restitution", "scale",
+                          "target_pga_g"};
+  for (const std::string_view type : ground_motion_types()) check.selectors.emplace(type);
+  for (const std::string_view method : method_names.names) check.selectors.emplace(method);
+  return check;
+}
+
+DocsCheck studies_check() {
+  DocsCheck check{"studies.md", study_key_tables(), {}, {}, false};
+  check.hand_read_keys = {"inputs.*.distribution",
+                          "intensity_measure.levels",
+                          "intensity_measure.from",
+                          "intensity_measure.to",
+                          "intensity_measure.count",
+                          "samples_per_level",
+                          "seed"};
+  for (const auto& names : {std::span<const std::string_view>(distribution_names),
+                            std::span<const std::string_view>(im_type_names.names),
+                            std::span<const std::string_view>(limit_state_kind_names.names)}) {
+    for (const std::string_view name : names) check.selectors.emplace(name);
+  }
+  return check;
+}
 
 struct DocsRow {
   std::string name_cell;
@@ -29,8 +65,8 @@ struct DocsRow {
   std::string domain_cell;
 };
 
-std::string read_scenes_doc() {
-  std::ifstream in(std::string(BLOCKFRAG_SOURCE_DIR) + "/docs/scenes.md");
+std::string read_doc(const std::string& file) {
+  std::ifstream in(std::string(BLOCKFRAG_SOURCE_DIR) + "/docs/" + file);
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -95,6 +131,10 @@ bool docs_domain_matches(std::string text, const FieldDescription& field) {
   const bool integer = text.rfind(integer_prefix, 0) == 0;
   if (integer != field.integer) return false;
   if (integer) text = text.substr(integer_prefix.size());
+  if (text.rfind("any number", 0) == 0) {
+    return domain.low == -std::numeric_limits<double>::infinity() &&
+           domain.high == std::numeric_limits<double>::infinity();
+  }
   if (text.rfind("any positive finite value", 0) == 0) {
     return domain.low == 0.0 && !domain.low_inclusive &&
            domain.high == std::numeric_limits<double>::infinity();
@@ -110,55 +150,66 @@ bool docs_domain_matches(std::string text, const FieldDescription& field) {
                     domain.high_label);
 }
 
+// The docs' problems with one table key: absent, or listed with another domain (a choice: one of
+// its names not quoted anywhere).
+void check_table_key(const std::string& doc, const std::vector<DocsRow>& rows,
+                     const std::string& name, const FieldDescription& field,
+                     std::vector<std::string>& problems) {
+  if (!field.domain) {
+    for (const std::string& choice : field.choices) {
+      if (doc.find("`\"" + choice + "\"`") == std::string::npos) {
+        problems.push_back(name + ": the docs do not name its choice \"" + choice + "\"");
+      }
+    }
+    return;
+  }
+  bool named = false, matched = false;
+  for (const DocsRow& row : rows) {
+    for (const std::string& key : row.keys) {
+      if (key != name) continue;
+      named = true;
+      matched = matched || docs_domain_matches(row.domain_cell, field);
+    }
+  }
+  if (!named) problems.push_back(name + ": not in the docs' Domains table");
+  if (named && !matched) {
+    problems.push_back(name + ": no row of the docs' Domains table gives its domain " +
+                       (field.integer ? "integer " : "") + field.domain->rule());
+  }
+}
+
 // Every disagreement between the docs' text and the key tables, one line each.
-std::vector<std::string> disagreements(const std::string& doc) {
+std::vector<std::string> disagreements(const std::string& doc, const DocsCheck& check) {
   const std::vector<DocsRow> rows = domain_rows(doc);
   std::vector<std::string> problems;
-  std::set<std::string> table_keys;
-  for (const KeyTable& table : scene_key_tables()) {
+  std::set<std::string> table_keys = check.selectors;
+  for (const KeyTable& table : check.tables) {
     for (const FieldDescription& field : table.fields) {
       const std::string name = table.prefix + field.key;
       table_keys.insert(name);
-      if (!field.domain) {
-        for (const std::string& choice : field.choices) {
-          if (doc.find("`\"" + choice + "\"`") == std::string::npos) {
-            problems.push_back(name + ": the docs do not name its choice \"" + choice + "\"");
-          }
-        }
-        continue;
-      }
-      bool named = false, matched = false;
-      for (const DocsRow& row : rows) {
-        for (const std::string& key : row.keys) {
-          if (key != name) continue;
-          named = true;
-          matched = matched || docs_domain_matches(row.domain_cell, field);
-        }
-      }
-      if (!named) problems.push_back(name + ": not in the docs' Domains table");
-      if (named && !matched) {
-        problems.push_back(name + ": no row of the docs' Domains table gives its domain " +
-                           (field.integer ? "integer " : "") + field.domain->rule());
-      }
+      check_table_key(doc, rows, name, field, problems);
     }
   }
-  // The names that select a table: a ground motion's type, a solver's method.
-  for (const std::string_view type : ground_motion_types()) table_keys.emplace(type);
-  for (const std::string_view method : method_names.names) table_keys.emplace(method);
   for (const DocsRow& row : rows) {
     const std::string& cell = row.name_cell;
     const bool study_row = cell.find("study") != std::string::npos ||
                            cell.find("Latin") != std::string::npos ||
                            cell.find("cloud") != std::string::npos;
-    if (study_row) continue;
+    if (check.skip_study_rows && study_row) continue;
     for (const std::string& key : row.keys) {
-      if (!table_keys.contains(key) && !hand_read_keys.contains(key)) {
+      if (!table_keys.contains(key) && !check.hand_read_keys.contains(key)) {
         problems.push_back(key + ": in the docs' Domains table, read by no key table");
       }
     }
   }
   return problems;
 }
+
+std::vector<std::string> disagreements(const std::string& doc) {
+  return disagreements(doc, scenes_check());
+}
+
+std::string read_scenes_doc() { return read_doc("scenes.md"); }
 
 TEST(ConfigKeyTables, DocsDomainsTableAgreesWithTheSceneKeyTables) {
   const std::vector<std::string> problems = disagreements(read_scenes_doc());
@@ -195,6 +246,55 @@ TEST(ConfigKeyTables, ADocsKeyNoReaderReadsIsFound) {
   EXPECT_EQ(
       disagreements(doc),
       std::vector<std::string>{"initial.phi: in the docs' Domains table, read by no key table"});
+}
+
+TEST(ConfigKeyTables, DocsStudiesDomainsTableAgreesWithTheStudyKeyTables) {
+  const std::vector<std::string> problems = disagreements(read_doc("studies.md"), studies_check());
+  for (const std::string& problem : problems) ADD_FAILURE() << problem;
+}
+
+TEST(ConfigKeyTables, AStudyTableKeyMissingFromTheDocsIsFound) {
+  std::string doc = read_doc("studies.md");
+  const std::string row = "| `design.adaptive.pair_probability` | [0.01, 0.49] | default 0.128 |\n";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.erase(at, row.size());
+  EXPECT_EQ(
+      disagreements(doc, studies_check()),
+      std::vector<std::string>{"design.adaptive.pair_probability: not in the docs' Domains table"});
+}
+
+TEST(ConfigKeyTables, AStudyDocsDomainOtherThanTheTablesIsFound) {
+  std::string doc = read_doc("studies.md");
+  const std::string cell = "| `intensity_measure.damping` (`sa`) | [0, 1) |";
+  const auto at = doc.find(cell);
+  ASSERT_NE(at, std::string::npos);
+  doc.replace(at, cell.size(), "| `intensity_measure.damping` (`sa`) | [0, 1] |");
+  EXPECT_EQ(disagreements(doc, studies_check()),
+            std::vector<std::string>{"intensity_measure.damping: no row of the docs' Domains "
+                                     "table gives its domain must be in [0, 1)"});
+}
+
+TEST(ConfigKeyTables, AStudyChoiceTheDocsDoNotNameIsFound) {
+  std::string doc = read_doc("studies.md");
+  for (std::size_t at = doc.find("`\"stripes\"`"); at != std::string::npos;
+       at = doc.find("`\"stripes\"`")) {
+    doc.replace(at, 11, "stripes");
+  }
+  EXPECT_EQ(disagreements(doc, studies_check()),
+            std::vector<std::string>{
+                "intensity_measure.scaling: the docs do not name its choice \"stripes\""});
+}
+
+TEST(ConfigKeyTables, AStudyDocsKeyNoReaderReadsIsFound) {
+  std::string doc = read_doc("studies.md");
+  const std::string row = "| `seed` |";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.insert(at, "| `design.adaptive.batches` | integer in [1, 10] | |\n");
+  EXPECT_EQ(disagreements(doc, studies_check()),
+            std::vector<std::string>{
+                "design.adaptive.batches: in the docs' Domains table, read by no key table"});
 }
 
 }  // namespace
