@@ -31,7 +31,8 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
 
 ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) const {
   ReservoirLoadSet loads;
-  outline_.place(s, world_);
+  const SineCosine turn = sine_cosine(s.theta);
+  outline_.place(s, turn, world_);
   const Vertex centre = outline_.centre(s);
   const StillWater water{reservoir_.level, reservoir_.density, g_};
   loads.hydrostatic = hydrostatic_load(world_, water, crack_.edges, centre);
@@ -40,7 +41,6 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
                                               reservoir_.depth, crack_.edges, centre[1]);
   }
   if (reservoir_.uplift == UpliftRule::none) return loads;
-  const SineCosine turn = sine_cosine(s.theta);
   place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
   const double head = std::max(0.0, reservoir_.level - crack_world_.front()[1]);
   const double full_head = reservoir_.density * g_ * head;

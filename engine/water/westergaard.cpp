@@ -10,21 +10,29 @@ namespace blockfrag {
 
 namespace {
 
+// A depth u's square root and its powers u^(3/2), u^(5/2), u^(7/2): one square root per depth for
+// its antiderivatives, integrands and derivatives in Z alike.
+struct DepthPowers {
+  double root, u32, u52, u72;
+};
+DepthPowers depth_powers(double u) {
+  const double root = std::sqrt(u);
+  const double u32 = u * root, u52 = u32 * u;
+  return {root, u32, u52, u52 * u};
+}
+
 // The antiderivatives in the depth u of sqrt(u), sqrt(u) (Z - u) and sqrt(u) (Z - u)^2.
-AddedMass depth_antiderivatives(double u, double z) {
-  const double u32 = u * std::sqrt(u), u52 = u32 * u, u72 = u52 * u;
-  return {2.0 / 3.0 * u32, 2.0 / 3.0 * z * u32 - 2.0 / 5.0 * u52,
-          2.0 / 3.0 * z * z * u32 - 4.0 / 5.0 * z * u52 + 2.0 / 7.0 * u72};
+AddedMass depth_antiderivatives(const DepthPowers& p, double z) {
+  return {2.0 / 3.0 * p.u32, 2.0 / 3.0 * z * p.u32 - 2.0 / 5.0 * p.u52,
+          2.0 / 3.0 * z * z * p.u32 - 4.0 / 5.0 * z * p.u52 + 2.0 / 7.0 * p.u72};
 }
 
 // The integrands: the antiderivatives' derivatives in u, and in Z.
-AddedMass depth_integrands(double u, double z) {
-  const double root = std::sqrt(u);
-  return {root, root * (z - u), root * (z - u) * (z - u)};
+AddedMass depth_integrands(double u, const DepthPowers& p, double z) {
+  return {p.root, p.root * (z - u), p.root * (z - u) * (z - u)};
 }
-AddedMass surface_height_derivatives(double u, double z) {
-  const double u32 = u * std::sqrt(u), u52 = u32 * u;
-  return {0.0, 2.0 / 3.0 * u32, 4.0 / 3.0 * z * u32 - 4.0 / 5.0 * u52};
+AddedMass surface_height_derivatives(const DepthPowers& p, double z) {
+  return {0.0, 2.0 / 3.0 * p.u32, 4.0 / 3.0 * z * p.u32 - 4.0 / 5.0 * p.u52};
 }
 
 void add_scaled(AddedMass& total, double scale, const AddedMass& a) {
@@ -55,17 +63,19 @@ AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon
     const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
     const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
     const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre[0];
-    const AddedMass at_deep = depth_antiderivatives(deep, z);
-    const AddedMass at_shallow = depth_antiderivatives(shallow, z);
+    const DepthPowers p_deep = depth_powers(deep), p_shallow = depth_powers(shallow);
+    const AddedMass at_deep = depth_antiderivatives(p_deep, z);
+    const AddedMass at_shallow = depth_antiderivatives(p_shallow, z);
     out.at.mass += scale * (at_deep.mass - at_shallow.mass);
     out.at.first_moment += scale * (at_deep.first_moment - at_shallow.first_moment);
     out.at.second_moment += scale * (at_deep.second_moment - at_shallow.second_moment);
-    const AddedMass f_deep = depth_integrands(deep, z), f_shallow = depth_integrands(shallow, z);
+    const AddedMass f_deep = depth_integrands(deep, p_deep, z);
+    const AddedMass f_shallow = depth_integrands(shallow, p_shallow, z);
     // Rising by dy: both depths and Z fall by dy.
     add_scaled(out.d_dy, -scale, f_deep);
     add_scaled(out.d_dy, scale, f_shallow);
-    add_scaled(out.d_dy, -scale, surface_height_derivatives(deep, z));
-    add_scaled(out.d_dy, scale, surface_height_derivatives(shallow, z));
+    add_scaled(out.d_dy, -scale, surface_height_derivatives(p_deep, z));
+    add_scaled(out.d_dy, scale, surface_height_derivatives(p_shallow, z));
     // Turning by dtheta: a point at x from the centre rises by x dtheta.
     add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
     add_scaled(out.d_dtheta, scale * shallow_x, f_shallow);
@@ -82,8 +92,10 @@ AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, do
   AddedMass total;
   for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
     // Over the piece's projected height, from its shallow end to its deep end.
-    const AddedMass shallow = depth_antiderivatives(std::min(piece.depth_a, piece.depth_b), z);
-    const AddedMass deep = depth_antiderivatives(std::max(piece.depth_a, piece.depth_b), z);
+    const AddedMass shallow =
+        depth_antiderivatives(depth_powers(std::min(piece.depth_a, piece.depth_b)), z);
+    const AddedMass deep =
+        depth_antiderivatives(depth_powers(std::max(piece.depth_a, piece.depth_b)), z);
     total.mass += scale * (deep.mass - shallow.mass);
     total.first_moment += scale * (deep.first_moment - shallow.first_moment);
     total.second_moment += scale * (deep.second_moment - shallow.second_moment);

@@ -34,7 +34,7 @@ void for_each_wetted_piece(const WorldPolygon& polygon, double surface,
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex& a = polygon[i];
-    const Vertex& b = polygon[(i + 1) % n];
+    const Vertex& b = polygon[i + 1 < n ? i + 1 : 0];
     const double dx = b[0] - a[0], dy = b[1] - a[1];
     // A counter-clockwise polygon's outward normal is (dy, -dx) / length: n_x < 0 is a descending
     // edge, whose end b is its lowest point.
