@@ -32,8 +32,13 @@ HydrodynamicLoad::HydrodynamicLoad(WettedBlock block, double surface, double den
 
 LoadAddition HydrodynamicLoad::at(const BlockState& s, double lambda, double g, Footing) const {
   place_body(block_.body, 0.0, s.y, s.theta, world_);
-  const AddedMassWithRates a = westergaard_added_mass_with_rates(
-      world_, surface_, density_, reservoir_depth_, block_.crack_edges, {0.0, s.y});
+  return from_rates(westergaard_added_mass_with_rates(world_, surface_, density_, reservoir_depth_,
+                                                      block_.crack_edges, {0.0, s.y}),
+                    s, lambda, g);
+}
+
+LoadAddition HydrodynamicLoad::from_rates(const AddedMassWithRates& a, const BlockState& s,
+                                          double lambda, double g) const {
   const Matrix m = per_mass(a.at);
   LoadAddition out;
   out.xx = m.xx;

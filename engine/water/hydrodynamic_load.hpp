@@ -47,6 +47,10 @@ class HydrodynamicLoad : public ExternalLoad {
 
   // The added mass's part of the load per unit of the block's mass at s under lambda.
   LoadAddition at(const BlockState& s, double lambda, double g, Footing) const override;
+  // The same from the added mass and its rates at s found by the caller (ReservoirLoads, which
+  // places the block once for all the reservoir's loads).
+  LoadAddition from_rates(const AddedMassWithRates& a, const BlockState& s, double lambda,
+                          double g) const;
 
  private:
   struct Matrix {  // A's three entries, per unit mass

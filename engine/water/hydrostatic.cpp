@@ -10,8 +10,8 @@ WaterLoad hydrostatic_load(const WorldPolygon& polygon, const StillWater& water,
   const double weight = water.density * water.g;  // rho_w g, N/m^3
   WaterLoad total;
   for_each_wetted_piece(polygon, water.surface, crack_edges, [&](const WettedPiece& piece) {
-    const WaterLoad load = linear_pressure_load(piece.a, piece.b, weight * piece.depth_a,
-                                                weight * piece.depth_b, piece.outward, reference);
+    const WaterLoad load = edge_pressure_load(piece.a, piece.b, weight * piece.depth_a,
+                                              weight * piece.depth_b, reference);
     total.fx += load.fx;
     total.fy += load.fy;
     total.moment += load.moment;

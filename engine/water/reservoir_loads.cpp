@@ -23,6 +23,7 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
     : reservoir_(scene.reservoir.value()), g_(scene.g), outline_(scene) {
   crack_ = rest_crack(scene, outline_);
   crack_length_ = crack_.length();
+  crack_lengths_ = segment_lengths(crack_.points);
   const double rest_head = std::max(0.0, reservoir_.level - crack_.points.front()[1]);
   rest_mouth_pressure_ = reservoir_.uplift_area_factor * reservoir_.density * g_ * rest_head;
   const Vertex centre = outline_.rest_centre();
@@ -37,8 +38,11 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
   const StillWater water{reservoir_.level, reservoir_.density, g_};
   loads.hydrostatic = hydrostatic_load(world_, water, crack_.edges, centre);
   if (reservoir_.hydrodynamic == Hydrodynamic::westergaard) {
-    loads.added_mass = westergaard_added_mass(world_, reservoir_.level, reservoir_.density,
-                                              reservoir_.depth, crack_.edges, centre[1]);
+    const AddedMassWithRates added = westergaard_added_mass_with_rates(
+        world_, reservoir_.level, reservoir_.density, reservoir_.depth, crack_.edges, centre);
+    loads.added_mass = added.at;
+    loads.added_mass_d_dy = added.d_dy;
+    loads.added_mass_d_dtheta = added.d_dtheta;
   }
   if (reservoir_.uplift == UpliftRule::none) return loads;
   place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
@@ -49,7 +53,7 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
                                   : reservoir_.uplift_area_factor * full_head;
   const CrackPressure pressure =
       crack_pressure(reservoir_.uplift, crack_length_, closed_mouth, full_head, open);
-  loads.uplift = crack_pressure_load(crack_world_, pressure, centre);
+  loads.uplift = crack_pressure_load(crack_world_, crack_lengths_, pressure, centre);
   return loads;
 }
 
