@@ -26,6 +26,9 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
   crack_lengths_ = segment_lengths(crack_.points);
   const double rest_head = std::max(0.0, reservoir_.level - crack_.points.front()[1]);
   rest_mouth_pressure_ = reservoir_.uplift_area_factor * reservoir_.density * g_ * rest_head;
+  added_mass_scale_ = reservoir_.hydrodynamic == Hydrodynamic::westergaard
+                          ? westergaard_scale(reservoir_.density, reservoir_.depth)
+                          : 0.0;
   const Vertex centre = outline_.rest_centre();
   for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
 }
@@ -35,15 +38,18 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
   const SineCosine turn = sine_cosine(s.theta);
   outline_.place(s, turn, world_);
   const Vertex centre = outline_.centre(s);
-  const StillWater water{reservoir_.level, reservoir_.density, g_};
-  loads.hydrostatic = hydrostatic_load(world_, water, crack_.edges, centre);
-  if (reservoir_.hydrodynamic == Hydrodynamic::westergaard) {
-    const AddedMassWithRates added = westergaard_added_mass_with_rates(
-        world_, reservoir_.level, reservoir_.density, reservoir_.depth, crack_.edges, centre);
-    loads.added_mass = added.at;
-    loads.added_mass_d_dy = added.d_dy;
-    loads.added_mass_d_dtheta = added.d_dtheta;
-  }
+  // The push and the added mass in one pass over the wetted face.
+  const double unit_weight = reservoir_.density * g_;
+  const bool added_mass = reservoir_.hydrodynamic == Hydrodynamic::westergaard;
+  const double z = reservoir_.level - centre[1];
+  AddedMassWithRates added;
+  for_each_wetted_piece(world_, reservoir_.level, crack_.edges, [&](const WettedPiece& piece) {
+    add_hydrostatic_piece(loads.hydrostatic, piece, unit_weight, centre);
+    if (added_mass) add_added_mass_piece(added, piece, added_mass_scale_, z, centre);
+  });
+  loads.added_mass = added.at;
+  loads.added_mass_d_dy = added.d_dy;
+  loads.added_mass_d_dtheta = added.d_dtheta;
   if (reservoir_.uplift == UpliftRule::none) return loads;
   place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
   const double head = std::max(0.0, reservoir_.level - crack_world_.front()[1]);

@@ -59,6 +59,7 @@ class ReservoirLoads {
   double crack_length_;
   std::vector<double> crack_lengths_;  // of its straight pieces, at rest
   double rest_mouth_pressure_;         // c rho_w g h at rest
+  double added_mass_scale_;            // westergaard_scale, "westergaard" only
   mutable WorldPolygon world_;
   mutable std::vector<Vertex> crack_world_;
 };

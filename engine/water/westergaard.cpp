@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "engine/errors.hpp"
-#include "engine/water/wetted_face.hpp"
 
 namespace blockfrag {
 
@@ -41,44 +40,49 @@ void add_scaled(AddedMass& total, double scale, const AddedMass& a) {
   total.second_moment += scale * a.second_moment;
 }
 
-void check_depth(double reservoir_depth) {
+}  // namespace
+
+double westergaard_scale(double density, double reservoir_depth) {
   if (!(reservoir_depth > 0.0)) {
     throw ContractViolation("westergaard_added_mass: the reservoir's depth must be > 0");
   }
+  return 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
 }
 
-}  // namespace
+void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, double scale, double z,
+                          const Vertex& centre) {
+  const bool a_deeper = piece.depth_a > piece.depth_b;
+  const double deep = a_deeper ? piece.depth_a : piece.depth_b;
+  const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
+  const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
+  const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre[0];
+  const DepthPowers p_deep = depth_powers(deep), p_shallow = depth_powers(shallow);
+  const AddedMass at_deep = depth_antiderivatives(p_deep, z);
+  const AddedMass at_shallow = depth_antiderivatives(p_shallow, z);
+  out.at.mass += scale * (at_deep.mass - at_shallow.mass);
+  out.at.first_moment += scale * (at_deep.first_moment - at_shallow.first_moment);
+  out.at.second_moment += scale * (at_deep.second_moment - at_shallow.second_moment);
+  const AddedMass f_deep = depth_integrands(deep, p_deep, z);
+  const AddedMass f_shallow = depth_integrands(shallow, p_shallow, z);
+  // Rising by dy: both depths and Z fall by dy.
+  add_scaled(out.d_dy, -scale, f_deep);
+  add_scaled(out.d_dy, scale, f_shallow);
+  add_scaled(out.d_dy, -scale, surface_height_derivatives(p_deep, z));
+  add_scaled(out.d_dy, scale, surface_height_derivatives(p_shallow, z));
+  // Turning by dtheta: a point at x from the centre rises by x dtheta.
+  add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
+  add_scaled(out.d_dtheta, scale * shallow_x, f_shallow);
+}
 
 AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon, double surface,
                                                      double density, double reservoir_depth,
                                                      std::span<const std::size_t> crack_edges,
                                                      const Vertex& centre) {
-  check_depth(reservoir_depth);
-  const double scale = 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
+  const double scale = westergaard_scale(density, reservoir_depth);
   const double z = surface - centre[1];
   AddedMassWithRates out;
   for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
-    const bool a_deeper = piece.depth_a > piece.depth_b;
-    const double deep = a_deeper ? piece.depth_a : piece.depth_b;
-    const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
-    const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
-    const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre[0];
-    const DepthPowers p_deep = depth_powers(deep), p_shallow = depth_powers(shallow);
-    const AddedMass at_deep = depth_antiderivatives(p_deep, z);
-    const AddedMass at_shallow = depth_antiderivatives(p_shallow, z);
-    out.at.mass += scale * (at_deep.mass - at_shallow.mass);
-    out.at.first_moment += scale * (at_deep.first_moment - at_shallow.first_moment);
-    out.at.second_moment += scale * (at_deep.second_moment - at_shallow.second_moment);
-    const AddedMass f_deep = depth_integrands(deep, p_deep, z);
-    const AddedMass f_shallow = depth_integrands(shallow, p_shallow, z);
-    // Rising by dy: both depths and Z fall by dy.
-    add_scaled(out.d_dy, -scale, f_deep);
-    add_scaled(out.d_dy, scale, f_shallow);
-    add_scaled(out.d_dy, -scale, surface_height_derivatives(p_deep, z));
-    add_scaled(out.d_dy, scale, surface_height_derivatives(p_shallow, z));
-    // Turning by dtheta: a point at x from the centre rises by x dtheta.
-    add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
-    add_scaled(out.d_dtheta, scale * shallow_x, f_shallow);
+    add_added_mass_piece(out, piece, scale, z, centre);
   });
   return out;
 }
@@ -86,8 +90,7 @@ AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon
 AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, double density,
                                  double reservoir_depth, std::span<const std::size_t> crack_edges,
                                  double reference_y) {
-  check_depth(reservoir_depth);
-  const double scale = 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
+  const double scale = westergaard_scale(density, reservoir_depth);
   const double z = surface - reference_y;  // the surface's height above the reference
   AddedMass total;
   for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
