@@ -84,15 +84,19 @@ struct LoadAddition {
 // (rocking on one contact, or in flight). It changes only at events.
 enum class Footing { seated, lifted };
 
+// How the load on a seated block changes as the crack under its base opens: not at all, or the
+// reservoir's uplift drained from the opened part ("zero_in_gap") or the full head filling it
+// ("full_head_in_gap").
+enum class SeatedCrack { unaffected, drains, fills };
+
 class ExternalLoad {
  public:
   virtual ~ExternalLoad() = default;
   virtual LoadAddition at(const BlockState& s, double lambda, double g, Footing footing) const = 0;
-  // Whether the load on a seated block depends on how far the crack under its base has opened
-  // (the reservoir's "zero_in_gap" uplift): the engine then opens it from a lifting outermost
-  // contact's side just far enough to keep that contact's normal force from going negative
-  // (engine/seat/seated_load.hpp).
-  virtual bool opens_seated_crack() const { return false; }
+  // Whether and how the load on a seated block depends on how far the crack under its base has
+  // opened: the engine then opens it from a lifting outermost contact's side just far enough to
+  // keep that contact's normal force from going negative (engine/seat/seated_load.hpp).
+  virtual SeatedCrack seated_crack() const { return SeatedCrack::unaffected; }
   // The load on the seated block with the crack opened over `fraction` of its length from `side`.
   virtual LoadAddition seated_opened(const BlockState& s, double lambda, double g, LiftingSide,
                                      double) const {

@@ -249,8 +249,8 @@ SeatSimulation::CarryingContacts SeatSimulation::carrying_contacts(
   }
   // A load that opens the seated crack opens it for the contacts that carry the block now (a
   // landing block's crack was open while it rocked), as at rest.
-  const bool reseats =
-      external_ != nullptr && external_->opens_seated_crack() && contacts.size() >= 2;
+  const bool reseats = external_ != nullptr &&
+                       external_->seated_crack() != SeatedCrack::unaffected && contacts.size() >= 2;
   const BodyLoad load =
       reseats ? seated_load({geometry_.inertia_per_mass(), motion_.lambda(t_), vertical_.lambda(t_),
                              scene_.g, scene_.contact.friction, external_},

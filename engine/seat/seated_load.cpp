@@ -2,19 +2,41 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <vector>
 
 #include "engine/contact/crack_seating.hpp"
 #include "engine/seat/fixed_state_forces.hpp"
 
 namespace blockfrag {
 
+namespace {
+
+// The loads' counter-clockwise moment about the contact's point, per unit mass.
+double moment_about(const BodyLoad& load, const PlanarContact& c) {
+  return load.moment - (c.r.x * load.force.y - c.r.y * load.force.x);
+}
+
+// The outermost contact that lifts and the one the block would turn about.
+struct Lifting {
+  LiftingSide side;
+  std::size_t corner, pivot;
+  double sense;  // the pivot's moment times sense presses the corner down where it is >= 0
+};
+
+Lifting lifting_at(bool heel_lifts, std::size_t upstream, std::size_t downstream) {
+  return heel_lifts ? Lifting{LiftingSide::upstream, upstream, downstream, 1.0}
+                    : Lifting{LiftingSide::downstream, downstream, upstream, -1.0};
+}
+
+}  // namespace
+
 BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
                      std::span<const PlanarContact> contacts,
                      std::span<const ContactState> states) {
   const BodyLoad closed =
       body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, in.external, s, Footing::seated);
-  if (in.external == nullptr || !in.external->opens_seated_crack() || contacts.size() < 2) {
+  const SeatedCrack crack =
+      in.external == nullptr ? SeatedCrack::unaffected : in.external->seated_crack();
+  if (crack == SeatedCrack::unaffected || contacts.size() < 2) {
     return closed;
   }
   std::size_t upstream = 0, downstream = 0;
@@ -22,27 +44,39 @@ BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
     if (contacts[i].r.x < contacts[upstream].r.x) upstream = i;
     if (contacts[i].r.x > contacts[downstream].r.x) downstream = i;
   }
-  const FixedStateForces forces = fixed_state_forces(contacts, states, s, closed, in.mu);
-  const double heel = forces.normal[upstream], toe = forces.normal[downstream];
-  if (heel >= 0.0 && toe >= 0.0) return closed;
-  const bool heel_lifts = heel <= toe;
-  const LiftingSide side = heel_lifts ? LiftingSide::upstream : LiftingSide::downstream;
-  const std::size_t corner = heel_lifts ? upstream : downstream;
-  const auto opened = [&](double fraction) {
-    return seated_body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, *in.external, s,
-                            side, fraction);
-  };
-  const auto corner_force = [&](std::span<const ContactState> held, double fraction) {
-    return fixed_state_forces(contacts, held, s, opened(fraction), in.mu).normal[corner];
-  };
-  const std::vector<ContactState> sticking(contacts.size(), ContactState::stick);
-  const double at_rest = seating_opening([&](double f) { return corner_force(sticking, f); });
   const bool held = std::all_of(states.begin(), states.end(),
                                 [](ContactState c) { return c == ContactState::stick; });
-  if (held || !(corner_force(states, at_rest) >= 0.0)) return opened(at_rest);
-  const double sliding =
-      at_rest * seating_opening([&](double x) { return corner_force(states, x * at_rest); });
-  return opened(sliding);
+  Lifting lifting{};
+  if (held) {
+    // At rest the forces of three contacts or more are not unique: a corner lifts where the loads
+    // turn the block about the other outermost contact, as in the statics.
+    const bool heel_lifts = moment_about(closed, contacts[downstream]) < 0.0;
+    if (!heel_lifts && !(moment_about(closed, contacts[upstream]) > 0.0)) return closed;
+    lifting = lifting_at(heel_lifts, upstream, downstream);
+  } else {
+    const FixedStateForces forces = fixed_state_forces(contacts, states, s, closed, in.mu);
+    const double heel = forces.normal[upstream], toe = forces.normal[downstream];
+    if (heel >= 0.0 && toe >= 0.0) return closed;
+    lifting = lifting_at(heel <= toe, upstream, downstream);
+  }
+  const auto opened = [&](double fraction) {
+    return seated_body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, *in.external, s,
+                            lifting.side, fraction);
+  };
+  const auto quasi_static = [&] {
+    return seating_opening(
+        [&](double f) { return lifting.sense * moment_about(opened(f), contacts[lifting.pivot]); });
+  };
+  if (held) return opened(quasi_static());
+  const auto corner_force = [&](double fraction) {
+    return fixed_state_forces(contacts, states, s, opened(fraction), in.mu).normal[lifting.corner];
+  };
+  // Filled with the full head, the opening lifts the corner further at rest, and seats a slipping
+  // one only where it lightens the friction that tips the block onto its other corner: the least
+  // opening that seats it is looked for over the whole crack.
+  const double reach = crack == SeatedCrack::fills ? 1.0 : quasi_static();
+  if (!(corner_force(reach) >= 0.0)) return opened(reach);
+  return opened(reach * seating_opening([&](double x) { return corner_force(x * reach); }));
 }
 
 }  // namespace blockfrag

@@ -22,13 +22,15 @@ struct SeatedLoadInput {
 };
 
 // The load at the state s on the active `contacts` in their `states`. The crack's opening is the
-// quasi-static one first, the contacts' normal forces with every contact sticking, as at rest
-// (CADAM's pseudo-static crack length under the loads of the moment). A sliding block's friction
-// grows with the normal force the opening adds and tips it forward, so with the contacts slipping
-// the lifting corner's force can fall again as the crack opens further: the opening is then the
-// least one up to the quasi-static one that seats the corner under the contacts' own states, and
-// where none does, the quasi-static one (the corner lifts: its guard crosses zero). Any other
-// load, or fewer than two contacts: the seated load, body_load(..., Footing::seated).
+// quasi-static one first: the least that keeps the loads' moment about the other outermost contact
+// pressing the lifting one down, as at rest and in the statics (CADAM's pseudo-static crack length
+// under the loads of the moment; the forces of three sticking contacts or more are not unique). A
+// sliding block's friction grows with the normal force the opening adds and tips it forward, so
+// with the contacts slipping the lifting corner's force can fall again as the crack opens further:
+// the opening is then the least one up to the quasi-static one that seats the corner under the
+// contacts' own states, and where none does, the quasi-static one (the corner lifts: its guard
+// crosses zero). Any other load, or fewer than two contacts: the seated load, body_load(...,
+// Footing::seated).
 BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
                      std::span<const PlanarContact> contacts, std::span<const ContactState> states);
 

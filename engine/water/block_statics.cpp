@@ -251,7 +251,9 @@ RestingBlock seated_under(const RestingBlock& block, const RockingWay& way, doub
   const auto opened = [&](double f) {
     return block.opened(CrackOpening::from_side(way.lifting, f));
   };
-  return opened(seating_opening([&](double f) { return way.margin(opened(f), acceleration); }));
+  const double fraction =
+      seating_opening([&](double f) { return way.margin(opened(f), acceleration); });
+  return fraction > 0.0 ? opened(fraction) : block;
 }
 
 // The rocking yield under "zero_in_gap": the crack opens as far as the lifting corner needs, so
@@ -336,7 +338,11 @@ BlockStatics block_statics(const Scene& scene) {
 }
 
 SafetyFactors pseudo_static_safety_factors(const Scene& scene, double coefficient) {
-  return safety_factors(block_at_rest(scene), coefficient);
+  const RestingBlock block = block_at_rest(scene);
+  if (!block.opens_crack) return safety_factors(block, coefficient);
+  // K W downstream lifts the heel: the crack opens as far as the heel needs, as at rest under a
+  // ground acceleration K g upstream (CADAM's crack under a seismic coefficient).
+  return safety_factors(seated_under(block, rocking_way(block, 1.0), coefficient), coefficient);
 }
 
 SafetyFactors post_earthquake_safety_factors(const Scene& scene, const BlockState& final_pose) {

@@ -62,6 +62,7 @@ BlockStatics block_statics(const Scene& scene);
 
 // Pseudo-static, at rest: the seismic coefficient K >= 0 puts K W at the centre of mass and
 // K g M_a at the added mass's centroid, both downstream (the ground accelerating upstream by K g).
+// Under "zero_in_gap" the crack opens from the heel as far as the heel needs under those loads.
 SafetyFactors pseudo_static_safety_factors(const Scene& scene, double coefficient);
 
 // After the earthquake: the block at rest at pose `final_pose` (engine/water/block_outline.hpp),

@@ -40,8 +40,14 @@ LoadAddition ReservoirLoad::at(const BlockState& s, double lambda, double g,
                     footing == Footing::seated ? CrackOpening::closed() : CrackOpening::whole());
 }
 
-bool ReservoirLoad::opens_seated_crack() const {
-  return loads_.uplift_rule() == UpliftRule::zero_in_gap;
+SeatedCrack ReservoirLoad::seated_crack() const {
+  switch (loads_.uplift_rule()) {
+    case UpliftRule::zero_in_gap: return SeatedCrack::drains;
+    case UpliftRule::full_head_in_gap: return SeatedCrack::fills;
+    case UpliftRule::none:
+    case UpliftRule::unchanged: break;
+  }
+  return SeatedCrack::unaffected;
 }
 
 LoadAddition ReservoirLoad::seated_opened(const BlockState& s, double lambda, double g,

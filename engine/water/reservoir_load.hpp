@@ -22,9 +22,9 @@ class ReservoirLoad : public ExternalLoad {
   // The scene must be valid and have a seat and a reservoir.
   explicit ReservoirLoad(const Scene& scene);
   LoadAddition at(const BlockState& s, double lambda, double g, Footing footing) const override;
-  // "zero_in_gap": a seated block's crack opens from the lifting side
+  // "zero_in_gap" and "full_head_in_gap": a seated block's crack opens from the lifting side
   // (engine/seat/seated_load.hpp).
-  bool opens_seated_crack() const override;
+  SeatedCrack seated_crack() const override;
   LoadAddition seated_opened(const BlockState& s, double lambda, double g, LiftingSide side,
                              double fraction) const override;
 

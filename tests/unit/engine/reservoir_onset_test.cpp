@@ -1,8 +1,11 @@
 // The dynamics with the reservoir agree with its statics (engine/water/block_statics.hpp, closed
 // forms over the block's supports): a constant ground acceleration 1e-6 g below a yield
-// acceleration leaves the paper's type A dam block, water at its crest, at rest; 1e-6 g above it
-// starts that motion, that way. Each case's friction makes the motion tested the first to start in
-// its direction.
+// acceleration leaves the paper's dam blocks, water at the crest, at rest; 1e-6 g above it starts
+// that motion, that way. Each case's friction makes the motion tested the first to start in its
+// direction. The type B block's three contacts at rest (heel, fold, toe) carry forces that are not
+// unique: under "zero_in_gap" its crack opens where the loads turn it about the other outermost
+// contact, as in the statics. Under "full_head_in_gap" a block at rest has its crack closed: it
+// lifts a corner where the closed crack's loads lift it, and the full head fills the crack after.
 #include <string>
 #include <vector>
 
@@ -14,15 +17,27 @@
 namespace blockfrag {
 namespace {
 
-Scene wet_type_a(double mu, double lambda) {
+Scene wet_type_a(double mu, double lambda, UpliftRule rule = UpliftRule::unchanged) {
   Scene scene;
   scene.polygon = PolygonBlock{{{0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}}, 411204.0};
   scene.contact = {mu, 0.2};
   scene.reservoir = Reservoir{};
   scene.reservoir->level = 16.7;
+  scene.reservoir->uplift = rule;
   scene.ground_motion = RectangularPulse{lambda, 1.0};
   scene.duration = 0.3;
   scene.solver.tolerance = 1e-10;
+  return scene;
+}
+
+// The type B block on its seat (configs/dam_block_type_b_reservoir.json).
+Scene wet_type_b(double mu, double lambda, UpliftRule rule) {
+  Scene scene = wet_type_a(mu, lambda, rule);
+  const double fold = 5.858333333333333;
+  scene.polygon = PolygonBlock{
+      {{0, 0}, {fold, 0}, {12.525, 5}, {10, 8.366666666666667}, {10, 21.7}, {0, 21.7}}, 521301.0};
+  scene.seat = Seat{{{0, 0}, {fold, 0}, {12.525, 5}}};
+  scene.reservoir->level = 21.7;
   return scene;
 }
 
@@ -38,19 +53,15 @@ double yield_of(const YieldAccelerations& y, const OnsetCase& c) {
   return c.direction > 0 ? y.rock_downstream : y.rock_upstream;
 }
 
-TEST(ReservoirOnset, TheDynamicsStartEachMotionAtItsStaticYieldAcceleration) {
-  const std::vector<OnsetCase> cases{
-      {"slide downstream", 1.05, 1, ModeKind::slide},
-      {"rock upstream", 1.05, -1, ModeKind::rock},
-      {"rock downstream", 2.0, 1, ModeKind::rock},
-      {"slide upstream", 0.5, -1, ModeKind::slide},
-  };
+using WetScene = Scene (*)(double mu, double lambda, UpliftRule rule);
+
+void expect_onsets_at_yields(WetScene wet, UpliftRule rule, const std::vector<OnsetCase>& cases) {
   for (const OnsetCase& c : cases) {
     SCOPED_TRACE(c.name);
-    const double yield = yield_of(block_statics(wet_type_a(c.mu, 0.0)).yield, c);
+    const double yield = yield_of(block_statics(wet(c.mu, 0.0, rule)).yield, c);
     ASSERT_GT(yield, 0.0);
-    const Summary below = simulate(wet_type_a(c.mu, c.direction * (yield - 1e-6)));
-    const Summary above = simulate(wet_type_a(c.mu, c.direction * (yield + 1e-6)));
+    const Summary below = simulate(wet(c.mu, c.direction * (yield - 1e-6), rule));
+    const Summary above = simulate(wet(c.mu, c.direction * (yield + 1e-6), rule));
     ASSERT_EQ(below.status, Status::ok);
     ASSERT_EQ(above.status, Status::ok);
     ASSERT_EQ(below.modes.size(), 1u);
@@ -65,6 +76,32 @@ TEST(ReservoirOnset, TheDynamicsStartEachMotionAtItsStaticYieldAcceleration) {
     } else {
       EXPECT_LT(c.direction * above.final_theta, 0.0);  // downstream: about the toe, clockwise
     }
+  }
+}
+
+TEST(ReservoirOnset, TheDynamicsStartEachMotionAtItsStaticYieldAcceleration) {
+  const std::vector<OnsetCase> cases{
+      {"slide downstream", 1.05, 1, ModeKind::slide},
+      {"rock upstream", 1.05, -1, ModeKind::rock},
+      {"rock downstream", 2.0, 1, ModeKind::rock},
+      {"slide upstream", 0.5, -1, ModeKind::slide},
+  };
+  for (const UpliftRule rule : {UpliftRule::unchanged, UpliftRule::full_head_in_gap}) {
+    SCOPED_TRACE(static_cast<int>(rule));
+    expect_onsets_at_yields(wet_type_a, rule, cases);
+  }
+}
+
+TEST(ReservoirOnset, OnItsSeatTheTypeBBlockStartsEachMotionAtItsStaticYield) {
+  const std::vector<OnsetCase> cases{
+      {"rock downstream", 1.05, 1, ModeKind::rock},
+      {"rock upstream", 1.05, -1, ModeKind::rock},
+      {"slide upstream", 0.3, -1, ModeKind::slide},
+  };
+  for (const UpliftRule rule :
+       {UpliftRule::unchanged, UpliftRule::zero_in_gap, UpliftRule::full_head_in_gap}) {
+    SCOPED_TRACE(static_cast<int>(rule));
+    expect_onsets_at_yields(wet_type_b, rule, cases);
   }
 }
 

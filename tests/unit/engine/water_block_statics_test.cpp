@@ -111,6 +111,55 @@ TEST(BlockStatics, WetRectangleMatchesTheHandComputation) {
   }
 }
 
+// Under "zero_in_gap" K W downstream opens the crack from the heel by a, as far as the heel needs:
+// the uplift left on the closed part, p0 (B - a)^2 / (2B) at 2 (B - a) / 3 from the toe, balances
+// the moments about the toe, (B - a)^3 = 3B / p0 (W B/2 - P d/3 - K (W h_G + g S_base)), so the
+// block stands on its toe (overturning factor 1) and slides at mu (W - U(a)) / (P + K W + K g M_a).
+// Below the closed crack's rocking yield the crack stays closed, as under "unchanged".
+TEST(BlockStatics, ZeroInGapOpensTheCrackUnderTheSeismicCoefficient) {
+  const WetRectangle hand;
+  Scene scene = statics_rectangle(true);
+  scene.reservoir->uplift = UpliftRule::zero_in_gap;
+  const double b = hand.base, d = hand.d;
+  const double p0 = kStaticsArea * kStaticsRho * kStaticsG * d;
+  const double closed_yield = block_statics(statics_rectangle(true)).yield.rock_downstream;
+  const double k = 0.34;
+  ASSERT_GT(k, closed_yield);
+  ASSERT_LT(k, block_statics(scene).yield.rock_downstream);
+  const double resisting =
+      hand.w * b / 2 - hand.push * d / 3 - k * (hand.w * hand.h_g + kStaticsG * hand.s_base);
+  const double closed_length = std::cbrt(3 * b / p0 * resisting);
+  const double uplift = p0 * closed_length * closed_length / (2 * b);
+  const SafetyFactors opened = pseudo_static_safety_factors(scene, k);
+  EXPECT_NEAR(opened.overturning, 1.0, 1e-12);
+  EXPECT_NEAR(
+      opened.sliding,
+      kStaticsMu * (hand.w - uplift) / (hand.push + k * hand.w + k * kStaticsG * hand.added), 1e-9);
+  for (const double below : {0.0, 0.1, closed_yield * (1 - 1e-9)}) {
+    const SafetyFactors zero = pseudo_static_safety_factors(scene, below);
+    const SafetyFactors unchanged = pseudo_static_safety_factors(statics_rectangle(true), below);
+    EXPECT_EQ(zero.sliding, unchanged.sliding) << below;
+    EXPECT_EQ(zero.overturning, unchanged.overturning) << below;
+  }
+}
+
+// At each rule's yield accelerations downstream the pseudo-static factors are 1: the statics'
+// yields and safety factors describe one block.
+TEST(BlockStatics, FactorsAreOneAtTheYieldsUnderEveryUpliftRule) {
+  for (const UpliftRule rule : {UpliftRule::none, UpliftRule::unchanged, UpliftRule::zero_in_gap,
+                                UpliftRule::full_head_in_gap}) {
+    Scene scene = statics_rectangle(true);
+    scene.reservoir->uplift = rule;
+    const YieldAccelerations yield = block_statics(scene).yield;
+    EXPECT_NEAR(pseudo_static_safety_factors(scene, yield.rock_downstream).overturning, 1.0, 1e-12)
+        << static_cast<int>(rule);
+    if (yield.slide_downstream < yield.rock_downstream) {
+      EXPECT_NEAR(pseudo_static_safety_factors(scene, yield.slide_downstream).sliding, 1.0, 1e-12)
+          << static_cast<int>(rule);
+    }
+  }
+}
+
 TEST(BlockStatics, WithoutWestergaardTheWaterAddsNoInertia) {
   const WetRectangle hand;
   const BlockStatics statics = block_statics(statics_rectangle(true, Hydrodynamic::none));
