@@ -20,77 +20,6 @@ constexpr int kMaxUnknowns = 2 * kMaxSeatContacts;
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxUnknowns, kMaxUnknowns>;
 using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxUnknowns, 1>;
 
-}  // namespace
-
-FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
-                                    std::span<const ContactState> states, const BlockState& s,
-                                    const BodyLoad& load, double mu) {
-  FixedStateForces out;
-  const Eigen::Vector3d free_q = load.free_acceleration();
-  const BodyAcceleration free{free_q(0), free_q(1), free_q(2)};
-  out.acceleration = free;
-  if (contacts.empty()) return out;
-  const RigidVelocity v{s.vx, s.vy, s.omega};
-  // Rows: each contact's normal acceleration, and a sticking one's tangential. Unknowns: each
-  // contact's normal force, and a sticking one's friction (a slipping one's follows the normal).
-  std::array<Eigen::RowVector3d, kMaxUnknowns> rows{};
-  std::array<Eigen::Vector3d, kMaxUnknowns> columns{};
-  std::array<double, kMaxUnknowns> rhs{};
-  int k = 0;
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const PlanarContact& c = contacts[i];
-    const Vec2 t = contact_tangent(c);
-    const Eigen::RowVector3d jn = contact_row(c, c.normal), jt = contact_row(c, t);
-    const ContactAcceleration y = contact_acceleration(c, v, free);
-    const int slip = slip_sign(states[i]);
-    rows[static_cast<std::size_t>(k)] = jn;
-    rhs[static_cast<std::size_t>(k)] = -y.normal;
-    columns[static_cast<std::size_t>(k)] = (jn - slip * mu * jt).transpose();
-    ++k;
-    if (slip == 0) {
-      rows[static_cast<std::size_t>(k)] = jt;
-      rhs[static_cast<std::size_t>(k)] = -y.tangent;
-      columns[static_cast<std::size_t>(k)] = jt.transpose();
-      ++k;
-    }
-  }
-  Matrix a(k, k);
-  Vector d(k);
-  for (int r = 0; r < k; ++r) {
-    const Eigen::RowVector3d weighted =
-        load.inertia.inverse_times(rows[static_cast<std::size_t>(r)].transpose()).transpose();
-    for (int col = 0; col < k; ++col)
-      a(r, col) = weighted.dot(columns[static_cast<std::size_t>(col)]);
-    d(r) = rhs[static_cast<std::size_t>(r)];
-  }
-  // Redundant contacts (collinear supports) leave the system singular: the accelerations are then
-  // still determined, and the forces taken are the smallest that give them.
-  const Eigen::FullPivLU<Matrix> lu(a);
-  const Vector amounts = lu.isInvertible() ? Vector(lu.solve(d))
-                                           : Vector(a.completeOrthogonalDecomposition().solve(d));
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  int col = 0;
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const int slip = slip_sign(states[i]);
-    const double normal = amounts(col++);
-    const double tangent = slip == 0 ? amounts(col++) : -slip * mu * normal;
-    out.normal[i] = normal;
-    out.tangent[i] = tangent;
-    const PlanarContact& c = contacts[i];
-    const Vec2 t = contact_tangent(c);
-    const Vec2 f{normal * c.normal.x + tangent * t.x, normal * c.normal.y + tangent * t.y};
-    out.total.x += f.x;
-    out.total.y += f.y;
-    force +=
-        normal * contact_row(c, c.normal).transpose() + tangent * contact_row(c, t).transpose();
-  }
-  const Eigen::Vector3d change = load.inertia.inverse_times(force);
-  out.acceleration = {free.x_dd + change(0), free.y_dd + change(1), free.theta_dd + change(2)};
-  return out;
-}
-
-namespace {
-
 // A row of contact_row's, and Eigen's sum order for a dot product of three.
 struct Row3 {
   double x, y, z;
@@ -127,6 +56,137 @@ std::optional<std::array<double, 2>> full_pivot_solve(std::array<std::array<doub
   const double c0 = (d[0] - c1 * a[0][1]) / a[0][0];
   return swap_columns ? std::array<double, 2>{c1, c0} : std::array<double, 2>{c0, c1};
 }
+
+// A contact's rows of the system: its normal's and tangent's, the normal force's column (a slipping
+// contact's friction follows its normal force) and the right-hand sides.
+struct ContactRows {
+  Eigen::RowVector3d jn, jt;
+  Eigen::Vector3d normal_column;
+  double normal_rhs, tangent_rhs;
+  int slip;
+};
+
+ContactRows contact_rows(const PlanarContact& c, ContactState state, const RigidVelocity& v,
+                         const BodyAcceleration& free, double mu) {
+  const Vec2 t = contact_tangent(c);
+  const Eigen::RowVector3d jn = contact_row(c, c.normal), jt = contact_row(c, t);
+  const ContactAcceleration y = contact_acceleration(c, v, free);
+  const int slip = slip_sign(state);
+  return {jn, jt, (jn - slip * mu * jt).transpose(), -y.normal, -y.tangent, slip};
+}
+
+BodyAcceleration free_acceleration_of(const BodyLoad& load) {
+  const Eigen::Vector3d free_q = load.free_acceleration();
+  return {free_q(0), free_q(1), free_q(2)};
+}
+
+// The forces and accelerations of the amounts solved (per contact its normal force, and a sticking
+// one's friction after it).
+FixedStateForces forces_of_amounts(std::span<const PlanarContact> contacts,
+                                   std::span<const ContactState> states, const BodyLoad& load,
+                                   const BodyAcceleration& free, double mu,
+                                   std::span<const double> amounts) {
+  FixedStateForces out;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  std::size_t col = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const int slip = slip_sign(states[i]);
+    const double normal = amounts[col++];
+    const double tangent = slip == 0 ? amounts[col++] : -slip * mu * normal;
+    out.normal[i] = normal;
+    out.tangent[i] = tangent;
+    const PlanarContact& c = contacts[i];
+    const Vec2 t = contact_tangent(c);
+    const Vec2 f{normal * c.normal.x + tangent * t.x, normal * c.normal.y + tangent * t.y};
+    out.total.x += f.x;
+    out.total.y += f.y;
+    force +=
+        normal * contact_row(c, c.normal).transpose() + tangent * contact_row(c, t).transpose();
+  }
+  const Eigen::Vector3d change = load.inertia.inverse_times(force);
+  out.acceleration = {free.x_dd + change(0), free.y_dd + change(1), free.theta_dd + change(2)};
+  return out;
+}
+
+}  // namespace
+
+FixedStateForces general_fixed_state_forces(std::span<const PlanarContact> contacts,
+                                            std::span<const ContactState> states,
+                                            const BlockState& s, const BodyLoad& load, double mu) {
+  const BodyAcceleration free = free_acceleration_of(load);
+  if (contacts.empty()) {
+    FixedStateForces out;
+    out.acceleration = free;
+    return out;
+  }
+  const RigidVelocity v{s.vx, s.vy, s.omega};
+  // Rows: each contact's normal acceleration, and a sticking one's tangential. Unknowns: each
+  // contact's normal force, and a sticking one's friction (a slipping one's follows the normal).
+  std::array<Eigen::RowVector3d, kMaxUnknowns> rows{};
+  std::array<Eigen::Vector3d, kMaxUnknowns> columns{};
+  std::array<double, kMaxUnknowns> rhs{};
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const ContactRows c = contact_rows(contacts[i], states[i], v, free, mu);
+    rows[k] = c.jn;
+    rhs[k] = c.normal_rhs;
+    columns[k] = c.normal_column;
+    ++k;
+    if (c.slip == 0) {
+      rows[k] = c.jt;
+      rhs[k] = c.tangent_rhs;
+      columns[k] = c.jt.transpose();
+      ++k;
+    }
+  }
+  const auto size = static_cast<Eigen::Index>(k);
+  Matrix a(size, size);
+  Vector d(size);
+  for (Eigen::Index r = 0; r < size; ++r) {
+    const auto row = static_cast<std::size_t>(r);
+    const Eigen::RowVector3d weighted =
+        load.inertia.inverse_times(rows[row].transpose()).transpose();
+    for (Eigen::Index col = 0; col < size; ++col)
+      a(r, col) = weighted.dot(columns[static_cast<std::size_t>(col)]);
+    d(r) = rhs[row];
+  }
+  // Redundant contacts (collinear supports) leave the system singular: the accelerations are then
+  // still determined, and the forces taken are the smallest that give them.
+  const Eigen::FullPivLU<Matrix> lu(a);
+  const Vector amounts = lu.isInvertible() ? Vector(lu.solve(d))
+                                           : Vector(a.completeOrthogonalDecomposition().solve(d));
+  return forces_of_amounts(contacts, states, load, free, mu,
+                           std::span(amounts.data(), static_cast<std::size_t>(amounts.size())));
+}
+
+std::optional<FixedStateForces> two_slipping_contacts_forces(
+    std::span<const PlanarContact> contacts, std::span<const ContactState> states,
+    const BlockState& s, const BodyLoad& load, double mu) {
+  if (contacts.size() != 2 || slip_sign(states[0]) == 0 || slip_sign(states[1]) == 0) {
+    return std::nullopt;
+  }
+  const BodyAcceleration free = free_acceleration_of(load);
+  const RigidVelocity v{s.vx, s.vy, s.omega};
+  const std::array<ContactRows, 2> c{contact_rows(contacts[0], states[0], v, free, mu),
+                                     contact_rows(contacts[1], states[1], v, free, mu)};
+  std::array<std::array<double, 2>, 2> a{};
+  for (std::size_t r = 0; r < 2; ++r) {
+    const Eigen::RowVector3d weighted = load.inertia.inverse_times(c[r].jn.transpose()).transpose();
+    for (std::size_t col = 0; col < 2; ++col) a[r][col] = weighted.dot(c[col].normal_column);
+  }
+  const auto amounts = full_pivot_solve(a, {c[0].normal_rhs, c[1].normal_rhs});
+  if (!amounts) return std::nullopt;
+  return forces_of_amounts(contacts, states, load, free, mu, *amounts);
+}
+
+FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
+                                    std::span<const ContactState> states, const BlockState& s,
+                                    const BodyLoad& load, double mu) {
+  const auto two = two_slipping_contacts_forces(contacts, states, s, load, mu);
+  return two ? *two : general_fixed_state_forces(contacts, states, s, load, mu);
+}
+
+namespace {
 
 // One contact under a coupled mass matrix (the reservoir's added mass): the same 2x2 or 1x1
 // system with M^-1 applied to each row in full.

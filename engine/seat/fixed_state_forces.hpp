@@ -23,10 +23,23 @@ struct FixedStateForces {
 };
 
 // The forces of the fixed states at the state s under the load (per unit mass): any number of
-// contacts, solved by full-pivoting LU (least-norm forces where the contacts are redundant).
+// contacts, solved by full-pivoting LU (least-norm forces where the contacts are redundant); two
+// slipping contacts by two_slipping_contacts_forces where it gives them.
 FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
                                     std::span<const ContactState> states, const BlockState& s,
                                     const BodyLoad& load, double mu);
+// The same always by the LU.
+FixedStateForces general_fixed_state_forces(std::span<const PlanarContact> contacts,
+                                            std::span<const ContactState> states,
+                                            const BlockState& s, const BodyLoad& load, double mu);
+
+// Two slipping contacts (a flat base sliding on its seat: a 2x2 system in the normal forces), the
+// general solve's operations on the same entries in the same order, its LU written out for 2x2 as
+// for one sticking contact below; under any mass matrix. Nothing for other contacts or where the
+// system is singular.
+std::optional<FixedStateForces> two_slipping_contacts_forces(
+    std::span<const PlanarContact> contacts, std::span<const ContactState> states,
+    const BlockState& s, const BodyLoad& load, double mu);
 
 // The same for one contact (sticking: a 2x2 system, slipping: 1x1) in fixed-size arithmetic, the
 // general solve's operations on the same entries in the same order (Eigen's full-pivoting LU

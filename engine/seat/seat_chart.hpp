@@ -29,16 +29,10 @@ namespace seat_chart_detail {
 inline double along(Vec2 p, Vec2 direction) { return p.x * direction.x + p.y * direction.y; }
 
 // body turned by theta.
-class Turner {
- public:
-  Vec2 operator()(Vec2 body, double theta) const {
-    const SineCosine turn = turns_(theta);
-    return rotate(body, turn.cos, turn.sin);
-  }
-
- private:
-  TurnCache turns_;
-};
+inline Vec2 turned(Vec2 body, double theta) {
+  const SineCosine turn = cached_turn(theta);
+  return rotate(body, turn.cos, turn.sin);
+}
 }  // namespace seat_chart_detail
 
 // No contact: theta turns at its constant rate.  q = (x, vx, y, vy) from the origin.
@@ -67,13 +61,12 @@ struct FlightChart {
 struct PivotChart {
   static constexpr int N = 2;
   Vec2 point, body;
-  seat_chart_detail::Turner turned;
 
   PivotChart(Vec2 point_, Vec2 body_) : point(point_), body(body_) {}
 
   OdeState<N> scale(double R, double g) const { return {1.0, std::sqrt(g / R)}; }
   BlockState full(double, const OdeState<N>& q) const {
-    const Vec2 r = turned(body, q[0]);
+    const Vec2 r = seat_chart_detail::turned(body, q[0]);
     return {point.x - r.x, point.y - r.y, q[0], q[1] * r.y, -q[1] * r.x, q[1]};
   }
   OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }
@@ -89,7 +82,6 @@ struct SlipChart {
   Vec2 origin;
   SeatLine line;
   Vec2 body;
-  seat_chart_detail::Turner turned;
 
   SlipChart(Vec2 origin_, const SeatLine& line_, Vec2 body_)
       : origin(origin_), line(line_), body(body_) {}
@@ -98,21 +90,21 @@ struct SlipChart {
     return {1.0, std::sqrt(g / R), R, std::sqrt(g * R)};
   }
   BlockState full(double, const OdeState<N>& q) const {
-    const Vec2 r = turned(body, q[0]);
+    const Vec2 r = seat_chart_detail::turned(body, q[0]);
     const Vec2 d = line.direction, n = line.normal;
     const Vec2 p{origin.x + q[2] * d.x + line.offset * n.x,
                  origin.y + q[2] * d.y + line.offset * n.y};
     return {p.x - r.x, p.y - r.y, q[0], q[3] * d.x + q[1] * r.y, q[3] * d.y - q[1] * r.x, q[1]};
   }
   OdeState<N> coordinates(const BlockState& b) const {
-    const Vec2 r = turned(body, b.theta);
+    const Vec2 r = seat_chart_detail::turned(body, b.theta);
     const Vec2 d = line.direction;
     const Vec2 p{b.x - origin.x + r.x, b.y - origin.y + r.y};
     return {b.theta, b.omega, seat_chart_detail::along(p, d),
             seat_chart_detail::along({b.vx - b.omega * r.y, b.vy + b.omega * r.x}, d)};
   }
   OdeState<N> rates(const OdeState<N>& q, const BlockState& s, const BodyAcceleration& a) const {
-    const Vec2 r = turned(body, s.theta);
+    const Vec2 r = seat_chart_detail::turned(body, s.theta);
     const double w2 = q[1] * q[1];
     const Vec2 vertex{a.x_dd - a.theta_dd * r.y - w2 * r.x, a.y_dd + a.theta_dd * r.x - w2 * r.y};
     return {q[1], a.theta_dd, q[3], seat_chart_detail::along(vertex, line.direction)};

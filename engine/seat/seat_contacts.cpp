@@ -99,7 +99,7 @@ SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
-  const SineCosine turn = turn_(s.theta);
+  const SineCosine turn = cached_turn(s.theta);
   const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
   return {s.x + r.x, s.y + r.y};
 }
@@ -212,7 +212,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
 }
 
 void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
-  const SineCosine turn = turn_(s.theta);
+  const SineCosine turn = cached_turn(s.theta);
   for (std::size_t i = 0; i < body_.size(); ++i) {
     const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
     out[i] = {s.x + r.x, s.y + r.y};
@@ -250,7 +250,10 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2 a = world[i], b = world[j];
     const Vec2 d = minus(b, a), ap = minus(p, a);
-    const double t = std::clamp(dot(d, ap) / dot(d, d), 0.0, 1.0);
+    // Clamped as the quotient would be, without dividing where it is clamped (a point off the
+    // edge's ends: a seat's far ends at every guard evaluation).
+    const double along = dot(d, ap), squared_length = dot(d, d);
+    const double t = along <= 0.0 ? 0.0 : along >= squared_length ? 1.0 : along / squared_length;
     const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
     squared = std::min(squared, dot(off, off));
   }
@@ -264,9 +267,16 @@ bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {
   const std::size_t n = body_.size();
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2 a = world[i], b = world[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) {
-      inside = !inside;
+    if ((a.y > p.y) == (b.y > p.y)) continue;
+    // The edge's x at the point's level lies between a.x and b.x but for a few ulps of them: a
+    // point beside both by more is left or right of it without the division (a seat's far ends at
+    // every guard evaluation).
+    const double rounding = 1e-9 * (std::abs(a.x) + std::abs(b.x));
+    bool left_of_edge = p.x < std::min(a.x, b.x) - rounding;
+    if (!left_of_edge && !(p.x > std::max(a.x, b.x) + rounding)) {
+      left_of_edge = p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
     }
+    if (left_of_edge) inside = !inside;
   }
   return inside;
 }

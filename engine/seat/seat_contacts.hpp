@@ -144,7 +144,6 @@ class SeatContacts {
   double end_depth_ = 0.0;
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
-  TurnCache turn_;
 };
 
 }  // namespace blockfrag

@@ -44,7 +44,9 @@ GuardClaims SeatSystem::live_guards() const {
 }
 
 SeatSystem::Poses SeatSystem::active_poses(const BlockState& s) const {
-  Poses poses{};
+  // Only the active contacts' entries are set and read: zeroing all six was a tenth of a
+  // right-hand side's instructions on one contact.
+  Poses poses;
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
     poses[at] = c_.contacts->pose(active_[at].pair, s);
@@ -65,8 +67,8 @@ const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const P
 }
 
 const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, const Poses& poses) {
-  std::array<PlanarContact, kMaxSeatContacts> contacts{};
-  std::array<ContactState, kMaxSeatContacts> states{};
+  std::array<PlanarContact, kMaxSeatContacts> contacts;  // the first count_ set and read
+  std::array<ContactState, kMaxSeatContacts> states;
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
     contacts[at] = poses[at].contact;

@@ -1,6 +1,8 @@
-// sin and cos of the last two tilts asked for: a step asks for the block's vertices at the same
+// sin and cos of the last few tilts asked for: a step asks for the block's vertices at the same
 // tilts many times over (its ends, by its guards, its forces and its touch checks, which alternate
-// between the step's start and end), and on a pivot every state's position turns its arm.
+// between the step's start and end), and on a pivot every state's position turns its arm. One cache
+// per thread serves every asker: a right-hand side's chart turns the arm at a stage's tilt and the
+// contacts' poses then turn the vertices at the same tilt, which two caches computed twice.
 #pragma once
 
 #include <array>
@@ -12,24 +14,30 @@
 
 namespace blockfrag {
 
-class TurnCache {
- public:
-  SineCosine operator()(double theta) const {
-    const auto bits = std::bit_cast<std::uint64_t>(theta);
-    for (std::size_t i = 0; i < kEntries; ++i) {
-      if (bits_[i] == bits) return turns_[i];
-    }
-    older_ = 1 - older_;
-    bits_[older_] = bits;
-    turns_[older_] = sine_cosine(theta);
-    return turns_[older_];
-  }
+namespace turn_cache_detail {
 
- private:
-  static constexpr std::size_t kEntries = 2;
-  mutable std::array<std::uint64_t, kEntries> bits_{0, 0};  // theta = 0 in both at first
-  mutable std::array<SineCosine, kEntries> turns_{sine_cosine(0.0), sine_cosine(0.0)};
-  mutable std::size_t older_ = 0;
+struct RecentTurns {
+  static constexpr std::size_t kEntries = 4;
+  std::array<std::uint64_t, kEntries> bits{};  // theta = 0 in all at first
+  std::array<SineCosine, kEntries> turns{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}};
+  std::size_t next = 0;  // the entry replaced next, in turn
 };
+
+}  // namespace turn_cache_detail
+
+// sine_cosine(theta), to the bit.
+inline SineCosine cached_turn(double theta) {
+  using turn_cache_detail::RecentTurns;
+  thread_local RecentTurns recent;
+  const auto bits = std::bit_cast<std::uint64_t>(theta);
+  for (std::size_t i = 0; i < RecentTurns::kEntries; ++i) {
+    if (recent.bits[i] == bits) return recent.turns[i];
+  }
+  const std::size_t at = recent.next;
+  recent.next = (at + 1) % RecentTurns::kEntries;
+  recent.bits[at] = bits;
+  recent.turns[at] = sine_cosine(theta);
+  return recent.turns[at];
+}
 
 }  // namespace blockfrag
