@@ -4,7 +4,6 @@
 
 #include "engine/scene/polygon_properties.hpp"
 #include "engine/scene/seat.hpp"
-#include "engine/sine_cosine.hpp"
 
 namespace blockfrag {
 
@@ -18,8 +17,7 @@ BlockOutline::BlockOutline(const Scene& scene) : rest_(scene_block_vertices(scen
   offset_ = scene.seat ? Vertex{0.0, 0.0} : Vertex{centre_[0], bottom_};
 }
 
-void BlockOutline::place(const BlockState& s, WorldPolygon& out) const {
-  const SineCosine turn = sine_cosine(s.theta);
+void BlockOutline::place(const BlockState& s, const SineCosine& turn, WorldPolygon& out) const {
   const Vertex c = centre(s);
   out.resize(body_.size());
   for (std::size_t i = 0; i < body_.size(); ++i) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/scene/block_state.hpp"
+#include "engine/sine_cosine.hpp"
 #include "engine/water/water_load.hpp"
 
 namespace blockfrag {
@@ -34,7 +35,9 @@ class BlockOutline {
   // The centre of mass at pose s, in the scene's frame.
   Vertex centre(const BlockState& s) const { return {offset_[0] + s.x, offset_[1] + s.y}; }
   // The vertices at pose s; `out` is overwritten (its storage reused).
-  void place(const BlockState& s, WorldPolygon& out) const;
+  void place(const BlockState& s, WorldPolygon& out) const { place(s, sine_cosine(s.theta), out); }
+  // The same with s.theta's sine and cosine given, for a caller that turns more than the outline.
+  void place(const BlockState& s, const SineCosine& turn, WorldPolygon& out) const;
 
  private:
   std::vector<Vertex> rest_, body_;

@@ -126,7 +126,7 @@ RestingBlock resting_block(const Scene& scene, const BlockState& pose, UpliftUse
   const double unit_weight = water.density * scene.g;  // rho_w g
   for_each_wetted_piece(body, surface, crack.edges, [&](const WettedPiece& piece) {
     block.hydrostatic.add(split_pressure(piece.a, piece.b, unit_weight * piece.depth_a,
-                                         unit_weight * piece.depth_b, piece.outward));
+                                         unit_weight * piece.depth_b, piece.outward()));
   });
   if (water.hydrodynamic == Hydrodynamic::westergaard) {
     block.added =

@@ -1,5 +1,7 @@
 #include "engine/water/crack_pressure.hpp"
 
+#include <cmath>
+
 #include "engine/errors.hpp"
 #include "engine/water/linear_pressure.hpp"
 
@@ -39,12 +41,24 @@ CrackPressure crack_pressure(UpliftRule rule, double length, double closed_mouth
   return pressure;
 }
 
+std::vector<double> segment_lengths(const std::vector<Vertex>& points) {
+  std::vector<double> lengths;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    lengths.push_back(std::hypot(points[i + 1][0] - points[i][0], points[i + 1][1] - points[i][1]));
+  }
+  return lengths;
+}
+
 WaterLoad crack_pressure_load(const std::vector<Vertex>& points, const CrackPressure& pressure,
                               const Vertex& reference) {
+  return crack_pressure_load(points, segment_lengths(points), pressure, reference);
+}
+
+WaterLoad crack_pressure_load(const std::vector<Vertex>& points, std::span<const double> lengths,
+                              const CrackPressure& pressure, const Vertex& reference) {
   WaterLoad total;
-  for_each_pressure_piece(points, pressure, [&](const PressurePiece& piece) {
-    const WaterLoad load =
-        linear_pressure_load(piece.a, piece.b, piece.p_a, piece.p_b, piece.outward, reference);
+  for_each_pressure_piece(points, lengths, pressure, [&](const PressurePiece& piece) {
+    const WaterLoad load = edge_pressure_load(piece.a, piece.b, piece.p_a, piece.p_b, reference);
     total.fx += load.fx;
     total.fy += load.fy;
     total.moment += load.moment;

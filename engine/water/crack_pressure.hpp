@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "engine/contact/crack_seating.hpp"
@@ -79,17 +80,22 @@ struct PressurePiece {
   Vertex outward;
 };
 
+// The lengths of the crack's straight pieces, points[i] to points[i + 1].
+std::vector<double> segment_lengths(const std::vector<Vertex>& points);
+
 // Calls visit(const PressurePiece&) for each piece of the crack `points` (mouth to end, along the
-// counter-clockwise block's bottom) under one span of `pressure`.
+// counter-clockwise block's bottom) under one span of `pressure`; `lengths` are its pieces'
+// (segment_lengths: a moving crack keeps its lengths at rest, which place pressure spans found at
+// rest where they were).
 template <class Visit>
-void for_each_pressure_piece(const std::vector<Vertex>& points, const CrackPressure& pressure,
-                             Visit&& visit) {
+void for_each_pressure_piece(const std::vector<Vertex>& points, std::span<const double> lengths,
+                             const CrackPressure& pressure, Visit&& visit) {
   double s0 = 0.0;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const Vertex& a = points[i];
     const Vertex& b = points[i + 1];
     const double dx = b[0] - a[0], dy = b[1] - a[1];
-    const double length = std::hypot(dx, dy);
+    const double length = lengths[i];
     const double s1 = s0 + length;
     // A counter-clockwise outline's outward normal is (dy, -dx) / length.
     const Vertex outward{dy / length, -dx / length};
@@ -110,8 +116,17 @@ void for_each_pressure_piece(const std::vector<Vertex>& points, const CrackPress
   }
 }
 
+template <class Visit>
+void for_each_pressure_piece(const std::vector<Vertex>& points, const CrackPressure& pressure,
+                             Visit&& visit) {
+  for_each_pressure_piece(points, segment_lengths(points), pressure, visit);
+}
+
 // The resultant on the block about `reference` (engine/water/linear_pressure.hpp).
 WaterLoad crack_pressure_load(const std::vector<Vertex>& points, const CrackPressure& pressure,
                               const Vertex& reference);
+// The same with the pieces' lengths given (segment_lengths).
+WaterLoad crack_pressure_load(const std::vector<Vertex>& points, std::span<const double> lengths,
+                              const CrackPressure& pressure, const Vertex& reference);
 
 }  // namespace blockfrag

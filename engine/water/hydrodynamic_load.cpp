@@ -8,11 +8,19 @@
 namespace blockfrag {
 
 WorldPolygon world_polygon(const std::vector<Vertex>& body, double x, double y, double theta) {
-  const double c = std::cos(theta), s = std::sin(theta);
   WorldPolygon out;
-  out.reserve(body.size());
-  for (const Vertex& v : body) out.push_back({x + c * v[0] - s * v[1], y + s * v[0] + c * v[1]});
+  place_body(body, x, y, theta, out);
   return out;
+}
+
+void place_body(const std::vector<Vertex>& body, double x, double y, double theta,
+                WorldPolygon& out) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  out.resize(body.size());
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const Vertex& v = body[i];
+    out[i] = {x + c * v[0] - s * v[1], y + s * v[0] + c * v[1]};
+  }
 }
 
 HydrodynamicLoad::HydrodynamicLoad(WettedBlock block, double surface, double density,
@@ -23,9 +31,14 @@ HydrodynamicLoad::HydrodynamicLoad(WettedBlock block, double surface, double den
       reservoir_depth_(reservoir_depth) {}
 
 LoadAddition HydrodynamicLoad::at(const BlockState& s, double lambda, double g, Footing) const {
-  const AddedMassWithRates a =
-      westergaard_added_mass_with_rates(world_polygon(block_.body, 0.0, s.y, s.theta), surface_,
-                                        density_, reservoir_depth_, block_.crack_edges, {0.0, s.y});
+  place_body(block_.body, 0.0, s.y, s.theta, world_);
+  return from_rates(westergaard_added_mass_with_rates(world_, surface_, density_, reservoir_depth_,
+                                                      block_.crack_edges, {0.0, s.y}),
+                    s, lambda, g);
+}
+
+LoadAddition HydrodynamicLoad::from_rates(const AddedMassWithRates& a, const BlockState& s,
+                                          double lambda, double g) const {
   const Matrix m = per_mass(a.at);
   LoadAddition out;
   out.xx = m.xx;

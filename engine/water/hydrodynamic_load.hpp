@@ -35,7 +35,11 @@ struct WettedBlock {
 
 // The block's outline at the pose (x, y, theta) of its centre of mass.
 WorldPolygon world_polygon(const std::vector<Vertex>& body, double x, double y, double theta);
+// The same into `out`, overwritten (its storage reused).
+void place_body(const std::vector<Vertex>& body, double x, double y, double theta,
+                WorldPolygon& out);
 
+// Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
 class HydrodynamicLoad : public ExternalLoad {
  public:
   // `surface`: the water's y; `reservoir_depth`: H, > 0.
@@ -43,6 +47,10 @@ class HydrodynamicLoad : public ExternalLoad {
 
   // The added mass's part of the load per unit of the block's mass at s under lambda.
   LoadAddition at(const BlockState& s, double lambda, double g, Footing) const override;
+  // The same from the added mass and its rates at s found by the caller (ReservoirLoads, which
+  // places the block once for all the reservoir's loads).
+  LoadAddition from_rates(const AddedMassWithRates& a, const BlockState& s, double lambda,
+                          double g) const;
 
  private:
   struct Matrix {  // A's three entries, per unit mass
@@ -52,6 +60,9 @@ class HydrodynamicLoad : public ExternalLoad {
 
   WettedBlock block_;
   double surface_, density_, reservoir_depth_;
+  // at() runs at every right-hand side of the block's equations: the outline's storage is kept
+  // rather than allocated anew each call.
+  mutable WorldPolygon world_;
 };
 
 }  // namespace blockfrag

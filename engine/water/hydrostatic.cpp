@@ -1,7 +1,6 @@
 #include "engine/water/hydrostatic.hpp"
 
 #include "engine/water/linear_pressure.hpp"
-#include "engine/water/wetted_face.hpp"
 
 namespace blockfrag {
 
@@ -10,13 +9,18 @@ WaterLoad hydrostatic_load(const WorldPolygon& polygon, const StillWater& water,
   const double weight = water.density * water.g;  // rho_w g, N/m^3
   WaterLoad total;
   for_each_wetted_piece(polygon, water.surface, crack_edges, [&](const WettedPiece& piece) {
-    const WaterLoad load = linear_pressure_load(piece.a, piece.b, weight * piece.depth_a,
-                                                weight * piece.depth_b, piece.outward, reference);
-    total.fx += load.fx;
-    total.fy += load.fy;
-    total.moment += load.moment;
+    add_hydrostatic_piece(total, piece, weight, reference);
   });
   return total;
+}
+
+void add_hydrostatic_piece(WaterLoad& total, const WettedPiece& piece, double unit_weight,
+                           const Vertex& reference) {
+  const WaterLoad load = edge_pressure_load(piece.a, piece.b, unit_weight * piece.depth_a,
+                                            unit_weight * piece.depth_b, reference);
+  total.fx += load.fx;
+  total.fy += load.fy;
+  total.moment += load.moment;
 }
 
 }  // namespace blockfrag

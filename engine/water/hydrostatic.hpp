@@ -10,6 +10,7 @@
 #include <span>
 
 #include "engine/water/water_load.hpp"
+#include "engine/water/wetted_face.hpp"
 
 namespace blockfrag {
 
@@ -17,5 +18,9 @@ namespace blockfrag {
 // `crack_edges`: the edge indices the reservoir does not wet (the crack's: see wetted_face.hpp).
 WaterLoad hydrostatic_load(const WorldPolygon& polygon, const StillWater& water,
                            std::span<const std::size_t> crack_edges, const Vertex& reference);
+
+// One wetted piece's push and moment added to `total`; `unit_weight` rho_w g.
+void add_hydrostatic_piece(WaterLoad& total, const WettedPiece& piece, double unit_weight,
+                           const Vertex& reference);
 
 }  // namespace blockfrag

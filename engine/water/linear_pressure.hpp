@@ -16,4 +16,12 @@ namespace blockfrag {
 WaterLoad linear_pressure_load(const Vertex& a, const Vertex& b, double p_a, double p_b,
                                const Vertex& outward, const Vertex& reference);
 
+// The same on a piece of a counter-clockwise outline's edge, run in the edge's direction, whose
+// outward normal is (dy, -dx) / l with (dx, dy) = b - a: l cancels from every term,
+//   F = (-dy, dx) (p_a + p_b) / 2,
+//   M = ((a - c) (p_a + p_b) / 2 + (b - a) (p_a + 2 p_b) / 6) x (-dy, dx),
+// so the load needs no square root, and a piece cut from an edge presses along the edge's normal.
+WaterLoad edge_pressure_load(const Vertex& a, const Vertex& b, double p_a, double p_b,
+                             const Vertex& reference);
+
 }  // namespace blockfrag

@@ -10,12 +10,6 @@ namespace blockfrag {
 
 namespace {
 
-// The hydrostatic and uplift part of the reservoir: its added mass is HydrodynamicLoad's.
-Scene without_added_mass(Scene scene) {
-  scene.reservoir->hydrodynamic = Hydrodynamic::none;
-  return scene;
-}
-
 double block_mass(const Scene& scene) {
   return scene.polygon ? scene.polygon->mass : scene.block.mass;
 }
@@ -31,24 +25,23 @@ Scene on_flat_seat(Scene scene) {
 
 }  // namespace
 
-ReservoirLoad::ReservoirLoad(const Scene& scene)
-    : static_loads_(without_added_mass(scene)), mass_(block_mass(scene)) {
+ReservoirLoad::ReservoirLoad(const Scene& scene) : loads_(scene), mass_(block_mass(scene)) {
   if (scene.reservoir->hydrodynamic == Hydrodynamic::westergaard) {
     const BlockOutline outline(scene);
-    hydrodynamic_.emplace(WettedBlock{outline.body(), static_loads_.crack().edges, mass_,
-                                      scene_geometry(scene).size()},
-                          scene.reservoir->level, scene.reservoir->density, scene.reservoir->depth);
+    hydrodynamic_.emplace(
+        WettedBlock{outline.body(), loads_.crack().edges, mass_, scene_geometry(scene).size()},
+        scene.reservoir->level, scene.reservoir->density, scene.reservoir->depth);
   }
 }
 
 LoadAddition ReservoirLoad::at(const BlockState& s, double lambda, double g,
                                Footing footing) const {
-  return with_crack(s, lambda, g, footing,
+  return with_crack(s, lambda, g,
                     footing == Footing::seated ? CrackOpening::closed() : CrackOpening::whole());
 }
 
 SeatedCrack ReservoirLoad::seated_crack() const {
-  switch (static_loads_.uplift_rule()) {
+  switch (loads_.uplift_rule()) {
     case UpliftRule::zero_in_gap: return SeatedCrack::drains;
     case UpliftRule::full_head_in_gap: return SeatedCrack::fills;
     case UpliftRule::none:
@@ -59,13 +52,17 @@ SeatedCrack ReservoirLoad::seated_crack() const {
 
 LoadAddition ReservoirLoad::seated_opened(const BlockState& s, double lambda, double g,
                                           LiftingSide side, double fraction) const {
-  return with_crack(s, lambda, g, Footing::seated, CrackOpening::from_side(side, fraction));
+  return with_crack(s, lambda, g, CrackOpening::from_side(side, fraction));
 }
 
 LoadAddition ReservoirLoad::with_crack(const BlockState& s, double lambda, double g,
-                                       Footing footing, CrackOpening open) const {
-  LoadAddition out = hydrodynamic_ ? hydrodynamic_->at(s, lambda, g, footing) : LoadAddition{};
-  const ReservoirLoadSet loads = static_loads_.at(s, open);
+                                       CrackOpening open) const {
+  const ReservoirLoadSet loads = loads_.at(s, open);
+  LoadAddition out =
+      hydrodynamic_
+          ? hydrodynamic_->from_rates(
+                {loads.added_mass, loads.added_mass_d_dy, loads.added_mass_d_dtheta}, s, lambda, g)
+          : LoadAddition{};
   out.force.x += (loads.hydrostatic.fx + loads.uplift.fx) / mass_;
   out.force.y += (loads.hydrostatic.fy + loads.uplift.fy) / mass_;
   out.moment += (loads.hydrostatic.moment + loads.uplift.moment) / mass_;

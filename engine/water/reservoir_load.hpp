@@ -29,11 +29,10 @@ class ReservoirLoad : public ExternalLoad {
                              double fraction) const override;
 
  private:
-  LoadAddition with_crack(const BlockState& s, double lambda, double g, Footing footing,
-                          CrackOpening open) const;
+  LoadAddition with_crack(const BlockState& s, double lambda, double g, CrackOpening open) const;
 
-  ReservoirLoads static_loads_;  // hydrostatic and uplift
-  std::optional<HydrodynamicLoad> hydrodynamic_;
+  ReservoirLoads loads_;  // hydrostatic, uplift, and the added mass with its rates
+  std::optional<HydrodynamicLoad> hydrodynamic_;  // the added mass's terms in the equations
   double mass_;
 };
 

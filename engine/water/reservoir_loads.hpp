@@ -5,7 +5,7 @@
 //     (engine/water/hydrostatic.hpp);
 //   uplift: the crack's water under the scene's rule, the crack closed or opened as the caller
 //     says (engine/water/crack_pressure.hpp);
-//   added mass: Westergaard's on the wetted face, "westergaard" only
+//   added mass: Westergaard's on the wetted face and its rates, "westergaard" only
 //     (engine/water/westergaard.hpp).
 // The crack is the block's at rest (engine/water/crack_path.hpp): on the flat ground its base, on a
 // seat its outline between the outermost points where the seat holds it. It moves with the block:
@@ -26,6 +26,8 @@ struct ReservoirLoadSet {
   WaterLoad hydrostatic;  // force and moment about the centre of mass
   WaterLoad uplift;       // force and moment about the centre of mass
   AddedMass added_mass;   // M_a, and S_a, I_a about the centre of mass's height
+  // How added_mass changes as the block rises and turns (westergaard_added_mass_with_rates).
+  AddedMass added_mass_d_dy, added_mass_d_dtheta;
 };
 
 // Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
@@ -55,7 +57,9 @@ class ReservoirLoads {
   BlockOutline outline_;
   CrackPath crack_;
   double crack_length_;
-  double rest_mouth_pressure_;  // c rho_w g h at rest
+  std::vector<double> crack_lengths_;  // of its straight pieces, at rest
+  double rest_mouth_pressure_;         // c rho_w g h at rest
+  double added_mass_scale_;            // westergaard_scale, "westergaard" only
   mutable WorldPolygon world_;
   mutable std::vector<Vertex> crack_world_;
 };

@@ -4,27 +4,34 @@
 #include <cmath>
 
 #include "engine/errors.hpp"
-#include "engine/water/wetted_face.hpp"
 
 namespace blockfrag {
 
 namespace {
 
+// A depth u's square root and its powers u^(3/2), u^(5/2), u^(7/2): one square root per depth for
+// its antiderivatives, integrands and derivatives in Z alike.
+struct DepthPowers {
+  double root, u32, u52, u72;
+};
+DepthPowers depth_powers(double u) {
+  const double root = std::sqrt(u);
+  const double u32 = u * root, u52 = u32 * u;
+  return {root, u32, u52, u52 * u};
+}
+
 // The antiderivatives in the depth u of sqrt(u), sqrt(u) (Z - u) and sqrt(u) (Z - u)^2.
-AddedMass depth_antiderivatives(double u, double z) {
-  const double u32 = u * std::sqrt(u), u52 = u32 * u, u72 = u52 * u;
-  return {2.0 / 3.0 * u32, 2.0 / 3.0 * z * u32 - 2.0 / 5.0 * u52,
-          2.0 / 3.0 * z * z * u32 - 4.0 / 5.0 * z * u52 + 2.0 / 7.0 * u72};
+AddedMass depth_antiderivatives(const DepthPowers& p, double z) {
+  return {2.0 / 3.0 * p.u32, 2.0 / 3.0 * z * p.u32 - 2.0 / 5.0 * p.u52,
+          2.0 / 3.0 * z * z * p.u32 - 4.0 / 5.0 * z * p.u52 + 2.0 / 7.0 * p.u72};
 }
 
 // The integrands: the antiderivatives' derivatives in u, and in Z.
-AddedMass depth_integrands(double u, double z) {
-  const double root = std::sqrt(u);
-  return {root, root * (z - u), root * (z - u) * (z - u)};
+AddedMass depth_integrands(double u, const DepthPowers& p, double z) {
+  return {p.root, p.root * (z - u), p.root * (z - u) * (z - u)};
 }
-AddedMass surface_height_derivatives(double u, double z) {
-  const double u32 = u * std::sqrt(u), u52 = u32 * u;
-  return {0.0, 2.0 / 3.0 * u32, 4.0 / 3.0 * z * u32 - 4.0 / 5.0 * u52};
+AddedMass surface_height_derivatives(const DepthPowers& p, double z) {
+  return {0.0, 2.0 / 3.0 * p.u32, 4.0 / 3.0 * z * p.u32 - 4.0 / 5.0 * p.u52};
 }
 
 void add_scaled(AddedMass& total, double scale, const AddedMass& a) {
@@ -33,42 +40,49 @@ void add_scaled(AddedMass& total, double scale, const AddedMass& a) {
   total.second_moment += scale * a.second_moment;
 }
 
-void check_depth(double reservoir_depth) {
+}  // namespace
+
+double westergaard_scale(double density, double reservoir_depth) {
   if (!(reservoir_depth > 0.0)) {
     throw ContractViolation("westergaard_added_mass: the reservoir's depth must be > 0");
   }
+  return 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
 }
 
-}  // namespace
+void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, double scale, double z,
+                          const Vertex& centre) {
+  const bool a_deeper = piece.depth_a > piece.depth_b;
+  const double deep = a_deeper ? piece.depth_a : piece.depth_b;
+  const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
+  const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
+  const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre[0];
+  const DepthPowers p_deep = depth_powers(deep), p_shallow = depth_powers(shallow);
+  const AddedMass at_deep = depth_antiderivatives(p_deep, z);
+  const AddedMass at_shallow = depth_antiderivatives(p_shallow, z);
+  out.at.mass += scale * (at_deep.mass - at_shallow.mass);
+  out.at.first_moment += scale * (at_deep.first_moment - at_shallow.first_moment);
+  out.at.second_moment += scale * (at_deep.second_moment - at_shallow.second_moment);
+  const AddedMass f_deep = depth_integrands(deep, p_deep, z);
+  const AddedMass f_shallow = depth_integrands(shallow, p_shallow, z);
+  // Rising by dy: both depths and Z fall by dy.
+  add_scaled(out.d_dy, -scale, f_deep);
+  add_scaled(out.d_dy, scale, f_shallow);
+  add_scaled(out.d_dy, -scale, surface_height_derivatives(p_deep, z));
+  add_scaled(out.d_dy, scale, surface_height_derivatives(p_shallow, z));
+  // Turning by dtheta: a point at x from the centre rises by x dtheta.
+  add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
+  add_scaled(out.d_dtheta, scale * shallow_x, f_shallow);
+}
 
 AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon, double surface,
                                                      double density, double reservoir_depth,
                                                      std::span<const std::size_t> crack_edges,
                                                      const Vertex& centre) {
-  check_depth(reservoir_depth);
-  const double scale = 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
+  const double scale = westergaard_scale(density, reservoir_depth);
   const double z = surface - centre[1];
   AddedMassWithRates out;
   for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
-    const bool a_deeper = piece.depth_a > piece.depth_b;
-    const double deep = a_deeper ? piece.depth_a : piece.depth_b;
-    const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
-    const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
-    const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre[0];
-    const AddedMass at_deep = depth_antiderivatives(deep, z);
-    const AddedMass at_shallow = depth_antiderivatives(shallow, z);
-    out.at.mass += scale * (at_deep.mass - at_shallow.mass);
-    out.at.first_moment += scale * (at_deep.first_moment - at_shallow.first_moment);
-    out.at.second_moment += scale * (at_deep.second_moment - at_shallow.second_moment);
-    const AddedMass f_deep = depth_integrands(deep, z), f_shallow = depth_integrands(shallow, z);
-    // Rising by dy: both depths and Z fall by dy.
-    add_scaled(out.d_dy, -scale, f_deep);
-    add_scaled(out.d_dy, scale, f_shallow);
-    add_scaled(out.d_dy, -scale, surface_height_derivatives(deep, z));
-    add_scaled(out.d_dy, scale, surface_height_derivatives(shallow, z));
-    // Turning by dtheta: a point at x from the centre rises by x dtheta.
-    add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
-    add_scaled(out.d_dtheta, scale * shallow_x, f_shallow);
+    add_added_mass_piece(out, piece, scale, z, centre);
   });
   return out;
 }
@@ -76,14 +90,15 @@ AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon
 AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, double density,
                                  double reservoir_depth, std::span<const std::size_t> crack_edges,
                                  double reference_y) {
-  check_depth(reservoir_depth);
-  const double scale = 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
+  const double scale = westergaard_scale(density, reservoir_depth);
   const double z = surface - reference_y;  // the surface's height above the reference
   AddedMass total;
   for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
     // Over the piece's projected height, from its shallow end to its deep end.
-    const AddedMass shallow = depth_antiderivatives(std::min(piece.depth_a, piece.depth_b), z);
-    const AddedMass deep = depth_antiderivatives(std::max(piece.depth_a, piece.depth_b), z);
+    const AddedMass shallow =
+        depth_antiderivatives(depth_powers(std::min(piece.depth_a, piece.depth_b)), z);
+    const AddedMass deep =
+        depth_antiderivatives(depth_powers(std::max(piece.depth_a, piece.depth_b)), z);
     total.mass += scale * (deep.mass - shallow.mass);
     total.first_moment += scale * (deep.first_moment - shallow.first_moment);
     total.second_moment += scale * (deep.second_moment - shallow.second_moment);

@@ -26,6 +26,7 @@
 #include <span>
 
 #include "engine/water/water_load.hpp"
+#include "engine/water/wetted_face.hpp"
 
 namespace blockfrag {
 
@@ -55,5 +56,14 @@ AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon
                                                      double density, double reservoir_depth,
                                                      std::span<const std::size_t> crack_edges,
                                                      const Vertex& centre);
+
+// Westergaard's added mass per unit area over the square root of the depth, (7/8) rho_w sqrt(H).
+// Throws ContractViolation for H <= 0.
+double westergaard_scale(double density, double reservoir_depth);
+
+// One wetted piece's added mass and rates about `centre` added to `out`: `scale` from
+// westergaard_scale, `z` the surface's height above the centre.
+void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, double scale, double z,
+                          const Vertex& centre);
 
 }  // namespace blockfrag

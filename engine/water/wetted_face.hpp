@@ -19,11 +19,19 @@
 
 namespace blockfrag {
 
-// One wetted piece of an edge, in the edge's direction (so `outward` is its normal too).
+// One wetted piece of an edge, in the edge's direction (so the edge's normal is its normal too).
 struct WettedPiece {
   Vertex a, b;
-  Vertex outward;           // the edge's outward unit normal
+  Vertex edge;              // the whole edge's end less its start
   double depth_a, depth_b;  // below the surface, m, >= 0
+
+  // The edge's outward unit normal: a counter-clockwise polygon's is (dy, -dx) / length. Found on
+  // demand: the loads of a pressure along the edge need no length
+  // (engine/water/linear_pressure.hpp).
+  Vertex outward() const {
+    const double length = std::sqrt(edge[0] * edge[0] + edge[1] * edge[1]);
+    return {edge[1] / length, -edge[0] / length};
+  }
 };
 
 // Calls visit(const WettedPiece&) for each wetted piece of the counter-clockwise polygon. A surface
@@ -34,14 +42,13 @@ void for_each_wetted_piece(const WorldPolygon& polygon, double surface,
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex& a = polygon[i];
-    const Vertex& b = polygon[(i + 1) % n];
+    const Vertex& b = polygon[i + 1 < n ? i + 1 : 0];
     const double dx = b[0] - a[0], dy = b[1] - a[1];
-    // A counter-clockwise polygon's outward normal is (dy, -dx) / length: n_x < 0 is a descending
-    // edge, whose end b is its lowest point.
+    // The outward normal (dy, -dx) / length has n_x < 0 on a descending edge, whose end b is its
+    // lowest point.
     if (!(dy < 0.0) || !(b[1] < surface)) continue;
     if (std::find(crack_edges.begin(), crack_edges.end(), i) != crack_edges.end()) continue;
-    const double length = std::sqrt(dx * dx + dy * dy);
-    WettedPiece piece{a, b, {dy / length, -dx / length}, surface - a[1], surface - b[1]};
+    WettedPiece piece{a, b, {dx, dy}, surface - a[1], surface - b[1]};
     if (!(a[1] < surface)) {  // the edge crosses the surface: its wetted part starts there
       const double t = (surface - a[1]) / dy;
       piece.a = {a[0] + t * dx, surface};
