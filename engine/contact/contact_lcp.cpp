@@ -77,6 +77,29 @@ using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSize
 using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSize, 1>;
 using Jacobian = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, kMaxSize, 3>;
 
+}  // namespace
+
+// What a choice decomposes (LcpDecompositions): its rows' least-squares reach where it has more
+// than three, its square system's LU and the full-rank column subsets of a singular one, each
+// found when first needed, in the order the search needs them.
+struct ChoiceDecomposition {
+  struct Subset {
+    Matrix columns;
+    std::array<Eigen::Index, kMaxSize> used{};
+    int count = 0;
+    Eigen::ColPivHouseholderQR<Matrix> qr;
+  };
+  Jacobian j;
+  Matrix a;
+  bool pinned = false;
+  std::optional<Eigen::ColPivHouseholderQR<Jacobian>> reach;
+  std::optional<Eigen::FullPivLU<Matrix>> lu;
+  std::vector<Subset> subsets;
+  unsigned next_mask = 1;  // the first subset of columns not yet looked at
+};
+
+namespace {
+
 class Choice {
  public:
   Choice(const LcpProblem& p, const std::vector<ContactState>& states) : p_(p), states_(states) {
@@ -94,55 +117,60 @@ class Choice {
     }
   }
 
-  // The contact forces of this choice, if it is consistent.
-  std::optional<LcpSolution> solve() const {
+  // The matrices of this choice, which the free accelerations do not change.
+  ChoiceDecomposition decompose() const {
     const Eigen::Index k = rows_count_, n = columns_count_;
-    if (k == 0) return check(Vector());
-    Matrix a(k, n);
-    Vector d(k);
-    Jacobian j(k, 3);
+    ChoiceDecomposition out;
+    out.a.resize(k, n);
+    out.j.resize(k, 3);
     for (Eigen::Index r = 0; r < k; ++r) {
       const Row& row = rows_[static_cast<std::size_t>(r)];
       const LcpContact& c = p_.contacts[row.contact];
-      j.row(r) = row.normal ? c.jn : c.jt;
-      const Eigen::RowVector3d y_row = p_.inertia.inverse_times(j.row(r).transpose()).transpose();
+      out.j.row(r) = row.normal ? c.jn : c.jt;
+      const Eigen::RowVector3d y_row =
+          p_.inertia.inverse_times(out.j.row(r).transpose()).transpose();
       for (Eigen::Index col = 0; col < n; ++col) {
-        a(r, col) = y_row.dot(generalized(columns_[static_cast<std::size_t>(col)]));
+        out.a(r, col) = y_row.dot(generalized(columns_[static_cast<std::size_t>(col)]));
       }
-      d(r) = row.normal ? c.target_n - c.free_n : -c.free_t;
     }
-    if (p_.must_move && pins(j)) return std::nullopt;
+    out.pinned = k > 0 && p_.must_move && pins(out.j);
     // More fixed contact values than the body's three freedoms (as when three contacts hold a
     // block at rest): the body must be able to reach them at all. Checked first, as it rules out
     // most such choices at the cost of one small least-squares solve.
-    if (k > 3) {
-      const Eigen::Vector3d reach = j.colPivHouseholderQr().solve(d);
-      if ((j * reach - d).cwiseAbs().maxCoeff() > p_.tolerance) return std::nullopt;
+    if (k > 3 && !out.pinned) out.reach.emplace(out.j);
+    return out;
+  }
+
+  // The contact forces of this choice, if it is consistent.
+  std::optional<LcpSolution> solve(ChoiceDecomposition& m) const {
+    const Eigen::Index k = rows_count_, n = columns_count_;
+    if (k == 0) return check(Vector());
+    Vector d(k);
+    for (Eigen::Index r = 0; r < k; ++r) {
+      const Row& row = rows_[static_cast<std::size_t>(r)];
+      const LcpContact& c = p_.contacts[row.contact];
+      d(r) = row.normal ? c.target_n - c.free_n : -c.free_t;
+    }
+    if (m.pinned) return std::nullopt;
+    if (m.reach) {
+      const Eigen::Vector3d reach = m.reach->solve(d);
+      if ((m.j * reach - d).cwiseAbs().maxCoeff() > p_.tolerance) return std::nullopt;
     }
     // Each stick brings two rows and two columns, each slip one of each: the system is square.
-    const Eigen::FullPivLU<Matrix> lu(a);
-    if (lu.isInvertible()) return check(lu.solve(d));
+    if (!m.lu) m.lu.emplace(m.a);
+    if (m.lu->isInvertible()) return check(m.lu->solve(d));
     // Redundant rows: a non-negative solution, if there is one, lies on rank(A) linearly
     // independent columns (Caratheodory): try those subsets of the cone edges.
-    const auto rank = static_cast<int>(lu.rank());
-    for (unsigned mask = 1; mask < (1u << n); ++mask) {
-      if (std::popcount(mask) != rank) continue;
-      Matrix sub(k, rank);
-      std::array<Eigen::Index, kMaxSize> used{};
-      int count = 0;
-      for (Eigen::Index col = 0; col < n; ++col) {
-        if (mask & (1u << col)) {
-          sub.col(count) = a.col(col);
-          used[static_cast<std::size_t>(count++)] = col;
-        }
-      }
-      const Eigen::ColPivHouseholderQR<Matrix> qr(sub);
-      if (qr.rank() != rank) continue;
-      const Vector part = qr.solve(d);
-      if ((sub * part - d).cwiseAbs().maxCoeff() > p_.tolerance) continue;
+    const auto rank = static_cast<int>(m.lu->rank());
+    for (std::size_t at = 0; at < m.subsets.size() || next_subset(m, rank); ++at) {
+      const ChoiceDecomposition::Subset& subset = m.subsets[at];
+      const Vector part = subset.qr.solve(d);
+      if ((subset.columns * part - d).cwiseAbs().maxCoeff() > p_.tolerance) continue;
       if (part.minCoeff() < -p_.tolerance) continue;
       Vector full = Vector::Zero(n);
-      for (int col = 0; col < count; ++col) full(used[static_cast<std::size_t>(col)]) = part(col);
+      for (int col = 0; col < subset.count; ++col) {
+        full(subset.used[static_cast<std::size_t>(col)]) = part(col);
+      }
       if (auto solution = check(full)) return solution;
     }
     return std::nullopt;
@@ -153,6 +181,30 @@ class Choice {
     std::size_t contact;
     bool normal;
   };
+
+  // Appends the next subset of `rank` columns of m.a whose QR has that rank; false when none is
+  // left.
+  bool next_subset(ChoiceDecomposition& m, int rank) const {
+    const Eigen::Index k = rows_count_, n = columns_count_;
+    for (; m.next_mask < (1u << n); ++m.next_mask) {
+      const unsigned mask = m.next_mask;
+      if (std::popcount(mask) != rank) continue;
+      ChoiceDecomposition::Subset subset;
+      subset.columns.resize(k, rank);
+      for (Eigen::Index col = 0; col < n; ++col) {
+        if (mask & (1u << col)) {
+          subset.columns.col(subset.count) = m.a.col(col);
+          subset.used[static_cast<std::size_t>(subset.count++)] = col;
+        }
+      }
+      subset.qr.compute(subset.columns);
+      if (subset.qr.rank() != rank) continue;
+      m.subsets.push_back(std::move(subset));
+      ++m.next_mask;
+      return true;
+    }
+    return false;
+  }
 
   bool pins(const Jacobian& j) const {
     std::vector<Eigen::RowVector3d> rows;
@@ -237,10 +289,49 @@ bool pins_body(const std::vector<Eigen::RowVector3d>& rows, double length) {
   return lu.rank() == 3;
 }
 
-LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search) {
+struct LcpDecompositions::Kept {
+  // The shape of the problem they are of: each contact's rows and forced slip, the inertia, the
+  // friction, and what decides a pinned choice.
+  std::vector<LcpContact> contacts;
+  BodyInertia inertia{0.0};
+  double friction = 0.0, length = 0.0;
+  bool must_move = false;
+  std::vector<std::vector<ContactState>> choices;
+  std::vector<std::optional<ChoiceDecomposition>> decomposed;  // per choice, once needed
+
+  bool fits(const LcpProblem& p) const {
+    const auto same_shape = [](const LcpContact& a, const LcpContact& b) {
+      return a.jn == b.jn && a.jt == b.jt && a.forced_slip == b.forced_slip;
+    };
+    return !choices.empty() && p.friction == friction && p.length == length &&
+           p.must_move == must_move && p.inertia.k2 == inertia.k2 && p.inertia.xx == inertia.xx &&
+           p.inertia.xtheta == inertia.xtheta && p.inertia.thetatheta == inertia.thetatheta &&
+           std::equal(p.contacts.begin(), p.contacts.end(), contacts.begin(), contacts.end(),
+                      same_shape);
+  }
+  void refit(const LcpProblem& p) {
+    contacts = p.contacts;
+    inertia = p.inertia;
+    friction = p.friction;
+    length = p.length;
+    must_move = p.must_move;
+    choices = choices_in_order(p);
+    decomposed.assign(choices.size(), std::nullopt);
+  }
+};
+
+LcpDecompositions::LcpDecompositions() : kept_(std::make_unique<Kept>()) {}
+LcpDecompositions::~LcpDecompositions() = default;
+
+LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search,
+                              LcpDecompositions* decompositions) {
   if (p.contacts.size() > kMaxContacts) {
     throw ContractViolation("contact problem: more than 6 contacts at once");
   }
+  LcpDecompositions::Kept* kept = decompositions ? decompositions->kept_.get() : nullptr;
+  if (kept && !kept->fits(p)) kept->refit(p);
+  const std::vector<std::vector<ContactState>> own = kept ? decltype(own){} : choices_in_order(p);
+  const std::vector<std::vector<ContactState>>& choices = kept ? kept->choices : own;
   LcpSolution chosen;
   chosen.states.assign(p.contacts.size(), ContactState::off);
   chosen.normal.assign(p.contacts.size(), 0.0);
@@ -248,8 +339,17 @@ LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search) {
   chosen.change.setZero();
   int consistent = 0;
   bool differ = false;
-  for (const auto& states : choices_in_order(p)) {
-    const auto solution = Choice(p, states).solve();
+  for (std::size_t at = 0; at < choices.size(); ++at) {
+    const Choice choice(p, choices[at]);
+    std::optional<LcpSolution> solution;
+    if (kept) {
+      std::optional<ChoiceDecomposition>& m = kept->decomposed[at];
+      if (!m) m = choice.decompose();
+      solution = choice.solve(*m);
+    } else {
+      ChoiceDecomposition m = choice.decompose();
+      solution = choice.solve(m);
+    }
     if (!solution) continue;
     if (consistent == 0) {
       chosen = *solution;

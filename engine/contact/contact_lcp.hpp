@@ -9,6 +9,7 @@
 // touches a seat at a few points) make this exact and let every consistent choice be seen.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -49,8 +50,28 @@ struct LcpSolution {
   int consistent_choices = 0;
 };
 
-LcpSolution solve_contact_lcp(const LcpProblem& problem,
-                              LcpSearch search = LcpSearch::every_choice);
+// What solve_contact_lcp decomposes for each choice of states (its rows' least-squares reach, its
+// square system's LU, the LUs' column subsets) depends on the contacts' rows, the inertia, the
+// friction and the forced slips, not on the free accelerations or targets. A series of problems
+// that differ in those alone (the rest range's search over the ground's acceleration at one state)
+// keeps them here and decomposes each choice once, with the same solutions to the bit. A problem
+// of another shape starts it afresh.
+class LcpDecompositions {
+ public:
+  LcpDecompositions();
+  ~LcpDecompositions();
+  LcpDecompositions(const LcpDecompositions&) = delete;
+  LcpDecompositions& operator=(const LcpDecompositions&) = delete;
+
+  struct Kept;
+
+ private:
+  friend LcpSolution solve_contact_lcp(const LcpProblem&, LcpSearch, LcpDecompositions*);
+  std::unique_ptr<Kept> kept_;
+};
+
+LcpSolution solve_contact_lcp(const LcpProblem& problem, LcpSearch search = LcpSearch::every_choice,
+                              LcpDecompositions* decompositions = nullptr);
 
 // y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
 Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction);

@@ -36,7 +36,8 @@ ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelo
           contact_row(c, c.normal).dot(q_dd) + terms.normal};
 }
 
-PlanarForces resolve_contact_forces(const PlanarForcesInput& in, LcpSearch search) {
+PlanarForces resolve_contact_forces(const PlanarForcesInput& in, LcpSearch search,
+                                    LcpDecompositions* decompositions) {
   const Eigen::Vector3d free_q =
       BodyLoad{in.applied, in.applied_moment, in.inertia}.free_acceleration();
   const BodyAcceleration free{free_q(0), free_q(1), free_q(2)};
@@ -48,7 +49,7 @@ PlanarForces resolve_contact_forces(const PlanarForcesInput& in, LcpSearch searc
     problem.contacts.push_back({contact_row(c, c.normal), contact_row(c, contact_tangent(c)),
                                 y.normal, y.tangent, 0.0, forced, true});
   }
-  const LcpSolution s = solve_contact_lcp(problem, search);
+  const LcpSolution s = solve_contact_lcp(problem, search, decompositions);
   return {s.states,
           s.normal,
           s.tangent,

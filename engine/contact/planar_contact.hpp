@@ -12,6 +12,8 @@
 
 namespace blockfrag {
 
+class LcpDecompositions;
+
 // Which body the contact's normal belongs to: a block vertex on a seat segment (the segment's
 // normal, fixed) or a seat point on a block edge (the edge's normal, turning with the block, which
 // adds the term -2 omega u_t to the normal acceleration).
@@ -97,7 +99,9 @@ struct PlanarForces {
 // engine/contact/contact_resolution.hpp chooses for one corner), then by the contacts' order. A
 // statically indeterminate set (three contacts holding a block at rest) gets one of its force
 // distributions. Inconsistent: no forces (the free motion), reported, never silent.
+// `decompositions`: kept across a series of problems of one shape (engine/contact/contact_lcp.hpp).
 PlanarForces resolve_contact_forces(const PlanarForcesInput& in,
-                                    LcpSearch search = LcpSearch::every_choice);
+                                    LcpSearch search = LcpSearch::every_choice,
+                                    LcpDecompositions* decompositions = nullptr);
 
 }  // namespace blockfrag

@@ -163,7 +163,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   void lay_on(const std::vector<SeatPair>& pairs, BlockState& s) const;
   void project_positions(const std::vector<ActiveContact>& active, BlockState& s) const;
   void project(const SeatMode& mode);
-  bool rest_holds(double lambda) const;
+  // `decompositions`: the contact problem's, kept over the rest range's search.
+  bool rest_holds(double lambda, LcpDecompositions& decompositions) const;
   void set_rest_thresholds(SeatMode& mode) const;
   // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
   double rest_margin(double t, const MotionPiece& piece, const MotionPiece& vertical) const;

@@ -153,7 +153,7 @@ void SeatSimulation::project(const SeatMode& mode) {
 }
 
 // Whether the block at rest on its active contacts stays at rest under lambda (with g).
-bool SeatSimulation::rest_holds(double lambda) const {
+bool SeatSimulation::rest_holds(double lambda, LcpDecompositions& decompositions) const {
   std::vector<PlanarContact> contacts;
   for (const ActiveContact& a : mode_.active) contacts.push_back(contact_of(a.pair, state_));
   const BodyLoad load = seated_load(
@@ -164,7 +164,8 @@ bool SeatSimulation::rest_holds(double lambda) const {
   in.tolerance = kRestTolerance;
   in.applied_moment = load.moment;
   // The first consistent choice decides rest; whether others disagree does not matter here.
-  return holds_at_rest(resolve_contact_forces(in, LcpSearch::first_consistent), in.tolerance);
+  return holds_at_rest(resolve_contact_forces(in, LcpSearch::first_consistent, &decompositions),
+                       in.tolerance);
 }
 
 // The lambda range of rest: rest holds on an interval of lambda (the contact forces that balance
@@ -172,11 +173,13 @@ bool SeatSimulation::rest_holds(double lambda) const {
 // lambda = 0, or, where a load pushes the block (the reservoir's) so that it rests only under the
 // ground's help, from the lambda it came to rest under.
 void SeatSimulation::set_rest_thresholds(SeatMode& mode) const {
+  LcpDecompositions decompositions;
+  const auto holds = [&](double lambda) { return rest_holds(lambda, decompositions); };
   const double start =
-      external_ == nullptr || rest_holds(0.0) ? 0.0 : motion_.lambda(t_) / gravity_factor(t_);
+      external_ == nullptr || holds(0.0) ? 0.0 : motion_.lambda(t_) / gravity_factor(t_);
   const auto edge = [&](double direction) {
     double inside = start, step = direction, outside = start + step;
-    while (rest_holds(outside)) {
+    while (holds(outside)) {
       inside = outside;
       if (std::abs(outside) >= kRestSearchLimit)
         return direction * std::numeric_limits<double>::infinity();
@@ -186,7 +189,7 @@ void SeatSimulation::set_rest_thresholds(SeatMode& mode) const {
     for (int i = 0; i < kRestThresholdHalvings && std::abs(outside - inside) > 0.0; ++i) {
       const double middle = 0.5 * (inside + outside);
       if (middle == inside || middle == outside) break;
-      (rest_holds(middle) ? inside : outside) = middle;
+      (holds(middle) ? inside : outside) = middle;
     }
     return inside;
   };
