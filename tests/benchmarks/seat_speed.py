@@ -6,11 +6,13 @@ Not a test: prints a markdown table. Rows: `blockfrag bench` of configs/dam_bloc
 configs/dam_block_type_a.json (median time of --repeat runs, steps), their ratio B / A, and with
 --studies the wall time of the type B and type A record-suite studies
 (configs/dam_type_b_record_suite.json, configs/record_suite_study.json: the same records, inputs
-and levels) on two ranks, and their ratio. The builds' runs alternate, so that a change of the
-machine's load falls on both.
+and levels) on two ranks, and their ratio. With --wet, also each block under its reservoir
+(configs/dam_block_type_{a,b}_reservoir.json, water at the crest) and its ratio wet / dry: what
+the water costs. The builds' runs alternate, so that a change of the machine's load falls on
+both.
 
     /usr/bin/python3 tests/benchmarks/seat_speed.py --blockfrag build/mpi_driver/blockfrag \\
-        [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies] [--markdown]
+        [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies] [--wet] [--markdown]
 
 --markdown prints under the table the line docs/performance.md shows under it: the version, the
 cores and the load average that measured it, and this command (tests/benchmarks/markdown_stamp.py).
@@ -30,6 +32,7 @@ from markdown_stamp import Stamp
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = {"B": "configs/dam_block_type_b.json", "A": "configs/dam_block_type_a.json"}
 STUDIES = {"B": "configs/dam_type_b_record_suite.json", "A": "configs/record_suite_study.json"}
+WET = {"B": "configs/dam_block_type_b_reservoir.json", "A": "configs/dam_block_type_a_reservoir.json"}
 
 
 def bench(blockfrag, scene, repeat):
@@ -49,11 +52,14 @@ def study_wall(blockfrag, study):
         return time.monotonic() - start
 
 
-def measure(builds, repeat, studies):
+def measure(builds, repeat, studies, wet):
     rows = {name: {} for name in builds}
-    for key, scene in SCENES.items():
+    scenes = [("bench " + key, scene) for key, scene in SCENES.items()]
+    if wet:
+        scenes += [("wet " + key, scene) for key, scene in WET.items()]
+    for label, scene in scenes:
         for name, binary in builds.items():
-            rows[name]["bench " + key] = bench(binary, scene, repeat)
+            rows[name][label] = bench(binary, scene, repeat)
     if studies:
         for key, study in STUDIES.items():
             for name, binary in reversed(list(builds.items())):
@@ -61,7 +67,7 @@ def measure(builds, repeat, studies):
     return rows
 
 
-def table(rows, studies):
+def table(rows, studies, wet):
     names = list(rows)
     lines = ["| measure | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
 
@@ -76,6 +82,12 @@ def table(rows, studies):
         for key in STUDIES:
             row(f"record-suite study type {key}: wall s", lambda r, k=key: f"{r['study ' + k]:.2f}")
         row("**study ratio B / A**", lambda r: f"**{r['study B'] / r['study A']:.2f}**")
+    if wet:
+        for key in SCENES:
+            row(f"bench type {key} under its reservoir: median ms (steps)",
+                lambda r, k=key: f"{r['wet ' + k][0]:.2f} ({r['wet ' + k][1]:,})")
+            row(f"**wet / dry, type {key}**",
+                lambda r, k=key: f"**{r['wet ' + k][0] / r['bench ' + k][0]:.2f}**")
     return "\n".join(lines)
 
 
@@ -86,6 +98,8 @@ def main():
     parser.add_argument("--repeat", type=int, default=10, help="bench runs per scene")
     parser.add_argument("--studies", action="store_true",
                         help="also time the two record-suite studies on two ranks")
+    parser.add_argument("--wet", action="store_true",
+                        help="also bench each block under its reservoir, and wet / dry")
     parser.add_argument("--markdown", action="store_true", help="the stamp line under the table")
     args = parser.parse_args()
     builds = {"build": args.blockfrag}
@@ -96,7 +110,7 @@ def main():
             sys.exit(f"seat_speed.py: no such program: {binary}")
         builds[name] = os.path.abspath(binary)
     stamp = Stamp(builds["build"], note=f"bench medians of {args.repeat} runs") if args.markdown else None
-    print(table(measure(builds, args.repeat, args.studies), args.studies))
+    print(table(measure(builds, args.repeat, args.studies, args.wet), args.studies, args.wet))
     if stamp:
         print()
         print(stamp.line())
