@@ -272,11 +272,6 @@ double difference(const LcpProblem& p, const Eigen::Vector3d& a, const Eigen::Ve
 
 }  // namespace
 
-Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction) {
-  // u = (x' - theta' r_y, y' + theta' r_x): d . u = d_x x' + d_y y' + (r x d) theta'.
-  return {direction.x, direction.y, c.r.x * direction.y - c.r.y * direction.x};
-}
-
 bool pins_body(const std::vector<Eigen::RowVector3d>& rows, double length) {
   if (rows.size() < 3) return false;
   Eigen::MatrixXd scaled(static_cast<Eigen::Index>(rows.size()), 3);

@@ -74,7 +74,11 @@ LcpSolution solve_contact_lcp(const LcpProblem& problem, LcpSearch search = LcpS
                               LcpDecompositions* decompositions = nullptr);
 
 // y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
-Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction);
+// Inline: every right-hand side on a seat asks for it several times per contact.
+inline Eigen::RowVector3d contact_row(const PlanarContact& c, Vec2 direction) {
+  // u = (x' - theta' r_y, y' + theta' r_x): d . u = d_x x' + d_y y' + (r x d) theta'.
+  return {direction.x, direction.y, c.r.x * direction.y - c.r.y * direction.x};
+}
 
 // Whether these rows (contact_row's, each held at a fixed value) leave the body no freedom: rank 3,
 // theta's column taken through `length` (R) so that the rank test compares like with like, to the
