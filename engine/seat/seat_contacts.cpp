@@ -45,6 +45,7 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
   }
   double size = 0.0;
   for (const Vec2& r : body_) size = std::max(size, norm(r));
+  block_radius_ = size;
   straight_ = straight(kContactHeight * size);
   end_depth_ = kContactHeight * size;
   // A seat point between two collinear segments cannot touch a block edge without a vertex of
@@ -259,6 +260,15 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   }
   const double distance = std::sqrt(squared);
   return inside_block(k, world) ? -distance : distance;
+}
+
+double SeatContacts::point_clearance_within(int k, std::span<const Vec2> world, double far) const {
+  // Every point of the block lies within twice its radius of its first vertex.
+  const double diameter = 2.0 * block_radius_;
+  const Vec2 off = minus(seat_[static_cast<std::size_t>(k)], world[0]);
+  const double squared = dot(off, off), reach = diameter + far;
+  if (squared > reach * reach) return std::sqrt(squared) - diameter;
+  return point_clearance(k, world);
 }
 
 bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {

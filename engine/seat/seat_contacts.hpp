@@ -111,6 +111,11 @@ class SeatContacts {
   // vertex_clearance and point_clearance for the vertices given in the world frame.
   double clearance_at(Vec2 p) const;
   double point_clearance(int k, std::span<const Vec2> world) const;
+  // point_clearance where seat point k may lie within `far` of the block; farther, a lower bound
+  // on it above `far`, from one distance instead of a pass over the block's edges (a flat seat's
+  // ends, 1e4 R away, at every guard evaluation). A touching guard that far from zero is only
+  // ever read as positive and far from zero.
+  double point_clearance_within(int k, std::span<const Vec2> world, double far) const;
   // Whether seat point k is inside the block (point_clearance's sign, without its distance).
   bool inside_block(int k, std::span<const Vec2> world) const;
 
@@ -134,7 +139,8 @@ class SeatContacts {
     double length;
   };
 
-  std::vector<Vec2> body_;  // block vertices relative to the centre of mass, body frame
+  std::vector<Vec2> body_;     // block vertices relative to the centre of mass, body frame
+  double block_radius_ = 0.0;  // the farthest vertex from the centre of mass
   std::vector<Vec2> seat_;
   std::vector<Segment> segments_;
   Vec2 centre_;

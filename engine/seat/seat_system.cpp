@@ -147,7 +147,9 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   for (const int i : watched_vertices_) {
     out[g++] = c_.contacts->clearance_at(world[static_cast<std::size_t>(i)]) / R;
   }
-  for (const int k : watched_points_) out[g++] = c_.contacts->point_clearance(k, world) / R;
+  for (const int k : watched_points_) {
+    out[g++] = c_.contacts->point_clearance_within(k, world, R) / R;
+  }
   return out;
 }
 
