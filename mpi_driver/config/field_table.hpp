@@ -2,7 +2,8 @@
 // (engine/scene/parameter_domains.hpp) and whether the key is required. read_fields reads the
 // keys, write_fields writes them into the canonical form (the config hash) and describe_fields
 // lists them for the docs' key tables (tests/unit/driver/config_key_tables_test.cpp compares
-// docs/scenes.md with them), so a key added to a table is read, hashed and documented at once.
+// docs/scenes.md, studies.md and spectra.md with them), so a key added to a table is read, hashed
+// and documented at once.
 // What a table cannot say (a key that selects other keys, a rule across keys) stays with the
 // struct's reader, which calls read_fields for the rest.
 #pragma once

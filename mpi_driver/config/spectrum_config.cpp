@@ -9,11 +9,10 @@
 #include "engine/motion/ground_motion.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "mpi_driver/config/config_reader.hpp"
-#include "mpi_driver/config/enum_names.hpp"
 #include "mpi_driver/config/field_table.hpp"
 #include "mpi_driver/config/output_name.hpp"
 #include "mpi_driver/config/scene_json.hpp"
-#include "mpi_driver/config/study_fields.hpp"
+#include "mpi_driver/config/spectrum_fields.hpp"
 #include "mpi_driver/config/study_hash.hpp"
 
 namespace blockfrag {
@@ -37,10 +36,11 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
   Axis axis;
   if (!reader.valid()) return axis;
   static_assert(domain::spectrum_axis_count.high == static_cast<double>(kMaxSpectrumAxis));
-  const Range positive = Range::of(domain::spectrum_ratio);
   if (reader.has("values")) {
-    for (const char* key : {"from", "to", "count", "spacing"}) {
-      if (reader.has(key)) reader.add_error(key, "give either values or from/to/count, not both");
+    for (const Field<AxisRange>& field : spectrum_fields::axis_range) {
+      if (reader.has(field.key)) {
+        reader.add_error(field.key, "give either values or from/to/count, not both");
+      }
     }
     ArrayReader array = reader.required_array("values");
     if (array.valid() && (array.size() < min_count || array.size() > kMaxSpectrumAxis)) {
@@ -49,7 +49,7 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
                                      std::to_string(array.size()) + ")");
     } else {
       for (std::size_t k = 0; k < array.size(); ++k) {
-        const auto value = array.number(k, positive);
+        const auto value = array.number(k, Range::of(domain::spectrum_ratio));
         if (!value) continue;
         if (!axis.values.empty() && *value <= axis.values.back()) {
           reader.errors().add(array.path_of(k), "must be greater than the value before it");
@@ -63,23 +63,22 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
     reader.finish();
     return axis;
   }
-  const auto from = reader.required_number("from", positive);
-  const auto to = reader.required_number("to", positive);
-  const auto count = reader.required_integer("count", Range::of(domain::spectrum_axis_count));
-  const std::string spacing = reader.choice("spacing", {"linear", "log"}).value_or("linear");
+  AxisRange range;
+  const FieldsRead read = read_fields<AxisRange>(reader, spectrum_fields::axis_range, range);
   reader.finish();
-  if (!from || !to || !count) return axis;
-  if (*to <= *from) {
-    reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
+  if (!read.valid("from") || !read.valid("to") || !read.valid("count")) return axis;
+  const double from = range.from, to = range.to;
+  if (to <= from) {
+    reader.add_error("to", "must be greater than from (" + format_number(from) + ")");
     return axis;
   }
-  const double n = static_cast<double>(*count - 1);
-  for (long k = 0; k < *count; ++k) {
+  const double n = static_cast<double>(range.count - 1);
+  for (long k = 0; k < range.count; ++k) {
     const double x = static_cast<double>(k) / n;
-    double value = spacing == "log" ? std::exp(std::log(*from) + x * std::log(*to / *from))
-                                    : *from + x * (*to - *from);
-    if (k == 0) value = *from;
-    if (k == *count - 1) value = *to;
+    double value =
+        range.log ? std::exp(std::log(from) + x * std::log(to / from)) : from + x * (to - from);
+    if (k == 0) value = from;
+    if (k == range.count - 1) value = to;
     if (!axis.values.empty() && value <= axis.values.back()) {
       reader.add_error("count", "is too large for the range: its values do not increase");
       axis.values.clear();
@@ -89,7 +88,8 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
   }
   axis.first_path = reader.path_of("from");
   axis.last_path = reader.path_of("to");
-  axis.canonical = {{"from", *from}, {"to", *to}, {"count", *count}, {"spacing", spacing}};
+  axis.canonical = json::object();
+  write_fields<AxisRange>(range, spectrum_fields::axis_range, axis.canonical);
   return axis;
 }
 
@@ -107,12 +107,11 @@ std::optional<json> read_block(const json& document, ConfigErrors& errors) {
                        "not both");
     }
   }
-  const auto alpha = reader.required_number("alpha", Range::of(domain::alpha));
-  const auto R = reader.required_number("R", Range::of(domain::block_length));
-  const double mass = reader.number_or("mass", 1.0, Range::of(domain::mass));
+  BlockShape shape;
+  const FieldsRead read = read_fields<BlockShape>(reader, spectrum_fields::block_shape, shape);
   reader.finish();
-  if (!alpha || !R) return std::nullopt;
-  const double a = *R * std::sin(*alpha), b = *R * std::cos(*alpha);
+  if (!read.valid("alpha") || !read.valid("R")) return std::nullopt;
+  const double a = shape.R * std::sin(shape.alpha), b = shape.R * std::cos(shape.alpha);
   bool sizes_valid = true;
   for (const auto& [name, value] : {std::pair{"half_width", a}, std::pair{"half_height", b}}) {
     if (!domain::block_length.contains(value)) {
@@ -125,41 +124,22 @@ std::optional<json> read_block(const json& document, ConfigErrors& errors) {
   // Sizes out of their domain are reported here, at the keys the file has: the scene reader would
   // report them again at /block/half_width, a key the file does not have.
   if (!sizes_valid) return std::nullopt;
-  return json{{"half_width", a}, {"half_height", b}, {"mass", mass}};
+  return json{{"half_width", a}, {"half_height", b}, {"mass", shape.mass}};
 }
 
-struct PulseFamily {
-  SpectrumPulse pulse = SpectrumPulse::cosine;
-  double cycles = 1.0;
-  int n = 1;
-  json canonical;
-};
-
-constexpr EnumNames<SpectrumPulse, 7> spectrum_pulse_names{
-    {SpectrumPulse::cosine, SpectrumPulse::sine, SpectrumPulse::rectangular,
-     SpectrumPulse::makris_a, SpectrumPulse::makris_b, SpectrumPulse::makris_c,
-     SpectrumPulse::ricker},
-    {"cosine_pulse", "sine_pulse", "rectangular_pulse", "makris_a", "makris_b", "makris_c",
-     "ricker"}};
-
-// The family's "type" selects its shape's key: a cosine or sine pulse's cycles, makris_c's n.
-constexpr Field<PulseFamily> pulse_type_field[] = {
-    {"type", choice_member<&PulseFamily::pulse, spectrum_pulse_names>(), nullptr,
-     Presence::required}};
-constexpr Field<PulseFamily> periodic_family[] = {
-    {"cycles", &PulseFamily::cycles, &domain::pulse_cycles}};
-constexpr Field<PulseFamily> makris_c_family[] = {{"n", &PulseFamily::n, &domain::makris_c_n}};
-
 std::span<const Field<PulseFamily>> family_shape_fields(SpectrumPulse pulse) {
-  if (pulse == SpectrumPulse::cosine || pulse == SpectrumPulse::sine) return periodic_family;
-  if (pulse == SpectrumPulse::makris_c) return makris_c_family;
+  if (pulse == SpectrumPulse::cosine || pulse == SpectrumPulse::sine) {
+    return spectrum_fields::periodic_family;
+  }
+  if (pulse == SpectrumPulse::makris_c) return spectrum_fields::makris_c_family;
   return {};
 }
 
 std::optional<PulseFamily> read_pulse(ObjectReader reader) {
   if (!reader.valid()) return std::nullopt;
   PulseFamily family;
-  const bool typed = read_fields<PulseFamily>(reader, pulse_type_field, family).valid("type");
+  const bool typed =
+      read_fields<PulseFamily>(reader, spectrum_fields::pulse_type, family).valid("type");
   for (const char* key : {"amplitude_g", "period", "duration", "t0"}) {
     if (reader.has(key)) {
       reader.add_error(key,
@@ -171,10 +151,14 @@ std::optional<PulseFamily> read_pulse(ObjectReader reader) {
   reader.finish(typed ? "for type \"" + std::string(spectrum_pulse_name(family.pulse)) + "\""
                       : std::string{});
   if (!typed) return std::nullopt;
-  family.canonical = json::object();
-  write_fields<PulseFamily>(family, pulse_type_field, family.canonical);
-  write_fields<PulseFamily>(family, family_shape_fields(family.pulse), family.canonical);
   return family;
+}
+
+json pulse_to_json(const PulseFamily& family) {
+  json out = json::object();
+  write_fields<PulseFamily>(family, spectrum_fields::pulse_type, out);
+  write_fields<PulseFamily>(family, family_shape_fields(family.pulse), out);
+  return out;
 }
 
 // The grid's extreme points must give scenes inside the scene domains: the shortest and longest
@@ -324,10 +308,10 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   const Axis frequency = read_axis(root.required_object("frequency_ratio"), 1);
   const Axis amplitude = read_axis(root.required_object("amplitude_ratio"), 2);
   ObjectReader bisection = root.object("bisection");
-  read_fields<SpectrumConfig>(bisection, study_fields::spectrum_bisection, config);
+  read_fields<SpectrumConfig>(bisection, spectrum_fields::bisection, config);
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
-  read_fields<SpectrumConfig>(root, study_fields::spectrum_settle, config);
+  read_fields<SpectrumConfig>(root, spectrum_fields::settle, config);
   if (const auto name = root.string("output")) {
     if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
     config.output = *name;
@@ -339,7 +323,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
       errors.add_message(source + ": --output: " + *problem);
     config.output = *output;
   }
-  read_fields<SpectrumConfig>(root, study_fields::spectrum_checkpoint, config);
+  read_fields<SpectrumConfig>(root, spectrum_fields::checkpoint, config);
   root.finish();
 
   if (family) {
@@ -355,16 +339,15 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   const json scene_form = scene_to_json(config.base_scene);
   config.canonical = json::object();
   for (const char* key : kSceneKeys) config.canonical[key] = scene_form[key];
-  config.canonical["pulse"] = family->canonical;
+  config.canonical["pulse"] = pulse_to_json(*family);
   config.canonical["frequency_ratio"] = frequency.canonical;
   config.canonical["amplitude_ratio"] = amplitude.canonical;
   config.canonical["bisection"] = json::object();
-  write_fields<SpectrumConfig>(config, study_fields::spectrum_bisection,
-                               config.canonical["bisection"]);
+  write_fields<SpectrumConfig>(config, spectrum_fields::bisection, config.canonical["bisection"]);
   config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
-  write_fields<SpectrumConfig>(config, study_fields::spectrum_settle, config.canonical);
+  write_fields<SpectrumConfig>(config, spectrum_fields::settle, config.canonical);
   config.canonical["output"] = config.output.string();
-  write_fields<SpectrumConfig>(config, study_fields::spectrum_checkpoint, config.canonical);
+  write_fields<SpectrumConfig>(config, spectrum_fields::checkpoint, config.canonical);
   json hashed = config.canonical;
   hashed.erase("output");
   hashed.erase("checkpoint_interval_s");

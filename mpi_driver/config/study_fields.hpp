@@ -1,13 +1,13 @@
-// The key tables (mpi_driver/config/field_table.hpp) of a study's and a spectrum's own settings,
-// and the JSON names of the study's enums. docs/studies.md's Domains table names each key by its
-// object's path ("intensity_measure.period"; a limit state's keys as "limit_states[].threshold_m").
+// The key tables (mpi_driver/config/field_table.hpp) of a study's own settings and a spectrum's
+// minimum refinement (spectrum_fields.hpp has its other keys), and the JSON names of the study's
+// enums. docs/studies.md's Domains table names each key by its object's path
+// ("intensity_measure.period"; a limit state's keys as "limit_states[].threshold_m").
 #pragma once
 
 #include "engine/scene/parameter_domains.hpp"
 #include "mpi_driver/config/enum_names.hpp"
 #include "mpi_driver/config/field_table.hpp"
 #include "mpi_driver/config/minimum_overturning_json.hpp"
-#include "mpi_driver/config/spectrum_config.hpp"
 #include "mpi_driver/config/study_config.hpp"
 
 namespace blockfrag {
@@ -78,17 +78,7 @@ inline constexpr Field<AdaptiveDesign> adaptive[] = {
 inline constexpr Field<SuiteRecord> suite_record[] = {
     {"weight", &SuiteRecord::weight, &domain::record_weight}};
 
-// A spectrum's "bisection" object, and its own keys (read before and after "output": three tables
-// keep the order its errors are reported in).
-inline constexpr Field<SpectrumConfig> spectrum_bisection[] = {
-    {"tolerance", &SpectrumConfig::bisection_tolerance, &domain::bisection_tolerance},
-    {"max_iterations", &SpectrumConfig::max_iterations, &domain::bisection_iterations}};
-inline constexpr Field<SpectrumConfig> spectrum_settle[] = {
-    {"settle_allowance_tau", &SpectrumConfig::settle_allowance_tau, &domain::settle_allowance_tau}};
-inline constexpr Field<SpectrumConfig> spectrum_checkpoint[] = {
-    {"checkpoint_interval_s", &SpectrumConfig::checkpoint_interval_s,
-     &domain::checkpoint_interval_s}};
-
+// A spectrum's "minimum_overturning".
 inline constexpr Field<MinimumOverturningSettings> minimum_overturning[] = {
     {"tolerance", &MinimumOverturningSettings::tolerance, &domain::minimum_tolerance},
     {"resolution", &MinimumOverturningSettings::resolution, &domain::minimum_resolution},

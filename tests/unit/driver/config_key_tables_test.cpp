@@ -1,7 +1,7 @@
-// docs/scenes.md's and docs/studies.md's Domains tables against the key tables
-// (mpi_driver/config/scene_fields.hpp, study_fields.hpp): every key a table reads is in the docs
-// with its table's domain, and every key the docs list is read, by a table or by the hand-written
-// readers named here.
+// docs/scenes.md's, docs/studies.md's and docs/spectra.md's Domains tables against the key tables
+// (mpi_driver/config/scene_fields.hpp, study_fields.hpp, spectrum_fields.hpp): every key a table
+// reads is in the docs with its table's domain, and every key the docs list is read, by a table or
+// by the hand-written readers named here.
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -17,6 +17,7 @@
 
 #include "mpi_driver/config/distribution_json.hpp"
 #include "mpi_driver/config/scene_fields.hpp"
+#include "mpi_driver/config/spectrum_fields.hpp"
 #include "mpi_driver/config/study_fields.hpp"
 
 namespace blockfrag {
@@ -56,6 +57,14 @@ DocsCheck studies_check() {
                             std::span<const std::string_view>(limit_state_kind_names.names)}) {
     for (const std::string_view name : names) check.selectors.emplace(name);
   }
+  return check;
+}
+
+// An axis's "values" are read by spectrum_config.cpp (its from/to/count by a table).
+DocsCheck spectra_check() {
+  DocsCheck check{"spectra.md", spectrum_key_tables(), {}, {}, false};
+  check.hand_read_keys = {"frequency_ratio.values", "amplitude_ratio.values"};
+  for (const std::string_view name : spectrum_pulse_names.names) check.selectors.emplace(name);
   return check;
 }
 
@@ -295,6 +304,55 @@ TEST(ConfigKeyTables, AStudyDocsKeyNoReaderReadsIsFound) {
   EXPECT_EQ(disagreements(doc, studies_check()),
             std::vector<std::string>{
                 "design.adaptive.batches: in the docs' Domains table, read by no key table"});
+}
+
+TEST(ConfigKeyTables, DocsSpectraDomainsTableAgreesWithTheSpectrumKeyTables) {
+  const std::vector<std::string> problems = disagreements(read_doc("spectra.md"), spectra_check());
+  for (const std::string& problem : problems) ADD_FAILURE() << problem;
+}
+
+TEST(ConfigKeyTables, ASpectrumTableKeyMissingFromTheDocsIsFound) {
+  std::string doc = read_doc("spectra.md");
+  const std::string row = "| `settle_allowance_tau` | [1, 1e6] (in 1/p) | default 200 |\n";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.erase(at, row.size());
+  EXPECT_EQ(disagreements(doc, spectra_check()),
+            std::vector<std::string>{"settle_allowance_tau: not in the docs' Domains table"});
+}
+
+TEST(ConfigKeyTables, ASpectrumDocsDomainOtherThanTheTablesIsFound) {
+  std::string doc = read_doc("spectra.md");
+  const std::string cell = "| `pulse.n` (`makris_c`) | integer in [1, 1000] |";
+  const auto at = doc.find(cell);
+  ASSERT_NE(at, std::string::npos);
+  doc.replace(at, cell.size(), "| `pulse.n` (`makris_c`) | [1, 1000] |");
+  EXPECT_EQ(disagreements(doc, spectra_check()),
+            std::vector<std::string>{"pulse.n: no row of the docs' Domains table gives its domain "
+                                     "integer must be in [1, 1000]"});
+}
+
+TEST(ConfigKeyTables, ASpectrumChoiceTheDocsDoNotNameIsFound) {
+  std::string doc = read_doc("spectra.md");
+  for (std::size_t at = doc.find("`\"log\"`"); at != std::string::npos;
+       at = doc.find("`\"log\"`")) {
+    doc.replace(at, 7, "log");
+  }
+  EXPECT_EQ(disagreements(doc, spectra_check()),
+            (std::vector<std::string>{
+                "frequency_ratio.spacing: the docs do not name its choice \"log\"",
+                "amplitude_ratio.spacing: the docs do not name its choice \"log\""}));
+}
+
+TEST(ConfigKeyTables, ASpectrumDocsKeyNoReaderReadsIsFound) {
+  std::string doc = read_doc("spectra.md");
+  const std::string row = "| `settle_allowance_tau` | [1, 1e6]";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.insert(at, "| `bisection.min_iterations` | integer in [1, 200] | |\n");
+  EXPECT_EQ(disagreements(doc, spectra_check()),
+            std::vector<std::string>{
+                "bisection.min_iterations: in the docs' Domains table, read by no key table"});
 }
 
 }  // namespace
