@@ -43,8 +43,8 @@ TEST(OneContactForces, AgreeWithTheGeneralSolveOnRandomPosesAndVelocities) {
     const double k2 = u(1, 60), mu = u(0, 1.2);
     const auto one = one_contact_forces(c, state, s, BodyLoad{applied, 0.0, k2}, mu);
     if (!one) continue;  // a slipping contact at its Painleve boundary exactly: not met at random
-    const FixedStateForces general = general_fixed_state_forces(std::span(&c, 1), std::span(&state, 1), s,
-                                                        BodyLoad{applied, 0.0, k2}, mu);
+    const FixedStateForces general = general_fixed_state_forces(
+        std::span(&c, 1), std::span(&state, 1), s, BodyLoad{applied, 0.0, k2}, mu);
     const double scale = 10 * kG;  // the accelerations' and forces' size here
     expect_close(one->acceleration.x_dd, general.acceleration.x_dd, scale);
     expect_close(one->acceleration.y_dd, general.acceleration.y_dd, scale);
