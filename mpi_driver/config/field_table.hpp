@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -205,6 +206,23 @@ std::vector<FieldDescription> describe_fields(
     }
     described.push_back(std::move(description));
   }
+  return described;
+}
+
+// The descriptions of every alternative of a variant whose keys a trait holds,
+// Keys<Alternative>::fields (a ground motion's type, a distribution's law), in the variant's order.
+template <class Variant, template <class> class Keys>
+std::vector<FieldDescription> describe_alternatives() {
+  std::vector<FieldDescription> described;
+  [&]<std::size_t... index>(std::index_sequence<index...>) {
+    const auto add = [&](std::vector<FieldDescription> fields) {
+      for (FieldDescription& field : fields) described.push_back(std::move(field));
+    };
+    (add(describe_fields<std::variant_alternative_t<index, Variant>>(
+         Keys<std::variant_alternative_t<index, Variant>>::fields)),
+     ...);
+  }
+  (std::make_index_sequence<std::variant_size_v<Variant>>{});
   return described;
 }
 

@@ -1,29 +1,8 @@
 #include "mpi_driver/config/scene_fields.hpp"
 
-#include <utility>
-#include <variant>
-
 #include "mpi_driver/config/study_fields.hpp"
 
 namespace blockfrag {
-
-namespace {
-
-template <class Motion>
-void add_motion_fields(std::vector<FieldDescription>& fields) {
-  for (FieldDescription& field : describe_fields<Motion>(MotionKeys<Motion>::fields)) {
-    fields.push_back(std::move(field));
-  }
-}
-
-template <std::size_t... index>
-std::vector<FieldDescription> motion_fields(std::index_sequence<index...>) {
-  std::vector<FieldDescription> fields;
-  (add_motion_fields<std::variant_alternative_t<index, GroundMotion>>(fields), ...);
-  return fields;
-}
-
-}  // namespace
 
 std::vector<KeyTable> scene_key_tables() {
   return {{"block.", describe_fields<RectangularBlock>(scene_fields::rectangle)},
@@ -38,7 +17,7 @@ std::vector<KeyTable> scene_key_tables() {
           {"dam.", describe_fields<DamSize>(scene_fields::dam_size)},
           {"dam.", describe_fields<DamCrest>(scene_fields::dam)},
           {"reservoir.", describe_fields<Reservoir>(scene_fields::reservoir)},
-          {"", motion_fields(std::make_index_sequence<std::variant_size_v<GroundMotion>>{})},
+          {"", describe_alternatives<GroundMotion, MotionKeys>()},
           {"", describe_fields<StudyConfig>(study_fields::run)}};
 }
 

@@ -1,34 +1,13 @@
 #include "mpi_driver/config/study_fields.hpp"
 
-#include <utility>
-#include <variant>
-
 #include "mpi_driver/config/distribution_json.hpp"
 
 namespace blockfrag {
 
-namespace {
-
-template <class Law>
-void add_law_fields(std::vector<FieldDescription>& fields) {
-  for (FieldDescription& field : describe_fields<Law>(DistributionKeys<Law>::fields)) {
-    fields.push_back(std::move(field));
-  }
-}
-
-template <std::size_t... index>
-std::vector<FieldDescription> law_fields(std::index_sequence<index...>) {
-  std::vector<FieldDescription> fields;
-  (add_law_fields<std::variant_alternative_t<index, Distribution>>(fields), ...);
-  return fields;
-}
-
-}  // namespace
-
 std::vector<KeyTable> study_key_tables() {
   return {
       {"", describe_fields<StudyConfig>(study_fields::run)},
-      {"inputs.*.", law_fields(std::make_index_sequence<std::variant_size_v<Distribution>>{})},
+      {"inputs.*.", describe_alternatives<Distribution, DistributionKeys>()},
       {"intensity_measure.", describe_fields<IntensityMeasure>(study_fields::measure_type)},
       {"intensity_measure.", describe_fields<IntensityMeasure>(study_fields::sa)},
       {"intensity_measure.", describe_fields<IntensityMeasure>(study_fields::scaling)},
