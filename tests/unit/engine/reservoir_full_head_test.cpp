@@ -8,17 +8,14 @@
 #include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
+#include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
 namespace {
 
 Scene type_a_sliding_under_full_head() {
-  Scene scene;
-  scene.polygon = PolygonBlock{{{0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}}, 411204.0};
-  scene.contact = {1.1246, 0.8764};
-  scene.reservoir = Reservoir{};
-  scene.reservoir->level = 16.7;
-  scene.reservoir->uplift = UpliftRule::full_head_in_gap;
+  Scene scene = testing::wet_type_a_step(1.1246, 0.0, UpliftRule::full_head_in_gap);
+  scene.contact.restitution = 0.8764;
   scene.ground_motion = CosinePulse{2.0319, 1.7542, 1};
   scene.duration = 1.0;
   scene.solver.method = Method::rk4;

@@ -13,33 +13,10 @@
 
 #include "engine/simulate.hpp"
 #include "engine/water/block_statics.hpp"
+#include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
 namespace {
-
-Scene wet_type_a(double mu, double lambda, UpliftRule rule = UpliftRule::unchanged) {
-  Scene scene;
-  scene.polygon = PolygonBlock{{{0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}}, 411204.0};
-  scene.contact = {mu, 0.2};
-  scene.reservoir = Reservoir{};
-  scene.reservoir->level = 16.7;
-  scene.reservoir->uplift = rule;
-  scene.ground_motion = RectangularPulse{lambda, 1.0};
-  scene.duration = 0.3;
-  scene.solver.tolerance = 1e-10;
-  return scene;
-}
-
-// The type B block on its seat (configs/dam_block_type_b_reservoir.json).
-Scene wet_type_b(double mu, double lambda, UpliftRule rule) {
-  Scene scene = wet_type_a(mu, lambda, rule);
-  const double fold = 5.858333333333333;
-  scene.polygon = PolygonBlock{
-      {{0, 0}, {fold, 0}, {12.525, 5}, {10, 8.366666666666667}, {10, 21.7}, {0, 21.7}}, 521301.0};
-  scene.seat = Seat{{{0, 0}, {fold, 0}, {12.525, 5}}};
-  scene.reservoir->level = 21.7;
-  return scene;
-}
 
 struct OnsetCase {
   std::string name;
@@ -88,7 +65,7 @@ TEST(ReservoirOnset, TheDynamicsStartEachMotionAtItsStaticYieldAcceleration) {
   };
   for (const UpliftRule rule : {UpliftRule::unchanged, UpliftRule::full_head_in_gap}) {
     SCOPED_TRACE(static_cast<int>(rule));
-    expect_onsets_at_yields(wet_type_a, rule, cases);
+    expect_onsets_at_yields(testing::wet_type_a_step, rule, cases);
   }
 }
 
@@ -101,7 +78,7 @@ TEST(ReservoirOnset, OnItsSeatTheTypeBBlockStartsEachMotionAtItsStaticYield) {
   for (const UpliftRule rule :
        {UpliftRule::unchanged, UpliftRule::zero_in_gap, UpliftRule::full_head_in_gap}) {
     SCOPED_TRACE(static_cast<int>(rule));
-    expect_onsets_at_yields(wet_type_b, rule, cases);
+    expect_onsets_at_yields(testing::wet_type_b_step, rule, cases);
   }
 }
 

@@ -14,20 +14,13 @@
 #include "engine/contact/crack_seating.hpp"
 #include "engine/simulate.hpp"
 #include "engine/water/block_statics.hpp"
+#include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
 namespace {
 
 Scene type_a_in_gap(double mu, double lambda, UpliftRule rule = UpliftRule::zero_in_gap) {
-  Scene scene;
-  scene.polygon = PolygonBlock{{{0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}}, 411204.0};
-  scene.contact = {mu, 0.2};
-  scene.reservoir = Reservoir{};
-  scene.reservoir->level = 16.7;
-  scene.reservoir->uplift = rule;
-  scene.ground_motion = RectangularPulse{lambda, 1.0};
-  scene.duration = 0.3;
-  scene.solver.tolerance = 1e-10;
+  Scene scene = testing::wet_type_a_step(mu, lambda, rule);
   // Ten times the events a step needs here: a rattle exhausts it within milliseconds.
   scene.solver.max_events = 10;
   return scene;
