@@ -304,8 +304,13 @@ double SeatContacts::penetration(const BlockState& s) const {
   for (const Vec2& p : std::span(world).first(body_.size())) {
     deepest = std::max(deepest, -clearance_at(p));
   }
-  // A point outside adds nothing: its -clearance is not above 0.
+  // A point outside adds nothing: its -clearance is not above 0. A point farther from the first
+  // vertex than the block's diameter (and its rounding) is outside without a pass over its edges
+  // (a flat seat's ends, 1e4 R away, at every step).
+  const double reach = 2.0 * block_radius_ * (1.0 + 1e-9);
   for (int k = 0; k < point_count(); ++k) {
+    const Vec2 off = minus(seat_[static_cast<std::size_t>(k)], world[0]);
+    if (dot(off, off) > reach * reach) continue;
     if (inside_block(k, world)) deepest = std::max(deepest, -point_clearance(k, world));
   }
   return deepest;

@@ -105,6 +105,11 @@ class SeatContacts {
   // The tilt the block is reported at when it overturns towards the sign of `direction`.
   double overturn_theta(const BlockGeometry& geometry, double direction) const;
 
+  // Whether every point of the block at the pose lies over the seat's x range, its ends included.
+  bool within_ends(const BlockState& s) const {
+    const double reach = block_radius_ * (1.0 + 1e-9);  // and its rounding
+    return s.x - reach >= seat_.front().x && s.x + reach <= seat_.back().x;
+  }
   // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
   // rotation for all, for the guards that look at every vertex.
   void world_vertices(const BlockState& s, std::span<Vec2> out) const;

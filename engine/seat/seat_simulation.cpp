@@ -164,9 +164,13 @@ SeatSimulation::Crossing SeatSimulation::touch_before_an_end(const SeatSystem& s
   const double first = contacts_.seat_point(0).x;
   const double last = contacts_.seat_point(contacts_.point_count() - 1).x;
   const double time_tolerance = kEventTimeTolerance * (1.0 + t1);
+  const BlockState s0 = state_at(t0), s1 = state_at(t1);
+  // No vertex passes an end: the block's centre stays far enough inside both (a flat seat's ends,
+  // 1e4 R away, at every step).
+  if (contacts_.within_ends(s0) && contacts_.within_ends(s1)) return found;
   std::array<Vec2, kMaxSeatClearances> world0, world1;  // the first vertex_count() set here
-  contacts_.world_vertices(state_at(t0), world0);
-  contacts_.world_vertices(state_at(t1), world1);
+  contacts_.world_vertices(s0, world0);
+  contacts_.world_vertices(s1, world1);
   for (std::size_t k = 0; k < watched.size(); ++k) {
     const int i = watched[k];
     const double x0 = world0[static_cast<std::size_t>(i)].x;
