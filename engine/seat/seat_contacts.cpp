@@ -245,6 +245,11 @@ double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
 }
 
 double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
+  const double distance = boundary_distance(k, world);
+  return inside_block(k, world) ? -distance : distance;
+}
+
+double SeatContacts::boundary_distance(int k, std::span<const Vec2> world) const {
   const Vec2 p = seat_[static_cast<std::size_t>(k)];
   double squared = std::numeric_limits<double>::infinity();
   const std::size_t n = body_.size();
@@ -258,8 +263,7 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
     const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
     squared = std::min(squared, dot(off, off));
   }
-  const double distance = std::sqrt(squared);
-  return inside_block(k, world) ? -distance : distance;
+  return std::sqrt(squared);
 }
 
 double SeatContacts::point_clearance_within(int k, std::span<const Vec2> world, double far) const {
@@ -311,7 +315,7 @@ double SeatContacts::penetration(const BlockState& s) const {
   for (int k = 0; k < point_count(); ++k) {
     const Vec2 off = minus(seat_[static_cast<std::size_t>(k)], world[0]);
     if (dot(off, off) > reach * reach) continue;
-    if (inside_block(k, world)) deepest = std::max(deepest, -point_clearance(k, world));
+    if (inside_block(k, world)) deepest = std::max(deepest, boundary_distance(k, world));
   }
   return deepest;
 }

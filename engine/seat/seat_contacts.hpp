@@ -123,6 +123,8 @@ class SeatContacts {
   double point_clearance_within(int k, std::span<const Vec2> world, double far) const;
   // Whether seat point k is inside the block (point_clearance's sign, without its distance).
   bool inside_block(int k, std::span<const Vec2> world) const;
+  // Seat point k's distance from the block's boundary (point_clearance's size, without its sign).
+  double boundary_distance(int k, std::span<const Vec2> world) const;
 
   // How far block vertex i is above the seat (its height over the seat for x within the seat's
   // ends, else its distance from the nearer end): <= 0 where it touches or is below. A vertex past
