@@ -76,7 +76,12 @@ bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
 // p + Rot(theta) w, and its height over a line of slope m through a is a sinusoid of theta. Seen
 // from the block, a seat point s moves on a circle about the pivot, at body + Rot(-theta) (s - p).
 PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
-    : system_(&system), chart_(chart), centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
+    : system_(&system),
+      contacts_(system.c_.contacts),
+      chart_(chart),
+      watched_vertices_(system.watched_vertices_),
+      watched_points_(system.watched_points_),
+      centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
   const SeatContacts& seat = *system.c_.contacts;
   const Vec2 p = chart.point, body = chart.body;
   const int n = seat.vertex_count();
@@ -120,6 +125,13 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
     }
     points_.push_back(std::move(point));
   }
+}
+
+bool PivotSweep::serves(const SeatSystem& system, const PivotChart& chart) const {
+  return system.c_.contacts == contacts_ && chart.point.x == chart_.point.x &&
+         chart.point.y == chart_.point.y && chart.body.x == chart_.body.x &&
+         chart.body.y == chart_.body.y && system.watched_vertices_ == watched_vertices_ &&
+         system.watched_points_ == watched_points_;
 }
 
 GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) const {

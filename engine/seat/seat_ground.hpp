@@ -129,6 +129,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     return 0.5 * load_at(t_, s).inertia.twice_kinetic(velocity_of(s));
   }
   SeatSystem system(const MotionPiece& piece) const;
+  // The sweep of `system` turning on `chart`: the last one built where it serves them, rebound.
+  const PivotSweep& sweep_for(const SeatSystem& system, const PivotChart& chart);
   PlanarContact contact_of(const SeatPair& pair, const BlockState& s) const {
     return contacts_.pose(pair, s).contact;
   }
@@ -196,8 +198,9 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
                                  [&](const auto& anchor) { return anchor.first == pair; });
     return it == anchors_.end() ? std::nullopt : std::optional<double>(it->second);
   }
-  Vec2 origin_{0.0, 0.0};  // the charts' (engine/seat/seat_chart.hpp)
-  double deepest_ = 0.0;   // m: the block's largest penetration of the seat seen
+  std::optional<PivotSweep> sweep_;  // the last built (sweep_for)
+  Vec2 origin_{0.0, 0.0};            // the charts' (engine/seat/seat_chart.hpp)
+  double deepest_ = 0.0;             // m: the block's largest penetration of the seat seen
 };
 
 }  // namespace blockfrag

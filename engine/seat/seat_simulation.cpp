@@ -337,22 +337,39 @@ SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, do
   SeatSystem moving = system(piece);
   const ModeKind kind = kind_of(mode_);
   EventReport report;
+  const auto integrate = [&](const auto& ode) {
+    with_scene_stepper<std::decay_t<decltype(ode)>::N>(
+        scene_.solver, ode.scale(),
+        [&](auto& stepper) { report = integrate_with(ode, stepper, piece, t_stop, kind); });
+  };
   std::visit(
       [&](const auto& chart) {
-        const SeatOde ode(moving, chart);
-        if constexpr (std::is_same_v<std::decay_t<decltype(chart)>, FlightChart>) {
-          if (vertical_.piece_at(t_).is_zero() && external_ == nullptr) {
-            ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
-            report = integrate_with(ode, flight, piece, t_stop, kind);
-            return;
+        using Chart = std::decay_t<decltype(chart)>;
+        if constexpr (std::is_same_v<Chart, PivotChart>) {
+          integrate(SeatOde<PivotChart>(moving, chart, sweep_for(moving, chart)));
+        } else {
+          const SeatOde ode(moving, chart);
+          if constexpr (std::is_same_v<Chart, FlightChart>) {
+            if (vertical_.piece_at(t_).is_zero() && external_ == nullptr) {
+              ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
+              report = integrate_with(ode, flight, piece, t_stop, kind);
+              return;
+            }
           }
+          integrate(ode);
         }
-        with_scene_stepper<decltype(ode)::N>(scene_.solver, ode.scale(), [&](auto& stepper) {
-          report = integrate_with(ode, stepper, piece, t_stop, kind);
-        });
       },
       chart_of(mode_));
   return report;
+}
+
+const PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart& chart) {
+  if (sweep_ && sweep_->serves(system, chart)) {
+    sweep_->rebind(system);
+  } else {
+    sweep_.emplace(system, chart);
+  }
+  return *sweep_;
 }
 
 ContactForces SeatSimulation::forces_now() const {

@@ -163,6 +163,12 @@ class PivotSweep {
  public:
   PivotSweep(const SeatSystem& system, const PivotChart& chart);
   GuardClaims claims(double theta0, double theta1, const GuardClaims& asked) const;
+  // Whether the sweep serves `system` turning on `chart`: the same pivot, the same watched
+  // vertices and points. A record starts a motion piece at each of its samples, and each piece a
+  // system; building its sweep anew was 6 % of the type B block's run under a record.
+  bool serves(const SeatSystem& system, const PivotChart& chart) const;
+  // The claims then read `system` (its active contacts, the guards it uses).
+  void rebind(const SeatSystem& system) { system_ = &system; }
 
  private:
   struct Vertex {
@@ -178,23 +184,29 @@ class PivotSweep {
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
   bool point_claim(const ThetaStep& step, const Point& point) const;
 
-  const SeatSystem* system_;
+  const SeatSystem* system_;  // rebound to each piece's system; the rest serves them all
+  const SeatContacts* contacts_;
   PivotChart chart_;
+  std::vector<int> watched_vertices_, watched_points_;
   Sinusoid centre_x_;
   std::vector<Vertex> vertices_;
   std::vector<Point> points_;
 };
 
 // The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp). It holds
-// its system, which remembers the last forces solved, as the integration's one working copy.
+// its system, which remembers the last forces solved, as the integration's one working copy, and
+// turning about a pivot, the pivot's sweep (which must outlive it).
 template <class Chart>
 class SeatOde {
  public:
   static constexpr int N = Chart::N;
   static constexpr int kGuards = kSeatGuards;
 
-  SeatOde(SeatSystem& system, const Chart& chart)
-      : system_(&system), chart_(chart), sweep_(sweep_of(system, chart)) {}
+  SeatOde(SeatSystem& system, const Chart& chart) requires(!std::is_same_v<Chart, PivotChart>)
+      : system_(&system), chart_(chart) {}
+  SeatOde(SeatSystem& system, const PivotChart& chart,
+          const PivotSweep& sweep) requires std::is_same_v<Chart, PivotChart>
+      : system_(&system), chart_(chart), sweep_(&sweep) {}
 
   SeatSystem& system() const { return *system_; }
   OdeState<N> scale() const { return chart_.scale(system_->length_scale(), system_->g()); }
@@ -226,7 +238,7 @@ class SeatOde {
                            const GuardClaims& asked) const {
     if constexpr (std::is_same_v<Chart, PivotChart>) {
       if (!one_way(0)) return system_->unused_guards();
-      return sweep_.claims(q0[0], q1[0], asked);
+      return sweep_->claims(q0[0], q1[0], asked);
     } else if constexpr (std::is_same_v<Chart, SlipChart>) {
       return system_->slip_claims(one_way(2), one_way(3));
     } else if constexpr (std::is_same_v<Chart, SlideChart>) {
@@ -242,18 +254,14 @@ class SeatOde {
   }
 
  private:
-  using Sweep = std::conditional_t<std::is_same_v<Chart, PivotChart>, PivotSweep, std::monostate>;
-  static Sweep sweep_of(const SeatSystem& system, const Chart& chart) {
-    if constexpr (std::is_same_v<Chart, PivotChart>) {
-      return PivotSweep(system, chart);
-    } else {
-      return {};
-    }
-  }
+  using Sweep =
+      std::conditional_t<std::is_same_v<Chart, PivotChart>, const PivotSweep*, std::monostate>;
 
   SeatSystem* system_;
   Chart chart_;
-  Sweep sweep_;
+  Sweep sweep_{};
 };
+
+SeatOde(SeatSystem&, const PivotChart&, const PivotSweep&) -> SeatOde<PivotChart>;
 
 }  // namespace blockfrag

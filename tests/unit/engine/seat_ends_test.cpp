@@ -122,7 +122,9 @@ TEST(SeatEnds, PivotClaimsHoldOverRandomSteps) {
   FixedUniforms u(33);
   for (const PivotCase& p : cases) {
     SeatSystem system = seat.system({p.contact}, p.vertices, p.points);
-    const SeatOde ode(system, PivotChart{p.point, p.body});
+    const PivotChart chart{p.point, p.body};
+    const PivotSweep sweep(system, chart);
+    const SeatOde ode(system, chart, sweep);
     int claimed = 0;
     for (int n = 0; n < 300; ++n) {
       const double theta0 = u(-0.6, 0.6);
@@ -146,7 +148,9 @@ TEST(SeatEnds, RockingOnTheHeelTheFoldsClearancesAreLeastAtAnEnd) {
   const SeatContacts& c = seat.contacts;
   SeatSystem system = seat.system({{{ContactKind::block_vertex, 0, 0}, ContactState::stick}},
                                   {1, 2, 3, 4, 5}, {1, 2});
-  const SeatOde ode(system, PivotChart{c.seat_point(0), c.body_vertex(0)});
+  const PivotChart chart{c.seat_point(0), c.body_vertex(0)};
+  const PivotSweep sweep(system, chart);
+  const SeatOde ode(system, chart, sweep);
   for (const double theta : {1e-6, 1e-3, 0.1}) {
     const auto claims = ode.guard_claims(
         {theta, 0.1}, {theta * 1.01, 0.1}, [](int) { return true; }, kEveryGuard);
