@@ -26,7 +26,7 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
                                   scene_.g,        scene_.contact.friction,
                                   kFallDepth * R_, external_};
   // Vertices and points in an active contact are not watched for touching: they touch.
-  std::vector<int> vertices, points;
+  WatchedList vertices, points;
   const double near = kSeatContactDrift * R_;
   for (int i = 0; i < contacts_.vertex_count(); ++i) {
     const bool active = std::any_of(mode_.active.begin(), mode_.active.end(), [&](const auto& a) {
@@ -159,7 +159,7 @@ SeatSimulation::Crossing SeatSimulation::touch_before_an_end(const SeatSystem& s
                                                              const StateAt& state_at, double t0,
                                                              double t1) const {
   Crossing found;
-  const std::vector<int>& watched = system.watched_vertices();
+  const WatchedList& watched = system.watched_vertices();
   if (watched.empty()) return found;
   const double first = contacts_.seat_point(0).x;
   const double last = contacts_.seat_point(contacts_.point_count() - 1).x;

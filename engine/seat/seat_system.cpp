@@ -9,8 +9,7 @@
 namespace blockfrag {
 
 SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
-                       const std::vector<int>& watched_vertices,
-                       const std::vector<int>& watched_points)
+                       const WatchedList& watched_vertices, const WatchedList& watched_points)
     : c_(c), watched_vertices_(watched_vertices), watched_points_(watched_points) {
   count_ = static_cast<int>(active.size());
   std::copy(active.begin(), active.end(), active_.begin());

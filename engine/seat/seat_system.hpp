@@ -20,6 +20,7 @@
 #include "engine/seat/seat_chart.hpp"
 #include "engine/seat/seat_contacts.hpp"
 #include "engine/seat/sinusoid.hpp"
+#include "engine/seat/watched_list.hpp"
 #include "engine/sine_cosine.hpp"
 #include "engine/tolerances.hpp"
 
@@ -68,7 +69,7 @@ class SeatSystem {
   // `watched_vertices` and `watched_points`: the vertices and points not in an active contact,
   // whose clearance is watched (at most kMaxSeatClearances together).
   SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
-             const std::vector<int>& watched_vertices, const std::vector<int>& watched_points);
+             const WatchedList& watched_vertices, const WatchedList& watched_points);
 
   // Not const: each remembers the last forces solved (a step's end is asked for by its guards, by
   // the next step's first stage and by the checks of its forces).
@@ -95,7 +96,7 @@ class SeatSystem {
   int active_count() const { return count_; }
   // The block vertices whose clearance is watched; vertex k of them has guard
   // kFirstClearanceGuard + k.
-  const std::vector<int>& watched_vertices() const { return watched_vertices_; }
+  const WatchedList& watched_vertices() const { return watched_vertices_; }
   double length_scale() const { return c_.geometry->size(); }
   double g() const { return c_.g; }
 
@@ -142,7 +143,7 @@ class SeatSystem {
   SeatSystemContext c_;
   std::array<ActiveContact, kMaxSeatContacts> active_{};
   int count_ = 0;
-  std::vector<int> watched_vertices_, watched_points_;
+  WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
   GuardClaims unused_{};
   // The last forces solved, and the time and state they were solved at.
@@ -187,7 +188,7 @@ class PivotSweep {
   const SeatSystem* system_;  // rebound to each piece's system; the rest serves them all
   const SeatContacts* contacts_;
   PivotChart chart_;
-  std::vector<int> watched_vertices_, watched_points_;
+  WatchedList watched_vertices_, watched_points_;
   Sinusoid centre_x_;
   std::vector<Vertex> vertices_;
   std::vector<Point> points_;
@@ -262,6 +263,6 @@ class SeatOde {
   Sweep sweep_{};
 };
 
-SeatOde(SeatSystem&, const PivotChart&, const PivotSweep&) -> SeatOde<PivotChart>;
+SeatOde(SeatSystem&, const PivotChart&, const PivotSweep&)->SeatOde<PivotChart>;
 
 }  // namespace blockfrag

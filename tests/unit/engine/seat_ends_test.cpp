@@ -37,8 +37,8 @@ struct TypeBSeat {
   BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
   MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
   SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
-  SeatSystem system(const std::vector<ActiveContact>& active, const std::vector<int>& vertices,
-                    const std::vector<int>& points) const {
+  SeatSystem system(const std::vector<ActiveContact>& active, const WatchedList& vertices,
+                    const WatchedList& points) const {
     return SeatSystem(context, active, vertices, points);
   }
 };
@@ -96,7 +96,7 @@ TEST(SeatEnds, AStepHoldsASinusoidsMinimumWhereSamplesFindOne) {
 struct PivotCase {
   ActiveContact contact;
   Vec2 point, body;
-  std::vector<int> vertices, points;
+  WatchedList vertices, points;
 };
 
 // Turning about the heel, the toe, and (the block moved 1 m downstream) the seat's fold on the
