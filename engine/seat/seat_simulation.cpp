@@ -299,16 +299,7 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) const {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
-  SeatSystem next = system(piece);
-  const auto guards = next.guards(t_, state_);
-  for (int i = 0; i < SeatSystem::kGuards; ++i) {
-    const SeatEvent e = next.event(i);
-    if ((e == SeatEvent::lift_off || e == SeatEvent::friction_limit) &&
-        !(guards[static_cast<std::size_t>(i)] > 0)) {
-      return false;
-    }
-  }
-  return true;
+  return system(piece).contacts_hold(t_, state_);
 }
 
 void SeatSimulation::place_at_start() {

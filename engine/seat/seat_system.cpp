@@ -127,9 +127,9 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
       const auto at = static_cast<std::size_t>(i);
       const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
       const PairPose& p = poses[at];
-      out[base] = f.normal[at] / c_.g;
+      out[base] = lift_off_guard(f, at);
       const int slip = slip_sign(active_[at].state);
-      out[base + 1] = slip == 0 ? (c_.mu * f.normal[at] - std::abs(f.tangent[at])) / c_.g
+      out[base + 1] = slip == 0 ? friction_guard(f, at)
                                 : slip * contact_velocity(p.contact, v).tangent / velocity_scale;
       if (slip != 0 && active_[at].pair.kind == ContactKind::block_vertex) {
         const SeatContacts::RunPlace run = c_.contacts->place_on_run(
@@ -150,6 +150,16 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
     out[g++] = c_.contacts->point_clearance_within(k, world, R) / R;
   }
   return out;
+}
+
+bool SeatSystem::contacts_hold(double t, const BlockState& s) {
+  if (count_ == 0) return true;
+  const FixedStateForces& f = solve(t, s, active_poses(s));
+  for (std::size_t at = 0; at < static_cast<std::size_t>(count_); ++at) {
+    if (!(lift_off_guard(f, at) > 0)) return false;
+    if (active_[at].state == ContactState::stick && !(friction_guard(f, at) > 0)) return false;
+  }
+  return true;
 }
 
 ContactForces SeatSystem::forces(double t, const BlockState& s) {

@@ -75,6 +75,9 @@ class SeatSystem {
   // the next step's first stage and by the checks of its forces).
   std::array<double, kGuards> guards(double t, const BlockState& s);
   ContactForces forces(double t, const BlockState& s);
+  // Whether every active contact's lift-off and friction guards are positive at (t, s), as
+  // guards() finds them, without the clearances: what a piece boundary asks of the mode.
+  bool contacts_hold(double t, const BlockState& s);
   const FixedStateForces& solve(double t, const BlockState& s);
   // theta'' of the block turning about the fixed point at r from its centre of mass, where one
   // sticking contact holds it there (a PivotChart's); none with two contacts or more. The contact
@@ -132,6 +135,14 @@ class SeatSystem {
   bool clearance_least_at_ends(double x_lo, double x_hi,
                                const HeightLeastAtEnds& height_least_at_ends) const;
 
+  // Active contact `at`'s lift-off guard (its normal force) and a sticking one's friction guard
+  // (how far its friction is inside the cone), in g.
+  double lift_off_guard(const FixedStateForces& f, std::size_t at) const {
+    return f.normal[at] / c_.g;
+  }
+  double friction_guard(const FixedStateForces& f, std::size_t at) const {
+    return (c_.mu * f.normal[at] - std::abs(f.tangent[at])) / c_.g;
+  }
   using Poses = std::array<PairPose, kMaxSeatContacts>;
   Poses active_poses(const BlockState& s) const;
   // Whether the last forces solved are at this time and state.
