@@ -81,6 +81,12 @@ inline constexpr int kRestThresholdHalvings = 64;
 // block started to rock a few 1e-9 s after the flat ground's closed-form onset, which is
 // kOnsetMargin past its threshold.
 inline constexpr double kRestTolerance = 1e-13;
+// A contact problem's column subset solved by its solve matrix rather than its QR (to skip the
+// subsets that surely fail): only where the columns' condition is at most kMaxScreenedCondition
+// (the type B block's are below 340), and trusted where its answer fails a check by more than
+// kClearlyFailing of its size, some 450 times the two solves' difference at that condition.
+inline constexpr double kMaxScreenedCondition = 1e4;
+inline constexpr double kClearlyFailing = 1e-9;
 // Two seat segments whose directions' cross product is within this of zero (and whose lines are
 // within the contact height) are on one line: a flat seat given as a polyline rounds to 1e-16.
 inline constexpr double kCollinearSine = 1e-12;

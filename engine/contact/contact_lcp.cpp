@@ -88,6 +88,35 @@ struct ChoiceDecomposition {
     std::array<Eigen::Index, kMaxSize> used{};
     int count = 0;
     Eigen::ColPivHouseholderQR<Matrix> qr;
+    // The QR's solve written out as a matrix, once the subset is asked again (a kept series of
+    // problems: the rest range's search), with its and its columns' infinity norms; kept only
+    // where the columns' condition (the QR's diagonal's spread) is below kMaxScreenedCondition, so
+    // that a product with it is the QR's solve to within 1e-12 of its size.
+    std::optional<Matrix> solve_matrix;
+    double solve_norm = 0.0, columns_norm = 0.0;
+    int asked = 0;
+    bool screened = true;
+
+    // Whether the QR's solution for d would surely fail the subset's checks (a residual above the
+    // tolerance or an amount below -tolerance): the matrix's answer fails them by more than
+    // kClearlyFailing of its size, some 450 times its error at the worst condition screened. Only
+    // then is the solve skipped, so a subset that passes, or might, is solved as before: the same
+    // solutions to the bit.
+    bool clearly_fails(const Vector& d, double tolerance) {
+      if (++asked < 2 || !screened) return false;
+      if (!solve_matrix) {
+        const auto diagonal = qr.matrixR().diagonal().head(count).cwiseAbs();
+        screened = diagonal.maxCoeff() <= kMaxScreenedCondition * diagonal.minCoeff();
+        if (!screened) return false;
+        solve_matrix = qr.solve(Matrix::Identity(columns.rows(), columns.rows()));
+        solve_norm = solve_matrix->cwiseAbs().rowwise().sum().maxCoeff();
+        columns_norm = columns.cwiseAbs().rowwise().sum().maxCoeff();
+      }
+      const Vector part = *solve_matrix * d;
+      const double error = kClearlyFailing * (1.0 + solve_norm * d.cwiseAbs().maxCoeff());
+      if (part.minCoeff() < -tolerance - error) return true;
+      return (columns * part - d).cwiseAbs().maxCoeff() > tolerance + (1.0 + columns_norm) * error;
+    }
   };
   Jacobian j;
   Matrix a;
@@ -163,7 +192,8 @@ class Choice {
     // independent columns (Caratheodory): try those subsets of the cone edges.
     const auto rank = static_cast<int>(m.lu->rank());
     for (std::size_t at = 0; at < m.subsets.size() || next_subset(m, rank); ++at) {
-      const ChoiceDecomposition::Subset& subset = m.subsets[at];
+      ChoiceDecomposition::Subset& subset = m.subsets[at];
+      if (subset.clearly_fails(d, p_.tolerance)) continue;
       const Vector part = subset.qr.solve(d);
       if ((subset.columns * part - d).cwiseAbs().maxCoeff() > p_.tolerance) continue;
       if (part.minCoeff() < -p_.tolerance) continue;
