@@ -112,10 +112,26 @@ struct ChoiceDecomposition {
         solve_norm = solve_matrix->cwiseAbs().rowwise().sum().maxCoeff();
         columns_norm = columns.cwiseAbs().rowwise().sum().maxCoeff();
       }
-      const Vector part = *solve_matrix * d;
-      const double error = kClearlyFailing * (1.0 + solve_norm * d.cwiseAbs().maxCoeff());
-      if (part.minCoeff() < -tolerance - error) return true;
-      return (columns * part - d).cwiseAbs().maxCoeff() > tolerance + (1.0 + columns_norm) * error;
+      // Written out: Eigen's products of these small dynamic matrices cost more than their sums.
+      const Eigen::Index k = columns.rows();
+      double d_size = 0.0;
+      for (Eigen::Index r = 0; r < k; ++r) d_size = std::max(d_size, std::abs(d(r)));
+      const double error = kClearlyFailing * (1.0 + solve_norm * d_size);
+      std::array<double, kMaxSize> part{};
+      for (int col = 0; col < count; ++col) {
+        double sum = 0.0;
+        for (Eigen::Index r = 0; r < k; ++r) sum += (*solve_matrix)(col, r) * d(r);
+        if (sum < -tolerance - error) return true;
+        part[static_cast<std::size_t>(col)] = sum;
+      }
+      const double residual_limit = tolerance + (1.0 + columns_norm) * error;
+      for (Eigen::Index r = 0; r < k; ++r) {
+        double sum = -d(r);
+        for (int col = 0; col < count; ++col)
+          sum += columns(r, col) * part[static_cast<std::size_t>(col)];
+        if (std::abs(sum) > residual_limit) return true;
+      }
+      return false;
     }
   };
   Jacobian j;
