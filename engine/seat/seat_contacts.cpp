@@ -32,6 +32,30 @@ SegmentFrame segment_frame(Vec2 a, Vec2 b) {
   return {u, {-u.y, u.x}, length};
 }
 
+// The squared distance from p to the edge from a to b.
+double squared_distance_to_edge(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = minus(b, a), ap = minus(p, a);
+  // Clamped as the quotient would be, without dividing where it is clamped (a point off the
+  // edge's ends: a seat's far ends at every guard evaluation).
+  const double along = dot(d, ap), squared_length = dot(d, d);
+  const double t = along <= 0.0 ? 0.0 : along >= squared_length ? 1.0 : along / squared_length;
+  const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
+  return dot(off, off);
+}
+
+// Whether the edge from a to b crosses the ray from p to +x (one end above p's level, the other
+// not, and the crossing right of p): the even-odd rule's count of p inside a polygon.
+bool crossed_right_of(Vec2 p, Vec2 a, Vec2 b) {
+  if ((a.y > p.y) == (b.y > p.y)) return false;
+  // The edge's x at the point's level lies between a.x and b.x but for a few ulps of them: a
+  // point beside both by more is left or right of it without the division (a seat's far ends at
+  // every guard evaluation).
+  const double rounding = 1e-9 * (std::abs(a.x) + std::abs(b.x));
+  if (p.x < std::min(a.x, b.x) - rounding) return true;
+  if (p.x > std::max(a.x, b.x) + rounding) return false;
+  return p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+}
+
 }  // namespace
 
 SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<Vertex>& seat) {
@@ -245,8 +269,17 @@ double SeatContacts::vertex_clearance(int i, const BlockState& s) const {
 }
 
 double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
-  const double distance = boundary_distance(k, world);
-  return inside_block(k, world) ? -distance : distance;
+  // One pass for both the distance and the side: the dearest of the guards of a block on a seat.
+  const Vec2 p = seat_[static_cast<std::size_t>(k)];
+  double squared = std::numeric_limits<double>::infinity();
+  bool inside = false;
+  const std::size_t n = body_.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    squared = std::min(squared, squared_distance_to_edge(p, world[i], world[j]));
+    inside = inside != crossed_right_of(p, world[i], world[j]);
+  }
+  const double distance = std::sqrt(squared);
+  return inside ? -distance : distance;
 }
 
 double SeatContacts::boundary_distance(int k, std::span<const Vec2> world) const {
@@ -254,14 +287,7 @@ double SeatContacts::boundary_distance(int k, std::span<const Vec2> world) const
   double squared = std::numeric_limits<double>::infinity();
   const std::size_t n = body_.size();
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Vec2 a = world[i], b = world[j];
-    const Vec2 d = minus(b, a), ap = minus(p, a);
-    // Clamped as the quotient would be, without dividing where it is clamped (a point off the
-    // edge's ends: a seat's far ends at every guard evaluation).
-    const double along = dot(d, ap), squared_length = dot(d, d);
-    const double t = along <= 0.0 ? 0.0 : along >= squared_length ? 1.0 : along / squared_length;
-    const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
-    squared = std::min(squared, dot(off, off));
+    squared = std::min(squared, squared_distance_to_edge(p, world[i], world[j]));
   }
   return std::sqrt(squared);
 }
@@ -280,17 +306,7 @@ bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {
   bool inside = false;
   const std::size_t n = body_.size();
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    const Vec2 a = world[i], b = world[j];
-    if ((a.y > p.y) == (b.y > p.y)) continue;
-    // The edge's x at the point's level lies between a.x and b.x but for a few ulps of them: a
-    // point beside both by more is left or right of it without the division (a seat's far ends at
-    // every guard evaluation).
-    const double rounding = 1e-9 * (std::abs(a.x) + std::abs(b.x));
-    bool left_of_edge = p.x < std::min(a.x, b.x) - rounding;
-    if (!left_of_edge && !(p.x > std::max(a.x, b.x) + rounding)) {
-      left_of_edge = p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-    }
-    if (left_of_edge) inside = !inside;
+    inside = inside != crossed_right_of(p, world[i], world[j]);
   }
   return inside;
 }
