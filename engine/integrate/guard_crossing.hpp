@@ -29,6 +29,10 @@ class GuardWatch {
       : value_(at_start) {
     for (int i = 0; i < G; ++i) {
       if (live[i]) live_[live_count_++] = i;
+    }
+    // Only the live guards' entries are set, and only theirs are read: a watch is set up at every
+    // motion piece (a record's every sample), most of a seat's 64 guard slots unused.
+    for (const int i : this->live()) {
       armed_[i] = at_start[i] > kArmingMargin;
       // A start below -kArmingMargin (an unarmed guard's event leaves it there) must go lower
       // still to fire: fired at once (its value at the start already past the margin), a corner
