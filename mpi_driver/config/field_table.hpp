@@ -8,6 +8,7 @@
 // struct's reader, which calls read_fields for the rest.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/number_text.hpp"
 #include "engine/scene/parameter_domains.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 
@@ -65,13 +67,21 @@ constexpr auto choice_member() {
       [](Struct& s, std::string_view name) { s.*member = *enum_names.value(name); }};
 }
 
+// A member that must be 1 or -1 (a fixed direction of the ground motion).
+template <class Struct>
+struct SignMember {
+  double Struct::*member;
+};
+
 template <class Struct>
 struct Field {
-  using Member = std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*,
-                              int Struct::*, ChoiceMember<Struct>>;
+  using Member =
+      std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*, int Struct::*,
+                   std::uint32_t Struct::*, std::uint64_t Struct::*, bool Struct::*,
+                   std::string Struct::*, SignMember<Struct>, ChoiceMember<Struct>>;
   std::string_view key;
   Member member;
-  const Domain* domain;  // nullptr for a choice
+  const Domain* domain;  // nullptr for a choice, a boolean, a string or a sign
   Presence presence = Presence::optional;
   Written written = Written::always;
   // What the canonical form writes for an optional member, where its absence resolves to a value
@@ -95,6 +105,66 @@ class FieldsRead {
   std::vector<std::string_view> valid_;
 };
 
+namespace field_detail {
+
+template <class Value>
+constexpr bool is_integer_v =
+    std::is_same_v<Value, long> || std::is_same_v<Value, int> ||
+    std::is_same_v<Value, std::uint32_t> || std::is_same_v<Value, std::uint64_t>;
+
+// Reads one field's key into `out`; whether it was given with a valid value.
+template <class Struct>
+bool read_field(ObjectReader& reader, const Field<Struct>& field, Struct& out) {
+  const bool required = field.presence == Presence::required;
+  const Range range = field.domain ? Range::of(*field.domain) : Range::any();
+  const auto number = [&] {
+    return required ? reader.required_number(field.key, range) : reader.number(field.key, range);
+  };
+  const auto store = [&](auto& member, const auto& value) {
+    if (value) member = static_cast<std::remove_reference_t<decltype(member)>>(*value);
+    return value.has_value();
+  };
+  return std::visit(
+      Overloaded{[&](std::optional<double> Struct::*member) {
+                   out.*member = number();
+                   return (out.*member).has_value();
+                 },
+                 [&](bool Struct::*member) {
+                   return store(out.*member, required ? reader.required_boolean(field.key)
+                                                      : reader.boolean(field.key));
+                 },
+                 [&](std::string Struct::*member) {
+                   return store(out.*member, required ? reader.required_string(field.key)
+                                                      : reader.string(field.key));
+                 },
+                 [&](const SignMember<Struct>& sign) {
+                   const auto value = number();
+                   if (value && *value != 1.0 && *value != -1.0) {
+                     reader.add_error(field.key,
+                                      "must be 1 or -1 (got " + format_number(*value) + ")");
+                     return false;
+                   }
+                   return store(out.*(sign.member), value);
+                 },
+                 [&](const ChoiceMember<Struct>& choice) {
+                   const auto name = required ? reader.required_choice(field.key, choice.names)
+                                              : reader.choice(field.key, choice.names);
+                   if (name) choice.set(out, *name);
+                   return name.has_value();
+                 },
+                 [&]<class Value>(Value Struct::*member) {
+                   if constexpr (is_integer_v<Value>) {
+                     return store(out.*member, required ? reader.required_integer(field.key, range)
+                                                        : reader.integer(field.key, range));
+                   } else {
+                     return store(out.*member, number());
+                   }
+                 }},
+      field.member);
+}
+
+}  // namespace field_detail
+
 // Reads every field's key into `out`, in the table's order; an absent optional key or an invalid
 // value leaves the member as it was (an optional<double> member is reset), the errors recorded at
 // the key's path. The reader's finish() stays with the caller.
@@ -103,45 +173,7 @@ FieldsRead read_fields(ObjectReader& reader,
                        std::type_identity_t<std::span<const Field<Struct>>> fields, Struct& out) {
   FieldsRead read;
   for (const Field<Struct>& field : fields) {
-    const bool required = field.presence == Presence::required;
-    const Range range = field.domain ? Range::of(*field.domain) : Range::any();
-    const auto number = [&] {
-      return required ? reader.required_number(field.key, range) : reader.number(field.key, range);
-    };
-    const auto integer = [&] {
-      return required ? reader.required_integer(field.key, range)
-                      : reader.integer(field.key, range);
-    };
-    bool valid = false;
-    std::visit(field_detail::Overloaded{[&](double Struct::*member) {
-                                          const auto value = number();
-                                          if (value) out.*member = *value;
-                                          valid = value.has_value();
-                                        },
-                                        [&](std::optional<double> Struct::*member) {
-                                          out.*member = number();
-                                          valid = (out.*member).has_value();
-                                        },
-                                        [&](long Struct::*member) {
-                                          const auto value = integer();
-                                          if (value) out.*member = *value;
-                                          valid = value.has_value();
-                                        },
-                                        [&](int Struct::*member) {
-                                          const auto value = integer();
-                                          if (value) out.*member = static_cast<int>(*value);
-                                          valid = value.has_value();
-                                        },
-                                        [&](const ChoiceMember<Struct>& choice) {
-                                          const auto name =
-                                              required
-                                                  ? reader.required_choice(field.key, choice.names)
-                                                  : reader.choice(field.key, choice.names);
-                                          if (name) choice.set(out, *name);
-                                          valid = name.has_value();
-                                        }},
-               field.member);
-    if (valid) read.add(field.key);
+    if (field_detail::read_field(reader, field, out)) read.add(field.key);
   }
   return read;
 }
@@ -160,9 +192,6 @@ void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<S
     };
     std::visit(
         field_detail::Overloaded{
-            [&](double Struct::*member) { write(in.*member, defaults.*member); },
-            [&](long Struct::*member) { write(in.*member, defaults.*member); },
-            [&](int Struct::*member) { write(in.*member, defaults.*member); },
             [&](std::optional<double> Struct::*member) {
               if (field.resolved) {
                 out[key] = field.resolved(in);
@@ -170,16 +199,23 @@ void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<S
                 out[key] = *(in.*member);
               }
             },
-            [&](const ChoiceMember<Struct>& choice) { out[key] = std::string(choice.get(in)); }},
+            [&](const SignMember<Struct>& sign) {
+              write(in.*(sign.member), defaults.*(sign.member));
+            },
+            [&](const ChoiceMember<Struct>& choice) { out[key] = std::string(choice.get(in)); },
+            [&]<class Value>(Value Struct::*member) { write(in.*member, defaults.*member); }},
         field.member);
   }
 }
 
+// What kind of value a key takes, as the docs' key tables say it.
+enum class FieldKind { number, integer, choice, boolean, text, sign };
+
 // What the docs' key tables say of a key.
 struct FieldDescription {
   std::string key;
-  std::optional<Domain> domain;  // none: a choice
-  bool integer = false;
+  FieldKind kind = FieldKind::number;
+  std::optional<Domain> domain;  // a number's or an integer's
   bool required = false;
   std::vector<std::string> choices;
 };
@@ -198,12 +234,20 @@ std::vector<FieldDescription> describe_fields(
     FieldDescription description;
     description.key = field.key;
     if (field.domain) description.domain = *field.domain;
-    description.integer = std::holds_alternative<long Struct::*>(field.member) ||
-                          std::holds_alternative<int Struct::*>(field.member);
     description.required = field.presence == Presence::required;
-    if (const auto* choice = std::get_if<ChoiceMember<Struct>>(&field.member)) {
-      description.choices.assign(choice->names.begin(), choice->names.end());
-    }
+    description.kind = std::visit(
+        field_detail::Overloaded{
+            [](bool Struct::*) { return FieldKind::boolean; },
+            [](std::string Struct::*) { return FieldKind::text; },
+            [](const SignMember<Struct>&) { return FieldKind::sign; },
+            [&](const ChoiceMember<Struct>& choice) {
+              description.choices.assign(choice.names.begin(), choice.names.end());
+              return FieldKind::choice;
+            },
+            []<class Value>(Value Struct::*) {
+              return field_detail::is_integer_v<Value> ? FieldKind::integer : FieldKind::number;
+            }},
+        field.member);
     described.push_back(std::move(description));
   }
   return described;

@@ -66,14 +66,11 @@ std::optional<Distribution> read_direction(ObjectReader reader) {
   const auto kind = reader.required_choice("distribution", {"random_sign", "fixed"});
   if (!kind) return std::nullopt;
   std::optional<Distribution> distribution;
+  Fixed fixed;
   if (*kind == "random_sign") {
     distribution = Uniform{-1.0, 1.0};
-  } else if (const auto value = reader.required_number("value")) {
-    if (*value == 1.0 || *value == -1.0) {
-      distribution = Fixed{*value};
-    } else {
-      reader.add_error("value", "must be 1 or -1 (got " + format_number(*value) + ")");
-    }
+  } else if (read_fields<Fixed>(reader, study_fields::fixed_direction, fixed).valid("value")) {
+    distribution = fixed;
   }
   reader.finish("for distribution \"" + *kind + "\"");
   return distribution;
@@ -81,9 +78,11 @@ std::optional<Distribution> read_direction(ObjectReader reader) {
 
 // A direction's random sign is drawn as Uniform{-1, 1}: its name says what it is.
 json direction_to_json(const Distribution& distribution) {
-  if (const auto* fixed = std::get_if<Fixed>(&distribution))
-    return {{"distribution", "fixed"}, {"value", fixed->value}};
-  return {{"distribution", "random_sign"}};
+  const auto* fixed = std::get_if<Fixed>(&distribution);
+  if (!fixed) return {{"distribution", "random_sign"}};
+  json out = {{"distribution", "fixed"}};
+  write_fields<Fixed>(*fixed, study_fields::fixed_direction, out);
+  return out;
 }
 
 // Why a study cannot draw the block's size, if it cannot: sampling draws a rectangle's sizes, so a
@@ -306,13 +305,13 @@ json canonical_json(const StudyConfig& config) {
   json out = {{"scene", scene},
               {"inputs", inputs},
               {"intensity_measure", intensity_measure_to_json(config.intensity)},
-              {"samples_per_level", config.samples_per_level},
               {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
                                          : json(std::string(design_names.name(config.design)))},
               {"limit_states", limit_states},
-              {"seed", config.seed},
               {"output", config.output.string()}};
   write_fields<StudyConfig>(config, study_fields::run, out);
+  write_fields<StudyConfig>(config, study_fields::samples, out);
+  write_fields<StudyConfig>(config, study_fields::seed, out);
   return out;
 }
 
@@ -396,16 +395,14 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
                    "scales the pulse's peak acceleration, but /scene/ground_motion has "
                    "velocity_amplitude 0");
   }
-  const Range samples_range = Range::of(domain::samples_per_level);
-  const auto samples = root.required_integer("samples_per_level", samples_range);
+  read_fields<StudyConfig>(root, study_fields::samples, config);
   if (overrides.samples_per_level) {
+    const Range samples_range = Range::of(domain::samples_per_level);
     if (!samples_range.contains(static_cast<double>(*overrides.samples_per_level))) {
       errors.add_message(source + ": --samples-per-level: " + samples_range.rule() + " (got " +
                          std::to_string(*overrides.samples_per_level) + ")");
     }
     config.samples_per_level = static_cast<std::uint32_t>(*overrides.samples_per_level);
-  } else if (samples) {
-    config.samples_per_level = static_cast<std::uint32_t>(*samples);
   }
   if (const json* design = root.raw("design"); design && design->is_object()) {
     ObjectReader object(*design, root.path_of("design"), errors);
@@ -420,8 +417,7 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   read_limit_states(root.required_array("limit_states"), root, config, scene_valid);
   if (config.adaptive) check_adaptive(root, config);
   if (config.intensity.surface()) check_surface(root, config, scene_valid);
-  config.seed = static_cast<std::uint64_t>(
-      root.required_integer("seed", Range::of(domain::seed)).value_or(0));
+  read_fields<StudyConfig>(root, study_fields::seed, config);
   const auto output = root.string("output");
   if (output) {
     if (const auto problem = output_name_problem(*output)) root.add_error("output", *problem);

@@ -7,6 +7,9 @@ namespace blockfrag {
 std::vector<KeyTable> study_key_tables() {
   return {
       {"", describe_fields<StudyConfig>(study_fields::run)},
+      {"", describe_fields<StudyConfig>(study_fields::samples)},
+      {"", describe_fields<StudyConfig>(study_fields::seed)},
+      {"inputs.direction.", describe_fields<Fixed>(study_fields::fixed_direction)},
       {"inputs.*.", describe_alternatives<Distribution, DistributionKeys>()},
       {"intensity_measure.", describe_fields<IntensityMeasure>(study_fields::measure_type)},
       {"intensity_measure.", describe_fields<IntensityMeasure>(study_fields::sa)},

@@ -38,6 +38,16 @@ inline constexpr Field<StudyConfig> run[] = {
     {"allowed_failed_fraction", &StudyConfig::allowed_failed_fraction,
      &domain::allowed_failed_fraction},
     {"bootstrap_resamples", &StudyConfig::bootstrap_resamples, &domain::bootstrap_resamples}};
+// The samples of each level and the seed: two tables keep the order the study's errors are
+// reported in.
+inline constexpr Field<StudyConfig> samples[] = {
+    {"samples_per_level", &StudyConfig::samples_per_level, &domain::samples_per_level, required}};
+inline constexpr Field<StudyConfig> seed[] = {
+    {"seed", &StudyConfig::seed, &domain::seed, required}};
+
+// A fixed direction, {"distribution": "fixed", "value": 1 or -1} ("random_sign" has no keys).
+inline constexpr Field<Fixed> fixed_direction[] = {
+    {"value", SignMember<Fixed>{&Fixed::value}, nullptr, required}};
 
 // "type" (its default depends on the ground motion: the reader sets it first), then the keys it
 // selects; "scaling", then a cloud's. The levels and a surface's "second" are read by
