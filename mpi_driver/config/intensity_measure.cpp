@@ -1,6 +1,7 @@
 #include "mpi_driver/config/intensity_measure.hpp"
 
 #include <cstdio>
+#include <span>
 
 #include "engine/scene/parameter_domains.hpp"
 #include "mpi_driver/config/study_fields.hpp"
@@ -12,9 +13,10 @@ namespace {
 // is a few hundred; a grid of single amplitudes (one sample each) a few tens of thousands.
 constexpr double kMaxLevels = domain::kMaxIntensityLevels;
 
-// The levels' domain in the measure's unit: far past any earthquake, finite.
-Range level_range(ImType type) {
-  return Range::of(type == ImType::pgv ? domain::pgv_level : domain::intensity_g);
+// The table of the levels' range in the measure's unit: far past any earthquake, finite.
+std::span<const Field<LevelRange>> level_range_fields(ImType type) {
+  if (type == ImType::pgv) return study_fields::level_range<domain::pgv_level>;
+  return study_fields::level_range<domain::intensity_g>;
 }
 
 }  // namespace
@@ -25,7 +27,10 @@ double largest_level(ImType type) {
 
 namespace {
 
-std::vector<double> read_levels(ObjectReader& reader, const Range& range) {
+// "levels", or the range of `range_fields`, whose domain the levels keep.
+std::vector<double> read_levels(ObjectReader& reader,
+                                std::span<const Field<LevelRange>> range_fields) {
+  const Range range = Range::of(*range_fields.front().domain);
   std::vector<double> levels;
   if (reader.has("levels")) {
     if (reader.has("from") || reader.has("to") || reader.has("count")) {
@@ -50,18 +55,19 @@ std::vector<double> read_levels(ObjectReader& reader, const Range& range) {
     }
     return levels;
   }
-  const auto from = reader.required_number("from", range);
-  const auto to = reader.required_number("to", range);
-  const auto count = reader.required_integer("count", Range::of(domain::intensity_level_count));
-  if (from && to && *to <= *from) {
-    reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
+  LevelRange grid;
+  const FieldsRead read = read_fields<LevelRange>(reader, range_fields, grid);
+  const double from = grid.from, to = grid.to;
+  if (!read.valid("from") || !read.valid("to")) return levels;
+  if (to <= from) {
+    reader.add_error("to", "must be greater than from (" + format_number(from) + ")");
+    return levels;
   }
-  if (from && to && count && *to > *from) {
-    for (long k = 0; k < *count; ++k) {
-      levels.push_back(k == *count - 1 ? *to
-                                       : *from + (*to - *from) * static_cast<double>(k) /
-                                                     static_cast<double>(*count - 1));
-    }
+  if (!read.valid("count")) return levels;
+  const double intervals = static_cast<double>(grid.count - 1);
+  for (long k = 0; k < grid.count; ++k) {
+    levels.push_back(k == grid.count - 1 ? to
+                                         : from + (to - from) * static_cast<double>(k) / intervals);
   }
   return levels;
 }
@@ -74,7 +80,7 @@ void read_second_axis(ObjectReader reader, IntensityMeasure& measure) {
     reader.add_error("type", "makes a grid of stripes: a cloud (\"scaling\": \"none\") has none");
     return;
   }
-  measure.periods = read_levels(reader, Range::of(domain::pulse_period));
+  measure.periods = read_levels(reader, study_fields::level_range<domain::pulse_period>);
   const std::size_t cells = measure.levels.size() * measure.periods.size();
   if (cells > kMaxSurfaceCells) {
     reader.add_error(reader.has("levels") ? "levels" : "count",
@@ -125,7 +131,7 @@ IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type
       if (reader.has(key)) reader.add_error(key, "a cloud (\"scaling\": \"none\") has no levels");
     }
   } else {
-    measure.levels = read_levels(reader, level_range(measure.type));
+    measure.levels = read_levels(reader, level_range_fields(measure.type));
   }
   if (reader.has("second")) read_second_axis(reader.required_object("second"), measure);
   reader.finish(measure.type == ImType::sa ? "for type \"sa\"" : std::string{});

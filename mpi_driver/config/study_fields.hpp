@@ -27,6 +27,13 @@ inline constexpr EnumNames<Design, 2> design_names{{Design::monte_carlo, Design:
 inline constexpr EnumNames<Design, 2> adaptive_base_names{
     {Design::latin_hypercube, Design::monte_carlo}, {"latin_hypercube", "monte_carlo"}};
 
+// A study's levels given as a range, which the reader turns into IntensityMeasure's levels.
+struct LevelRange {
+  double from = 0.0;
+  double to = 0.0;
+  long count = 0;
+};
+
 namespace study_fields {
 
 using enum Presence;
@@ -50,8 +57,8 @@ inline constexpr Field<Fixed> fixed_direction[] = {
     {"value", SignMember<Fixed>{&Fixed::value}, nullptr, required}};
 
 // "type" (its default depends on the ground motion: the reader sets it first), then the keys it
-// selects; "scaling", then a cloud's. The levels and a surface's "second" are read by
-// intensity_measure.cpp.
+// selects; "scaling", then a cloud's. The "levels" array and a surface's "second" type are read
+// by intensity_measure.cpp.
 inline constexpr Field<IntensityMeasure> measure_type[] = {
     {"type", choice_member<&IntensityMeasure::type, im_type_names>(), nullptr}};
 inline constexpr Field<IntensityMeasure> sa[] = {
@@ -61,6 +68,14 @@ inline constexpr Field<IntensityMeasure> scaling[] = {
     {"scaling", choice_member<&IntensityMeasure::cloud, scaling_names>(), nullptr}};
 inline constexpr Field<IntensityMeasure> cloud[] = {
     {"scale", &IntensityMeasure::scale, &domain::cloud_scale}};
+// Levels given as a grid of "count" evenly spaced from "from" to "to" (instead of "levels"), one
+// table per domain of the levels: in g (or dimensionless), in m/s for "pgv", and a surface's
+// second axis's pulse periods in s.
+template <const Domain& level>
+inline constexpr Field<LevelRange> level_range[3] = {
+    {"from", &LevelRange::from, &level, required},
+    {"to", &LevelRange::to, &level, required},
+    {"count", &LevelRange::count, &domain::intensity_level_count, required}};
 
 // A limit state's "name" and "overturned_exceeds" are read by study_limit_states.cpp; its "type"
 // selects the threshold's key.

@@ -46,8 +46,7 @@ DocsCheck scenes_check() {
 DocsCheck studies_check() {
   DocsCheck check{"studies.md", study_key_tables(), {}, {}, false};
   check.hand_read_keys = {"inputs.*.distribution", "intensity_measure.levels",
-                          "intensity_measure.from", "intensity_measure.to",
-                          "intensity_measure.count"};
+                          "intensity_measure.second.levels"};
   for (const auto& names : {std::span<const std::string_view>(distribution_names),
                             std::span<const std::string_view>(im_type_names.names),
                             std::span<const std::string_view>(limit_state_kind_names.names)}) {
