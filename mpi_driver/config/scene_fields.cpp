@@ -18,6 +18,7 @@ std::vector<KeyTable> scene_key_tables() {
           {"dam.", describe_fields<DamCrest>(scene_fields::dam)},
           {"reservoir.", describe_fields<Reservoir>(scene_fields::reservoir)},
           {"", describe_alternatives<GroundMotion, MotionKeys>()},
+          {"", describe_fields<RecordTarget>(scene_fields::record_target)},
           {"", describe_fields<StudyConfig>(study_fields::run)}};
 }
 

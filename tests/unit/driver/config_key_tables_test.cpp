@@ -36,8 +36,7 @@ struct DocsCheck {
 
 DocsCheck scenes_check() {
   DocsCheck check{"scenes.md", scene_key_tables(), {}, {}, true};
-  check.hand_read_keys = {"block.polygon", "seat", "contact.rocking_restitution", "scale",
-                          "target_pga_g"};
+  check.hand_read_keys = {"block.polygon", "seat", "contact.rocking_restitution"};
   for (const std::string_view type : ground_motion_types()) check.selectors.emplace(type);
   for (const std::string_view method : method_names.names) check.selectors.emplace(method);
   return check;
