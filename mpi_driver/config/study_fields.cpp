@@ -21,12 +21,16 @@ std::vector<KeyTable> study_key_tables() {
        describe_fields<LevelRange>(study_fields::level_range<domain::pgv_level>)},
       {"intensity_measure.second.",
        describe_fields<LevelRange>(study_fields::level_range<domain::pulse_period>)},
+      {"limit_states[].", describe_fields<LimitState>(study_fields::limit_state_name)},
       {"limit_states[].", describe_fields<LimitState>(study_fields::limit_state_type)},
+      {"limit_states[].", describe_fields<LimitState>(study_fields::overturned_exceeds)},
       {"limit_states[].", describe_fields<LimitState>(study_fields::max_rotation)},
       {"limit_states[].", describe_fields<LimitState>(study_fields::residual_slide)},
       {"limit_states[].", describe_fields<LimitState>(study_fields::post_earthquake_unstable)},
       {"design.adaptive.", describe_fields<AdaptiveDesign>(study_fields::adaptive_base)},
       {"design.adaptive.", describe_fields<AdaptiveDesign>(study_fields::adaptive)},
+      {"scene.ground_motion.records[].",
+       describe_fields<SuiteRecord>(study_fields::suite_record_files)},
       {"scene.ground_motion.records[].", describe_fields<SuiteRecord>(study_fields::suite_record)}};
 }
 

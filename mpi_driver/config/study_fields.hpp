@@ -77,8 +77,12 @@ inline constexpr Field<LevelRange> level_range[3] = {
     {"to", &LevelRange::to, &level, required},
     {"count", &LevelRange::count, &domain::intensity_level_count, required}};
 
-// A limit state's "name" and "overturned_exceeds" are read by study_limit_states.cpp; its "type"
-// selects the threshold's key.
+// A limit state's name, then its "type", which selects the threshold's key, and (but for
+// overturning) whether an overturned block exceeds it.
+inline constexpr Field<LimitState> limit_state_name[] = {
+    {"name", &LimitState::name, nullptr, required}};
+inline constexpr Field<LimitState> overturned_exceeds[] = {
+    {"overturned_exceeds", &LimitState::overturned_exceeds, nullptr}};
 inline constexpr Field<LimitState> limit_state_type[] = {
     {"type", choice_member<&LimitState::kind, limit_state_kind_names>(), nullptr, required}};
 inline constexpr Field<LimitState> max_rotation[] = {
@@ -89,17 +93,21 @@ inline constexpr Field<LimitState> residual_slide[] = {
 inline constexpr Field<LimitState> post_earthquake_unstable[] = {
     {"threshold", &LimitState::threshold, &domain::limit_state_threshold}};
 
-// "design": {"adaptive": {...}}; its "limit_state", a name, is read by adaptive_design.cpp.
+// "design": {"adaptive": {...}}; its "limit_state" is a limit state's name (none: the first's).
 inline constexpr Field<AdaptiveDesign> adaptive_base[] = {
     {"base", choice_member<&AdaptiveDesign::base, adaptive_base_names>(), nullptr}};
 inline constexpr Field<AdaptiveDesign> adaptive[] = {
+    {"limit_state", &AdaptiveDesign::limit_state, nullptr},
     {"target_relative_width", &AdaptiveDesign::target_relative_width,
      &domain::target_relative_width},
     {"pair_probability", &AdaptiveDesign::pair_probability, &domain::pair_probability},
     {"max_samples", &AdaptiveDesign::max_samples, &domain::adaptive_samples, required}};
 
-// A record suite's entry given as an object: its "file" and "vertical" are read by
-// record_suite.cpp.
+// A record suite's entry given as an object: its record's file and its vertical companion's (read
+// by record_suite.cpp before the weight), then its weight.
+inline constexpr Field<SuiteRecord> suite_record_files[] = {
+    {"file", &SuiteRecord::file, nullptr, required},
+    {"vertical", &SuiteRecord::vertical_file, nullptr, optional, Written::unless_default}};
 inline constexpr Field<SuiteRecord> suite_record[] = {
     {"weight", &SuiteRecord::weight, &domain::record_weight}};
 
