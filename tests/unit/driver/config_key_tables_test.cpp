@@ -316,6 +316,35 @@ TEST(ConfigKeyTables, AStudyDocsDomainOtherThanTheTablesIsFound) {
                                      "table gives its domain must be in [0, 1)"});
 }
 
+// A boolean's, a sign's and a string's rows say what kind of value they take.
+TEST(ConfigKeyTables, AStudyDocsKindOtherThanTheTablesIsFound) {
+  std::string doc = read_doc("studies.md");
+  for (const auto& [cell, wrong] :
+       {std::pair<std::string, std::string>{"(`fixed`) | 1 or -1 |", "(`fixed`) | any number |"},
+        {"(all but `overturning`) | `true` or `false` |", "(all but `overturning`) | 0 or 1 |"},
+        {"| `design.adaptive.limit_state` | a string",
+         "| `design.adaptive.limit_state` | a name"}}) {
+    const auto at = doc.find(cell);
+    ASSERT_NE(at, std::string::npos) << cell;
+    doc.replace(at, cell.size(), wrong);
+  }
+  EXPECT_EQ(disagreements(doc, studies_check()),
+            (std::vector<std::string>{
+                "inputs.direction.value: no row of the docs' Domains table gives 1 or -1",
+                "limit_states[].overturned_exceeds: no row of the docs' Domains table gives "
+                "`true` or `false`",
+                "design.adaptive.limit_state: no row of the docs' Domains table gives a string"}));
+}
+
+TEST(ConfigKeyTables, AStringKeyMissingFromTheDocsIsFound) {
+  std::string doc = read_doc("scenes.md");
+  const std::string row = "| a record's `file` |";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.erase(at, doc.find('\n', at) + 1 - at);
+  EXPECT_EQ(disagreements(doc), std::vector<std::string>{"file: not in the docs' Domains table"});
+}
+
 TEST(ConfigKeyTables, AStudyChoiceTheDocsDoNotNameIsFound) {
   std::string doc = read_doc("studies.md");
   for (std::size_t at = doc.find("`\"stripes\"`"); at != std::string::npos;

@@ -184,6 +184,33 @@ TEST(StudyConfig, ReportsEveryErrorAtOnceWithItsPath) {
   EXPECT_THAT(all, HasSubstr("study.json: /limit_states/0/nmae: unknown key"));
 }
 
+// The keys of a fixed direction and of a limit state read and write through their tables: a sign,
+// a boolean, a string.
+TEST(StudyConfig, AFixedDirectionAndALimitStatesFlagReadBackInTheCanonicalForm) {
+  json document = small_study();
+  document["inputs"]["direction"] = {{"distribution", "fixed"}, {"value", -1}};
+  document["limit_states"][1]["overturned_exceeds"] = false;
+  const StudyConfig config = parse_study_config(document, "study.json");
+  EXPECT_EQ(config.canonical["inputs"]["direction"],
+            (json{{"distribution", "fixed"}, {"value", -1.0}}));
+  EXPECT_EQ(config.canonical["limit_states"][1], (json{{"name", "rock"},
+                                                       {"type", "max_rotation"},
+                                                       {"theta_over_alpha", 0.5},
+                                                       {"overturned_exceeds", false}}));
+  EXPECT_EQ(config.canonical["samples_per_level"], 8);
+  EXPECT_EQ(config.canonical["seed"], 42);
+
+  document["inputs"]["direction"]["value"] = 0.5;
+  document["limit_states"][1]["overturned_exceeds"] = "no";
+  document["limit_states"][2]["name"] = 7;
+  EXPECT_EQ(
+      messages_of(document),
+      (std::vector<std::string>{
+          "study.json: /inputs/direction/value: must be 1 or -1 (got 0.5)",
+          "study.json: /limit_states/1/overturned_exceeds: must be true or false (got \"no\")",
+          "study.json: /limit_states/2/name: must be a string (got 7)"}));
+}
+
 TEST(StudyConfig, LimitStatesNestUnlessToldAndTheBootstrapDefaultsToAThousand) {
   json document = small_study();
   document["limit_states"][2]["overturned_exceeds"] = false;
