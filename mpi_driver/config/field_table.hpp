@@ -73,15 +73,34 @@ struct SignMember {
   double Struct::*member;
 };
 
+// An array of increasing numbers (a study's levels, a spectrum axis's values), each in the field's
+// domain, as many as `count` allows; `noun` names one in messages ("level").
+struct IncreasingNumbers {
+  const Domain* count;
+  std::string_view noun;
+};
+template <class Struct>
+struct IncreasingMember {
+  std::vector<double> Struct::*member;
+  IncreasingNumbers rule;
+};
+
+// Reads the array `key` into `out`; whether it was given and valid. Its numbers that are valid
+// are kept either way, so that the rules after it can still be checked.
+bool read_increasing_numbers(ObjectReader& reader, std::string_view key, const Range& range,
+                             const IncreasingNumbers& rule, bool required,
+                             std::vector<double>& out);
+
 template <class Struct>
 struct Field {
-  using Member =
-      std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*, int Struct::*,
-                   std::uint32_t Struct::*, std::uint64_t Struct::*, bool Struct::*,
-                   std::string Struct::*, SignMember<Struct>, ChoiceMember<Struct>>;
+  using Member = std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*,
+                              int Struct::*, std::uint32_t Struct::*, std::uint64_t Struct::*,
+                              bool Struct::*, std::string Struct::*, SignMember<Struct>,
+                              IncreasingMember<Struct>, ChoiceMember<Struct>>;
   std::string_view key;
   Member member;
-  const Domain* domain;  // nullptr for a choice, a boolean, a string or a sign
+  // nullptr for a choice, a boolean, a string or a sign; each number's for an array.
+  const Domain* domain;
   Presence presence = Presence::optional;
   Written written = Written::always;
   // What the canonical form writes for an optional member, where its absence resolves to a value
@@ -146,6 +165,10 @@ bool read_field(ObjectReader& reader, const Field<Struct>& field, Struct& out) {
                    }
                    return store(out.*(sign.member), value);
                  },
+                 [&](const IncreasingMember<Struct>& numbers) {
+                   return read_increasing_numbers(reader, field.key, range, numbers.rule, required,
+                                                  out.*(numbers.member));
+                 },
                  [&](const ChoiceMember<Struct>& choice) {
                    const auto name = required ? reader.required_choice(field.key, choice.names)
                                               : reader.choice(field.key, choice.names);
@@ -179,7 +202,7 @@ FieldsRead read_fields(ObjectReader& reader,
 }
 
 // Writes every field of `in` into the object `out` (a member equal to its default too, unless the
-// field says Written::unless_default).
+// field says Written::unless_default; an array always).
 template <class Struct>
 void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<Struct>>> fields,
                   nlohmann::json& out) {
@@ -202,6 +225,7 @@ void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<S
             [&](const SignMember<Struct>& sign) {
               write(in.*(sign.member), defaults.*(sign.member));
             },
+            [&](const IncreasingMember<Struct>& numbers) { out[key] = in.*(numbers.member); },
             [&](const ChoiceMember<Struct>& choice) { out[key] = std::string(choice.get(in)); },
             [&]<class Value>(Value Struct::*member) { write(in.*member, defaults.*member); }},
         field.member);
@@ -209,13 +233,13 @@ void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<S
 }
 
 // What kind of value a key takes, as the docs' key tables say it.
-enum class FieldKind { number, integer, choice, boolean, text, sign };
+enum class FieldKind { number, integer, numbers, choice, boolean, text, sign };
 
 // What the docs' key tables say of a key.
 struct FieldDescription {
   std::string key;
   FieldKind kind = FieldKind::number;
-  std::optional<Domain> domain;  // a number's or an integer's
+  std::optional<Domain> domain;  // a number's or an integer's, each of an array's numbers
   bool required = false;
   std::vector<std::string> choices;
 };
@@ -240,6 +264,7 @@ std::vector<FieldDescription> describe_fields(
             [](bool Struct::*) { return FieldKind::boolean; },
             [](std::string Struct::*) { return FieldKind::text; },
             [](const SignMember<Struct>&) { return FieldKind::sign; },
+            [](const IncreasingMember<Struct>&) { return FieldKind::numbers; },
             [&](const ChoiceMember<Struct>& choice) {
               description.choices.assign(choice.names.begin(), choice.names.end());
               return FieldKind::choice;

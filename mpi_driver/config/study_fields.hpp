@@ -27,7 +27,11 @@ inline constexpr EnumNames<Design, 2> design_names{{Design::monte_carlo, Design:
 inline constexpr EnumNames<Design, 2> adaptive_base_names{
     {Design::latin_hypercube, Design::monte_carlo}, {"latin_hypercube", "monte_carlo"}};
 
-// A study's levels given as a range, which the reader turns into IntensityMeasure's levels.
+// A study's levels (an intensity measure's, or a surface's second axis's) given as a list, or as a
+// range, which the reader turns into a list.
+struct LevelList {
+  std::vector<double> levels;
+};
 struct LevelRange {
   double from = 0.0;
   double to = 0.0;
@@ -57,8 +61,8 @@ inline constexpr Field<Fixed> fixed_direction[] = {
     {"value", SignMember<Fixed>{&Fixed::value}, nullptr, required}};
 
 // "type" (its default depends on the ground motion: the reader sets it first), then the keys it
-// selects; "scaling", then a cloud's. The "levels" array and a surface's "second" type are read
-// by intensity_measure.cpp.
+// selects; "scaling", then a cloud's, or the levels below. A surface's "second" type is read by
+// intensity_measure.cpp.
 inline constexpr Field<IntensityMeasure> measure_type[] = {
     {"type", choice_member<&IntensityMeasure::type, im_type_names>(), nullptr}};
 inline constexpr Field<IntensityMeasure> sa[] = {
@@ -68,9 +72,14 @@ inline constexpr Field<IntensityMeasure> scaling[] = {
     {"scaling", choice_member<&IntensityMeasure::cloud, scaling_names>(), nullptr}};
 inline constexpr Field<IntensityMeasure> cloud[] = {
     {"scale", &IntensityMeasure::scale, &domain::cloud_scale}};
-// Levels given as a grid of "count" evenly spaced from "from" to "to" (instead of "levels"), one
-// table per domain of the levels: in g (or dimensionless), in m/s for "pgv", and a surface's
-// second axis's pulse periods in s.
+// The levels, given as a list or as a grid of "count" evenly spaced from "from" to "to", one table
+// per domain of the levels: in g (or dimensionless), in m/s for "pgv", and a surface's second
+// axis's pulse periods in s.
+inline constexpr Domain level_list_count{1.0, domain::kMaxIntensityLevels, true, true, ""};
+template <const Domain& level>
+inline constexpr Field<LevelList> level_list[1] = {
+    {"levels", IncreasingMember<LevelList>{&LevelList::levels, {&level_list_count, "level"}},
+     &level, required}};
 template <const Domain& level>
 inline constexpr Field<LevelRange> level_range[3] = {
     {"from", &LevelRange::from, &level, required},

@@ -211,6 +211,20 @@ TEST(StudyConfig, AFixedDirectionAndALimitStatesFlagReadBackInTheCanonicalForm) 
           "study.json: /limit_states/2/name: must be a string (got 7)"}));
 }
 
+TEST(StudyConfig, LevelsAreOneToAMillionIncreasingNumbersInTheMeasuresDomain) {
+  json document = small_study();
+  document["intensity_measure"]["levels"] = json::array();
+  EXPECT_EQ(messages_of(document),
+            std::vector<std::string>{
+                "study.json: /intensity_measure/levels: must have 1 to 1000000 levels (got 0)"});
+  document["intensity_measure"] = {{"type", "pgv"}, {"levels", {0.3, 0.3, 200}}};
+  EXPECT_EQ(messages_of(document),
+            (std::vector<std::string>{"study.json: /intensity_measure/levels/1: must be greater "
+                                      "than the level before it (levels increase)",
+                                      "study.json: /intensity_measure/levels/2: must be in (0, "
+                                      "100] (got 200)"}));
+}
+
 TEST(StudyConfig, LimitStatesNestUnlessToldAndTheBootstrapDefaultsToAThousand) {
   json document = small_study();
   document["limit_states"][2]["overturned_exceeds"] = false;
