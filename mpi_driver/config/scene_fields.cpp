@@ -10,6 +10,7 @@ std::vector<KeyTable> scene_key_tables() {
           {"contact.", describe_fields<Contact>(scene_fields::contact)},
           {"", describe_fields<Scene>(scene_fields::run)},
           {"initial.", describe_fields<InitialState>(scene_fields::initial)},
+          {"solver.", describe_fields<SolverSettings>(scene_fields::solver_method)},
           {"solver.", describe_fields<SolverSettings>(scene_fields::rk4_step)},
           {"solver.", describe_fields<SolverSettings>(scene_fields::step_control)},
           {"solver.", describe_fields<SolverSettings>(scene_fields::budgets)},

@@ -49,6 +49,8 @@ inline constexpr Field<InitialState> initial[] = {
     {"theta", &InitialState::theta, &domain::initial_theta},
     {"omega", &InitialState::omega, &domain::initial_omega, optional, Written::unless_default}};
 // The solver's "method" selects the step's key: rk4's dt, or the others' tolerance.
+inline constexpr Field<SolverSettings> solver_method[] = {
+    {"method", choice_member<&SolverSettings::method, method_names>(), nullptr}};
 inline constexpr Field<SolverSettings> rk4_step[] = {
     {"dt", &SolverSettings::dt, &domain::rk4_step}};
 inline constexpr Field<SolverSettings> step_control[] = {
