@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
@@ -93,10 +94,11 @@ bool read_increasing_numbers(ObjectReader& reader, std::string_view key, const R
 
 template <class Struct>
 struct Field {
-  using Member = std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*,
-                              int Struct::*, std::uint32_t Struct::*, std::uint64_t Struct::*,
-                              bool Struct::*, std::string Struct::*, SignMember<Struct>,
-                              IncreasingMember<Struct>, ChoiceMember<Struct>>;
+  using Member =
+      std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*, int Struct::*,
+                   std::uint32_t Struct::*, std::uint64_t Struct::*, bool Struct::*,
+                   std::string Struct::*, std::filesystem::path Struct::*, SignMember<Struct>,
+                   IncreasingMember<Struct>, ChoiceMember<Struct>>;
   std::string_view key;
   Member member;
   // nullptr for a choice, a boolean, a string or a sign; each number's for an array.
@@ -145,46 +147,51 @@ bool read_field(ObjectReader& reader, const Field<Struct>& field, Struct& out) {
   };
   return std::visit(
       Overloaded{[&](std::optional<double> Struct::*member) {
-                   out.*member = number();
-                   return (out.*member).has_value();
+    out.*member = number();
+    return (out.*member).has_value();
                  },
                  [&](bool Struct::*member) {
-                   return store(out.*member, required ? reader.required_boolean(field.key)
-                                                      : reader.boolean(field.key));
+    return store(out.*member,
+                 required ? reader.required_boolean(field.key) : reader.boolean(field.key));
                  },
-                 [&](std::string Struct::*member) {
+                 [&]<class Text>(Text Struct::*member)
+                   requires std::is_same_v<Text, std::string> ||
+                            std::is_same_v<Text, std::filesystem::path>
+                 {
                    return store(out.*member, required ? reader.required_string(field.key)
                                                       : reader.string(field.key));
-                 },
-                 [&](const SignMember<Struct>& sign) {
-                   const auto value = number();
-                   if (value && *value != 1.0 && *value != -1.0) {
-                     reader.add_error(field.key,
-                                      "must be 1 or -1 (got " + format_number(*value) + ")");
-                     return false;
-                   }
-                   return store(out.*(sign.member), value);
-                 },
-                 [&](const IncreasingMember<Struct>& numbers) {
-                   return read_increasing_numbers(reader, field.key, range, numbers.rule, required,
-                                                  out.*(numbers.member));
-                 },
-                 [&](const ChoiceMember<Struct>& choice) {
-                   const auto name = required ? reader.required_choice(field.key, choice.names)
-                                              : reader.choice(field.key, choice.names);
-                   if (name) choice.set(out, *name);
-                   return name.has_value();
-                 },
-                 [&]<class Value>(Value Struct::*member) {
-                   if constexpr (is_integer_v<Value>) {
-                     return store(out.*member, required ? reader.required_integer(field.key, range)
-                                                        : reader.integer(field.key, range));
-                   } else {
-                     return store(out.*member, number());
-                   }
-                 }},
-      field.member);
 }
+,
+    [&](const SignMember<Struct>& sign) {
+      const auto value = number();
+      if (value && *value != 1.0 && *value != -1.0) {
+        reader.add_error(field.key, "must be 1 or -1 (got " + format_number(*value) + ")");
+        return false;
+      }
+      return store(out.*(sign.member), value);
+    },
+    [&](const IncreasingMember<Struct>& numbers) {
+      return read_increasing_numbers(reader, field.key, range, numbers.rule, required,
+                                     out.*(numbers.member));
+    },
+    [&](const ChoiceMember<Struct>& choice) {
+      const auto name = required ? reader.required_choice(field.key, choice.names)
+                                 : reader.choice(field.key, choice.names);
+      if (name) choice.set(out, *name);
+      return name.has_value();
+    },
+    [&]<class Value>(Value Struct::*member) {
+      if constexpr (is_integer_v<Value>) {
+        return store(out.*member, required ? reader.required_integer(field.key, range)
+                                           : reader.integer(field.key, range));
+      } else {
+        return store(out.*member, number());
+      }
+    }
+}  // namespace field_detail
+,
+      field.member);
+}  // namespace blockfrag
 
 }  // namespace field_detail
 
@@ -226,6 +233,7 @@ void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<S
               write(in.*(sign.member), defaults.*(sign.member));
             },
             [&](const IncreasingMember<Struct>& numbers) { out[key] = in.*(numbers.member); },
+            [&](std::filesystem::path Struct::*member) { out[key] = (in.*member).string(); },
             [&](const ChoiceMember<Struct>& choice) { out[key] = std::string(choice.get(in)); },
             [&]<class Value>(Value Struct::*member) { write(in.*member, defaults.*member); }},
         field.member);
@@ -263,6 +271,7 @@ std::vector<FieldDescription> describe_fields(
         field_detail::Overloaded{
             [](bool Struct::*) { return FieldKind::boolean; },
             [](std::string Struct::*) { return FieldKind::text; },
+            [](std::filesystem::path Struct::*) { return FieldKind::text; },
             [](const SignMember<Struct>&) { return FieldKind::sign; },
             [](const IncreasingMember<Struct>&) { return FieldKind::numbers; },
             [&](const ChoiceMember<Struct>& choice) {

@@ -305,9 +305,10 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
   read_fields<SpectrumConfig>(root, spectrum_fields::settle, config);
-  if (const auto name = root.string("output")) {
-    if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
-    config.output = *name;
+  if (read_fields<SpectrumConfig>(root, spectrum_fields::output, config).valid("output")) {
+    if (const auto problem = output_name_problem(config.output.string())) {
+      root.add_error("output", *problem);
+    }
   } else {
     config.output = std::filesystem::path(source).stem().string() + ".h5";
   }
@@ -339,7 +340,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   write_fields<SpectrumConfig>(config, spectrum_fields::bisection, config.canonical["bisection"]);
   config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
   write_fields<SpectrumConfig>(config, spectrum_fields::settle, config.canonical);
-  config.canonical["output"] = config.output.string();
+  write_fields<SpectrumConfig>(config, spectrum_fields::output, config.canonical);
   write_fields<SpectrumConfig>(config, spectrum_fields::checkpoint, config.canonical);
   json hashed = config.canonical;
   hashed.erase("output");

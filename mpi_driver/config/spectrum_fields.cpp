@@ -18,6 +18,7 @@ std::vector<KeyTable> spectrum_key_tables() {
           {"minimum_overturning.",
            describe_fields<MinimumOverturningSettings>(study_fields::minimum_overturning)},
           {"", describe_fields<SpectrumConfig>(settle)},
+          {"", describe_fields<SpectrumConfig>(output)},
           {"", describe_fields<SpectrumConfig>(checkpoint)}};
 }
 

@@ -87,6 +87,7 @@ inline constexpr Field<SpectrumConfig> bisection[] = {
     {"max_iterations", &SpectrumConfig::max_iterations, &domain::bisection_iterations}};
 inline constexpr Field<SpectrumConfig> settle[] = {
     {"settle_allowance_tau", &SpectrumConfig::settle_allowance_tau, &domain::settle_allowance_tau}};
+inline constexpr Field<SpectrumConfig> output[] = {{"output", &SpectrumConfig::output, nullptr}};
 inline constexpr Field<SpectrumConfig> checkpoint[] = {{"checkpoint_interval_s",
                                                         &SpectrumConfig::checkpoint_interval_s,
                                                         &domain::checkpoint_interval_s}};

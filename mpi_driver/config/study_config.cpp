@@ -307,11 +307,11 @@ json canonical_json(const StudyConfig& config) {
               {"intensity_measure", intensity_measure_to_json(config.intensity)},
               {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
                                          : json(std::string(design_names.name(config.design)))},
-              {"limit_states", limit_states},
-              {"output", config.output.string()}};
+              {"limit_states", limit_states}};
   write_fields<StudyConfig>(config, study_fields::run, out);
   write_fields<StudyConfig>(config, study_fields::samples, out);
   write_fields<StudyConfig>(config, study_fields::seed, out);
+  write_fields<StudyConfig>(config, study_fields::output, out);
   return out;
 }
 
@@ -418,18 +418,18 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   if (config.adaptive) check_adaptive(root, config);
   if (config.intensity.surface()) check_surface(root, config, scene_valid);
   read_fields<StudyConfig>(root, study_fields::seed, config);
-  const auto output = root.string("output");
+  const bool output = read_fields<StudyConfig>(root, study_fields::output, config).valid("output");
   if (output) {
-    if (const auto problem = output_name_problem(*output)) root.add_error("output", *problem);
+    if (const auto problem = output_name_problem(config.output.string())) {
+      root.add_error("output", *problem);
+    }
   }
   if (overrides.output) {
     if (const auto problem = output_name_problem(overrides.output->string())) {
       errors.add_message(source + ": --output: " + *problem);
     }
     config.output = *overrides.output;
-  } else if (output) {
-    config.output = *output;
-  } else {
+  } else if (!output) {
     // Without an output key the study writes STUDY.h5 in the working folder.
     config.output = std::filesystem::path(source).stem().string() + ".h5";
   }

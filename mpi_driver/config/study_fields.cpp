@@ -9,6 +9,7 @@ std::vector<KeyTable> study_key_tables() {
       {"", describe_fields<StudyConfig>(study_fields::run)},
       {"", describe_fields<StudyConfig>(study_fields::samples)},
       {"", describe_fields<StudyConfig>(study_fields::seed)},
+      {"", describe_fields<StudyConfig>(study_fields::output)},
       {"inputs.direction.", describe_fields<Fixed>(study_fields::fixed_direction)},
       {"inputs.*.", describe_alternatives<Distribution, DistributionKeys>()},
       {"intensity_measure.", describe_fields<IntensityMeasure>(study_fields::measure_type)},

@@ -56,6 +56,9 @@ inline constexpr Field<StudyConfig> samples[] = {
 inline constexpr Field<StudyConfig> seed[] = {
     {"seed", &StudyConfig::seed, &domain::seed, required}};
 
+// The study's output file (without it, STUDY.h5 in the working folder).
+inline constexpr Field<StudyConfig> output[] = {{"output", &StudyConfig::output, nullptr}};
+
 // A fixed direction, {"distribution": "fixed", "value": 1 or -1} ("random_sign" has no keys).
 inline constexpr Field<Fixed> fixed_direction[] = {
     {"value", SignMember<Fixed>{&Fixed::value}, nullptr, required}};
