@@ -63,25 +63,27 @@ bool within(const Domain& domain, double low, double high, bool log_normal) {
 
 // direction: {"distribution": "random_sign"} or {"distribution": "fixed", "value": 1 or -1}.
 std::optional<Distribution> read_direction(ObjectReader reader) {
-  const auto kind = reader.required_choice("distribution", {"random_sign", "fixed"});
-  if (!kind) return std::nullopt;
-  std::optional<Distribution> distribution;
-  Fixed fixed;
-  if (*kind == "random_sign") {
-    distribution = Uniform{-1.0, 1.0};
-  } else if (read_fields<Fixed>(reader, study_fields::fixed_direction, fixed).valid("value")) {
-    distribution = fixed;
+  DirectionLaw law;
+  if (!read_fields<DirectionLaw>(reader, study_fields::direction_law, law).valid("distribution")) {
+    return std::nullopt;
   }
-  reader.finish("for distribution \"" + *kind + "\"");
+  std::optional<Distribution> distribution;
+  if (!law.fixed) {
+    distribution = Uniform{-1.0, 1.0};
+  } else if (read_fields<DirectionLaw>(reader, study_fields::fixed_direction, law).valid("value")) {
+    distribution = Fixed{law.value};
+  }
+  reader.finish("for distribution \"" + std::string(direction_law_names.name(law.fixed)) + "\"");
   return distribution;
 }
 
 // A direction's random sign is drawn as Uniform{-1, 1}: its name says what it is.
 json direction_to_json(const Distribution& distribution) {
   const auto* fixed = std::get_if<Fixed>(&distribution);
-  if (!fixed) return {{"distribution", "random_sign"}};
-  json out = {{"distribution", "fixed"}};
-  write_fields<Fixed>(*fixed, study_fields::fixed_direction, out);
+  const DirectionLaw law{fixed != nullptr, fixed ? fixed->value : 1.0};
+  json out = json::object();
+  write_fields<DirectionLaw>(law, study_fields::direction_law, out);
+  if (law.fixed) write_fields<DirectionLaw>(law, study_fields::fixed_direction, out);
   return out;
 }
 

@@ -27,6 +27,13 @@ inline constexpr EnumNames<Design, 2> design_names{{Design::monte_carlo, Design:
 inline constexpr EnumNames<Design, 2> adaptive_base_names{
     {Design::latin_hypercube, Design::monte_carlo}, {"latin_hypercube", "monte_carlo"}};
 
+// A study's direction: a random sign, or fixed at `value`.
+struct DirectionLaw {
+  bool fixed = false;
+  double value = 1.0;
+};
+inline constexpr EnumNames<bool, 2> direction_law_names{{false, true}, {"random_sign", "fixed"}};
+
 // A study's levels (an intensity measure's, or a surface's second axis's) given as a list, or as a
 // range, which the reader turns into a list.
 struct LevelList {
@@ -59,9 +66,13 @@ inline constexpr Field<StudyConfig> seed[] = {
 // The study's output file (without it, STUDY.h5 in the working folder).
 inline constexpr Field<StudyConfig> output[] = {{"output", &StudyConfig::output, nullptr}};
 
-// A fixed direction, {"distribution": "fixed", "value": 1 or -1} ("random_sign" has no keys).
-inline constexpr Field<Fixed> fixed_direction[] = {
-    {"value", SignMember<Fixed>{&Fixed::value}, nullptr, required}};
+// A direction's "distribution": a random sign (drawn as Uniform{-1, 1}), which has no other key,
+// or a fixed sign, {"distribution": "fixed", "value": 1 or -1}.
+inline constexpr Field<DirectionLaw> direction_law[] = {
+    {"distribution", choice_member<&DirectionLaw::fixed, direction_law_names>(), nullptr,
+     required}};
+inline constexpr Field<DirectionLaw> fixed_direction[] = {
+    {"value", SignMember<DirectionLaw>{&DirectionLaw::value}, nullptr, required}};
 
 // "type" (its default depends on the ground motion: the reader sets it first), then the keys it
 // selects; "scaling", then a cloud's, or the levels below. A surface's "second" type is read by
