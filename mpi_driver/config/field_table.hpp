@@ -145,53 +145,49 @@ bool read_field(ObjectReader& reader, const Field<Struct>& field, Struct& out) {
     if (value) member = static_cast<std::remove_reference_t<decltype(member)>>(*value);
     return value.has_value();
   };
+  const auto text = [&] {
+    return required ? reader.required_string(field.key) : reader.string(field.key);
+  };
   return std::visit(
       Overloaded{[&](std::optional<double> Struct::*member) {
-    out.*member = number();
-    return (out.*member).has_value();
+                   out.*member = number();
+                   return (out.*member).has_value();
                  },
                  [&](bool Struct::*member) {
-    return store(out.*member,
-                 required ? reader.required_boolean(field.key) : reader.boolean(field.key));
+                   return store(out.*member, required ? reader.required_boolean(field.key)
+                                                      : reader.boolean(field.key));
                  },
-                 [&]<class Text>(Text Struct::*member)
-                   requires std::is_same_v<Text, std::string> ||
-                            std::is_same_v<Text, std::filesystem::path>
-                 {
-                   return store(out.*member, required ? reader.required_string(field.key)
-                                                      : reader.string(field.key));
-}
-,
-    [&](const SignMember<Struct>& sign) {
-      const auto value = number();
-      if (value && *value != 1.0 && *value != -1.0) {
-        reader.add_error(field.key, "must be 1 or -1 (got " + format_number(*value) + ")");
-        return false;
-      }
-      return store(out.*(sign.member), value);
-    },
-    [&](const IncreasingMember<Struct>& numbers) {
-      return read_increasing_numbers(reader, field.key, range, numbers.rule, required,
-                                     out.*(numbers.member));
-    },
-    [&](const ChoiceMember<Struct>& choice) {
-      const auto name = required ? reader.required_choice(field.key, choice.names)
-                                 : reader.choice(field.key, choice.names);
-      if (name) choice.set(out, *name);
-      return name.has_value();
-    },
-    [&]<class Value>(Value Struct::*member) {
-      if constexpr (is_integer_v<Value>) {
-        return store(out.*member, required ? reader.required_integer(field.key, range)
-                                           : reader.integer(field.key, range));
-      } else {
-        return store(out.*member, number());
-      }
-    }
-}  // namespace field_detail
-,
+                 [&](std::string Struct::*member) { return store(out.*member, text()); },
+                 [&](std::filesystem::path Struct::*member) { return store(out.*member, text()); },
+                 [&](const SignMember<Struct>& sign) {
+                   const auto value = number();
+                   if (value && *value != 1.0 && *value != -1.0) {
+                     reader.add_error(field.key,
+                                      "must be 1 or -1 (got " + format_number(*value) + ")");
+                     return false;
+                   }
+                   return store(out.*(sign.member), value);
+                 },
+                 [&](const IncreasingMember<Struct>& numbers) {
+                   return read_increasing_numbers(reader, field.key, range, numbers.rule, required,
+                                                  out.*(numbers.member));
+                 },
+                 [&](const ChoiceMember<Struct>& choice) {
+                   const auto name = required ? reader.required_choice(field.key, choice.names)
+                                              : reader.choice(field.key, choice.names);
+                   if (name) choice.set(out, *name);
+                   return name.has_value();
+                 },
+                 [&]<class Value>(Value Struct::*member) {
+                   if constexpr (is_integer_v<Value>) {
+                     return store(out.*member, required ? reader.required_integer(field.key, range)
+                                                        : reader.integer(field.key, range));
+                   } else {
+                     return store(out.*member, number());
+                   }
+                 }},
       field.member);
-}  // namespace blockfrag
+}
 
 }  // namespace field_detail
 
