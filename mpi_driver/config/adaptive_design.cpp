@@ -7,14 +7,13 @@ namespace blockfrag {
 AdaptiveDesign read_adaptive_design(ObjectReader reader) {
   AdaptiveDesign design;
   read_fields<AdaptiveDesign>(reader, study_fields::adaptive_base, design);
-  design.limit_state = reader.string_or("limit_state", "");
   read_fields<AdaptiveDesign>(reader, study_fields::adaptive, design);
   reader.finish();
   return design;
 }
 
 nlohmann::json adaptive_design_to_json(const AdaptiveDesign& design) {
-  nlohmann::json adaptive = {{"limit_state", design.limit_state}};
+  nlohmann::json adaptive = nlohmann::json::object();
   write_fields<AdaptiveDesign>(design, study_fields::adaptive_base, adaptive);
   write_fields<AdaptiveDesign>(design, study_fields::adaptive, adaptive);
   return {{"adaptive", adaptive}};

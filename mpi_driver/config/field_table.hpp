@@ -8,6 +8,8 @@
 // struct's reader, which calls read_fields for the rest.
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/number_text.hpp"
 #include "engine/scene/parameter_domains.hpp"
 #include "mpi_driver/config/config_reader.hpp"
 
@@ -65,13 +68,41 @@ constexpr auto choice_member() {
       [](Struct& s, std::string_view name) { s.*member = *enum_names.value(name); }};
 }
 
+// A member that must be 1 or -1 (a fixed direction of the ground motion).
+template <class Struct>
+struct SignMember {
+  double Struct::*member;
+};
+
+// An array of increasing numbers (a study's levels, a spectrum axis's values), each in the field's
+// domain, as many as `count` allows; `noun` names one in messages ("level").
+struct IncreasingNumbers {
+  const Domain* count;
+  std::string_view noun;
+};
+template <class Struct>
+struct IncreasingMember {
+  std::vector<double> Struct::*member;
+  IncreasingNumbers rule;
+};
+
+// Reads the array `key` into `out`; whether it was given and valid. Its numbers that are valid
+// are kept either way, so that the rules after it can still be checked.
+bool read_increasing_numbers(ObjectReader& reader, std::string_view key, const Range& range,
+                             const IncreasingNumbers& rule, bool required,
+                             std::vector<double>& out);
+
 template <class Struct>
 struct Field {
-  using Member = std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*,
-                              int Struct::*, ChoiceMember<Struct>>;
+  using Member =
+      std::variant<double Struct::*, std::optional<double> Struct::*, long Struct::*, int Struct::*,
+                   std::uint32_t Struct::*, std::uint64_t Struct::*, bool Struct::*,
+                   std::string Struct::*, std::filesystem::path Struct::*, SignMember<Struct>,
+                   IncreasingMember<Struct>, ChoiceMember<Struct>>;
   std::string_view key;
   Member member;
-  const Domain* domain;  // nullptr for a choice
+  // nullptr for a choice, a boolean, a string or a sign; each number's for an array.
+  const Domain* domain;
   Presence presence = Presence::optional;
   Written written = Written::always;
   // What the canonical form writes for an optional member, where its absence resolves to a value
@@ -95,6 +126,71 @@ class FieldsRead {
   std::vector<std::string_view> valid_;
 };
 
+namespace field_detail {
+
+template <class Value>
+constexpr bool is_integer_v =
+    std::is_same_v<Value, long> || std::is_same_v<Value, int> ||
+    std::is_same_v<Value, std::uint32_t> || std::is_same_v<Value, std::uint64_t>;
+
+// Reads one field's key into `out`; whether it was given with a valid value.
+template <class Struct>
+bool read_field(ObjectReader& reader, const Field<Struct>& field, Struct& out) {
+  const bool required = field.presence == Presence::required;
+  const Range range = field.domain ? Range::of(*field.domain) : Range::any();
+  const auto number = [&] {
+    return required ? reader.required_number(field.key, range) : reader.number(field.key, range);
+  };
+  const auto store = [&](auto& member, const auto& value) {
+    if (value) member = static_cast<std::remove_reference_t<decltype(member)>>(*value);
+    return value.has_value();
+  };
+  const auto text = [&] {
+    return required ? reader.required_string(field.key) : reader.string(field.key);
+  };
+  return std::visit(
+      Overloaded{[&](std::optional<double> Struct::*member) {
+                   out.*member = number();
+                   return (out.*member).has_value();
+                 },
+                 [&](bool Struct::*member) {
+                   return store(out.*member, required ? reader.required_boolean(field.key)
+                                                      : reader.boolean(field.key));
+                 },
+                 [&](std::string Struct::*member) { return store(out.*member, text()); },
+                 [&](std::filesystem::path Struct::*member) { return store(out.*member, text()); },
+                 [&](const SignMember<Struct>& sign) {
+                   const auto value = number();
+                   if (value && *value != 1.0 && *value != -1.0) {
+                     reader.add_error(field.key,
+                                      "must be 1 or -1 (got " + format_number(*value) + ")");
+                     return false;
+                   }
+                   return store(out.*(sign.member), value);
+                 },
+                 [&](const IncreasingMember<Struct>& numbers) {
+                   return read_increasing_numbers(reader, field.key, range, numbers.rule, required,
+                                                  out.*(numbers.member));
+                 },
+                 [&](const ChoiceMember<Struct>& choice) {
+                   const auto name = required ? reader.required_choice(field.key, choice.names)
+                                              : reader.choice(field.key, choice.names);
+                   if (name) choice.set(out, *name);
+                   return name.has_value();
+                 },
+                 [&]<class Value>(Value Struct::*member) {
+                   if constexpr (is_integer_v<Value>) {
+                     return store(out.*member, required ? reader.required_integer(field.key, range)
+                                                        : reader.integer(field.key, range));
+                   } else {
+                     return store(out.*member, number());
+                   }
+                 }},
+      field.member);
+}
+
+}  // namespace field_detail
+
 // Reads every field's key into `out`, in the table's order; an absent optional key or an invalid
 // value leaves the member as it was (an optional<double> member is reset), the errors recorded at
 // the key's path. The reader's finish() stays with the caller.
@@ -103,54 +199,18 @@ FieldsRead read_fields(ObjectReader& reader,
                        std::type_identity_t<std::span<const Field<Struct>>> fields, Struct& out) {
   FieldsRead read;
   for (const Field<Struct>& field : fields) {
-    const bool required = field.presence == Presence::required;
-    const Range range = field.domain ? Range::of(*field.domain) : Range::any();
-    const auto number = [&] {
-      return required ? reader.required_number(field.key, range) : reader.number(field.key, range);
-    };
-    const auto integer = [&] {
-      return required ? reader.required_integer(field.key, range)
-                      : reader.integer(field.key, range);
-    };
-    bool valid = false;
-    std::visit(field_detail::Overloaded{[&](double Struct::*member) {
-                                          const auto value = number();
-                                          if (value) out.*member = *value;
-                                          valid = value.has_value();
-                                        },
-                                        [&](std::optional<double> Struct::*member) {
-                                          out.*member = number();
-                                          valid = (out.*member).has_value();
-                                        },
-                                        [&](long Struct::*member) {
-                                          const auto value = integer();
-                                          if (value) out.*member = *value;
-                                          valid = value.has_value();
-                                        },
-                                        [&](int Struct::*member) {
-                                          const auto value = integer();
-                                          if (value) out.*member = static_cast<int>(*value);
-                                          valid = value.has_value();
-                                        },
-                                        [&](const ChoiceMember<Struct>& choice) {
-                                          const auto name =
-                                              required
-                                                  ? reader.required_choice(field.key, choice.names)
-                                                  : reader.choice(field.key, choice.names);
-                                          if (name) choice.set(out, *name);
-                                          valid = name.has_value();
-                                        }},
-               field.member);
-    if (valid) read.add(field.key);
+    if (field_detail::read_field(reader, field, out)) read.add(field.key);
   }
   return read;
 }
 
 // Writes every field of `in` into the object `out` (a member equal to its default too, unless the
-// field says Written::unless_default).
+// field says Written::unless_default; an array always).
 template <class Struct>
 void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<Struct>>> fields,
                   nlohmann::json& out) {
+  // gcc's -Warray-bounds sees every alternative's member read from this object: a struct smaller
+  // than a double (a lone bool) draws a false warning.
   static const Struct defaults{};
   for (const Field<Struct>& field : fields) {
     const std::string key(field.key);
@@ -160,9 +220,6 @@ void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<S
     };
     std::visit(
         field_detail::Overloaded{
-            [&](double Struct::*member) { write(in.*member, defaults.*member); },
-            [&](long Struct::*member) { write(in.*member, defaults.*member); },
-            [&](int Struct::*member) { write(in.*member, defaults.*member); },
             [&](std::optional<double> Struct::*member) {
               if (field.resolved) {
                 out[key] = field.resolved(in);
@@ -170,16 +227,25 @@ void write_fields(const Struct& in, std::type_identity_t<std::span<const Field<S
                 out[key] = *(in.*member);
               }
             },
-            [&](const ChoiceMember<Struct>& choice) { out[key] = std::string(choice.get(in)); }},
+            [&](const SignMember<Struct>& sign) {
+              write(in.*(sign.member), defaults.*(sign.member));
+            },
+            [&](const IncreasingMember<Struct>& numbers) { out[key] = in.*(numbers.member); },
+            [&](std::filesystem::path Struct::*member) { out[key] = (in.*member).string(); },
+            [&](const ChoiceMember<Struct>& choice) { out[key] = std::string(choice.get(in)); },
+            [&]<class Value>(Value Struct::*member) { write(in.*member, defaults.*member); }},
         field.member);
   }
 }
 
+// What kind of value a key takes, as the docs' key tables say it.
+enum class FieldKind { number, integer, numbers, choice, boolean, text, sign };
+
 // What the docs' key tables say of a key.
 struct FieldDescription {
   std::string key;
-  std::optional<Domain> domain;  // none: a choice
-  bool integer = false;
+  FieldKind kind = FieldKind::number;
+  std::optional<Domain> domain;  // a number's or an integer's, each of an array's numbers
   bool required = false;
   std::vector<std::string> choices;
 };
@@ -198,12 +264,22 @@ std::vector<FieldDescription> describe_fields(
     FieldDescription description;
     description.key = field.key;
     if (field.domain) description.domain = *field.domain;
-    description.integer = std::holds_alternative<long Struct::*>(field.member) ||
-                          std::holds_alternative<int Struct::*>(field.member);
     description.required = field.presence == Presence::required;
-    if (const auto* choice = std::get_if<ChoiceMember<Struct>>(&field.member)) {
-      description.choices.assign(choice->names.begin(), choice->names.end());
-    }
+    description.kind = std::visit(
+        field_detail::Overloaded{
+            [](bool Struct::*) { return FieldKind::boolean; },
+            [](std::string Struct::*) { return FieldKind::text; },
+            [](std::filesystem::path Struct::*) { return FieldKind::text; },
+            [](const SignMember<Struct>&) { return FieldKind::sign; },
+            [](const IncreasingMember<Struct>&) { return FieldKind::numbers; },
+            [&](const ChoiceMember<Struct>& choice) {
+              description.choices.assign(choice.names.begin(), choice.names.end());
+              return FieldKind::choice;
+            },
+            []<class Value>(Value Struct::*) {
+              return field_detail::is_integer_v<Value> ? FieldKind::integer : FieldKind::number;
+            }},
+        field.member);
     described.push_back(std::move(description));
   }
   return described;

@@ -29,44 +29,41 @@ constexpr auto kMotionTypes =
     motion_types(std::make_index_sequence<std::variant_size_v<GroundMotion>>{});
 
 // The samples are read here, so a record that cannot be used is refused with the scene, at
-// /ground_motion/file, with the reader's "<file>:<line>: <reason>".
-RecordedMotion read_record(ObjectReader& reader, const std::filesystem::path& base_folder) {
-  RecordedMotion motion;
-  const auto file = reader.required_string("file");
-  const auto scale = reader.number("scale", Range::of(domain::record_scale));
-  const auto target_pga = reader.number("target_pga_g", Range::of(domain::target_pga_g));
-  if (scale && target_pga)
+// /ground_motion/file, with the reader's "<file>:<line>: <reason>". The table has read the file's
+// name and the scale.
+void read_record(RecordedMotion& motion, ObjectReader& reader, const FieldsRead& read,
+                 const std::filesystem::path& base_folder) {
+  RecordTarget target;
+  read_fields<RecordTarget>(reader, scene_fields::record_target, target);
+  if (read.valid("scale") && target.target_pga_g)
     reader.add_error("target_pga_g", "give either scale or target_pga_g, not both");
-  if (file && file->empty()) reader.add_error("file", "must not be empty");
-  if (!file || file->empty()) return motion;
-  motion.file = *file;
-  const std::filesystem::path path = base_folder / *file;  // an absolute file replaces the folder
+  if (read.valid("file") && motion.file.empty()) reader.add_error("file", "must not be empty");
+  if (motion.file.empty()) return;
+  const std::filesystem::path path = base_folder / motion.file;  // an absolute file replaces it
   try {
     motion.record = std::make_shared<const Accelerogram>(read_accelerogram(path));
   } catch (const RecordError& error) {
     reader.add_error("file", error.what());
-    return motion;
+    return;
   }
-  motion.scale = scale.value_or(1.0);
-  if (target_pga) {
+  if (target.target_pga_g) {
     const double peak = peak_acceleration_g(*motion.record);
     if (peak > 0) {
-      motion.scale = *target_pga / peak;
+      motion.scale = *target.target_pga_g / peak;
     } else {
       reader.add_error("target_pga_g",
                        "cannot scale " + path.string() + " to a peak: its accelerations are all 0");
     }
   }
-  return motion;
 }
 
 // The rules a motion's table cannot say.
 template <class Motion>
 void read_beyond_table(Motion&, ObjectReader&, const FieldsRead&, const std::filesystem::path&) {}
 
-void read_beyond_table(RecordedMotion& motion, ObjectReader& reader, const FieldsRead&,
+void read_beyond_table(RecordedMotion& motion, ObjectReader& reader, const FieldsRead& read,
                        const std::filesystem::path& base_folder) {
-  motion = read_record(reader, base_folder);
+  read_record(motion, reader, read, base_folder);
 }
 
 void read_beyond_table(MavroeidisPapageorgiouPulse& pulse, ObjectReader& reader,
@@ -84,7 +81,7 @@ GroundMotion read_motion(ObjectReader& reader, const std::filesystem::path& base
   using Motion = std::variant_alternative_t<index, GroundMotion>;
   Motion motion;
   FieldsRead read;
-  // A motion without keys (none, a record's read by hand) instantiates no table code.
+  // A motion without keys ("none") instantiates no table code.
   if constexpr (std::size(MotionKeys<Motion>::fields) > 0) {
     read = read_fields<Motion>(reader, MotionKeys<Motion>::fields, motion);
   }
@@ -124,10 +121,6 @@ json ground_motion_to_json(const GroundMotion& motion) {
         json out = {{"type", MotionKeys<Motion>::type}};
         if constexpr (std::size(MotionKeys<Motion>::fields) > 0) {
           write_fields<Motion>(given, MotionKeys<Motion>::fields, out);
-        }
-        if constexpr (std::is_same_v<Motion, RecordedMotion>) {
-          out["file"] = given.file;
-          out["scale"] = given.scale;
         }
         return out;
       },

@@ -1,6 +1,7 @@
 #include "mpi_driver/config/intensity_measure.hpp"
 
 #include <cstdio>
+#include <span>
 
 #include "engine/scene/parameter_domains.hpp"
 #include "mpi_driver/config/study_fields.hpp"
@@ -8,13 +9,20 @@
 namespace blockfrag {
 namespace {
 
-// Intensity levels a study may have (domain::kMaxIntensityLevels): a fine grid for a smooth curve
-// is a few hundred; a grid of single amplitudes (one sample each) a few tens of thousands.
-constexpr double kMaxLevels = domain::kMaxIntensityLevels;
+// The tables of the levels of one domain: their list's and their range's.
+struct LevelTables {
+  std::span<const Field<LevelList>> list;
+  std::span<const Field<LevelRange>> range;
+};
 
-// The levels' domain in the measure's unit: far past any earthquake, finite.
-Range level_range(ImType type) {
-  return Range::of(type == ImType::pgv ? domain::pgv_level : domain::intensity_g);
+template <const Domain& level>
+constexpr LevelTables level_tables{study_fields::level_list<level>,
+                                   study_fields::level_range<level>};
+
+// The levels' tables in the measure's unit: far past any earthquake, finite.
+LevelTables measure_level_tables(ImType type) {
+  if (type == ImType::pgv) return level_tables<domain::pgv_level>;
+  return level_tables<domain::intensity_g>;
 }
 
 }  // namespace
@@ -25,43 +33,30 @@ double largest_level(ImType type) {
 
 namespace {
 
-std::vector<double> read_levels(ObjectReader& reader, const Range& range) {
-  std::vector<double> levels;
+// "levels", or "from", "to" and "count".
+std::vector<double> read_levels(ObjectReader& reader, const LevelTables& tables) {
   if (reader.has("levels")) {
-    if (reader.has("from") || reader.has("to") || reader.has("count")) {
-      reader.add_error("levels", "give either levels or from/to/count, not both");
-      for (const char* key : {"from", "to", "count"}) reader.raw(key);  // known: reported above
-    }
-    ArrayReader array = reader.required_array("levels");
-    if (array.valid() && array.size() == 0) reader.add_error("levels", "must not be empty");
-    if (static_cast<double>(array.size()) > kMaxLevels) {
-      reader.add_error("levels", "has " + std::to_string(array.size()) + " levels, more than " +
-                                     format_number(kMaxLevels));
-      return levels;
-    }
-    for (std::size_t k = 0; k < array.size(); ++k) {
-      const auto value = array.number(k, range);
-      if (!value) continue;
-      if (!levels.empty() && *value <= levels.back()) {
-        reader.errors().add(array.path_of(k),
-                            "must be greater than the level before it (levels increase)");
-      }
-      levels.push_back(*value);
-    }
+    bool range_given = false;
+    for (const Field<LevelRange>& field : tables.range) range_given |= reader.has(field.key);
+    if (range_given) reader.add_error("levels", "give either levels or from/to/count, not both");
+    LevelList list;
+    read_fields<LevelList>(reader, tables.list, list);
+    return list.levels;
+  }
+  std::vector<double> levels;
+  LevelRange grid;
+  const FieldsRead read = read_fields<LevelRange>(reader, tables.range, grid);
+  const double from = grid.from, to = grid.to;
+  if (!read.valid("from") || !read.valid("to")) return levels;
+  if (to <= from) {
+    reader.add_error("to", "must be greater than from (" + format_number(from) + ")");
     return levels;
   }
-  const auto from = reader.required_number("from", range);
-  const auto to = reader.required_number("to", range);
-  const auto count = reader.required_integer("count", Range::of(domain::intensity_level_count));
-  if (from && to && *to <= *from) {
-    reader.add_error("to", "must be greater than from (" + format_number(*from) + ")");
-  }
-  if (from && to && count && *to > *from) {
-    for (long k = 0; k < *count; ++k) {
-      levels.push_back(k == *count - 1 ? *to
-                                       : *from + (*to - *from) * static_cast<double>(k) /
-                                                     static_cast<double>(*count - 1));
-    }
+  if (!read.valid("count")) return levels;
+  const double intervals = static_cast<double>(grid.count - 1);
+  for (long k = 0; k < grid.count; ++k) {
+    levels.push_back(k == grid.count - 1 ? to
+                                         : from + (to - from) * static_cast<double>(k) / intervals);
   }
   return levels;
 }
@@ -74,7 +69,7 @@ void read_second_axis(ObjectReader reader, IntensityMeasure& measure) {
     reader.add_error("type", "makes a grid of stripes: a cloud (\"scaling\": \"none\") has none");
     return;
   }
-  measure.periods = read_levels(reader, Range::of(domain::pulse_period));
+  measure.periods = read_levels(reader, level_tables<domain::pulse_period>);
   const std::size_t cells = measure.levels.size() * measure.periods.size();
   if (cells > kMaxSurfaceCells) {
     reader.add_error(reader.has("levels") ? "levels" : "count",
@@ -125,7 +120,7 @@ IntensityMeasure read_intensity_measure(ObjectReader reader, ImType default_type
       if (reader.has(key)) reader.add_error(key, "a cloud (\"scaling\": \"none\") has no levels");
     }
   } else {
-    measure.levels = read_levels(reader, level_range(measure.type));
+    measure.levels = read_levels(reader, measure_level_tables(measure.type));
   }
   if (reader.has("second")) read_second_axis(reader.required_object("second"), measure);
   reader.finish(measure.type == ImType::sa ? "for type \"sa\"" : std::string{});
@@ -140,10 +135,14 @@ nlohmann::json intensity_measure_to_json(const IntensityMeasure& measure) {
   if (measure.cloud) {
     write_fields<IntensityMeasure>(measure, study_fields::cloud, out);
   } else {
-    out["levels"] = measure.levels;
+    write_fields<LevelList>({measure.levels}, measure_level_tables(measure.type).list, out);
   }
   // Only a surface has the key: the canonical config (and hash) of every other study is unchanged.
-  if (measure.surface()) out["second"] = {{"type", "pulse_period"}, {"levels", measure.periods}};
+  if (measure.surface()) {
+    out["second"] = {{"type", "pulse_period"}};
+    write_fields<LevelList>({measure.periods}, level_tables<domain::pulse_period>.list,
+                            out["second"]);
+  }
   return out;
 }
 

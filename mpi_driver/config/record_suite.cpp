@@ -69,13 +69,13 @@ std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
       record.file = raw.get<std::string>();
     } else if (raw.is_object()) {
       ObjectReader entry = array.object(k);
-      const auto file = entry.required_string("file");
-      if (!file) continue;
-      record.file = *file;
+      const FieldsRead read =
+          read_fields<SuiteRecord>(entry, study_fields::suite_record_files, record);
+      if (!read.valid("file")) continue;
       file_path = entry.path_of("file");
-      if (const auto vertical = entry.string("vertical")) {
-        record.vertical_file = *vertical;
-        record.vertical = read_file(*vertical, entry.path_of("vertical"), errors, base_folder);
+      if (read.valid("vertical")) {
+        record.vertical =
+            read_file(record.vertical_file, entry.path_of("vertical"), errors, base_folder);
       }
       read_fields<SuiteRecord>(entry, study_fields::suite_record, record);
       entry.finish();
@@ -106,9 +106,9 @@ std::optional<RecordSuite> read_record_suite(ObjectReader& reader,
 nlohmann::json record_suite_to_json(const RecordSuite& suite) {
   nlohmann::json records = nlohmann::json::array();
   for (const auto& r : suite.records) {
-    nlohmann::json entry = {{"file", r.file}, {"content_hash", hash_to_hex(r.content_hash)}};
+    nlohmann::json entry = {{"content_hash", hash_to_hex(r.content_hash)}};
+    write_fields<SuiteRecord>(r, study_fields::suite_record_files, entry);
     write_fields<SuiteRecord>(r, study_fields::suite_record, entry);
-    if (!r.vertical_file.empty()) entry["vertical"] = r.vertical_file;
     records.push_back(std::move(entry));
   }
   return {{"type", "record_suite"}, {"records", records}};

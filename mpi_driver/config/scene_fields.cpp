@@ -10,6 +10,7 @@ std::vector<KeyTable> scene_key_tables() {
           {"contact.", describe_fields<Contact>(scene_fields::contact)},
           {"", describe_fields<Scene>(scene_fields::run)},
           {"initial.", describe_fields<InitialState>(scene_fields::initial)},
+          {"solver.", describe_fields<SolverSettings>(scene_fields::solver_method)},
           {"solver.", describe_fields<SolverSettings>(scene_fields::rk4_step)},
           {"solver.", describe_fields<SolverSettings>(scene_fields::step_control)},
           {"solver.", describe_fields<SolverSettings>(scene_fields::budgets)},
@@ -18,6 +19,7 @@ std::vector<KeyTable> scene_key_tables() {
           {"dam.", describe_fields<DamCrest>(scene_fields::dam)},
           {"reservoir.", describe_fields<Reservoir>(scene_fields::reservoir)},
           {"", describe_alternatives<GroundMotion, MotionKeys>()},
+          {"", describe_fields<RecordTarget>(scene_fields::record_target)},
           {"", describe_fields<StudyConfig>(study_fields::run)}};
 }
 

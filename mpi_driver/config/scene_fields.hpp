@@ -49,6 +49,8 @@ inline constexpr Field<InitialState> initial[] = {
     {"theta", &InitialState::theta, &domain::initial_theta},
     {"omega", &InitialState::omega, &domain::initial_omega, optional, Written::unless_default}};
 // The solver's "method" selects the step's key: rk4's dt, or the others' tolerance.
+inline constexpr Field<SolverSettings> solver_method[] = {
+    {"method", choice_member<&SolverSettings::method, method_names>(), nullptr}};
 inline constexpr Field<SolverSettings> rk4_step[] = {
     {"dt", &SolverSettings::dt, &domain::rk4_step}};
 inline constexpr Field<SolverSettings> step_control[] = {
@@ -85,8 +87,7 @@ inline constexpr Field<Reservoir> reservoir[] = {
 }  // namespace scene_fields
 
 // A ground motion's "type" and its keys besides "type", one specialisation per alternative of
-// GroundMotion. A record's keys ("file", "scale" or "target_pga_g") are read and written by
-// ground_motion_json.cpp.
+// GroundMotion.
 template <class Motion>
 struct MotionKeys;
 
@@ -120,11 +121,25 @@ struct MotionKeys<RectangularPulse> {
       {"duration", &RectangularPulse::duration, &domain::pulse_duration, Presence::required}};
 };
 
+// A record's file and scale, the canonical form's; its "target_pga_g" (record_target below), the
+// peak the scale is resolved from instead, is not written.
 template <>
 struct MotionKeys<RecordedMotion> {
   static constexpr std::string_view type = "record";
-  static constexpr std::array<Field<RecordedMotion>, 0> fields{};
+  static constexpr Field<RecordedMotion> fields[] = {
+      {"file", &RecordedMotion::file, nullptr, Presence::required},
+      {"scale", &RecordedMotion::scale, &domain::record_scale}};
 };
+
+// A record scaled to a peak ground acceleration instead of by a scale.
+struct RecordTarget {
+  std::optional<double> target_pga_g;
+};
+
+namespace scene_fields {
+inline constexpr Field<RecordTarget> record_target[] = {
+    {"target_pga_g", &RecordTarget::target_pga_g, &domain::target_pga_g}};
+}  // namespace scene_fields
 
 template <class Pulse>
 struct AccelerationPulseKeys {

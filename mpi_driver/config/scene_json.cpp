@@ -81,11 +81,11 @@ Contact read_contact(ObjectReader reader) {
 
 SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) {
   SolverSettings solver;
-  std::optional<Method> method = solver.method;
-  if (reader.has("method")) {
-    const auto name = reader.required_choice("method", method_names.names);
-    method = name ? method_names.value(*name) : std::nullopt;
-  }
+  const bool method_valid =
+      read_fields<SolverSettings>(reader, scene_fields::solver_method, solver).valid("method") ||
+      !reader.has("method");
+  // Without a valid method nobody knows which step's key belongs here.
+  const std::optional<Method> method = method_valid ? std::optional(solver.method) : std::nullopt;
   if (method == Method::rk4) {
     const FieldsRead read = read_fields<SolverSettings>(reader, scene_fields::rk4_step, solver);
     if (read.valid("dt") && duration && solver.dt > *duration) {
@@ -95,7 +95,6 @@ SolverSettings read_solver(ObjectReader reader, std::optional<double> duration) 
   } else if (method) {  // the step-size-controlled methods
     read_fields<SolverSettings>(reader, scene_fields::step_control, solver);
   }
-  if (method) solver.method = *method;
   read_fields<SolverSettings>(reader, scene_fields::budgets, solver);
   // A fixed step needs duration / dt steps at least: refused now rather than failing at the budget.
   if (method == Method::rk4 && duration &&
@@ -155,7 +154,8 @@ InitialState read_initial(ObjectReader reader) {
 }
 
 json solver_to_json(const SolverSettings& solver) {
-  json out = {{"method", method_names.name(solver.method)}};
+  json out = json::object();
+  write_fields<SolverSettings>(solver, scene_fields::solver_method, out);
   write_fields<SolverSettings>(solver, scene_fields::budgets, out);
   if (solver.method == Method::rk4) {
     write_fields<SolverSettings>(solver, scene_fields::rk4_step, out);

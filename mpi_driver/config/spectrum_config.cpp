@@ -31,8 +31,9 @@ struct Axis {
   JsonPointer first_path, last_path;
 };
 
-// {"values": [...]} (increasing) or {"from": A, "to": B, "count": N, "spacing": "linear"|"log"}.
-Axis read_axis(ObjectReader reader, std::size_t min_count) {
+// {"values": [...]} (increasing) or {"from": A, "to": B, "count": N, "spacing": "linear"|"log"};
+// `values_fields` is the axis's table of its values.
+Axis read_axis(ObjectReader reader, std::span<const Field<AxisValues>> values_fields) {
   Axis axis;
   if (!reader.valid()) return axis;
   static_assert(domain::spectrum_axis_count.high == static_cast<double>(kMaxSpectrumAxis));
@@ -42,23 +43,13 @@ Axis read_axis(ObjectReader reader, std::size_t min_count) {
         reader.add_error(field.key, "give either values or from/to/count, not both");
       }
     }
-    ArrayReader array = reader.required_array("values");
-    if (array.valid() && (array.size() < min_count || array.size() > kMaxSpectrumAxis)) {
-      reader.add_error("values", "must have " + std::to_string(min_count) + " to " +
-                                     std::to_string(kMaxSpectrumAxis) + " values (got " +
-                                     std::to_string(array.size()) + ")");
-    } else {
-      for (std::size_t k = 0; k < array.size(); ++k) {
-        const auto value = array.number(k, Range::of(domain::spectrum_ratio));
-        if (!value) continue;
-        if (!axis.values.empty() && *value <= axis.values.back()) {
-          reader.errors().add(array.path_of(k), "must be greater than the value before it");
-        }
-        axis.values.push_back(*value);
-      }
-      axis.first_path = array.path_of(0);
-      axis.last_path = array.path_of(array.size() == 0 ? 0 : array.size() - 1);
-      axis.canonical = {{"values", axis.values}};
+    AxisValues given;
+    if (read_fields<AxisValues>(reader, values_fields, given).valid("values")) {
+      axis.values = given.values;
+      axis.first_path = reader.path_of("values") / 0;
+      axis.last_path = reader.path_of("values") / (given.values.size() - 1);
+      axis.canonical = json::object();
+      write_fields<AxisValues>(given, values_fields, axis.canonical);
     }
     reader.finish();
     return axis;
@@ -305,16 +296,19 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   }
 
   const auto family = read_pulse(root.required_object("pulse"));
-  const Axis frequency = read_axis(root.required_object("frequency_ratio"), 1);
-  const Axis amplitude = read_axis(root.required_object("amplitude_ratio"), 2);
+  const Axis frequency =
+      read_axis(root.required_object("frequency_ratio"), spectrum_fields::frequency_values);
+  const Axis amplitude =
+      read_axis(root.required_object("amplitude_ratio"), spectrum_fields::amplitude_values);
   ObjectReader bisection = root.object("bisection");
   read_fields<SpectrumConfig>(bisection, spectrum_fields::bisection, config);
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
   read_fields<SpectrumConfig>(root, spectrum_fields::settle, config);
-  if (const auto name = root.string("output")) {
-    if (const auto problem = output_name_problem(*name)) root.add_error("output", *problem);
-    config.output = *name;
+  if (read_fields<SpectrumConfig>(root, spectrum_fields::output, config).valid("output")) {
+    if (const auto problem = output_name_problem(config.output.string())) {
+      root.add_error("output", *problem);
+    }
   } else {
     config.output = std::filesystem::path(source).stem().string() + ".h5";
   }
@@ -346,7 +340,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   write_fields<SpectrumConfig>(config, spectrum_fields::bisection, config.canonical["bisection"]);
   config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
   write_fields<SpectrumConfig>(config, spectrum_fields::settle, config.canonical);
-  config.canonical["output"] = config.output.string();
+  write_fields<SpectrumConfig>(config, spectrum_fields::output, config.canonical);
   write_fields<SpectrumConfig>(config, spectrum_fields::checkpoint, config.canonical);
   json hashed = config.canonical;
   hashed.erase("output");

@@ -10,12 +10,15 @@ std::vector<KeyTable> spectrum_key_tables() {
           {"pulse.", describe_fields<PulseFamily>(pulse_type)},
           {"pulse.", describe_fields<PulseFamily>(periodic_family)},
           {"pulse.", describe_fields<PulseFamily>(makris_c_family)},
+          {"frequency_ratio.", describe_fields<AxisValues>(frequency_values)},
           {"frequency_ratio.", describe_fields<AxisRange>(axis_range)},
+          {"amplitude_ratio.", describe_fields<AxisValues>(amplitude_values)},
           {"amplitude_ratio.", describe_fields<AxisRange>(axis_range)},
           {"bisection.", describe_fields<SpectrumConfig>(bisection)},
           {"minimum_overturning.",
            describe_fields<MinimumOverturningSettings>(study_fields::minimum_overturning)},
           {"", describe_fields<SpectrumConfig>(settle)},
+          {"", describe_fields<SpectrumConfig>(output)},
           {"", describe_fields<SpectrumConfig>(checkpoint)}};
 }
 

@@ -27,8 +27,10 @@ inline constexpr EnumNames<SpectrumPulse, 7> spectrum_pulse_names{
     {"cosine_pulse", "sine_pulse", "rectangular_pulse", "makris_a", "makris_b", "makris_c",
      "ricker"}};
 
-// An axis given as {"from", "to", "count", "spacing"}; its {"values": [...]} form is read by
-// spectrum_config.cpp.
+// An axis given as {"values": [...]}, or as {"from", "to", "count", "spacing"}.
+struct AxisValues {
+  std::vector<double> values;
+};
 struct AxisRange {
   double from = 0.0;
   double to = 0.0;
@@ -58,6 +60,15 @@ inline constexpr Field<PulseFamily> periodic_family[] = {
 inline constexpr Field<PulseFamily> makris_c_family[] = {
     {"n", &PulseFamily::n, &domain::makris_c_n}};
 
+// The frequency ratio's axis has at least one value, the amplitude ratio's two (its fit's).
+inline constexpr Domain frequency_value_count{1.0, kMaxSpectrumAxis, true, true, ""};
+inline constexpr Domain amplitude_value_count{2.0, kMaxSpectrumAxis, true, true, ""};
+inline constexpr Field<AxisValues> frequency_values[] = {
+    {"values", IncreasingMember<AxisValues>{&AxisValues::values, {&frequency_value_count, "value"}},
+     &domain::spectrum_ratio, required}};
+inline constexpr Field<AxisValues> amplitude_values[] = {
+    {"values", IncreasingMember<AxisValues>{&AxisValues::values, {&amplitude_value_count, "value"}},
+     &domain::spectrum_ratio, required}};
 inline constexpr Field<AxisRange> axis_range[] = {
     {"from", &AxisRange::from, &domain::spectrum_ratio, required},
     {"to", &AxisRange::to, &domain::spectrum_ratio, required},
@@ -76,6 +87,7 @@ inline constexpr Field<SpectrumConfig> bisection[] = {
     {"max_iterations", &SpectrumConfig::max_iterations, &domain::bisection_iterations}};
 inline constexpr Field<SpectrumConfig> settle[] = {
     {"settle_allowance_tau", &SpectrumConfig::settle_allowance_tau, &domain::settle_allowance_tau}};
+inline constexpr Field<SpectrumConfig> output[] = {{"output", &SpectrumConfig::output, nullptr}};
 inline constexpr Field<SpectrumConfig> checkpoint[] = {{"checkpoint_interval_s",
                                                         &SpectrumConfig::checkpoint_interval_s,
                                                         &domain::checkpoint_interval_s}};

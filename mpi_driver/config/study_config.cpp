@@ -63,27 +63,28 @@ bool within(const Domain& domain, double low, double high, bool log_normal) {
 
 // direction: {"distribution": "random_sign"} or {"distribution": "fixed", "value": 1 or -1}.
 std::optional<Distribution> read_direction(ObjectReader reader) {
-  const auto kind = reader.required_choice("distribution", {"random_sign", "fixed"});
-  if (!kind) return std::nullopt;
-  std::optional<Distribution> distribution;
-  if (*kind == "random_sign") {
-    distribution = Uniform{-1.0, 1.0};
-  } else if (const auto value = reader.required_number("value")) {
-    if (*value == 1.0 || *value == -1.0) {
-      distribution = Fixed{*value};
-    } else {
-      reader.add_error("value", "must be 1 or -1 (got " + format_number(*value) + ")");
-    }
+  DirectionLaw law;
+  if (!read_fields<DirectionLaw>(reader, study_fields::direction_law, law).valid("distribution")) {
+    return std::nullopt;
   }
-  reader.finish("for distribution \"" + *kind + "\"");
+  std::optional<Distribution> distribution;
+  if (!law.fixed) {
+    distribution = Uniform{-1.0, 1.0};
+  } else if (read_fields<DirectionLaw>(reader, study_fields::fixed_direction, law).valid("value")) {
+    distribution = Fixed{law.value};
+  }
+  reader.finish("for distribution \"" + std::string(direction_law_names.name(law.fixed)) + "\"");
   return distribution;
 }
 
 // A direction's random sign is drawn as Uniform{-1, 1}: its name says what it is.
 json direction_to_json(const Distribution& distribution) {
-  if (const auto* fixed = std::get_if<Fixed>(&distribution))
-    return {{"distribution", "fixed"}, {"value", fixed->value}};
-  return {{"distribution", "random_sign"}};
+  const auto* fixed = std::get_if<Fixed>(&distribution);
+  const DirectionLaw law{fixed != nullptr, fixed ? fixed->value : 1.0};
+  json out = json::object();
+  write_fields<DirectionLaw>(law, study_fields::direction_law, out);
+  if (law.fixed) write_fields<DirectionLaw>(law, study_fields::fixed_direction, out);
+  return out;
 }
 
 // Why a study cannot draw the block's size, if it cannot: sampling draws a rectangle's sizes, so a
@@ -306,13 +307,13 @@ json canonical_json(const StudyConfig& config) {
   json out = {{"scene", scene},
               {"inputs", inputs},
               {"intensity_measure", intensity_measure_to_json(config.intensity)},
-              {"samples_per_level", config.samples_per_level},
               {"design", config.adaptive ? adaptive_design_to_json(*config.adaptive)
                                          : json(std::string(design_names.name(config.design)))},
-              {"limit_states", limit_states},
-              {"seed", config.seed},
-              {"output", config.output.string()}};
+              {"limit_states", limit_states}};
   write_fields<StudyConfig>(config, study_fields::run, out);
+  write_fields<StudyConfig>(config, study_fields::samples, out);
+  write_fields<StudyConfig>(config, study_fields::seed, out);
+  write_fields<StudyConfig>(config, study_fields::output, out);
   return out;
 }
 
@@ -396,16 +397,14 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
                    "scales the pulse's peak acceleration, but /scene/ground_motion has "
                    "velocity_amplitude 0");
   }
-  const Range samples_range = Range::of(domain::samples_per_level);
-  const auto samples = root.required_integer("samples_per_level", samples_range);
+  read_fields<StudyConfig>(root, study_fields::samples, config);
   if (overrides.samples_per_level) {
+    const Range samples_range = Range::of(domain::samples_per_level);
     if (!samples_range.contains(static_cast<double>(*overrides.samples_per_level))) {
       errors.add_message(source + ": --samples-per-level: " + samples_range.rule() + " (got " +
                          std::to_string(*overrides.samples_per_level) + ")");
     }
     config.samples_per_level = static_cast<std::uint32_t>(*overrides.samples_per_level);
-  } else if (samples) {
-    config.samples_per_level = static_cast<std::uint32_t>(*samples);
   }
   if (const json* design = root.raw("design"); design && design->is_object()) {
     ObjectReader object(*design, root.path_of("design"), errors);
@@ -420,20 +419,19 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   read_limit_states(root.required_array("limit_states"), root, config, scene_valid);
   if (config.adaptive) check_adaptive(root, config);
   if (config.intensity.surface()) check_surface(root, config, scene_valid);
-  config.seed = static_cast<std::uint64_t>(
-      root.required_integer("seed", Range::of(domain::seed)).value_or(0));
-  const auto output = root.string("output");
+  read_fields<StudyConfig>(root, study_fields::seed, config);
+  const bool output = read_fields<StudyConfig>(root, study_fields::output, config).valid("output");
   if (output) {
-    if (const auto problem = output_name_problem(*output)) root.add_error("output", *problem);
+    if (const auto problem = output_name_problem(config.output.string())) {
+      root.add_error("output", *problem);
+    }
   }
   if (overrides.output) {
     if (const auto problem = output_name_problem(overrides.output->string())) {
       errors.add_message(source + ": --output: " + *problem);
     }
     config.output = *overrides.output;
-  } else if (output) {
-    config.output = *output;
-  } else {
+  } else if (!output) {
     // Without an output key the study writes STUDY.h5 in the working folder.
     config.output = std::filesystem::path(source).stem().string() + ".h5";
   }

@@ -27,6 +27,24 @@ inline constexpr EnumNames<Design, 2> design_names{{Design::monte_carlo, Design:
 inline constexpr EnumNames<Design, 2> adaptive_base_names{
     {Design::latin_hypercube, Design::monte_carlo}, {"latin_hypercube", "monte_carlo"}};
 
+// A study's direction: a random sign, or fixed at `value`.
+struct DirectionLaw {
+  bool fixed = false;
+  double value = 1.0;
+};
+inline constexpr EnumNames<bool, 2> direction_law_names{{false, true}, {"random_sign", "fixed"}};
+
+// A study's levels (an intensity measure's, or a surface's second axis's) given as a list, or as a
+// range, which the reader turns into a list.
+struct LevelList {
+  std::vector<double> levels;
+};
+struct LevelRange {
+  double from = 0.0;
+  double to = 0.0;
+  long count = 0;
+};
+
 namespace study_fields {
 
 using enum Presence;
@@ -38,9 +56,26 @@ inline constexpr Field<StudyConfig> run[] = {
     {"allowed_failed_fraction", &StudyConfig::allowed_failed_fraction,
      &domain::allowed_failed_fraction},
     {"bootstrap_resamples", &StudyConfig::bootstrap_resamples, &domain::bootstrap_resamples}};
+// The samples of each level and the seed: two tables keep the order the study's errors are
+// reported in.
+inline constexpr Field<StudyConfig> samples[] = {
+    {"samples_per_level", &StudyConfig::samples_per_level, &domain::samples_per_level, required}};
+inline constexpr Field<StudyConfig> seed[] = {
+    {"seed", &StudyConfig::seed, &domain::seed, required}};
+
+// The study's output file (without it, STUDY.h5 in the working folder).
+inline constexpr Field<StudyConfig> output[] = {{"output", &StudyConfig::output, nullptr}};
+
+// A direction's "distribution": a random sign (drawn as Uniform{-1, 1}), which has no other key,
+// or a fixed sign, {"distribution": "fixed", "value": 1 or -1}.
+inline constexpr Field<DirectionLaw> direction_law[] = {
+    {"distribution", choice_member<&DirectionLaw::fixed, direction_law_names>(), nullptr,
+     required}};
+inline constexpr Field<DirectionLaw> fixed_direction[] = {
+    {"value", SignMember<DirectionLaw>{&DirectionLaw::value}, nullptr, required}};
 
 // "type" (its default depends on the ground motion: the reader sets it first), then the keys it
-// selects; "scaling", then a cloud's. The levels and a surface's "second" are read by
+// selects; "scaling", then a cloud's, or the levels below. A surface's "second" type is read by
 // intensity_measure.cpp.
 inline constexpr Field<IntensityMeasure> measure_type[] = {
     {"type", choice_member<&IntensityMeasure::type, im_type_names>(), nullptr}};
@@ -51,9 +86,26 @@ inline constexpr Field<IntensityMeasure> scaling[] = {
     {"scaling", choice_member<&IntensityMeasure::cloud, scaling_names>(), nullptr}};
 inline constexpr Field<IntensityMeasure> cloud[] = {
     {"scale", &IntensityMeasure::scale, &domain::cloud_scale}};
+// The levels, given as a list or as a grid of "count" evenly spaced from "from" to "to", one table
+// per domain of the levels: in g (or dimensionless), in m/s for "pgv", and a surface's second
+// axis's pulse periods in s.
+inline constexpr Domain level_list_count{1.0, domain::kMaxIntensityLevels, true, true, ""};
+template <const Domain& level>
+inline constexpr Field<LevelList> level_list[1] = {
+    {"levels", IncreasingMember<LevelList>{&LevelList::levels, {&level_list_count, "level"}},
+     &level, required}};
+template <const Domain& level>
+inline constexpr Field<LevelRange> level_range[3] = {
+    {"from", &LevelRange::from, &level, required},
+    {"to", &LevelRange::to, &level, required},
+    {"count", &LevelRange::count, &domain::intensity_level_count, required}};
 
-// A limit state's "name" and "overturned_exceeds" are read by study_limit_states.cpp; its "type"
-// selects the threshold's key.
+// A limit state's name, then its "type", which selects the threshold's key, and (but for
+// overturning) whether an overturned block exceeds it.
+inline constexpr Field<LimitState> limit_state_name[] = {
+    {"name", &LimitState::name, nullptr, required}};
+inline constexpr Field<LimitState> overturned_exceeds[] = {
+    {"overturned_exceeds", &LimitState::overturned_exceeds, nullptr}};
 inline constexpr Field<LimitState> limit_state_type[] = {
     {"type", choice_member<&LimitState::kind, limit_state_kind_names>(), nullptr, required}};
 inline constexpr Field<LimitState> max_rotation[] = {
@@ -64,17 +116,21 @@ inline constexpr Field<LimitState> residual_slide[] = {
 inline constexpr Field<LimitState> post_earthquake_unstable[] = {
     {"threshold", &LimitState::threshold, &domain::limit_state_threshold}};
 
-// "design": {"adaptive": {...}}; its "limit_state", a name, is read by adaptive_design.cpp.
+// "design": {"adaptive": {...}}; its "limit_state" is a limit state's name (none: the first's).
 inline constexpr Field<AdaptiveDesign> adaptive_base[] = {
     {"base", choice_member<&AdaptiveDesign::base, adaptive_base_names>(), nullptr}};
 inline constexpr Field<AdaptiveDesign> adaptive[] = {
+    {"limit_state", &AdaptiveDesign::limit_state, nullptr},
     {"target_relative_width", &AdaptiveDesign::target_relative_width,
      &domain::target_relative_width},
     {"pair_probability", &AdaptiveDesign::pair_probability, &domain::pair_probability},
     {"max_samples", &AdaptiveDesign::max_samples, &domain::adaptive_samples, required}};
 
-// A record suite's entry given as an object: its "file" and "vertical" are read by
-// record_suite.cpp.
+// A record suite's entry given as an object: its record's file and its vertical companion's (read
+// by record_suite.cpp before the weight), then its weight.
+inline constexpr Field<SuiteRecord> suite_record_files[] = {
+    {"file", &SuiteRecord::file, nullptr, required},
+    {"vertical", &SuiteRecord::vertical_file, nullptr, optional, Written::unless_default}};
 inline constexpr Field<SuiteRecord> suite_record[] = {
     {"weight", &SuiteRecord::weight, &domain::record_weight}};
 

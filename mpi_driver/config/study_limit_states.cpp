@@ -59,7 +59,9 @@ void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& confi
     ObjectReader reader = array.object(k);
     if (!reader.valid()) continue;
     LimitState state;
-    const auto name = reader.required_string("name");
+    const bool named =
+        read_fields<LimitState>(reader, study_fields::limit_state_name, state).valid("name");
+    const auto name = named ? std::optional(state.name) : std::nullopt;
     check_limit_state_name(reader, name, config);
     const bool typed =
         read_fields<LimitState>(reader, study_fields::limit_state_type, state).valid("type");
@@ -73,23 +75,21 @@ void read_limit_states(ArrayReader array, ObjectReader& root, StudyConfig& confi
                        "factors after the earthquake are the reservoir's)");
     }
     if (kind != LimitStateKind::overturning) {
-      state.overturned_exceeds = reader.boolean_or("overturned_exceeds", true);
+      read_fields<LimitState>(reader, study_fields::overturned_exceeds, state);
     }
     reader.finish(kind ? "for type \"" + std::string(limit_state_kind_name(*kind)) + "\""
                        : std::string{});
-    if (name) {
-      state.name = *name;
-      config.limit_states.push_back(state);
-    }
+    if (named) config.limit_states.push_back(state);
   }
 }
 
 nlohmann::json limit_state_to_json(const LimitState& state) {
-  nlohmann::json out = {{"name", state.name}};
+  nlohmann::json out = nlohmann::json::object();
+  write_fields<LimitState>(state, study_fields::limit_state_name, out);
   write_fields<LimitState>(state, study_fields::limit_state_type, out);
   write_fields<LimitState>(state, threshold_fields(state.kind), out);
   if (state.kind != LimitStateKind::overturning)
-    out["overturned_exceeds"] = state.overturned_exceeds;
+    write_fields<LimitState>(state, study_fields::overturned_exceeds, out);
   return out;
 }
 

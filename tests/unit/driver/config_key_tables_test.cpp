@@ -36,8 +36,7 @@ struct DocsCheck {
 
 DocsCheck scenes_check() {
   DocsCheck check{"scenes.md", scene_key_tables(), {}, {}, true};
-  check.hand_read_keys = {"block.polygon", "seat", "contact.rocking_restitution", "scale",
-                          "target_pga_g"};
+  check.hand_read_keys = {"block.polygon", "seat", "contact.rocking_restitution"};
   for (const std::string_view type : ground_motion_types()) check.selectors.emplace(type);
   for (const std::string_view method : method_names.names) check.selectors.emplace(method);
   return check;
@@ -45,13 +44,7 @@ DocsCheck scenes_check() {
 
 DocsCheck studies_check() {
   DocsCheck check{"studies.md", study_key_tables(), {}, {}, false};
-  check.hand_read_keys = {"inputs.*.distribution",
-                          "intensity_measure.levels",
-                          "intensity_measure.from",
-                          "intensity_measure.to",
-                          "intensity_measure.count",
-                          "samples_per_level",
-                          "seed"};
+  check.hand_read_keys = {"inputs.*.distribution"};
   for (const auto& names : {std::span<const std::string_view>(distribution_names),
                             std::span<const std::string_view>(im_type_names.names),
                             std::span<const std::string_view>(limit_state_kind_names.names)}) {
@@ -60,10 +53,8 @@ DocsCheck studies_check() {
   return check;
 }
 
-// An axis's "values" are read by spectrum_config.cpp (its from/to/count by a table).
 DocsCheck spectra_check() {
   DocsCheck check{"spectra.md", spectrum_key_tables(), {}, {}, false};
-  check.hand_read_keys = {"frequency_ratio.values", "amplitude_ratio.values"};
   for (const std::string_view name : spectrum_pulse_names.names) check.selectors.emplace(name);
   return check;
 }
@@ -132,14 +123,26 @@ bool same_bound(std::string_view text, double value, const char* label) {
   return end == digits.c_str() + digits.size() && parsed == value;
 }
 
-// Whether the docs' domain cell ("[1e-4, 1e4] m", "integer in [1, 1000]", "any positive finite
-// value, kg") starts with the field's domain.
+// A domain without an upper bound as the docs write it: ">= 0", "> 1".
+bool docs_lower_bound_matches(const std::string& text, const Domain& domain) {
+  const std::string sign = domain.low_inclusive ? ">= " : "> ";
+  if (domain.high != std::numeric_limits<double>::infinity() || text.rfind(sign, 0) != 0) {
+    return false;
+  }
+  const std::string rest = text.substr(sign.size());
+  return same_bound(std::string_view(rest).substr(0, rest.find(' ')), domain.low, domain.low_label);
+}
+
+// Whether the docs' domain cell ("[1e-4, 1e4] m", "integer in [1, 1000]", "integer >= 0", "any
+// positive finite value, kg") starts with the field's domain.
 bool docs_domain_matches(std::string text, const FieldDescription& field) {
   const Domain& domain = *field.domain;
-  const std::string integer_prefix = "integer in ";
+  const std::string integer_prefix = "integer ";
   const bool integer = text.rfind(integer_prefix, 0) == 0;
-  if (integer != field.integer) return false;
+  if (integer != (field.kind == FieldKind::integer)) return false;
   if (integer) text = text.substr(integer_prefix.size());
+  if (integer && text.rfind("in ", 0) == 0) text = text.substr(3);
+  if (text.rfind(">", 0) == 0) return docs_lower_bound_matches(text, domain);
   if (text.rfind("any number", 0) == 0) {
     return domain.low == -std::numeric_limits<double>::infinity() &&
            domain.high == std::numeric_limits<double>::infinity();
@@ -159,12 +162,41 @@ bool docs_domain_matches(std::string text, const FieldDescription& field) {
                     domain.high_label);
 }
 
+// Whether the docs' domain cell starts as the field's kind of value: a domain, or the words that
+// name a boolean, a string or a sign.
+bool docs_cell_matches(const std::string& text, const FieldDescription& field) {
+  switch (field.kind) {
+    case FieldKind::boolean: return text.rfind("`true` or `false`", 0) == 0;
+    case FieldKind::text: return text.rfind("a string", 0) == 0;
+    case FieldKind::sign: return text.rfind("1 or -1", 0) == 0;
+    case FieldKind::number:
+    case FieldKind::numbers:
+    case FieldKind::integer: return docs_domain_matches(text, field);
+    case FieldKind::choice: break;
+  }
+  return false;
+}
+
+// What the docs' domain cell of a field's kind starts with.
+std::string expected_cell(const FieldDescription& field) {
+  switch (field.kind) {
+    case FieldKind::boolean: return "`true` or `false`";
+    case FieldKind::text: return "a string";
+    case FieldKind::sign: return "1 or -1";
+    case FieldKind::integer: return "its domain integer " + field.domain->rule();
+    case FieldKind::number:
+    case FieldKind::numbers: return "its domain " + field.domain->rule();
+    case FieldKind::choice: break;
+  }
+  return "";
+}
+
 // The docs' problems with one table key: absent, or listed with another domain (a choice: one of
 // its names not quoted anywhere).
 void check_table_key(const std::string& doc, const std::vector<DocsRow>& rows,
                      const std::string& name, const FieldDescription& field,
                      std::vector<std::string>& problems) {
-  if (!field.domain) {
+  if (field.kind == FieldKind::choice) {
     for (const std::string& choice : field.choices) {
       if (doc.find("`\"" + choice + "\"`") == std::string::npos) {
         problems.push_back(name + ": the docs do not name its choice \"" + choice + "\"");
@@ -177,13 +209,12 @@ void check_table_key(const std::string& doc, const std::vector<DocsRow>& rows,
     for (const std::string& key : row.keys) {
       if (key != name) continue;
       named = true;
-      matched = matched || docs_domain_matches(row.domain_cell, field);
+      matched = matched || docs_cell_matches(row.domain_cell, field);
     }
   }
   if (!named) problems.push_back(name + ": not in the docs' Domains table");
   if (named && !matched) {
-    problems.push_back(name + ": no row of the docs' Domains table gives its domain " +
-                       (field.integer ? "integer " : "") + field.domain->rule());
+    problems.push_back(name + ": no row of the docs' Domains table gives " + expected_cell(field));
   }
 }
 
@@ -282,6 +313,35 @@ TEST(ConfigKeyTables, AStudyDocsDomainOtherThanTheTablesIsFound) {
   EXPECT_EQ(disagreements(doc, studies_check()),
             std::vector<std::string>{"intensity_measure.damping: no row of the docs' Domains "
                                      "table gives its domain must be in [0, 1)"});
+}
+
+// A boolean's, a sign's and a string's rows say what kind of value they take.
+TEST(ConfigKeyTables, AStudyDocsKindOtherThanTheTablesIsFound) {
+  std::string doc = read_doc("studies.md");
+  for (const auto& [cell, wrong] :
+       {std::pair<std::string, std::string>{"(`fixed`) | 1 or -1 |", "(`fixed`) | any number |"},
+        {"(all but `overturning`) | `true` or `false` |", "(all but `overturning`) | 0 or 1 |"},
+        {"| `design.adaptive.limit_state` | a string",
+         "| `design.adaptive.limit_state` | a name"}}) {
+    const auto at = doc.find(cell);
+    ASSERT_NE(at, std::string::npos) << cell;
+    doc.replace(at, cell.size(), wrong);
+  }
+  EXPECT_EQ(disagreements(doc, studies_check()),
+            (std::vector<std::string>{
+                "inputs.direction.value: no row of the docs' Domains table gives 1 or -1",
+                "limit_states[].overturned_exceeds: no row of the docs' Domains table gives "
+                "`true` or `false`",
+                "design.adaptive.limit_state: no row of the docs' Domains table gives a string"}));
+}
+
+TEST(ConfigKeyTables, AStringKeyMissingFromTheDocsIsFound) {
+  std::string doc = read_doc("scenes.md");
+  const std::string row = "| a record's `file` |";
+  const auto at = doc.find(row);
+  ASSERT_NE(at, std::string::npos);
+  doc.erase(at, doc.find('\n', at) + 1 - at);
+  EXPECT_EQ(disagreements(doc), std::vector<std::string>{"file: not in the docs' Domains table"});
 }
 
 TEST(ConfigKeyTables, AStudyChoiceTheDocsDoNotNameIsFound) {

@@ -184,6 +184,47 @@ TEST(StudyConfig, ReportsEveryErrorAtOnceWithItsPath) {
   EXPECT_THAT(all, HasSubstr("study.json: /limit_states/0/nmae: unknown key"));
 }
 
+// The keys of a fixed direction and of a limit state read and write through their tables: a sign,
+// a boolean, a string.
+TEST(StudyConfig, AFixedDirectionAndALimitStatesFlagReadBackInTheCanonicalForm) {
+  json document = small_study();
+  document["inputs"]["direction"] = {{"distribution", "fixed"}, {"value", -1}};
+  document["limit_states"][1]["overturned_exceeds"] = false;
+  const StudyConfig config = parse_study_config(document, "study.json");
+  EXPECT_EQ(config.canonical["inputs"]["direction"],
+            (json{{"distribution", "fixed"}, {"value", -1.0}}));
+  EXPECT_EQ(config.canonical["limit_states"][1], (json{{"name", "rock"},
+                                                       {"type", "max_rotation"},
+                                                       {"theta_over_alpha", 0.5},
+                                                       {"overturned_exceeds", false}}));
+  EXPECT_EQ(config.canonical["samples_per_level"], 8);
+  EXPECT_EQ(config.canonical["seed"], 42);
+
+  document["inputs"]["direction"]["value"] = 0.5;
+  document["limit_states"][1]["overturned_exceeds"] = "no";
+  document["limit_states"][2]["name"] = 7;
+  EXPECT_EQ(
+      messages_of(document),
+      (std::vector<std::string>{
+          "study.json: /inputs/direction/value: must be 1 or -1 (got 0.5)",
+          "study.json: /limit_states/1/overturned_exceeds: must be true or false (got \"no\")",
+          "study.json: /limit_states/2/name: must be a string (got 7)"}));
+}
+
+TEST(StudyConfig, LevelsAreOneToAMillionIncreasingNumbersInTheMeasuresDomain) {
+  json document = small_study();
+  document["intensity_measure"]["levels"] = json::array();
+  EXPECT_EQ(messages_of(document),
+            std::vector<std::string>{
+                "study.json: /intensity_measure/levels: must have 1 to 1000000 levels (got 0)"});
+  document["intensity_measure"] = {{"type", "pgv"}, {"levels", {0.3, 0.3, 200}}};
+  EXPECT_EQ(messages_of(document),
+            (std::vector<std::string>{"study.json: /intensity_measure/levels/1: must be greater "
+                                      "than the level before it (levels increase)",
+                                      "study.json: /intensity_measure/levels/2: must be in (0, "
+                                      "100] (got 200)"}));
+}
+
 TEST(StudyConfig, LimitStatesNestUnlessToldAndTheBootstrapDefaultsToAThousand) {
   json document = small_study();
   document["limit_states"][2]["overturned_exceeds"] = false;
