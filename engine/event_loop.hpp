@@ -258,6 +258,22 @@ bool EventLoop<Ground>::advance_rest(const MotionPiece& piece, double t_stop, bo
   return false;
 }
 
+// Guard i of a system at (t, q): alone where the system computes one alone (guard()).
+template <class Ode>
+double ode_guard(const Ode& ode, int i, double t, const OdeState<Ode::N>& q) {
+  if constexpr (requires { ode.guard(i, t, q); }) {
+    return ode.guard(i, t, q);
+  } else {
+    return ode.guards(t, q)[static_cast<std::size_t>(i)];
+  }
+}
+
+// Lambdas taken as one callable, each call going to the one it fits.
+template <class... Calls>
+struct Overloads : Calls... {
+  using Calls::operator()...;
+};
+
 // A system that leaves some of its guard slots unused names the others (live_guards()).
 template <class Ode>
 GuardWatch<Ode::kGuards> watch_guards(const Ode& ode, double t, const OdeState<Ode::N>& q) {
@@ -302,7 +318,9 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
     if ((summary_.steps & kBudgetCheckMask) == 0) check_budget();
 
     const auto next = ode.guards(t, q);
-    const auto guards_at = [&](double x) { return ode.guards(x, stepper.dense(x)); };
+    const Overloads guards_at{
+        [&](double x) { return ode.guards(x, stepper.dense(x)); },
+        [&](int i, double x) { return ode_guard(ode, i, x, stepper.dense(x)); }};
     const auto least_at_ends = [&](const std::array<bool, Ode::kGuards>& asked) {
       const auto one_way = [&](int i) { return stepper.moves_one_way(i); };
       if constexpr (requires { ode.guard_claims(q0, q, one_way, asked); }) {

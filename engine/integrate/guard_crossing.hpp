@@ -13,6 +13,17 @@
 
 namespace blockfrag {
 
+// Guard i at x: guards_at(i, x) where the guards offer one alone (a seat's clearances, each a pass
+// over the block's vertices or edges), else the one of all of them that guards_at(x) gives.
+template <class GuardsAt>
+double guard_from(const GuardsAt& guards_at, int i, double x) {
+  if constexpr (requires { guards_at(i, x); }) {
+    return guards_at(i, x);
+  } else {
+    return guards_at(x)[static_cast<std::size_t>(i)];
+  }
+}
+
 // How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: not clearly positive,
 // fires once clearly below both zero and its start, whether or not it rose clearly above zero first
 // (a corner that lifts by less than the margin and comes back must still land), and fires at zero
@@ -49,7 +60,8 @@ class GuardWatch {
   };
 
   // The first crossing in the step [t0, t1] whose guards at t1 are `next`; guards_at(x) evaluates
-  // all guards on the step's dense output. least_at_ends(asked) says which of the guards `asked`
+  // all guards on the step's dense output (and guards_at(i, x), where given, guard i alone: root
+  // finding and the dip search ask for one). least_at_ends(asked) says which of the guards `asked`
   // names are known to be least at an end of this step (so no sample inside can find them lower);
   // it is asked only for guards near zero that would be looked inside though clearly positive at
   // both ends, and such a guard that it names is not: the samples were most of a rocking block's
@@ -64,7 +76,7 @@ class GuardWatch {
     if (start_scan(scan, t0, t1, next, least_at_ends)) sample_inside(scan, guards_at, t0, t1);
     for (const int i : live()) {
       if (scan.fb[i] > 0) continue;
-      const auto f = [&](double x) { return guards_at(x)[i] + scan.offset[i]; };
+      const auto f = [&](double x) { return guard_from(guards_at, i, x) + scan.offset[i]; };
       const Bracket located =
           locate_crossing(f, scan.a[i], scan.b[i], scan.fa[i], scan.fb[i], time_tolerance);
       if (located.after < found.after) found = {i, located.after, located.before};
@@ -183,7 +195,7 @@ class GuardWatch {
       bool dipped = false;
       for (const int i : live()) {
         if (i == first_found || !armed_[i] || at_x[i] > 0) continue;
-        const auto f = [&](double y) { return guards_at(y)[i]; };
+        const auto f = [&](double y) { return guard_from(guards_at, i, y); };
         const Bracket located = locate_crossing(f, x_before, x, before[i], at_x[i], time_tolerance);
         if (located.after < found.after) found = {i, located.after, located.before};
         dipped = true;
@@ -213,7 +225,7 @@ class GuardWatch {
       const double predicted = mid - 0.25 * (left - right) * shift;
       if (predicted > 0.25 * mid) continue;
       const double x = t0 + (k + shift) * spacing;
-      const double fx = guards_at(x)[i] + offset;
+      const double fx = guard_from(guards_at, i, x) + offset;
       if (fx > 0) continue;
       a = t0 + (shift < 0 ? k - 1 : k) * spacing;
       fa = shift < 0 ? left : mid;

@@ -208,8 +208,7 @@ template <class GuardsAt>
 SeatSimulation::Crossing SeatSimulation::landing_at_zero(
     const GuardsAt& guards_at, double t0, GuardWatch<SeatSystem::kGuards>::Crossing found,
     double noise) {
-  const auto i = static_cast<std::size_t>(found.which);
-  const auto f = [&](double x) { return guards_at(x)[i]; };
+  const auto f = [&](double x) { return guard_from(guards_at, found.which, x); };
   const double spacing = (found.after - t0) / kInteriorSamples;
   bool rose = false;
   double last = t0, f_last = 0.0;

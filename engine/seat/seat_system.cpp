@@ -152,6 +152,25 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   return out;
 }
 
+double SeatSystem::guard(int i, double t, const BlockState& s) {
+  const double R = c_.geometry->size();
+  const auto vertices = static_cast<int>(watched_vertices_.size());
+  const auto points = static_cast<int>(watched_points_.size());
+  const int k = i - kFirstClearanceGuard;
+  // As guards() computes them: a vertex turned as world_vertices turns it.
+  if (k >= 0 && k < vertices) {
+    const int vertex = watched_vertices_[static_cast<std::size_t>(k)];
+    return c_.contacts->clearance_at(c_.contacts->vertex_at(vertex, s)) / R;
+  }
+  if (k >= vertices && k < vertices + points) {
+    std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
+    c_.contacts->world_vertices(s, world);
+    const int point = watched_points_[static_cast<std::size_t>(k - vertices)];
+    return c_.contacts->point_clearance_within(point, world, R) / R;
+  }
+  return guards(t, s)[static_cast<std::size_t>(i)];
+}
+
 bool SeatSystem::contacts_hold(double t, const BlockState& s) {
   if (count_ == 0) return true;
   const FixedStateForces& f = solve(t, s, active_poses(s));

@@ -74,6 +74,8 @@ class SeatSystem {
   // Not const: each remembers the last forces solved (a step's end is asked for by its guards, by
   // the next step's first stage and by the checks of its forces).
   std::array<double, kGuards> guards(double t, const BlockState& s);
+  // guards(t, s)[i], a watched vertex's or point's clearance without the others.
+  double guard(int i, double t, const BlockState& s);
   ContactForces forces(double t, const BlockState& s);
   // Whether every active contact's lift-off and friction guards are positive at (t, s), as
   // guards() finds them, without the clearances: what a piece boundary asks of the mode.
@@ -234,6 +236,9 @@ class SeatOde {
   }
   std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
     return system_->guards(t, chart_.full(t, q));
+  }
+  double guard(int i, double t, const OdeState<N>& q) const {
+    return system_->guard(i, t, chart_.full(t, q));
   }
   GuardClaims live_guards() const { return system_->live_guards(); }
   SeatEvent event(int guard) const { return system_->event(guard); }
