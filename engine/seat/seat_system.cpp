@@ -83,8 +83,7 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, co
                            c_.external};
   const BodyLoad load =
       count_ >= 2 ? seated_load(in, s, std::span(contacts).first(n), std::span(states).first(n))
-                  : body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, in.external, s,
-                              Footing::lifted);
+                  : lifted_load(t, s);
   std::optional<FixedStateForces> one;
   if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, load, c_.mu);
   last_solve_.forces = one ? *one
@@ -95,10 +94,19 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, co
   return last_solve_.forces;
 }
 
-std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) const {
-  if (count_ != 1) return std::nullopt;
-  const BodyLoad load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
+const BodyLoad& SeatSystem::lifted_load(double t, const BlockState& s) {
+  if (!(t == last_lifted_.t && std::memcmp(&s, &last_lifted_.s, sizeof s) == 0)) {
+    last_lifted_.load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
                                   c_.vertical->lambda(t), c_.g, c_.external, s, Footing::lifted);
+    last_lifted_.t = t;
+    last_lifted_.s = s;
+  }
+  return last_lifted_.load;
+}
+
+std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) {
+  if (count_ != 1) return std::nullopt;
+  const BodyLoad& load = lifted_load(t, s);
   const BodyInertia& m = load.inertia;
   const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
   const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta
