@@ -1,14 +1,40 @@
 #include "engine/water/reservoir_loads.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 #include "engine/errors.hpp"
 #include "engine/scene/block_geometry.hpp"
-#include "engine/sine_cosine.hpp"
+#include "engine/seat/turn_cache.hpp"
 #include "engine/tolerances.hpp"
 #include "engine/water/hydrostatic.hpp"
 
 namespace blockfrag {
+
+namespace {
+
+bool same_vertex_bits(const Vertex& a, const Vertex& b) {
+  return std::bit_cast<std::uint64_t>(a[0]) == std::bit_cast<std::uint64_t>(b[0]) &&
+         std::bit_cast<std::uint64_t>(a[1]) == std::bit_cast<std::uint64_t>(b[1]);
+}
+
+// Per point, the index of the vertex it is to the bit; nothing where one point is no vertex. Such a
+// point, turned and moved as the outline is (BlockOutline::place and place_crack compute alike),
+// lands where its vertex does.
+std::vector<std::size_t> crack_vertex_indices(const std::vector<Vertex>& vertices,
+                                              const std::vector<Vertex>& points) {
+  std::vector<std::size_t> out;
+  for (const Vertex& p : points) {
+    const auto found = std::find_if(vertices.begin(), vertices.end(),
+                                    [&](const Vertex& v) { return same_vertex_bits(v, p); });
+    if (found == vertices.end()) return {};
+    out.push_back(static_cast<std::size_t>(found - vertices.begin()));
+  }
+  return out;
+}
+
+}  // namespace
 
 CrackPath rest_crack(const Scene& scene, const BlockOutline& outline) {
   const double tolerance = kContactHeight * scene_geometry(scene).size();
@@ -31,36 +57,55 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
                           : 0.0;
   const Vertex centre = outline_.rest_centre();
   for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
+  crack_vertices_ = crack_vertex_indices(outline_.body(), crack_.points);
 }
 
 ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) const {
-  ReservoirLoadSet loads;
-  const SineCosine turn = sine_cosine(s.theta);
+  const ReservoirPose at_pose = pose(s);
+  return {at_pose.hydrostatic, uplift(at_pose, open), at_pose.added.at, at_pose.added.d_dy,
+          at_pose.added.d_dtheta};
+}
+
+ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
+  ReservoirPose out;
+  const SineCosine turn = cached_turn(s.theta);
   outline_.place(s, turn, world_);
-  const Vertex centre = outline_.centre(s);
+  out.centre = outline_.centre(s);
+  const Vertex& centre = out.centre;
   // The push and the added mass in one pass over the wetted face.
   const double unit_weight = reservoir_.density * g_;
   const bool added_mass = reservoir_.hydrodynamic == Hydrodynamic::westergaard;
   const double z = reservoir_.level - centre[1];
-  AddedMassWithRates added;
   for_each_wetted_piece(world_, reservoir_.level, crack_.edges, [&](const WettedPiece& piece) {
-    add_hydrostatic_piece(loads.hydrostatic, piece, unit_weight, centre);
-    if (added_mass) add_added_mass_piece(added, piece, added_mass_scale_, z, centre);
+    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight, centre);
+    if (added_mass) add_added_mass_piece(out.added, piece, added_mass_scale_, z, centre);
   });
-  loads.added_mass = added.at;
-  loads.added_mass_d_dy = added.d_dy;
-  loads.added_mass_d_dtheta = added.d_dtheta;
-  if (reservoir_.uplift == UpliftRule::none) return loads;
-  place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
+  if (reservoir_.uplift == UpliftRule::none) return out;
+  place_crack_at(turn, centre);
   const double head = std::max(0.0, reservoir_.level - crack_world_.front()[1]);
-  const double full_head = reservoir_.density * g_ * head;
-  const double closed_mouth = reservoir_.uplift == UpliftRule::unchanged
-                                  ? rest_mouth_pressure_
-                                  : reservoir_.uplift_area_factor * full_head;
-  const CrackPressure pressure =
-      crack_pressure(reservoir_.uplift, crack_length_, closed_mouth, full_head, open);
-  loads.uplift = crack_pressure_load(crack_world_, crack_lengths_, pressure, centre);
-  return loads;
+  out.full_head = reservoir_.density * g_ * head;
+  out.closed_mouth = reservoir_.uplift == UpliftRule::unchanged
+                         ? rest_mouth_pressure_
+                         : reservoir_.uplift_area_factor * out.full_head;
+  out.crack = crack_world_;
+  return out;
+}
+
+WaterLoad ReservoirLoads::uplift(const ReservoirPose& at_pose, CrackOpening open) const {
+  if (reservoir_.uplift == UpliftRule::none) return {};
+  const CrackPressure pressure = crack_pressure(reservoir_.uplift, crack_length_,
+                                                at_pose.closed_mouth, at_pose.full_head, open);
+  return crack_pressure_load(at_pose.crack, crack_lengths_, pressure, at_pose.centre);
+}
+
+void ReservoirLoads::place_crack_at(const SineCosine& turn, const Vertex& centre) const {
+  if (crack_vertices_.empty()) {
+    place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
+    return;
+  }
+  crack_world_.resize(crack_vertices_.size());
+  for (std::size_t i = 0; i < crack_vertices_.size(); ++i)
+    crack_world_[i] = world_[crack_vertices_[i]];
 }
 
 }  // namespace blockfrag

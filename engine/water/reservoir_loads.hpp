@@ -12,6 +12,7 @@
 // the pressure acts on the block's own base, along its normals, whatever the pose.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "engine/scene/block_state.hpp"
@@ -28,6 +29,16 @@ struct ReservoirLoadSet {
   AddedMass added_mass;   // M_a, and S_a, I_a about the centre of mass's height
   // How added_mass changes as the block rises and turns (westergaard_added_mass_with_rates).
   AddedMass added_mass_d_dy, added_mass_d_dtheta;
+};
+
+// What the loads at a pose share whatever the crack's opening: the hydrostatic push, the added mass
+// with its rates, the crack's pressures at the mouth, and the crack's points at the pose.
+struct ReservoirPose {
+  Vertex centre;  // the centre of mass
+  WaterLoad hydrostatic;
+  AddedMassWithRates added;
+  double closed_mouth = 0.0, full_head = 0.0;  // crack_pressure's, "none" aside
+  std::span<const Vertex> crack;               // "none" aside
 };
 
 // Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
@@ -50,16 +61,27 @@ class ReservoirLoads {
   // the surface at the pose, but under "unchanged", which keeps the pre-earthquake head and
   // pressure on the block.
   ReservoirLoadSet at(const BlockState& s, CrackOpening open) const;
+  // The same in two parts, for a caller that tries several openings at one pose: the pose's
+  // (its crack's points valid until the next call of pose() or at()) and the uplift at an opening.
+  ReservoirPose pose(const BlockState& s) const;
+  WaterLoad uplift(const ReservoirPose& pose, CrackOpening open) const;
 
  private:
+  // Places the crack at the pose the outline was last placed at (world_), turned by `turn` about
+  // `centre`.
+  void place_crack_at(const SineCosine& turn, const Vertex& centre) const;
+
   Reservoir reservoir_;
   double g_;
   BlockOutline outline_;
   CrackPath crack_;
   double crack_length_;
   std::vector<double> crack_lengths_;  // of its straight pieces, at rest
-  double rest_mouth_pressure_;         // c rho_w g h at rest
-  double added_mass_scale_;            // westergaard_scale, "westergaard" only
+  // Per crack point, the outline's vertex it is (its place at a pose is the vertex's); empty where
+  // a point is none (a crack ending inside an edge), which is placed on its own.
+  std::vector<std::size_t> crack_vertices_;
+  double rest_mouth_pressure_;  // c rho_w g h at rest
+  double added_mass_scale_;     // westergaard_scale, "westergaard" only
   mutable WorldPolygon world_;
   mutable std::vector<Vertex> crack_world_;
 };

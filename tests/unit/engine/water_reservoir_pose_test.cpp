@@ -1,0 +1,144 @@
+// The reservoir's loads found once per pose against the same loads found anew: the crack's points
+// at a pose taken from the placed outline (ReservoirLoads::pose) are place_crack's, and the seated
+// loads a search for the crack's opening tries at one state (ReservoirLoad::search_openings) are
+// seated_opened's, to the bit, at random poses, velocities, ground accelerations and openings.
+#include <bit>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/scene/scene_validation.hpp"
+#include "engine/sine_cosine.hpp"
+#include "engine/water/reservoir_load.hpp"
+#include "engine/water/reservoir_loads.hpp"
+#include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/wet_dam_blocks.hpp"
+
+namespace blockfrag {
+namespace {
+
+using testing::FixedUniforms;
+
+constexpr int kWetPoses = 300;
+
+bool same_pose_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+BlockState random_wet_state(FixedUniforms& u, const BlockState& rest) {
+  BlockState s = rest;
+  s.x += u(-0.5, 0.5);
+  s.y += u(-0.2, 0.5);
+  s.theta = u(-0.3, 0.3);
+  s.vx = u(-1.0, 1.0);
+  s.vy = u(-1.0, 1.0);
+  s.omega = u(-0.5, 0.5);
+  return s;
+}
+
+// The type B block on its seat: its crack runs from the heel over the fold to the toe, all
+// vertices.
+Scene wet_type_b(UpliftRule rule) { return testing::wet_type_b_step(0.8, 0.3, rule); }
+
+// The same block on a seat that ends halfway up the incline: the crack ends inside an edge.
+Scene wet_type_b_short_seat(UpliftRule rule) {
+  Scene scene = wet_type_b(rule);
+  const Vertex fold = scene.seat->points[1], toe = scene.seat->points[2];
+  scene.seat->points[2] = {0.5 * (fold[0] + toe[0]), 0.5 * (fold[1] + toe[1])};
+  return scene;
+}
+
+void expect_crack_placed(const Scene& scene) {
+  validate_scene(scene);
+  const ReservoirLoads loads(scene);
+  const BlockState rest = BlockOutline(scene).rest_state();
+  FixedUniforms u(17);
+  for (int i = 0; i < kWetPoses; ++i) {
+    const BlockState s = random_wet_state(u, rest);
+    const ReservoirPose pose = loads.pose(s);
+    const std::vector<Vertex> crack(pose.crack.begin(), pose.crack.end());
+    std::vector<Vertex> placed;
+    const SineCosine turn = sine_cosine(s.theta);
+    place_crack(loads.crack().points, turn.cos, turn.sin, pose.centre, placed);
+    ASSERT_EQ(crack.size(), placed.size());
+    for (std::size_t k = 0; k < crack.size(); ++k) {
+      EXPECT_TRUE(same_pose_bits(crack[k][0], placed[k][0]) &&
+                  same_pose_bits(crack[k][1], placed[k][1]))
+          << "pose " << i << ", point " << k;
+    }
+  }
+}
+
+TEST(ReservoirPose, TheCrackOnTheOutlinesVerticesIsPlaceCracks) {
+  expect_crack_placed(wet_type_b(UpliftRule::unchanged));
+}
+
+TEST(ReservoirPose, TheCrackEndingInsideAnEdgeIsPlaceCracks) {
+  const Scene scene = wet_type_b_short_seat(UpliftRule::zero_in_gap);
+  ASSERT_EQ(ReservoirLoads(scene).crack().points.size(), 3u);
+  expect_crack_placed(scene);
+}
+
+// Records the loads a search tries, to compare once the search is over.
+class RecordingSearch final : public CrackOpeningSearch {
+ public:
+  explicit RecordingSearch(std::vector<std::pair<LiftingSide, double>> tries)
+      : tries_(std::move(tries)) {}
+  void search(const CrackOpenings& openings) override {
+    for (const auto& [side, fraction] : tries_) found_.push_back(openings.opened(side, fraction));
+  }
+  const std::vector<std::pair<LiftingSide, double>>& tries() const { return tries_; }
+  const std::vector<LoadAddition>& found() const { return found_; }
+
+ private:
+  std::vector<std::pair<LiftingSide, double>> tries_;
+  std::vector<LoadAddition> found_;
+};
+
+void expect_same_addition(const LoadAddition& a, const LoadAddition& b) {
+  EXPECT_TRUE(same_pose_bits(a.force.x, b.force.x));
+  EXPECT_TRUE(same_pose_bits(a.force.y, b.force.y));
+  EXPECT_TRUE(same_pose_bits(a.moment, b.moment));
+  EXPECT_TRUE(same_pose_bits(a.xx, b.xx));
+  EXPECT_TRUE(same_pose_bits(a.xtheta, b.xtheta));
+  EXPECT_TRUE(same_pose_bits(a.thetatheta, b.thetatheta));
+}
+
+void expect_openings_are_seated_opened(const Scene& scene) {
+  validate_scene(scene);
+  const ReservoirLoad load(scene);
+  const BlockState rest = BlockOutline(scene).rest_state();
+  FixedUniforms u(23);
+  for (int i = 0; i < kWetPoses; ++i) {
+    const BlockState s = random_wet_state(u, rest);
+    const double lambda = u(-1.0, 1.0);
+    std::vector<std::pair<LiftingSide, double>> tries{{LiftingSide::upstream, 0.0},
+                                                      {LiftingSide::downstream, 1.0}};
+    for (int k = 0; k < 4; ++k) {
+      tries.emplace_back(u(0.0, 1.0) < 0.5 ? LiftingSide::upstream : LiftingSide::downstream,
+                         u(0.0, 1.0));
+    }
+    RecordingSearch search(tries);
+    load.search_openings(s, lambda, scene.g, search);
+    ASSERT_EQ(search.found().size(), tries.size());
+    for (std::size_t k = 0; k < tries.size(); ++k) {
+      SCOPED_TRACE(::testing::Message() << "state " << i << ", opening " << k);
+      expect_same_addition(search.found()[k],
+                           load.seated_opened(s, lambda, scene.g, tries[k].first, tries[k].second));
+    }
+  }
+}
+
+TEST(ReservoirPose, EveryOpeningASearchTriesIsSeatedOpeneds) {
+  for (const UpliftRule rule : {UpliftRule::zero_in_gap, UpliftRule::full_head_in_gap,
+                                UpliftRule::unchanged, UpliftRule::none}) {
+    SCOPED_TRACE(static_cast<int>(rule));
+    expect_openings_are_seated_opened(wet_type_b(rule));
+    expect_openings_are_seated_opened(wet_type_b_short_seat(rule));
+  }
+}
+
+}  // namespace
+}  // namespace blockfrag
