@@ -14,9 +14,12 @@ namespace blockfrag {
 
 namespace {
 
+bool same_double_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
 bool same_vertex_bits(const Vertex& a, const Vertex& b) {
-  return std::bit_cast<std::uint64_t>(a[0]) == std::bit_cast<std::uint64_t>(b[0]) &&
-         std::bit_cast<std::uint64_t>(a[1]) == std::bit_cast<std::uint64_t>(b[1]);
+  return same_double_bits(a[0], b[0]) && same_double_bits(a[1], b[1]);
 }
 
 // Per point, the index of the vertex it is to the bit; nothing where one point is no vertex. Such a
@@ -58,6 +61,12 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
   const Vertex centre = outline_.rest_centre();
   for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
   crack_vertices_ = crack_vertex_indices(outline_.body(), crack_.points);
+  const auto places = [&](CrackOpening open) {
+    return pressure_places(crack_lengths_,
+                           crack_pressure(reservoir_.uplift, crack_length_, 1.0, 1.0, open));
+  };
+  closed_places_ = places(CrackOpening::closed());
+  whole_places_ = places(CrackOpening::whole());
 }
 
 ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) const {
@@ -95,6 +104,15 @@ WaterLoad ReservoirLoads::uplift(const ReservoirPose& at_pose, CrackOpening open
   if (reservoir_.uplift == UpliftRule::none) return {};
   const CrackPressure pressure = crack_pressure(reservoir_.uplift, crack_length_,
                                                 at_pose.closed_mouth, at_pose.full_head, open);
+  const auto is = [&](CrackOpening fixed) {
+    return same_double_bits(open.from, fixed.from) && same_double_bits(open.to, fixed.to);
+  };
+  if (is(CrackOpening::closed())) {
+    return crack_pressure_load(at_pose.crack, closed_places_, pressure, at_pose.centre);
+  }
+  if (is(CrackOpening::whole())) {
+    return crack_pressure_load(at_pose.crack, whole_places_, pressure, at_pose.centre);
+  }
   return crack_pressure_load(at_pose.crack, crack_lengths_, pressure, at_pose.centre);
 }
 

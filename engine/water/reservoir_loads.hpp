@@ -80,6 +80,9 @@ class ReservoirLoads {
   // Per crack point, the outline's vertex it is (its place at a pose is the vertex's); empty where
   // a point is none (a crack ending inside an edge), which is placed on its own.
   std::vector<std::size_t> crack_vertices_;
+  // Where the closed crack's and the whole open crack's pressure pieces lie (a seated and a lifted
+  // block's: every right-hand side asks for one of them).
+  std::vector<PressurePlace> closed_places_, whole_places_;
   double rest_mouth_pressure_;  // c rho_w g h at rest
   double added_mass_scale_;     // westergaard_scale, "westergaard" only
   mutable WorldPolygon world_;
