@@ -140,8 +140,9 @@ class SeatSystem {
   // The forces with the active contacts' poses at s given; solve_anew does not look at the last.
   const FixedStateForces& solve(double t, const BlockState& s, const Poses& poses);
   const FixedStateForces& solve_anew(double t, const BlockState& s, const Poses& poses);
-  // The load on the block lifted from its seat (one contact or none) at time t in the state s.
-  const BodyLoad& lifted_load(double t, const BlockState& s);
+  // The load on the block lifted from its seat (one contact or none) under the external load at
+  // time t in the state s, kept for the next call at the same time and state.
+  const BodyLoad& wet_lifted_load(double t, const BlockState& s);
 
   SeatSystemContext c_;
   std::array<ActiveContact, kMaxSeatContacts> active_{};
@@ -156,7 +157,7 @@ class SeatSystem {
     FixedStateForces forces;
   };
   Solved last_solve_;
-  // The last lifted load found, and the time and state it was found at.
+  // The last wet lifted load found, and the time and state it was found at.
   struct Loaded {
     double t = std::numeric_limits<double>::quiet_NaN();
     BlockState s;
