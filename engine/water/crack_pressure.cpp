@@ -1,6 +1,5 @@
 #include "engine/water/crack_pressure.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "engine/errors.hpp"
@@ -64,45 +63,6 @@ WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const do
     total.fy += load.fy;
     total.moment += load.moment;
   });
-  return total;
-}
-
-std::vector<PressurePlace> pressure_places(std::span<const double> lengths,
-                                           const CrackPressure& pressure) {
-  // The lengths and spans of for_each_pressure_piece, with each point's place kept.
-  std::vector<PressurePlace> places;
-  double s0 = 0.0;
-  for (std::size_t i = 0; i < lengths.size(); ++i) {
-    const double length = lengths[i];
-    const double s1 = s0 + length;
-    for (std::size_t k = 0; k < pressure.count; ++k) {
-      const PressureSpan& span = pressure.spans[k];
-      const double from = std::max(s0, span.from), to = std::min(s1, span.to);
-      if (!(to > from)) continue;
-      const auto weight = [&](double s) { return (s - span.from) / (span.to - span.from); };
-      places.push_back({i, k, (from - s0) / length, (to - s0) / length, weight(from), weight(to)});
-    }
-    s0 = s1;
-  }
-  return places;
-}
-
-WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const PressurePlace> places,
-                              const CrackPressure& pressure, const Vertex& reference) {
-  WaterLoad total;
-  for (const PressurePlace& place : places) {
-    const Vertex& a = points[place.piece];
-    const Vertex& b = points[place.piece + 1];
-    const double dx = b[0] - a[0], dy = b[1] - a[1];
-    const PressureSpan& span = pressure.spans[place.span];
-    const auto p = [&](double weight) { return span.p_from + (span.p_to - span.p_from) * weight; };
-    const WaterLoad load = edge_pressure_load({a[0] + place.t_from * dx, a[1] + place.t_from * dy},
-                                              {a[0] + place.t_to * dx, a[1] + place.t_to * dy},
-                                              p(place.weight_from), p(place.weight_to), reference);
-    total.fx += load.fx;
-    total.fy += load.fy;
-    total.moment += load.moment;
-  }
   return total;
 }
 

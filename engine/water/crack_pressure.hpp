@@ -129,19 +129,4 @@ WaterLoad crack_pressure_load(const std::vector<Vertex>& points, const CrackPres
 WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const double> lengths,
                               const CrackPressure& pressure, const Vertex& reference);
 
-// Where the pieces for_each_pressure_piece visits lie, which depends on the spans' places alone,
-// not on their pressures: per piece, in its order, the crack's straight piece it is on, its span,
-// and the fractions of both at its ends (`at`'s t and `p`'s weight there).
-struct PressurePlace {
-  std::size_t piece, span;
-  double t_from, t_to, weight_from, weight_to;
-};
-std::vector<PressurePlace> pressure_places(std::span<const double> lengths,
-                                           const CrackPressure& pressure);
-
-// crack_pressure_load for a pressure whose spans lie at `places` (pressure_places of its spans,
-// any pressures), to the bit: a crack that opens no further than the caller's fixed openings.
-WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const PressurePlace> places,
-                              const CrackPressure& pressure, const Vertex& reference);
-
 }  // namespace blockfrag

@@ -61,12 +61,8 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
   const Vertex centre = outline_.rest_centre();
   for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
   crack_vertices_ = crack_vertex_indices(outline_.body(), crack_.points);
-  const auto places = [&](CrackOpening open) {
-    return pressure_places(crack_lengths_,
-                           crack_pressure(reservoir_.uplift, crack_length_, 1.0, 1.0, open));
-  };
-  closed_places_ = places(CrackOpening::closed());
-  whole_places_ = places(CrackOpening::whole());
+  closed_uplifts_ = unit_uplifts(CrackOpening::closed());
+  whole_uplifts_ = unit_uplifts(CrackOpening::whole());
 }
 
 ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) const {
@@ -80,6 +76,7 @@ ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
   const SineCosine turn = cached_turn(s.theta);
   outline_.place(s, turn, world_);
   out.centre = outline_.centre(s);
+  out.turn = turn;
   const Vertex& centre = out.centre;
   // The push and the added mass in one pass over the wetted face.
   const double unit_weight = reservoir_.density * g_;
@@ -102,18 +99,34 @@ ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
 
 WaterLoad ReservoirLoads::uplift(const ReservoirPose& at_pose, CrackOpening open) const {
   if (reservoir_.uplift == UpliftRule::none) return {};
-  const CrackPressure pressure = crack_pressure(reservoir_.uplift, crack_length_,
-                                                at_pose.closed_mouth, at_pose.full_head, open);
   const auto is = [&](CrackOpening fixed) {
     return same_double_bits(open.from, fixed.from) && same_double_bits(open.to, fixed.to);
   };
-  if (is(CrackOpening::closed())) {
-    return crack_pressure_load(at_pose.crack, closed_places_, pressure, at_pose.centre);
+  const UnitUplifts* unit = is(CrackOpening::closed())  ? &closed_uplifts_
+                            : is(CrackOpening::whole()) ? &whole_uplifts_
+                                                        : nullptr;
+  if (unit != nullptr) {
+    const WaterLoad &per_mouth = unit->per_closed_mouth, &per_head = unit->per_full_head;
+    const double mouth = at_pose.closed_mouth, head = at_pose.full_head;
+    const double fx = mouth * per_mouth.fx + head * per_head.fx;
+    const double fy = mouth * per_mouth.fy + head * per_head.fy;
+    const SineCosine& turn = at_pose.turn;
+    return {turn.cos * fx - turn.sin * fy, turn.sin * fx + turn.cos * fy,
+            mouth * per_mouth.moment + head * per_head.moment};
   }
-  if (is(CrackOpening::whole())) {
-    return crack_pressure_load(at_pose.crack, whole_places_, pressure, at_pose.centre);
-  }
+  const CrackPressure pressure = crack_pressure(reservoir_.uplift, crack_length_,
+                                                at_pose.closed_mouth, at_pose.full_head, open);
   return crack_pressure_load(at_pose.crack, crack_lengths_, pressure, at_pose.centre);
+}
+
+ReservoirLoads::UnitUplifts ReservoirLoads::unit_uplifts(CrackOpening open) const {
+  const auto per_unit = [&](double closed_mouth, double full_head) {
+    return crack_pressure_load(
+        crack_.points, crack_lengths_,
+        crack_pressure(reservoir_.uplift, crack_length_, closed_mouth, full_head, open),
+        {0.0, 0.0});
+  };
+  return {per_unit(1.0, 0.0), per_unit(0.0, 1.0)};
 }
 
 void ReservoirLoads::place_crack_at(const SineCosine& turn, const Vertex& centre) const {

@@ -34,7 +34,8 @@ struct ReservoirLoadSet {
 // What the loads at a pose share whatever the crack's opening: the hydrostatic push, the added mass
 // with its rates, the crack's pressures at the mouth, and the crack's points at the pose.
 struct ReservoirPose {
-  Vertex centre;  // the centre of mass
+  Vertex centre;    // the centre of mass
+  SineCosine turn;  // the block's tilt
   WaterLoad hydrostatic;
   AddedMassWithRates added;
   double closed_mouth = 0.0, full_head = 0.0;  // crack_pressure's, "none" aside
@@ -80,9 +81,15 @@ class ReservoirLoads {
   // Per crack point, the outline's vertex it is (its place at a pose is the vertex's); empty where
   // a point is none (a crack ending inside an edge), which is placed on its own.
   std::vector<std::size_t> crack_vertices_;
-  // Where the closed crack's and the whole open crack's pressure pieces lie (a seated and a lifted
-  // block's: every right-hand side asks for one of them).
-  std::vector<PressurePlace> closed_places_, whole_places_;
+  // The closed crack's and the whole open crack's uplift (a seated and a lifted block's: every
+  // right-hand side asks for one of them) on the unturned block about its centre of mass, per unit
+  // of each pressure crack_pressure takes: linear in both, the uplift at a pose is their sum
+  // turned with the block (the moment about the centre unchanged).
+  struct UnitUplifts {
+    WaterLoad per_closed_mouth, per_full_head;
+  };
+  UnitUplifts unit_uplifts(CrackOpening open) const;
+  UnitUplifts closed_uplifts_, whole_uplifts_;
   double rest_mouth_pressure_;  // c rho_w g h at rest
   double added_mass_scale_;     // westergaard_scale, "westergaard" only
   mutable WorldPolygon world_;

@@ -16,19 +16,14 @@
 //     = 0.114333 c rho g h B^2; from a lifting toe, p(s) on [0, B - l]:
 //     U = c rho g h (B - l) (1 + l / B) / 2 = 0.455 c rho g h B, its moment about the mouth
 //     c rho g h ((B - l)^2 / 2 - (B - l)^3 / (3 B)) = 0.130667 c rho g h B^2.
-// A folded crack's pieces press along each piece's normal. A crack's load from the places of its
-// pressure pieces found once (pressure_places) is the general one's to the bit, at random folded
-// cracks, pressures and openings.
-#include <bit>
+// A folded crack's pieces press along each piece's normal.
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "engine/errors.hpp"
 #include "engine/water/crack_pressure.hpp"
-#include "tests/support/fixed_uniforms.hpp"
 
 namespace blockfrag {
 namespace {
@@ -139,44 +134,6 @@ TEST(CrackPressure, ASeatedCrackOpenedFromItsLiftingSideKeepsTheLinearHeadOnTheC
     const Resultant closed =
         straight_resultant(UpliftRule::zero_in_gap, CrackOpening::from_side(side, 0.0));
     EXPECT_NEAR(closed.force, 0.5 * p0 * kCrackB, 1e-12 * p0 * kCrackB);
-  }
-}
-
-bool same_crack_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
-TEST(CrackPressure, TheLoadFromPlacesFoundOnceIsTheGeneralOnesToTheBit) {
-  testing::FixedUniforms u(11);
-  const UpliftRule rules[] = {UpliftRule::unchanged, UpliftRule::zero_in_gap,
-                              UpliftRule::full_head_in_gap};
-  for (int i = 0; i < 500; ++i) {
-    // A crack folded twice, its lengths at rest, moved and turned a little as a block's would be.
-    const std::vector<Vertex> rest{
-        {0.0, 0.0}, {u(2.0, 8.0), 0.0}, {u(9.0, 14.0), u(1.0, 6.0)}, {u(15.0, 18.0), u(6.0, 8.0)}};
-    const std::vector<double> lengths = segment_lengths(rest);
-    double length = 0.0;
-    for (const double l : lengths) length += l;
-    const double theta = u(-0.3, 0.3), x = u(-1.0, 1.0), y = u(0.0, 1.0);
-    std::vector<Vertex> moved;
-    for (const Vertex& p : rest) {
-      moved.push_back({x + p[0] * std::cos(theta) - p[1] * std::sin(theta),
-                       y + p[0] * std::sin(theta) + p[1] * std::cos(theta)});
-    }
-    const UpliftRule rule = rules[i % 3];
-    const double from = u(0.0, 1.0), to = u(0.0, 1.0);
-    const CrackOpening open = i % 4 == 0   ? CrackOpening::closed()
-                              : i % 4 == 1 ? CrackOpening::whole()
-                                           : CrackOpening{std::min(from, to), std::max(from, to)};
-    const std::vector<PressurePlace> places =
-        pressure_places(lengths, crack_pressure(rule, length, 1.0, 1.0, open));
-    const CrackPressure pressure = crack_pressure(rule, length, u(0.0, 2e5), u(0.0, 2e5), open);
-    const Vertex reference{u(-5.0, 15.0), u(0.0, 20.0)};
-    const WaterLoad general = crack_pressure_load(moved, lengths, pressure, reference);
-    const WaterLoad placed = crack_pressure_load(moved, places, pressure, reference);
-    EXPECT_TRUE(same_crack_bits(placed.fx, general.fx)) << i;
-    EXPECT_TRUE(same_crack_bits(placed.fy, general.fy)) << i;
-    EXPECT_TRUE(same_crack_bits(placed.moment, general.moment)) << i;
   }
 }
 

@@ -1,8 +1,12 @@
 // The reservoir's loads found once per pose against the same loads found anew: the crack's points
 // at a pose taken from the placed outline (ReservoirLoads::pose) are place_crack's, and the seated
 // loads a search for the crack's opening tries at one state (ReservoirLoad::search_openings) are
-// seated_opened's, to the bit, at random poses, velocities, ground accelerations and openings.
+// seated_opened's, to the bit, at random poses, velocities, ground accelerations and openings. The
+// closed and the whole open crack's uplift, found once on the unturned block and turned with it,
+// is the crack's pressure integrated at the pose to 1e-12.
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -79,6 +83,40 @@ TEST(ReservoirPose, TheCrackEndingInsideAnEdgeIsPlaceCracks) {
   const Scene scene = wet_type_b_short_seat(UpliftRule::zero_in_gap);
   ASSERT_EQ(ReservoirLoads(scene).crack().points.size(), 3u);
   expect_crack_placed(scene);
+}
+
+void expect_fixed_uplifts_turned(const Scene& scene) {
+  validate_scene(scene);
+  const ReservoirLoads loads(scene);
+  const std::vector<double> lengths = segment_lengths(loads.crack().points);
+  const BlockState rest = BlockOutline(scene).rest_state();
+  FixedUniforms u(29);
+  for (int i = 0; i < kWetPoses; ++i) {
+    const BlockState s = random_wet_state(u, rest);
+    const ReservoirPose pose = loads.pose(s);
+    for (const CrackOpening open : {CrackOpening::closed(), CrackOpening::whole()}) {
+      const WaterLoad general =
+          crack_pressure_load(pose.crack, lengths,
+                              crack_pressure(scene.reservoir->uplift, loads.crack().length(),
+                                             pose.closed_mouth, pose.full_head, open),
+                              pose.centre);
+      const WaterLoad turned = loads.uplift(pose, open);
+      const double force = std::max({std::abs(general.fx), std::abs(general.fy), 1.0});
+      const double arm = loads.crack().length();
+      EXPECT_NEAR(turned.fx, general.fx, 1e-12 * force) << i;
+      EXPECT_NEAR(turned.fy, general.fy, 1e-12 * force) << i;
+      EXPECT_NEAR(turned.moment, general.moment, 1e-12 * force * arm) << i;
+    }
+  }
+}
+
+TEST(ReservoirPose, TheFixedOpeningsUpliftTurnedIsThePressureIntegratedAtThePose) {
+  for (const UpliftRule rule :
+       {UpliftRule::unchanged, UpliftRule::zero_in_gap, UpliftRule::full_head_in_gap}) {
+    SCOPED_TRACE(static_cast<int>(rule));
+    expect_fixed_uplifts_turned(wet_type_b(rule));
+    expect_fixed_uplifts_turned(wet_type_b_short_seat(rule));
+  }
 }
 
 // Records the loads a search tries, to compare once the search is over.
