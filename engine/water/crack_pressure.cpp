@@ -54,7 +54,7 @@ WaterLoad crack_pressure_load(const std::vector<Vertex>& points, const CrackPres
   return crack_pressure_load(points, segment_lengths(points), pressure, reference);
 }
 
-WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const double> lengths,
+WaterLoad crack_pressure_load(const std::vector<Vertex>& points, std::span<const double> lengths,
                               const CrackPressure& pressure, const Vertex& reference) {
   WaterLoad total;
   for_each_pressure_piece(points, lengths, pressure, [&](const PressurePiece& piece) {

@@ -88,7 +88,7 @@ std::vector<double> segment_lengths(const std::vector<Vertex>& points);
 // (segment_lengths: a moving crack keeps its lengths at rest, which place pressure spans found at
 // rest where they were).
 template <class Visit>
-void for_each_pressure_piece(std::span<const Vertex> points, std::span<const double> lengths,
+void for_each_pressure_piece(const std::vector<Vertex>& points, std::span<const double> lengths,
                              const CrackPressure& pressure, Visit&& visit) {
   double s0 = 0.0;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
@@ -126,7 +126,7 @@ void for_each_pressure_piece(const std::vector<Vertex>& points, const CrackPress
 WaterLoad crack_pressure_load(const std::vector<Vertex>& points, const CrackPressure& pressure,
                               const Vertex& reference);
 // The same with the pieces' lengths given (segment_lengths).
-WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const double> lengths,
+WaterLoad crack_pressure_load(const std::vector<Vertex>& points, std::span<const double> lengths,
                               const CrackPressure& pressure, const Vertex& reference);
 
 }  // namespace blockfrag

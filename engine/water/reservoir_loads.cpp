@@ -18,23 +18,15 @@ bool same_double_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
-bool same_vertex_bits(const Vertex& a, const Vertex& b) {
-  return same_double_bits(a[0], b[0]) && same_double_bits(a[1], b[1]);
-}
-
-// Per point, the index of the vertex it is to the bit; nothing where one point is no vertex. Such a
-// point, turned and moved as the outline is (BlockOutline::place and place_crack compute alike),
-// lands where its vertex does.
-std::vector<std::size_t> crack_vertex_indices(const std::vector<Vertex>& vertices,
-                                              const std::vector<Vertex>& points) {
-  std::vector<std::size_t> out;
-  for (const Vertex& p : points) {
-    const auto found = std::find_if(vertices.begin(), vertices.end(),
-                                    [&](const Vertex& v) { return same_vertex_bits(v, p); });
-    if (found == vertices.end()) return {};
-    out.push_back(static_cast<std::size_t>(found - vertices.begin()));
-  }
-  return out;
+// The index of the vertex `point` is, to the bit. Turned and moved as the outline is
+// (BlockOutline::place and place_crack compute alike), it lands where its vertex does.
+std::optional<std::size_t> vertex_index(const std::vector<Vertex>& vertices, const Vertex& point) {
+  const auto same = [&](const Vertex& v) {
+    return same_double_bits(v[0], point[0]) && same_double_bits(v[1], point[1]);
+  };
+  const auto found = std::find_if(vertices.begin(), vertices.end(), same);
+  if (found == vertices.end()) return std::nullopt;
+  return static_cast<std::size_t>(found - vertices.begin());
 }
 
 }  // namespace
@@ -60,7 +52,7 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
                           : 0.0;
   const Vertex centre = outline_.rest_centre();
   for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
-  crack_vertices_ = crack_vertex_indices(outline_.body(), crack_.points);
+  mouth_vertex_ = vertex_index(outline_.body(), crack_.points.front());
   closed_uplifts_ = unit_uplifts(CrackOpening::closed());
   whole_uplifts_ = unit_uplifts(CrackOpening::whole());
 }
@@ -87,13 +79,11 @@ ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
     if (added_mass) add_added_mass_piece(out.added, piece, added_mass_scale_, z, centre);
   });
   if (reservoir_.uplift == UpliftRule::none) return out;
-  place_crack_at(turn, centre);
-  const double head = std::max(0.0, reservoir_.level - crack_world_.front()[1]);
+  const double head = std::max(0.0, reservoir_.level - mouth_height(out));
   out.full_head = reservoir_.density * g_ * head;
   out.closed_mouth = reservoir_.uplift == UpliftRule::unchanged
                          ? rest_mouth_pressure_
                          : reservoir_.uplift_area_factor * out.full_head;
-  out.crack = crack_world_;
   return out;
 }
 
@@ -116,7 +106,8 @@ WaterLoad ReservoirLoads::uplift(const ReservoirPose& at_pose, CrackOpening open
   }
   const CrackPressure pressure = crack_pressure(reservoir_.uplift, crack_length_,
                                                 at_pose.closed_mouth, at_pose.full_head, open);
-  return crack_pressure_load(at_pose.crack, crack_lengths_, pressure, at_pose.centre);
+  place_crack(crack_.points, at_pose.turn.cos, at_pose.turn.sin, at_pose.centre, crack_world_);
+  return crack_pressure_load(crack_world_, crack_lengths_, pressure, at_pose.centre);
 }
 
 ReservoirLoads::UnitUplifts ReservoirLoads::unit_uplifts(CrackOpening open) const {
@@ -129,14 +120,10 @@ ReservoirLoads::UnitUplifts ReservoirLoads::unit_uplifts(CrackOpening open) cons
   return {per_unit(1.0, 0.0), per_unit(0.0, 1.0)};
 }
 
-void ReservoirLoads::place_crack_at(const SineCosine& turn, const Vertex& centre) const {
-  if (crack_vertices_.empty()) {
-    place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
-    return;
-  }
-  crack_world_.resize(crack_vertices_.size());
-  for (std::size_t i = 0; i < crack_vertices_.size(); ++i)
-    crack_world_[i] = world_[crack_vertices_[i]];
+double ReservoirLoads::mouth_height(const ReservoirPose& pose) const {
+  if (mouth_vertex_) return world_[*mouth_vertex_][1];
+  const Vertex& mouth = crack_.points.front();
+  return pose.centre[1] + mouth[0] * pose.turn.sin + mouth[1] * pose.turn.cos;
 }
 
 }  // namespace blockfrag

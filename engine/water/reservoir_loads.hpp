@@ -12,7 +12,8 @@
 // the pressure acts on the block's own base, along its normals, whatever the pose.
 #pragma once
 
-#include <span>
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "engine/scene/block_state.hpp"
@@ -32,14 +33,13 @@ struct ReservoirLoadSet {
 };
 
 // What the loads at a pose share whatever the crack's opening: the hydrostatic push, the added mass
-// with its rates, the crack's pressures at the mouth, and the crack's points at the pose.
+// with its rates, and the crack's pressures at the mouth.
 struct ReservoirPose {
   Vertex centre;    // the centre of mass
   SineCosine turn;  // the block's tilt
   WaterLoad hydrostatic;
   AddedMassWithRates added;
   double closed_mouth = 0.0, full_head = 0.0;  // crack_pressure's, "none" aside
-  std::span<const Vertex> crack;               // "none" aside
 };
 
 // Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
@@ -62,15 +62,14 @@ class ReservoirLoads {
   // the surface at the pose, but under "unchanged", which keeps the pre-earthquake head and
   // pressure on the block.
   ReservoirLoadSet at(const BlockState& s, CrackOpening open) const;
-  // The same in two parts, for a caller that tries several openings at one pose: the pose's
-  // (its crack's points valid until the next call of pose() or at()) and the uplift at an opening.
+  // The same in two parts, for a caller that tries several openings at one pose: the pose's and
+  // the uplift at an opening.
   ReservoirPose pose(const BlockState& s) const;
   WaterLoad uplift(const ReservoirPose& pose, CrackOpening open) const;
 
  private:
-  // Places the crack at the pose the outline was last placed at (world_), turned by `turn` about
-  // `centre`.
-  void place_crack_at(const SineCosine& turn, const Vertex& centre) const;
+  // The height of the crack's mouth at the pose the outline was last placed at (world_).
+  double mouth_height(const ReservoirPose& pose) const;
 
   Reservoir reservoir_;
   double g_;
@@ -78,9 +77,9 @@ class ReservoirLoads {
   CrackPath crack_;
   double crack_length_;
   std::vector<double> crack_lengths_;  // of its straight pieces, at rest
-  // Per crack point, the outline's vertex it is (its place at a pose is the vertex's); empty where
-  // a point is none (a crack ending inside an edge), which is placed on its own.
-  std::vector<std::size_t> crack_vertices_;
+  // The outline's vertex the crack's mouth is, to the bit (its place at a pose is the vertex's);
+  // none for a mouth inside an edge, which is placed on its own.
+  std::optional<std::size_t> mouth_vertex_;
   // The closed crack's and the whole open crack's uplift (a seated and a lifted block's: every
   // right-hand side asks for one of them) on the unturned block about its centre of mass, per unit
   // of each pressure crack_pressure takes: linear in both, the uplift at a pose is their sum
