@@ -89,6 +89,25 @@ enum class Footing { seated, lifted };
 // ("full_head_in_gap").
 enum class SeatedCrack { unaffected, drains, fills };
 
+// A seated block's loads at one state for the openings of the crack under its base that a search
+// tries (ExternalLoad::search_openings): what does not depend on the opening is found once.
+class CrackOpenings {
+ public:
+  virtual LoadAddition opened(LiftingSide side, double fraction) const = 0;
+
+ protected:
+  ~CrackOpenings() = default;
+};
+
+// What searches them (engine/seat/seated_load.cpp).
+class CrackOpeningSearch {
+ public:
+  virtual void search(const CrackOpenings& openings) = 0;
+
+ protected:
+  ~CrackOpeningSearch() = default;
+};
+
 class ExternalLoad {
  public:
   virtual ~ExternalLoad() = default;
@@ -102,7 +121,31 @@ class ExternalLoad {
                                      double) const {
     return at(s, lambda, g, Footing::seated);
   }
+  // Runs `search` on the loads seated_opened gives at the state s, each to the bit.
+  virtual void search_openings(const BlockState& s, double lambda, double g,
+                               CrackOpeningSearch& search) const;
 };
+
+// The openings ExternalLoad::search_openings runs a search on unless a load finds them faster:
+// seated_opened's, each anew.
+class OpenedAnew final : public CrackOpenings {
+ public:
+  OpenedAnew(const ExternalLoad& load, const BlockState& s, double lambda, double g)
+      : load_(&load), s_(&s), lambda_(lambda), g_(g) {}
+  LoadAddition opened(LiftingSide side, double fraction) const override {
+    return load_->seated_opened(*s_, lambda_, g_, side, fraction);
+  }
+
+ private:
+  const ExternalLoad* load_;
+  const BlockState* s_;
+  double lambda_, g_;
+};
+
+inline void ExternalLoad::search_openings(const BlockState& s, double lambda, double g,
+                                          CrackOpeningSearch& search) const {
+  search.search(OpenedAnew(*this, s, lambda, g));
+}
 
 inline BodyLoad with_addition(BodyLoad load, double inertia_per_mass, const LoadAddition& add) {
   load.force.x += add.force.x;
@@ -122,13 +165,11 @@ inline BodyLoad body_load(double inertia_per_mass, double lambda, double lambda_
 }
 
 // The same for a seated block whose crack is opened over `fraction` of its length from `side`
-// (ExternalLoad::seated_opened).
+// (ExternalLoad::seated_opened, or one of ExternalLoad::search_openings).
 inline BodyLoad seated_body_load(double inertia_per_mass, double lambda, double lambda_v, double g,
-                                 const ExternalLoad& external, const BlockState& s,
-                                 LiftingSide side, double fraction) {
+                                 const CrackOpenings& openings, LiftingSide side, double fraction) {
   const BodyLoad load{{lambda * g, -g * (1.0 + lambda_v)}, 0.0, inertia_per_mass};
-  return with_addition(load, inertia_per_mass,
-                       external.seated_opened(s, lambda, g, side, fraction));
+  return with_addition(load, inertia_per_mass, openings.opened(side, fraction));
 }
 
 }  // namespace blockfrag

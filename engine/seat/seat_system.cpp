@@ -8,6 +8,16 @@
 
 namespace blockfrag {
 
+namespace {
+
+// The dry block's load lifted from its seat: cheaper to find again than to look up.
+BodyLoad dry_lifted_load(const SeatSystemContext& c, double t, const BlockState& s) {
+  return body_load(c.geometry->inertia_per_mass(), c.piece->lambda(t), c.vertical->lambda(t), c.g,
+                   nullptr, s, Footing::lifted);
+}
+
+}  // namespace
+
 SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
                        const WatchedList& watched_vertices, const WatchedList& watched_points)
     : c_(c), watched_vertices_(watched_vertices), watched_points_(watched_points) {
@@ -82,8 +92,8 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, co
                            c_.external};
   const BodyLoad load =
       count_ >= 2 ? seated_load(in, s, std::span(contacts).first(n), std::span(states).first(n))
-                  : body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, in.external, s,
-                              Footing::lifted);
+      : c_.external == nullptr ? dry_lifted_load(c_, t, s)
+                               : wet_lifted_load(t, s);
   std::optional<FixedStateForces> one;
   if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, load, c_.mu);
   last_solve_.forces = one ? *one
@@ -94,10 +104,19 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, co
   return last_solve_.forces;
 }
 
-std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) const {
-  if (count_ != 1) return std::nullopt;
-  const BodyLoad load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
+const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
+  if (!(t == last_lifted_.t && std::memcmp(&s, &last_lifted_.s, sizeof s) == 0)) {
+    last_lifted_.load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
                                   c_.vertical->lambda(t), c_.g, c_.external, s, Footing::lifted);
+    last_lifted_.t = t;
+    last_lifted_.s = s;
+  }
+  return last_lifted_.load;
+}
+
+std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) {
+  if (count_ != 1) return std::nullopt;
+  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(c_, t, s) : wet_lifted_load(t, s);
   const BodyInertia& m = load.inertia;
   const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
   const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta

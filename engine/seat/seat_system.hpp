@@ -87,7 +87,9 @@ class SeatSystem {
   // constraint's acceleration c = (r_x, r_y, 0) omega^2, Lagrange's equation
   // J^T (M (J theta'' + c) - Q) = 0 gives theta'' without solving for the force, which only the
   // guards ask for, at a step's ends.
-  std::optional<double> pivot_turning(double t, const BlockState& s, Vec2 r) const;
+  // Not const: the load it finds is the one the guards' solve at a step's end needs next (a step
+  // ends by this, at its end).
+  std::optional<double> pivot_turning(double t, const BlockState& s, Vec2 r);
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
   // The guards whose slot is used (the others are 1 throughout).
   GuardClaims live_guards() const;
@@ -152,6 +154,9 @@ class SeatSystem {
   // The forces with the active contacts' poses at s given; solve_anew does not look at the last.
   const FixedStateForces& solve(double t, const BlockState& s, const Poses& poses);
   const FixedStateForces& solve_anew(double t, const BlockState& s, const Poses& poses);
+  // The load on the block lifted from its seat (one contact or none) under the external load at
+  // time t in the state s, kept for the next call at the same time and state.
+  const BodyLoad& wet_lifted_load(double t, const BlockState& s);
 
   SeatSystemContext c_;
   std::array<ActiveContact, kMaxSeatContacts> active_{};
@@ -166,6 +171,13 @@ class SeatSystem {
     FixedStateForces forces;
   };
   Solved last_solve_;
+  // The last wet lifted load found, and the time and state it was found at.
+  struct Loaded {
+    double t = std::numeric_limits<double>::quiet_NaN();
+    BlockState s;
+    BodyLoad load{{0.0, 0.0}, 0.0, 1.0};
+  };
+  Loaded last_lifted_;
 };
 
 // Which guards are least at an end of a step while the block turns about a fixed point (a

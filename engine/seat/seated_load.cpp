@@ -27,6 +27,62 @@ Lifting lifting_at(bool heel_lifts, std::size_t upstream, std::size_t downstream
                     : Lifting{LiftingSide::downstream, downstream, upstream, -1.0};
 }
 
+// The load with the crack opened as far as the lifting corner needs, found on the openings the
+// external load gives at the state (ExternalLoad::search_openings).
+class OpeningSearch final : public CrackOpeningSearch {
+ public:
+  OpeningSearch(const SeatedLoadInput& in, const BlockState& s,
+                std::span<const PlanarContact> contacts, std::span<const ContactState> states,
+                Lifting lifting, bool held, SeatedCrack crack)
+      : in_(in),
+        s_(s),
+        contacts_(contacts),
+        states_(states),
+        lifting_(lifting),
+        held_(held),
+        crack_(crack),
+        found_{{0.0, 0.0}, 0.0, in.inertia_per_mass} {}
+
+  void search(const CrackOpenings& openings) override {
+    const auto opened = [&](double fraction) {
+      return seated_body_load(in_.inertia_per_mass, in_.lambda, in_.lambda_v, in_.g, openings,
+                              lifting_.side, fraction);
+    };
+    const auto quasi_static = [&] {
+      return seating_opening([&](double f) {
+        return lifting_.sense * moment_about(opened(f), contacts_[lifting_.pivot]);
+      });
+    };
+    if (held_) {
+      found_ = opened(quasi_static());
+      return;
+    }
+    const auto corner_force = [&](double fraction) {
+      return fixed_state_forces(contacts_, states_, s_, opened(fraction), in_.mu)
+          .normal[lifting_.corner];
+    };
+    // Filled with the full head, the opening lifts the corner further at rest, and seats a
+    // slipping one only where it lightens the friction that tips the block onto its other corner:
+    // the least opening that seats it is looked for over the whole crack.
+    const double reach = crack_ == SeatedCrack::fills ? 1.0 : quasi_static();
+    found_ =
+        !(corner_force(reach) >= 0.0)
+            ? opened(reach)
+            : opened(reach * seating_opening([&](double x) { return corner_force(x * reach); }));
+  }
+  const BodyLoad& found() const { return found_; }
+
+ private:
+  const SeatedLoadInput& in_;
+  const BlockState& s_;
+  std::span<const PlanarContact> contacts_;
+  std::span<const ContactState> states_;
+  Lifting lifting_;
+  bool held_;
+  SeatedCrack crack_;
+  BodyLoad found_;
+};
+
 }  // namespace
 
 BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
@@ -59,24 +115,9 @@ BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
     if (heel >= 0.0 && toe >= 0.0) return closed;
     lifting = lifting_at(heel <= toe, upstream, downstream);
   }
-  const auto opened = [&](double fraction) {
-    return seated_body_load(in.inertia_per_mass, in.lambda, in.lambda_v, in.g, *in.external, s,
-                            lifting.side, fraction);
-  };
-  const auto quasi_static = [&] {
-    return seating_opening(
-        [&](double f) { return lifting.sense * moment_about(opened(f), contacts[lifting.pivot]); });
-  };
-  if (held) return opened(quasi_static());
-  const auto corner_force = [&](double fraction) {
-    return fixed_state_forces(contacts, states, s, opened(fraction), in.mu).normal[lifting.corner];
-  };
-  // Filled with the full head, the opening lifts the corner further at rest, and seats a slipping
-  // one only where it lightens the friction that tips the block onto its other corner: the least
-  // opening that seats it is looked for over the whole crack.
-  const double reach = crack == SeatedCrack::fills ? 1.0 : quasi_static();
-  if (!(corner_force(reach) >= 0.0)) return opened(reach);
-  return opened(reach * seating_opening([&](double x) { return corner_force(x * reach); }));
+  OpeningSearch search(in, s, contacts, states, lifting, held, crack);
+  in.external->search_openings(s, in.lambda, in.g, search);
+  return search.found();
 }
 
 }  // namespace blockfrag

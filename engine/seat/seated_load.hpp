@@ -30,7 +30,8 @@ struct SeatedLoadInput {
 // the opening is then the least one up to the quasi-static one that seats the corner under the
 // contacts' own states, and where none does, the quasi-static one (the corner lifts: its guard
 // crosses zero). Any other load, or fewer than two contacts: the seated load, body_load(...,
-// Footing::seated).
+// Footing::seated). The openings tried are the external load's at s (ExternalLoad::search_openings:
+// the reservoir places the block once for them all).
 BodyLoad seated_load(const SeatedLoadInput& in, const BlockState& s,
                      std::span<const PlanarContact> contacts, std::span<const ContactState> states);
 

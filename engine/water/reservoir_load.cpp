@@ -57,16 +57,42 @@ LoadAddition ReservoirLoad::seated_opened(const BlockState& s, double lambda, do
 
 LoadAddition ReservoirLoad::with_crack(const BlockState& s, double lambda, double g,
                                        CrackOpening open) const {
-  const ReservoirLoadSet loads = loads_.at(s, open);
-  LoadAddition out =
-      hydrodynamic_
-          ? hydrodynamic_->from_rates(
-                {loads.added_mass, loads.added_mass_d_dy, loads.added_mass_d_dtheta}, s, lambda, g)
-          : LoadAddition{};
-  out.force.x += (loads.hydrostatic.fx + loads.uplift.fx) / mass_;
-  out.force.y += (loads.hydrostatic.fy + loads.uplift.fy) / mass_;
-  out.moment += (loads.hydrostatic.moment + loads.uplift.moment) / mass_;
-  return out;
+  const ReservoirPose pose = loads_.pose(s);
+  return with_pushes(added_mass_terms(pose, s, lambda, g), pose.hydrostatic,
+                     loads_.uplift(pose, open));
+}
+
+void ReservoirLoad::search_openings(const BlockState& s, double lambda, double g,
+                                    CrackOpeningSearch& search) const {
+  class AtPose final : public CrackOpenings {
+   public:
+    AtPose(const ReservoirLoad& load, const ReservoirPose& pose, const LoadAddition& added)
+        : load_(load), pose_(pose), added_(added) {}
+    LoadAddition opened(LiftingSide side, double fraction) const override {
+      return load_.with_pushes(added_, pose_.hydrostatic,
+                               load_.loads_.uplift(pose_, CrackOpening::from_side(side, fraction)));
+    }
+
+   private:
+    const ReservoirLoad& load_;
+    const ReservoirPose& pose_;
+    const LoadAddition& added_;
+  };
+  const ReservoirPose pose = loads_.pose(s);
+  search.search(AtPose(*this, pose, added_mass_terms(pose, s, lambda, g)));
+}
+
+LoadAddition ReservoirLoad::added_mass_terms(const ReservoirPose& pose, const BlockState& s,
+                                             double lambda, double g) const {
+  return hydrodynamic_ ? hydrodynamic_->from_rates(pose.added, s, lambda, g) : LoadAddition{};
+}
+
+LoadAddition ReservoirLoad::with_pushes(LoadAddition added, const WaterLoad& hydrostatic,
+                                        const WaterLoad& uplift) const {
+  added.force.x += (hydrostatic.fx + uplift.fx) / mass_;
+  added.force.y += (hydrostatic.fy + uplift.fy) / mass_;
+  added.moment += (hydrostatic.moment + uplift.moment) / mass_;
+  return added;
 }
 
 bool reservoir_wets(const Scene& scene) {

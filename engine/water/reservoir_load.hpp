@@ -27,9 +27,18 @@ class ReservoirLoad : public ExternalLoad {
   SeatedCrack seated_crack() const override;
   LoadAddition seated_opened(const BlockState& s, double lambda, double g, LiftingSide side,
                              double fraction) const override;
+  // The block placed once at s, the uplift alone found anew for each opening.
+  void search_openings(const BlockState& s, double lambda, double g,
+                       CrackOpeningSearch& search) const override;
 
  private:
   LoadAddition with_crack(const BlockState& s, double lambda, double g, CrackOpening open) const;
+  // The added mass's terms at the pose (none without Westergaard's).
+  LoadAddition added_mass_terms(const ReservoirPose& pose, const BlockState& s, double lambda,
+                                double g) const;
+  // Those with the hydrostatic push and the uplift, per unit of the block's mass.
+  LoadAddition with_pushes(LoadAddition added, const WaterLoad& hydrostatic,
+                           const WaterLoad& uplift) const;
 
   ReservoirLoads loads_;  // hydrostatic, uplift, and the added mass with its rates
   std::optional<HydrodynamicLoad> hydrodynamic_;  // the added mass's terms in the equations

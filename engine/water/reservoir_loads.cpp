@@ -1,14 +1,35 @@
 #include "engine/water/reservoir_loads.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 #include "engine/errors.hpp"
 #include "engine/scene/block_geometry.hpp"
-#include "engine/sine_cosine.hpp"
+#include "engine/seat/turn_cache.hpp"
 #include "engine/tolerances.hpp"
 #include "engine/water/hydrostatic.hpp"
 
 namespace blockfrag {
+
+namespace {
+
+bool same_double_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// The index of the vertex `point` is, to the bit. Turned and moved as the outline is
+// (BlockOutline::place and place_crack compute alike), it lands where its vertex does.
+std::optional<std::size_t> vertex_index(const std::vector<Vertex>& vertices, const Vertex& point) {
+  const auto same = [&](const Vertex& v) {
+    return same_double_bits(v[0], point[0]) && same_double_bits(v[1], point[1]);
+  };
+  const auto found = std::find_if(vertices.begin(), vertices.end(), same);
+  if (found == vertices.end()) return std::nullopt;
+  return static_cast<std::size_t>(found - vertices.begin());
+}
+
+}  // namespace
 
 CrackPath rest_crack(const Scene& scene, const BlockOutline& outline) {
   const double tolerance = kContactHeight * scene_geometry(scene).size();
@@ -31,36 +52,78 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
                           : 0.0;
   const Vertex centre = outline_.rest_centre();
   for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
+  mouth_vertex_ = vertex_index(outline_.body(), crack_.points.front());
+  closed_uplifts_ = unit_uplifts(CrackOpening::closed());
+  whole_uplifts_ = unit_uplifts(CrackOpening::whole());
 }
 
 ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) const {
-  ReservoirLoadSet loads;
-  const SineCosine turn = sine_cosine(s.theta);
+  const ReservoirPose at_pose = pose(s);
+  return {at_pose.hydrostatic, uplift(at_pose, open), at_pose.added.at, at_pose.added.d_dy,
+          at_pose.added.d_dtheta};
+}
+
+ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
+  ReservoirPose out;
+  const SineCosine turn = cached_turn(s.theta);
   outline_.place(s, turn, world_);
-  const Vertex centre = outline_.centre(s);
+  out.centre = outline_.centre(s);
+  out.turn = turn;
+  const Vertex& centre = out.centre;
   // The push and the added mass in one pass over the wetted face.
   const double unit_weight = reservoir_.density * g_;
   const bool added_mass = reservoir_.hydrodynamic == Hydrodynamic::westergaard;
   const double z = reservoir_.level - centre[1];
-  AddedMassWithRates added;
   for_each_wetted_piece(world_, reservoir_.level, crack_.edges, [&](const WettedPiece& piece) {
-    add_hydrostatic_piece(loads.hydrostatic, piece, unit_weight, centre);
-    if (added_mass) add_added_mass_piece(added, piece, added_mass_scale_, z, centre);
+    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight, centre);
+    if (added_mass) add_added_mass_piece(out.added, piece, added_mass_scale_, z, centre);
   });
-  loads.added_mass = added.at;
-  loads.added_mass_d_dy = added.d_dy;
-  loads.added_mass_d_dtheta = added.d_dtheta;
-  if (reservoir_.uplift == UpliftRule::none) return loads;
-  place_crack(crack_.points, turn.cos, turn.sin, centre, crack_world_);
-  const double head = std::max(0.0, reservoir_.level - crack_world_.front()[1]);
-  const double full_head = reservoir_.density * g_ * head;
-  const double closed_mouth = reservoir_.uplift == UpliftRule::unchanged
-                                  ? rest_mouth_pressure_
-                                  : reservoir_.uplift_area_factor * full_head;
-  const CrackPressure pressure =
-      crack_pressure(reservoir_.uplift, crack_length_, closed_mouth, full_head, open);
-  loads.uplift = crack_pressure_load(crack_world_, crack_lengths_, pressure, centre);
-  return loads;
+  if (reservoir_.uplift == UpliftRule::none) return out;
+  const double head = std::max(0.0, reservoir_.level - mouth_height(out));
+  out.full_head = reservoir_.density * g_ * head;
+  out.closed_mouth = reservoir_.uplift == UpliftRule::unchanged
+                         ? rest_mouth_pressure_
+                         : reservoir_.uplift_area_factor * out.full_head;
+  return out;
+}
+
+WaterLoad ReservoirLoads::uplift(const ReservoirPose& at_pose, CrackOpening open) const {
+  if (reservoir_.uplift == UpliftRule::none) return {};
+  const auto is = [&](CrackOpening fixed) {
+    return same_double_bits(open.from, fixed.from) && same_double_bits(open.to, fixed.to);
+  };
+  const UnitUplifts* unit = is(CrackOpening::closed())  ? &closed_uplifts_
+                            : is(CrackOpening::whole()) ? &whole_uplifts_
+                                                        : nullptr;
+  if (unit != nullptr) {
+    const WaterLoad &per_mouth = unit->per_closed_mouth, &per_head = unit->per_full_head;
+    const double mouth = at_pose.closed_mouth, head = at_pose.full_head;
+    const double fx = mouth * per_mouth.fx + head * per_head.fx;
+    const double fy = mouth * per_mouth.fy + head * per_head.fy;
+    const SineCosine& turn = at_pose.turn;
+    return {turn.cos * fx - turn.sin * fy, turn.sin * fx + turn.cos * fy,
+            mouth * per_mouth.moment + head * per_head.moment};
+  }
+  const CrackPressure pressure = crack_pressure(reservoir_.uplift, crack_length_,
+                                                at_pose.closed_mouth, at_pose.full_head, open);
+  place_crack(crack_.points, at_pose.turn.cos, at_pose.turn.sin, at_pose.centre, crack_world_);
+  return crack_pressure_load(crack_world_, crack_lengths_, pressure, at_pose.centre);
+}
+
+ReservoirLoads::UnitUplifts ReservoirLoads::unit_uplifts(CrackOpening open) const {
+  const auto per_unit = [&](double closed_mouth, double full_head) {
+    return crack_pressure_load(
+        crack_.points, crack_lengths_,
+        crack_pressure(reservoir_.uplift, crack_length_, closed_mouth, full_head, open),
+        {0.0, 0.0});
+  };
+  return {per_unit(1.0, 0.0), per_unit(0.0, 1.0)};
+}
+
+double ReservoirLoads::mouth_height(const ReservoirPose& pose) const {
+  if (mouth_vertex_) return world_[*mouth_vertex_][1];
+  const Vertex& mouth = crack_.points.front();
+  return pose.centre[1] + mouth[0] * pose.turn.sin + mouth[1] * pose.turn.cos;
 }
 
 }  // namespace blockfrag

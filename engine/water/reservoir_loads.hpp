@@ -12,6 +12,8 @@
 // the pressure acts on the block's own base, along its normals, whatever the pose.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "engine/scene/block_state.hpp"
@@ -28,6 +30,16 @@ struct ReservoirLoadSet {
   AddedMass added_mass;   // M_a, and S_a, I_a about the centre of mass's height
   // How added_mass changes as the block rises and turns (westergaard_added_mass_with_rates).
   AddedMass added_mass_d_dy, added_mass_d_dtheta;
+};
+
+// What the loads at a pose share whatever the crack's opening: the hydrostatic push, the added mass
+// with its rates, and the crack's pressures at the mouth.
+struct ReservoirPose {
+  Vertex centre;    // the centre of mass
+  SineCosine turn;  // the block's tilt
+  WaterLoad hydrostatic;
+  AddedMassWithRates added;
+  double closed_mouth = 0.0, full_head = 0.0;  // crack_pressure's, "none" aside
 };
 
 // Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
@@ -50,16 +62,35 @@ class ReservoirLoads {
   // the surface at the pose, but under "unchanged", which keeps the pre-earthquake head and
   // pressure on the block.
   ReservoirLoadSet at(const BlockState& s, CrackOpening open) const;
+  // The same in two parts, for a caller that tries several openings at one pose: the pose's and
+  // the uplift at an opening.
+  ReservoirPose pose(const BlockState& s) const;
+  WaterLoad uplift(const ReservoirPose& pose, CrackOpening open) const;
 
  private:
+  // The height of the crack's mouth at the pose the outline was last placed at (world_).
+  double mouth_height(const ReservoirPose& pose) const;
+
   Reservoir reservoir_;
   double g_;
   BlockOutline outline_;
   CrackPath crack_;
   double crack_length_;
   std::vector<double> crack_lengths_;  // of its straight pieces, at rest
-  double rest_mouth_pressure_;         // c rho_w g h at rest
-  double added_mass_scale_;            // westergaard_scale, "westergaard" only
+  // The outline's vertex the crack's mouth is, to the bit (its place at a pose is the vertex's);
+  // none for a mouth inside an edge, which is placed on its own.
+  std::optional<std::size_t> mouth_vertex_;
+  // The closed crack's and the whole open crack's uplift (a seated and a lifted block's: every
+  // right-hand side asks for one of them) on the unturned block about its centre of mass, per unit
+  // of each pressure crack_pressure takes: linear in both, the uplift at a pose is their sum
+  // turned with the block (the moment about the centre unchanged).
+  struct UnitUplifts {
+    WaterLoad per_closed_mouth, per_full_head;
+  };
+  UnitUplifts unit_uplifts(CrackOpening open) const;
+  UnitUplifts closed_uplifts_, whole_uplifts_;
+  double rest_mouth_pressure_;  // c rho_w g h at rest
+  double added_mass_scale_;     // westergaard_scale, "westergaard" only
   mutable WorldPolygon world_;
   mutable std::vector<Vertex> crack_world_;
 };
