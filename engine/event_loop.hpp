@@ -268,6 +268,18 @@ double ode_guard(const Ode& ode, int i, double t, const OdeState<Ode::N>& q) {
   }
 }
 
+// The guards `wanted` names of a system at (t, q) (the others unset), where the system computes
+// some alone; else all of them.
+template <class Ode>
+std::array<double, Ode::kGuards> ode_guards(const Ode& ode, double t, const OdeState<Ode::N>& q,
+                                            const std::array<bool, Ode::kGuards>& wanted) {
+  if constexpr (requires { ode.guards(t, q, wanted); }) {
+    return ode.guards(t, q, wanted);
+  } else {
+    return ode.guards(t, q);
+  }
+}
+
 // Lambdas taken as one callable, each call going to the one it fits.
 template <class... Calls>
 struct Overloads : Calls... {
@@ -320,7 +332,10 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
     const auto next = ode.guards(t, q);
     const Overloads guards_at{
         [&](double x) { return ode.guards(x, stepper.dense(x)); },
-        [&](int i, double x) { return ode_guard(ode, i, x, stepper.dense(x)); }};
+        [&](int i, double x) { return ode_guard(ode, i, x, stepper.dense(x)); },
+        [&](double x, const std::array<bool, Ode::kGuards>& wanted) {
+          return ode_guards(ode, x, stepper.dense(x), wanted);
+        }};
     const auto least_at_ends = [&](const std::array<bool, Ode::kGuards>& asked) {
       const auto one_way = [&](int i) { return stepper.moves_one_way(i); };
       if constexpr (requires { ode.guard_claims(q0, q, one_way, asked); }) {

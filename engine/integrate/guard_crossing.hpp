@@ -24,6 +24,18 @@ double guard_from(const GuardsAt& guards_at, int i, double x) {
   }
 }
 
+// The guards `wanted` names at x (the others unset): guards_at(x, wanted) where the guards offer
+// some alone, else all of them.
+template <class GuardsAt, std::size_t G>
+std::array<double, G> guards_from(const GuardsAt& guards_at, double x,
+                                  const std::array<bool, G>& wanted) {
+  if constexpr (requires { guards_at(x, wanted); }) {
+    return guards_at(x, wanted);
+  } else {
+    return guards_at(x);
+  }
+}
+
 // How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: not clearly positive,
 // fires once clearly below both zero and its start, whether or not it rose clearly above zero first
 // (a corner that lifts by less than the margin and comes back must still land), and fires at zero
@@ -154,7 +166,8 @@ class GuardWatch {
     bool any_sampled = true;
     for (int k = 1; any_sampled && k < kInteriorSamples; ++k) {
       const double x = t0 + (t1 - t0) * k / kInteriorSamples;
-      const std::array<double, G> at_x = guards_at(x);
+      // Only the guards still sampled are read.
+      const std::array<double, G> at_x = guards_from(guards_at, x, scan.sampled);
       any_sampled = false;
       for (const int i : live()) {
         if (!scan.sampled[i]) continue;

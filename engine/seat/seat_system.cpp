@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <span>
 
 #include "engine/seat/seated_load.hpp"
 
@@ -126,6 +127,16 @@ std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, V
 }
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s) {
+  static const GuardClaims every = [] {
+    GuardClaims all;
+    all.fill(true);
+    return all;
+  }();
+  return guards(t, s, every);
+}
+
+std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s,
+                                                           const GuardClaims& wanted) {
   std::array<double, kGuards> out;
   out.fill(1.0);
   const double R = c_.geometry->size();
@@ -136,39 +147,47 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
   c_.contacts->world_vertices(s, world);
   out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
-
-  if (count_ > 0) {
-    const Poses poses = active_poses(s);
-    const FixedStateForces& f = solve(t, s, poses);
-    const RigidVelocity v{s.vx, s.vy, s.omega};
-    const double velocity_scale = std::sqrt(c_.g * R);
-    for (int i = 0; i < count_; ++i) {
-      const auto at = static_cast<std::size_t>(i);
-      const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
-      const PairPose& p = poses[at];
-      out[base] = lift_off_guard(f, at);
-      const int slip = slip_sign(active_[at].state);
-      out[base + 1] = slip == 0 ? friction_guard(f, at)
-                                : slip * contact_velocity(p.contact, v).tangent / velocity_scale;
-      if (slip != 0 && active_[at].pair.kind == ContactKind::block_vertex) {
-        const SeatContacts::RunPlace run = c_.contacts->place_on_run(
-            active_[at].pair.seat, {s.x + p.contact.r.x, s.y + p.contact.r.y});
-        out[base + 2] = run.along / R;
-        out[base + 3] = (run.length - run.along) / R;
-      } else if (slip != 0) {
-        out[base + 2] = p.along / R;
-        out[base + 3] = (p.length - p.along) / R;
-      }
-    }
+  const auto contact_guards = std::span(wanted).subspan(2, kSeatContactGuards * count_);
+  if (std::find(contact_guards.begin(), contact_guards.end(), true) != contact_guards.end()) {
+    set_contact_guards(t, s, out);
   }
   std::size_t g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const int i : watched_vertices_) {
-    out[g++] = c_.contacts->clearance_at(world[static_cast<std::size_t>(i)]) / R;
+    if (wanted[g]) out[g] = c_.contacts->clearance_at(world[static_cast<std::size_t>(i)]) / R;
+    ++g;
   }
   for (const int k : watched_points_) {
-    out[g++] = c_.contacts->point_clearance_within(k, world, R) / R;
+    if (wanted[g]) out[g] = c_.contacts->point_clearance_within(k, world, R) / R;
+    ++g;
   }
   return out;
+}
+
+void SeatSystem::set_contact_guards(double t, const BlockState& s,
+                                    std::array<double, kGuards>& out) {
+  const double R = c_.geometry->size();
+  const Poses poses = active_poses(s);
+  const FixedStateForces& f = solve(t, s, poses);
+  const RigidVelocity v{s.vx, s.vy, s.omega};
+  const double velocity_scale = std::sqrt(c_.g * R);
+  for (int i = 0; i < count_; ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
+    const PairPose& p = poses[at];
+    out[base] = lift_off_guard(f, at);
+    const int slip = slip_sign(active_[at].state);
+    out[base + 1] = slip == 0 ? friction_guard(f, at)
+                              : slip * contact_velocity(p.contact, v).tangent / velocity_scale;
+    if (slip != 0 && active_[at].pair.kind == ContactKind::block_vertex) {
+      const SeatContacts::RunPlace run = c_.contacts->place_on_run(
+          active_[at].pair.seat, {s.x + p.contact.r.x, s.y + p.contact.r.y});
+      out[base + 2] = run.along / R;
+      out[base + 3] = (run.length - run.along) / R;
+    } else if (slip != 0) {
+      out[base + 2] = p.along / R;
+      out[base + 3] = (p.length - p.along) / R;
+    }
+  }
 }
 
 double SeatSystem::guard(int i, double t, const BlockState& s) {

@@ -76,6 +76,9 @@ class SeatSystem {
   std::array<double, kGuards> guards(double t, const BlockState& s);
   // guards(t, s)[i], a watched vertex's or point's clearance without the others.
   double guard(int i, double t, const BlockState& s);
+  // The guards `wanted` names as guards(t, s) finds them; the others' values are not to be read
+  // (the samples inside a step read only the guards they follow).
+  std::array<double, kGuards> guards(double t, const BlockState& s, const GuardClaims& wanted);
   ContactForces forces(double t, const BlockState& s);
   // Whether every active contact's lift-off and friction guards are positive at (t, s), as
   // guards() finds them, without the clearances: what a piece boundary asks of the mode.
@@ -147,6 +150,8 @@ class SeatSystem {
   double friction_guard(const FixedStateForces& f, std::size_t at) const {
     return (c_.mu * f.normal[at] - std::abs(f.tangent[at])) / c_.g;
   }
+  // The active contacts' guards (four each from slot 2) into `out`.
+  void set_contact_guards(double t, const BlockState& s, std::array<double, kGuards>& out);
   using Poses = std::array<PairPose, kMaxSeatContacts>;
   Poses active_poses(const BlockState& s) const;
   // Whether the last forces solved are at this time and state.
@@ -251,6 +256,10 @@ class SeatOde {
   }
   double guard(int i, double t, const OdeState<N>& q) const {
     return system_->guard(i, t, chart_.full(t, q));
+  }
+  std::array<double, kGuards> guards(double t, const OdeState<N>& q,
+                                     const GuardClaims& wanted) const {
+    return system_->guards(t, chart_.full(t, q), wanted);
   }
   GuardClaims live_guards() const { return system_->live_guards(); }
   SeatEvent event(int guard) const { return system_->event(guard); }
