@@ -53,6 +53,33 @@ int finish_study(const StudyConfig& config, const RunSettings& settings, const R
   return exit_code_success;
 }
 
+// The study's files sit next to its output; rank 0 alone logs.
+RunSettings study_run_settings(const RunOptions& options, const StudyConfig& config, int rank) {
+  RunSettings settings;
+  settings.checkpoint = checkpoint_path_for(config.output);
+  settings.records = record_spool_path_for(config.output);
+  settings.checkpoint_interval_s = config.checkpoint_interval_s;
+  settings.max_chunk = options.max_chunk;
+  settings.checkpoint_hooks = options.checkpoint_hooks;
+  settings.log = rank == 0 ? &std::cerr : nullptr;
+  settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
+  return settings;
+}
+
+// Rank 0, before the run: the study's size and identity, for the log.
+void print_study_plan(const RunOptions& options, const StudyConfig& config, int ranks) {
+  const IntensityMeasure& measure = config.intensity;
+  std::cerr << "study " << options.study_path.string() << ": " << config.total_samples()
+            << " samples (";
+  if (measure.surface()) {
+    std::cerr << measure.levels.size() << " x " << measure.periods.size() << " cells x ";
+  } else {
+    std::cerr << measure.level_count() << " levels x ";
+  }
+  std::cerr << config.samples_per_level << ") on " << ranks << (ranks == 1 ? " rank" : " ranks")
+            << ", config hash " << hash_to_hex(config.hash) << '\n';
+}
+
 }  // namespace
 
 int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate) {
@@ -71,14 +98,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
     return refuse_bad_input(comm, rank, error);
   }
 
-  RunSettings settings;
-  settings.checkpoint = checkpoint_path_for(config.output);
-  settings.records = record_spool_path_for(config.output);
-  settings.checkpoint_interval_s = config.checkpoint_interval_s;
-  settings.max_chunk = options.max_chunk;
-  settings.checkpoint_hooks = options.checkpoint_hooks;
-  settings.log = rank == 0 ? &std::cerr : nullptr;
-  settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
+  const RunSettings settings = study_run_settings(options, config, rank);
 
   const OutputClaim claim =
       claim_output(comm, config.output, config.hash, "study", {settings.checkpoint});
@@ -92,18 +112,7 @@ int run_study_command(const RunOptions& options, const SceneEvaluator& evaluate)
 
   const SceneEvaluator engine =
       evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
-  if (rank == 0) {
-    const IntensityMeasure& measure = config.intensity;
-    std::cerr << "study " << options.study_path.string() << ": " << config.total_samples()
-              << " samples (";
-    if (measure.surface()) {
-      std::cerr << measure.levels.size() << " x " << measure.periods.size() << " cells x ";
-    } else {
-      std::cerr << measure.level_count() << " levels x ";
-    }
-    std::cerr << config.samples_per_level << ") on " << ranks << (ranks == 1 ? " rank" : " ranks")
-              << ", config hash " << hash_to_hex(config.hash) << '\n';
-  }
+  if (rank == 0) print_study_plan(options, config, ranks);
   RunResult result;
   std::optional<AdaptiveRun> adaptive;
   try {

@@ -54,6 +54,31 @@ int finish_spectrum(const SpectrumConfig& config, const RunSettings& settings,
   return exit_code_success;
 }
 
+// The spectrum's files sit next to its output; rank 0 alone logs.
+RunSettings spectrum_run_settings(const SpectrumOptions& options, const SpectrumConfig& config,
+                                  int rank) {
+  RunSettings settings;
+  settings.checkpoint = checkpoint_path_for(config.output);
+  settings.records = record_spool_path_for(config.output);
+  settings.checkpoint_interval_s = config.checkpoint_interval_s;
+  settings.checkpoint_hooks = options.checkpoint_hooks;
+  settings.log = rank == 0 ? &std::cerr : nullptr;
+  settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
+  settings.max_chunk = options.max_chunk;
+  return settings;
+}
+
+// Rank 0, before the run: the spectrum's grid, block and identity, for the log.
+void print_spectrum_plan(const SpectrumOptions& options, const SpectrumConfig& config, int ranks) {
+  std::cerr << "spectrum " << options.spectrum_path.string() << ": "
+            << spectrum_pulse_name(config.pulse) << ", " << config.map_points() << " map points ("
+            << config.frequency_ratio.size() << " frequency ratios x "
+            << config.amplitude_ratio.size() << " amplitude ratios), alpha = " << config.alpha()
+            << " rad, p = " << config.p() << " rad/s, on " << ranks
+            << (ranks == 1 ? " rank" : " ranks") << ", config hash " << hash_to_hex(config.hash)
+            << '\n';
+}
+
 }  // namespace
 
 int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& evaluate) {
@@ -71,14 +96,7 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
     return refuse_bad_input(comm, rank, error);
   }
 
-  RunSettings settings;
-  settings.checkpoint = checkpoint_path_for(config.output);
-  settings.records = record_spool_path_for(config.output);
-  settings.checkpoint_interval_s = config.checkpoint_interval_s;
-  settings.checkpoint_hooks = options.checkpoint_hooks;
-  settings.log = rank == 0 ? &std::cerr : nullptr;
-  settings.log_is_terminal = rank == 0 && ::isatty(STDERR_FILENO);
-  settings.max_chunk = options.max_chunk;
+  const RunSettings settings = spectrum_run_settings(options, config, rank);
   const SpectrumFiles files = SpectrumFiles::for_output(config.output);
 
   const OutputClaim claim =
@@ -94,15 +112,7 @@ int run_spectrum_command(const SpectrumOptions& options, const SceneEvaluator& e
 
   const SceneEvaluator engine =
       evaluate ? evaluate : SceneEvaluator([](const Scene& scene) { return simulate(scene); });
-  if (rank == 0) {
-    std::cerr << "spectrum " << options.spectrum_path.string() << ": "
-              << spectrum_pulse_name(config.pulse) << ", " << config.map_points() << " map points ("
-              << config.frequency_ratio.size() << " frequency ratios x "
-              << config.amplitude_ratio.size() << " amplitude ratios), alpha = " << config.alpha()
-              << " rad, p = " << config.p() << " rad/s, on " << ranks
-              << (ranks == 1 ? " rank" : " ranks") << ", config hash " << hash_to_hex(config.hash)
-              << '\n';
-  }
+  if (rank == 0) print_spectrum_plan(options, config, ranks);
   SpectrumRunResult result;
   try {
     result = run_spectrum(comm, config, settings, files, engine);

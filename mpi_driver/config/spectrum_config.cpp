@@ -206,6 +206,83 @@ void check_grid(const SpectrumConfig& config, const Axis& frequency, const Axis&
   }
 }
 
+// The scene's keys go through the scene reader, so their rules and messages are a scene's;
+// whether the scene was read without errors and is of a rectangle.
+bool read_spectrum_scene(ObjectReader& root, const json& document, const std::string& source,
+                         ConfigErrors& errors, SpectrumConfig& config) {
+  json scene = json::object();
+  if (root.valid()) {
+    for (const char* key : kSceneKeys) {
+      if (const json* value = root.raw(key)) scene[key] = *value;
+    }
+  }
+  const std::size_t errors_before = errors.size();
+  if (const auto block = read_block(document, errors)) {
+    scene["block"] = *block;
+  } else if (scene.contains("block")) {
+    // alpha and R that cannot be used (reported): a stand-in lets the other keys be checked.
+    scene["block"] = {{"half_width", 0.5}, {"half_height", 1.0}};
+  }
+  scene["ground_motion"] = {{"type", "none"}};
+  bool scene_valid = false;
+  if (root.valid()) {
+    config.base_scene =
+        scene_from_json(scene, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
+    scene_valid = errors.size() == errors_before;
+  }
+  if (scene_valid && config.base_scene.polygon) {
+    root.add_error("block",
+                   "a spectrum is of a rectangular block (its alpha and p): give half_width and "
+                   "half_height, or alpha and R");
+    scene_valid = false;
+  }
+  return scene_valid;
+}
+
+// --output replaces the file's value; its error names the option, not a JSON path.
+void read_spectrum_output(ObjectReader& root, const std::string& source, ConfigErrors& errors,
+                          const std::optional<std::filesystem::path>& output,
+                          SpectrumConfig& config) {
+  if (read_fields<SpectrumConfig>(root, spectrum_fields::output, config).valid("output")) {
+    if (const auto problem = output_name_problem(config.output.string())) {
+      root.add_error("output", *problem);
+    }
+  } else {
+    config.output = std::filesystem::path(source).stem().string() + ".h5";
+  }
+  if (output) {
+    if (const auto problem = output_name_problem(output->string()))
+      errors.add_message(source + ": --output: " + *problem);
+    config.output = *output;
+  }
+}
+
+// The hash leaves out the keys that change where a spectrum is written and how often it is saved,
+// not what it computes.
+void set_spectrum_identity(const PulseFamily& family, const Axis& frequency, const Axis& amplitude,
+                           SpectrumConfig& config) {
+  const json scene_form = scene_to_json(config.base_scene);
+  config.canonical = json::object();
+  for (const char* key : kSceneKeys) config.canonical[key] = scene_form[key];
+  config.canonical["pulse"] = pulse_to_json(family);
+  config.canonical["frequency_ratio"] = frequency.canonical;
+  config.canonical["amplitude_ratio"] = amplitude.canonical;
+  config.canonical["bisection"] = json::object();
+  write_fields<SpectrumConfig>(config, spectrum_fields::bisection, config.canonical["bisection"]);
+  config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
+  write_fields<SpectrumConfig>(config, spectrum_fields::settle, config.canonical);
+  write_fields<SpectrumConfig>(config, spectrum_fields::output, config.canonical);
+  write_fields<SpectrumConfig>(config, spectrum_fields::checkpoint, config.canonical);
+  json hashed = config.canonical;
+  hashed.erase("output");
+  hashed.erase("checkpoint_interval_s");
+  // The refinement only adds to the map and the bisection: a spec without the key hashes as it
+  // did before the key existed, so that its checkpoints and bisection state resume.
+  if (hashed["minimum_overturning"] == minimum_overturning_to_json({}))
+    hashed.erase("minimum_overturning");
+  config.hash = fnv1a64("spectrum " + hashed.dump());
+}
+
 }  // namespace
 
 const char* spectrum_pulse_name(SpectrumPulse pulse) {
@@ -267,34 +344,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   ObjectReader root(document, JsonPointer{}, errors);
   SpectrumConfig config;
 
-  // The scene's keys go through the scene reader, so their rules and messages are a scene's.
-  json scene = json::object();
-  if (root.valid()) {
-    for (const char* key : kSceneKeys) {
-      if (const json* value = root.raw(key)) scene[key] = *value;
-    }
-  }
-  const std::size_t errors_before = errors.size();
-  if (const auto block = read_block(document, errors)) {
-    scene["block"] = *block;
-  } else if (scene.contains("block")) {
-    // alpha and R that cannot be used (reported): a stand-in lets the other keys be checked.
-    scene["block"] = {{"half_width", 0.5}, {"half_height", 1.0}};
-  }
-  scene["ground_motion"] = {{"type", "none"}};
-  bool scene_valid = false;
-  if (root.valid()) {
-    config.base_scene =
-        scene_from_json(scene, JsonPointer{}, errors, std::filesystem::path(source).parent_path());
-    scene_valid = errors.size() == errors_before;
-  }
-  if (scene_valid && config.base_scene.polygon) {
-    root.add_error("block",
-                   "a spectrum is of a rectangular block (its alpha and p): give half_width and "
-                   "half_height, or alpha and R");
-    scene_valid = false;
-  }
-
+  const bool scene_valid = read_spectrum_scene(root, document, source, errors, config);
   const auto family = read_pulse(root.required_object("pulse"));
   const Axis frequency =
       read_axis(root.required_object("frequency_ratio"), spectrum_fields::frequency_values);
@@ -305,18 +355,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   bisection.finish();
   config.minimum_overturning = read_minimum_overturning(root.object("minimum_overturning"));
   read_fields<SpectrumConfig>(root, spectrum_fields::settle, config);
-  if (read_fields<SpectrumConfig>(root, spectrum_fields::output, config).valid("output")) {
-    if (const auto problem = output_name_problem(config.output.string())) {
-      root.add_error("output", *problem);
-    }
-  } else {
-    config.output = std::filesystem::path(source).stem().string() + ".h5";
-  }
-  if (output) {
-    if (const auto problem = output_name_problem(output->string()))
-      errors.add_message(source + ": --output: " + *problem);
-    config.output = *output;
-  }
+  read_spectrum_output(root, source, errors, output, config);
   read_fields<SpectrumConfig>(root, spectrum_fields::checkpoint, config);
   root.finish();
 
@@ -330,26 +369,7 @@ SpectrumConfig parse_spectrum_config(const json& document, const std::string& so
   if (errors.empty() && scene_valid) check_grid(config, frequency, amplitude, errors);
   errors.throw_if_any();
 
-  const json scene_form = scene_to_json(config.base_scene);
-  config.canonical = json::object();
-  for (const char* key : kSceneKeys) config.canonical[key] = scene_form[key];
-  config.canonical["pulse"] = pulse_to_json(*family);
-  config.canonical["frequency_ratio"] = frequency.canonical;
-  config.canonical["amplitude_ratio"] = amplitude.canonical;
-  config.canonical["bisection"] = json::object();
-  write_fields<SpectrumConfig>(config, spectrum_fields::bisection, config.canonical["bisection"]);
-  config.canonical["minimum_overturning"] = minimum_overturning_to_json(config.minimum_overturning);
-  write_fields<SpectrumConfig>(config, spectrum_fields::settle, config.canonical);
-  write_fields<SpectrumConfig>(config, spectrum_fields::output, config.canonical);
-  write_fields<SpectrumConfig>(config, spectrum_fields::checkpoint, config.canonical);
-  json hashed = config.canonical;
-  hashed.erase("output");
-  hashed.erase("checkpoint_interval_s");
-  // The refinement only adds to the map and the bisection: a spec without the key hashes as it
-  // did before the key existed, so that its checkpoints and bisection state resume.
-  if (hashed["minimum_overturning"] == minimum_overturning_to_json({}))
-    hashed.erase("minimum_overturning");
-  config.hash = fnv1a64("spectrum " + hashed.dump());
+  set_spectrum_identity(*family, frequency, amplitude, config);
   return config;
 }
 

@@ -317,6 +317,131 @@ json canonical_json(const StudyConfig& config) {
   return out;
 }
 
+// The scene, or the error that it is missing; whether it was read without errors.
+bool read_study_scene(ObjectReader& root, const std::string& source, ConfigErrors& errors,
+                      StudyConfig& config) {
+  bool scene_valid = false;
+  if (const json* scene = root.raw("scene")) {
+    read_scene(*scene, source, errors, config, scene_valid);
+  } else {
+    root.required_object("scene");
+  }
+  return scene_valid;
+}
+
+// The measure the levels are of must be one the scene's ground motion has; a record suite is
+// measured here, once its measure is known.
+void read_study_intensity(ObjectReader& root, ConfigErrors& errors, bool scene_valid,
+                          StudyConfig& config) {
+  const bool pulse = !config.suite;
+  // A pulse's level is its amplitude in g, but the Mavroeidis-Papageorgiou pulse is given by its
+  // velocity: its levels are of its PGA, or of another measure when asked.
+  const bool velocity_pulse =
+      std::holds_alternative<MavroeidisPapageorgiouPulse>(config.base_scene.ground_motion);
+  config.intensity =
+      read_intensity_measure(root.required_object("intensity_measure"),
+                             pulse && !velocity_pulse ? ImType::pulse_amplitude : ImType::pga);
+  if (velocity_pulse && config.intensity.type == ImType::pulse_amplitude) {
+    root.errors().add(JsonPointer("/intensity_measure/type"),
+                      "a Mavroeidis-Papageorgiou pulse has no amplitude in g: use \"pga\" (the "
+                      "default), \"pgv\", \"sa\" or \"pga_over_g_tan_alpha\"");
+  }
+  if (scene_valid && pulse && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
+    root.add_error("intensity_measure",
+                   "scales the ground motion, but /scene/ground_motion has type \"none\"");
+  }
+  if (!pulse && config.intensity.type == ImType::pulse_amplitude) {
+    root.errors().add(JsonPointer("/intensity_measure/type"),
+                      "a record has no pulse amplitude: use \"pga\", \"pgv\", \"sa\" or "
+                      "\"pga_over_g_tan_alpha\"");
+  } else if (!pulse && errors.empty()) {
+    measure_suite(config, errors,
+                  std::holds_alternative<RecordedMotion>(config.base_scene.ground_motion));
+  }
+  if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
+      scene_valid && mp && mp->velocity_amplitude == 0.0) {
+    root.add_error("intensity_measure",
+                   "scales the pulse's peak acceleration, but /scene/ground_motion has "
+                   "velocity_amplitude 0");
+  }
+}
+
+// --samples-per-level replaces the file's value; its error names the option, not a JSON path.
+void read_samples_per_level(ObjectReader& root, const std::string& source, ConfigErrors& errors,
+                            const StudyOverrides& overrides, StudyConfig& config) {
+  read_fields<StudyConfig>(root, study_fields::samples, config);
+  if (overrides.samples_per_level) {
+    const Range samples_range = Range::of(domain::samples_per_level);
+    if (!samples_range.contains(static_cast<double>(*overrides.samples_per_level))) {
+      errors.add_message(source + ": --samples-per-level: " + samples_range.rule() + " (got " +
+                         std::to_string(*overrides.samples_per_level) + ")");
+    }
+    config.samples_per_level = static_cast<std::uint32_t>(*overrides.samples_per_level);
+  }
+}
+
+// "design" is a name, or an object that makes the study adaptive around a base design.
+void read_study_design(ObjectReader& root, ConfigErrors& errors, StudyConfig& config) {
+  if (const json* design = root.raw("design"); design && design->is_object()) {
+    ObjectReader object(*design, root.path_of("design"), errors);
+    config.adaptive = read_adaptive_design(object.required_object("adaptive"));
+    object.finish();
+    config.design = config.adaptive->base;
+  } else {
+    const auto name =
+        root.has("design") ? root.required_choice("design", design_names.names) : std::nullopt;
+    if (name) config.design = *design_names.value(*name);
+  }
+}
+
+// --output replaces the file's value; its error names the option, not a JSON path.
+void read_study_output(ObjectReader& root, const std::string& source, ConfigErrors& errors,
+                       const StudyOverrides& overrides, StudyConfig& config) {
+  const bool output = read_fields<StudyConfig>(root, study_fields::output, config).valid("output");
+  if (output) {
+    if (const auto problem = output_name_problem(config.output.string())) {
+      root.add_error("output", *problem);
+    }
+  }
+  if (overrides.output) {
+    if (const auto problem = output_name_problem(overrides.output->string())) {
+      errors.add_message(source + ": --output: " + *problem);
+    }
+    config.output = *overrides.output;
+  } else if (!output) {
+    // Without an output key the study writes STUDY.h5 in the working folder.
+    config.output = std::filesystem::path(source).stem().string() + ".h5";
+  }
+}
+
+// Limits that only a valid config can be measured against: what every rank or rank 0 must hold.
+void check_study_size(ConfigErrors& errors, const StudyConfig& config) {
+  if (errors.empty() && config.design == Design::latin_hypercube &&
+      config.samples_per_level > kMaxLatinHypercubeLevel) {
+    errors.add(JsonPointer("/samples_per_level"),
+               "a Latin hypercube level of " + std::to_string(config.samples_per_level) +
+                   " samples, more than the " + std::to_string(kMaxLatinHypercubeLevel) +
+                   " whose permutations every rank holds; use \"design\": \"monte_carlo\" (as "
+                   "good at this size) or fewer samples per level");
+  }
+  if (errors.empty() && config.intensity.cloud && config.total_samples() > kMaxCloudSamples) {
+    errors.add(JsonPointer("/samples_per_level"),
+               "a cloud of " + std::to_string(config.total_samples()) + " samples, more than the " +
+                   std::to_string(kMaxCloudSamples) +
+                   " whose per-sample fit rank 0 can hold; split it into several studies");
+  }
+}
+
+// The hash leaves out the keys that change where and how a study runs, not what it computes.
+void set_study_identity(StudyConfig& config) {
+  config.canonical = canonical_json(config);
+  json hashed = config.canonical;
+  hashed.erase("output");
+  hashed.erase("checkpoint_interval_s");
+  hashed.erase("allowed_failed_fraction");
+  config.hash = fnv1a64(canonical_text(hashed));
+}
+
 }  // namespace
 
 std::pair<double, double> support_of(const Distribution& distribution) {
@@ -357,109 +482,24 @@ StudyConfig parse_study_config(const json& document, const std::string& source,
   ObjectReader root(document, JsonPointer{}, errors);
   StudyConfig config;
 
-  bool scene_valid = false;
-  if (const json* scene = root.raw("scene")) {
-    read_scene(*scene, source, errors, config, scene_valid);
-  } else {
-    root.required_object("scene");
-  }
+  const bool scene_valid = read_study_scene(root, source, errors, config);
   if (root.has("inputs"))
     read_inputs(root.required_object("inputs"), config.base_scene, scene_valid, config);
-
-  const bool pulse = !config.suite;
-  // A pulse's level is its amplitude in g, but the Mavroeidis-Papageorgiou pulse is given by its
-  // velocity: its levels are of its PGA, or of another measure when asked.
-  const bool velocity_pulse =
-      std::holds_alternative<MavroeidisPapageorgiouPulse>(config.base_scene.ground_motion);
-  config.intensity =
-      read_intensity_measure(root.required_object("intensity_measure"),
-                             pulse && !velocity_pulse ? ImType::pulse_amplitude : ImType::pga);
-  if (velocity_pulse && config.intensity.type == ImType::pulse_amplitude) {
-    root.errors().add(JsonPointer("/intensity_measure/type"),
-                      "a Mavroeidis-Papageorgiou pulse has no amplitude in g: use \"pga\" (the "
-                      "default), \"pgv\", \"sa\" or \"pga_over_g_tan_alpha\"");
-  }
-  if (scene_valid && pulse && std::holds_alternative<NoMotion>(config.base_scene.ground_motion)) {
-    root.add_error("intensity_measure",
-                   "scales the ground motion, but /scene/ground_motion has type \"none\"");
-  }
-  if (!pulse && config.intensity.type == ImType::pulse_amplitude) {
-    root.errors().add(JsonPointer("/intensity_measure/type"),
-                      "a record has no pulse amplitude: use \"pga\", \"pgv\", \"sa\" or "
-                      "\"pga_over_g_tan_alpha\"");
-  } else if (!pulse && errors.empty()) {
-    measure_suite(config, errors,
-                  std::holds_alternative<RecordedMotion>(config.base_scene.ground_motion));
-  }
-  if (const auto* mp = std::get_if<MavroeidisPapageorgiouPulse>(&config.base_scene.ground_motion);
-      scene_valid && mp && mp->velocity_amplitude == 0.0) {
-    root.add_error("intensity_measure",
-                   "scales the pulse's peak acceleration, but /scene/ground_motion has "
-                   "velocity_amplitude 0");
-  }
-  read_fields<StudyConfig>(root, study_fields::samples, config);
-  if (overrides.samples_per_level) {
-    const Range samples_range = Range::of(domain::samples_per_level);
-    if (!samples_range.contains(static_cast<double>(*overrides.samples_per_level))) {
-      errors.add_message(source + ": --samples-per-level: " + samples_range.rule() + " (got " +
-                         std::to_string(*overrides.samples_per_level) + ")");
-    }
-    config.samples_per_level = static_cast<std::uint32_t>(*overrides.samples_per_level);
-  }
-  if (const json* design = root.raw("design"); design && design->is_object()) {
-    ObjectReader object(*design, root.path_of("design"), errors);
-    config.adaptive = read_adaptive_design(object.required_object("adaptive"));
-    object.finish();
-    config.design = config.adaptive->base;
-  } else {
-    const auto name =
-        root.has("design") ? root.required_choice("design", design_names.names) : std::nullopt;
-    if (name) config.design = *design_names.value(*name);
-  }
+  read_study_intensity(root, errors, scene_valid, config);
+  read_samples_per_level(root, source, errors, overrides, config);
+  read_study_design(root, errors, config);
   read_limit_states(root.required_array("limit_states"), root, config, scene_valid);
   if (config.adaptive) check_adaptive(root, config);
   if (config.intensity.surface()) check_surface(root, config, scene_valid);
   read_fields<StudyConfig>(root, study_fields::seed, config);
-  const bool output = read_fields<StudyConfig>(root, study_fields::output, config).valid("output");
-  if (output) {
-    if (const auto problem = output_name_problem(config.output.string())) {
-      root.add_error("output", *problem);
-    }
-  }
-  if (overrides.output) {
-    if (const auto problem = output_name_problem(overrides.output->string())) {
-      errors.add_message(source + ": --output: " + *problem);
-    }
-    config.output = *overrides.output;
-  } else if (!output) {
-    // Without an output key the study writes STUDY.h5 in the working folder.
-    config.output = std::filesystem::path(source).stem().string() + ".h5";
-  }
+  read_study_output(root, source, errors, overrides, config);
   read_fields<StudyConfig>(root, study_fields::run, config);
   root.finish();
-  if (errors.empty() && config.design == Design::latin_hypercube &&
-      config.samples_per_level > kMaxLatinHypercubeLevel) {
-    errors.add(JsonPointer("/samples_per_level"),
-               "a Latin hypercube level of " + std::to_string(config.samples_per_level) +
-                   " samples, more than the " + std::to_string(kMaxLatinHypercubeLevel) +
-                   " whose permutations every rank holds; use \"design\": \"monte_carlo\" (as "
-                   "good at this size) or fewer samples per level");
-  }
-  if (errors.empty() && config.intensity.cloud && config.total_samples() > kMaxCloudSamples) {
-    errors.add(JsonPointer("/samples_per_level"),
-               "a cloud of " + std::to_string(config.total_samples()) + " samples, more than the " +
-                   std::to_string(kMaxCloudSamples) +
-                   " whose per-sample fit rank 0 can hold; split it into several studies");
-  }
+  check_study_size(errors, config);
   if (errors.empty()) check_study_crest(config, errors);
   errors.throw_if_any();
 
-  config.canonical = canonical_json(config);
-  json hashed = config.canonical;
-  hashed.erase("output");
-  hashed.erase("checkpoint_interval_s");
-  hashed.erase("allowed_failed_fraction");
-  config.hash = fnv1a64(canonical_text(hashed));
+  set_study_identity(config);
   return config;
 }
 

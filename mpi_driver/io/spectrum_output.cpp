@@ -166,6 +166,19 @@ std::vector<const SpectrumBracket*> map_minima(const SpectrumConfig& config,
   return minima;
 }
 
+void count_minima(const std::vector<FrequencyMinimum>& minima,
+                  const std::vector<const SpectrumBracket*>& unrefined, SpectrumTally& tally) {
+  for (std::size_t f = 0; f < minima.size(); ++f) {
+    const auto state = static_cast<MinimumState>(minima[f].state);
+    tally.minima_found += state == MinimumState::found ? 1 : 0;
+    tally.minima_below_grid += state == MinimumState::below_grid ? 1 : 0;
+    tally.minima_uncertain +=
+        state == MinimumState::failed || state == MinimumState::capped ? 1 : 0;
+    // A lower minimum lies wholly below the map's bracket; otherwise it is that bracket.
+    tally.minima_lowered += unrefined[f] && minima[f].high <= unrefined[f]->low ? 1 : 0;
+  }
+}
+
 void write_minimum(Hdf5Writer& file, const SpectrumConfig& config,
                    const std::vector<SpectrumBracket>& brackets, const MinimumRefinement& minimum,
                    SpectrumTally& tally) {
@@ -220,15 +233,7 @@ void write_minimum(Hdf5Writer& file, const SpectrumConfig& config,
   file.set_attribute(group, "resolution", settings.resolution);
   file.set_attribute(group, "near_overturning", settings.near_overturning);
   file.set_attribute(group, "max_midpoints", settings.max_midpoints);
-  for (std::size_t f = 0; f < minima.size(); ++f) {
-    const auto state = static_cast<MinimumState>(minima[f].state);
-    tally.minima_found += state == MinimumState::found ? 1 : 0;
-    tally.minima_below_grid += state == MinimumState::below_grid ? 1 : 0;
-    tally.minima_uncertain +=
-        state == MinimumState::failed || state == MinimumState::capped ? 1 : 0;
-    // A lower minimum lies wholly below the map's bracket; otherwise it is that bracket.
-    tally.minima_lowered += unrefined[f] && minima[f].high <= unrefined[f]->low ? 1 : 0;
-  }
+  count_minima(minima, unrefined, tally);
 }
 
 }  // namespace

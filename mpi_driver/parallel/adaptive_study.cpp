@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <limits>
+#include <ostream>
 
 #include "engine/scene/block_geometry.hpp"
 #include "mpi_driver/io/record_spool.hpp"
@@ -48,6 +49,25 @@ class AdaptiveCounts {
   std::vector<std::int64_t> trials_, exceedances_;
 };
 
+// The run's totals over its batches; restored is what the first batch found done, since each later
+// batch also finds the batches before it.
+void add_batch_totals(const RunResult& batch, bool first, RunResult& sum) {
+  if (first) sum.restored = batch.restored;
+  sum.computed += batch.computed;
+  sum.chunks += batch.chunks;
+  sum.chunk_samples += batch.chunk_samples;
+  sum.checkpoints += batch.checkpoints;
+  sum.checkpoint_seconds += batch.checkpoint_seconds;
+}
+
+void log_adaptive_batch(std::ostream& log, std::int64_t batch, const StudyConfig& grown,
+                        const FragilityCurve& curve, const BatchDecision& next) {
+  log << "batch " << batch << ": " << grown.total_samples() << " samples, median "
+      << std::setprecision(4) << curve.median << ", 95 % interval " << std::setprecision(3)
+      << 100.0 * next.relative_width << " % of it wide"
+      << (next.stop ? "; " + next.reason : std::string()) << '\n';
+}
+
 }  // namespace
 
 std::int64_t adaptive_capacity(const StudyConfig& config) {
@@ -76,12 +96,7 @@ AdaptiveRun run_adaptive_study(MPI_Comm comm, const StudyConfig& config,
         [&](std::int64_t index) { return evaluate_sample(sampler, index, evaluate); },
         run.grown.total_samples()};
     run.result = run_samples(comm, job, batch_settings);
-    if (batch == 0) sum.restored = run.result.restored;
-    sum.computed += run.result.computed;
-    sum.chunks += run.result.chunks;
-    sum.chunk_samples += run.result.chunk_samples;
-    sum.checkpoints += run.result.checkpoints;
-    sum.checkpoint_seconds += run.result.checkpoint_seconds;
+    add_batch_totals(run.result, batch == 0, sum);
     int interrupted = run.result.outcome == RunOutcome::interrupted ? 1 : 0;
     MPI_Bcast(&interrupted, 1, MPI_INT, 0, comm);
     if (interrupted) break;
@@ -98,13 +113,7 @@ AdaptiveRun run_adaptive_study(MPI_Comm comm, const StudyConfig& config,
       run.history.median.push_back(curve.median);
       run.history.beta.push_back(curve.beta);
       run.history.relative_width.push_back(next.relative_width);
-      if (settings.log) {
-        *settings.log << "batch " << batch << ": " << run.grown.total_samples()
-                      << " samples, median " << std::setprecision(4) << curve.median
-                      << ", 95 % interval " << std::setprecision(3) << 100.0 * next.relative_width
-                      << " % of it wide" << (next.stop ? "; " + next.reason : std::string())
-                      << '\n';
-      }
+      if (settings.log) log_adaptive_batch(*settings.log, batch, run.grown, curve, next);
       if (next.stop) {
         run.history.stop_reason = next.reason;
       } else {

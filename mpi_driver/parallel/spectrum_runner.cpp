@@ -314,23 +314,9 @@ void check_round_files(const SpectrumConfig& config, const SpectrumFiles& files)
   read_record_spool_hash(files.round_records);
 }
 
-}  // namespace
-
-SpectrumFiles SpectrumFiles::for_output(const std::filesystem::path& output) {
-  const auto next_to = [&](const char* suffix) {
-    auto path = output;
-    path += suffix;
-    return path;
-  };
-  return {bisection_state_path_for(output), minimum_refinement_path_for(output),
-          next_to(".round-checkpoint"), next_to(".round-records")};
-}
-
-SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
-                               const RunSettings& settings, const SpectrumFiles& files,
-                               const SceneEvaluator& evaluate) {
-  SpectrumRunResult result;
-  on_rank0(comm, [&] { check_round_files(config, files); });
+// Collective: every map point, one job of the study runner in the map's files.
+RunResult run_spectrum_map(MPI_Comm comm, const SpectrumConfig& config, const RunSettings& settings,
+                           const SceneEvaluator& evaluate) {
   const auto na = static_cast<std::int64_t>(config.amplitude_ratio.size());
   const SampleJob map_job{
       .hash = config.hash,
@@ -343,17 +329,13 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
           },
       .config_name = kSpectrumSpec,
       .config_word = kSpec};
-  result.map = run_samples(comm, map_job, settings);
-  if (interrupted_on_rank0(comm, result.map.outcome)) {
-    result.outcome = RunOutcome::interrupted;
-    return result;
-  }
+  return run_samples(comm, map_job, settings);
+}
 
-  BisectionState state;
-  on_rank0(comm, [&] {
-    seal_map(config, settings);
-    state = start_bisection(config, settings, files);
-  });
+// Collective: the bisection's rounds, each the midpoints of the crossings still open on rank 0.
+RoundsRun run_bisection_rounds(MPI_Comm comm, const SpectrumConfig& config,
+                               const RunSettings& settings, const SpectrumFiles& files,
+                               const SceneEvaluator& evaluate, BisectionState& state) {
   const RoundPhase bisection{
       .next =
           [&](std::vector<double>& points) {
@@ -371,16 +353,13 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
       .one = "crossing",
       .many = "crossings",
       .doing = "to narrow"};
-  const RoundsRun narrowed = run_rounds(comm, config, settings, files, evaluate, bisection);
-  result.rounds = narrowed.rounds;
-  result.midpoints = narrowed.midpoints;
-  if (narrowed.outcome == RunOutcome::interrupted) {
-    result.outcome = RunOutcome::interrupted;
-    return result;
-  }
+  return run_rounds(comm, config, settings, files, evaluate, bisection);
+}
 
-  MinimumRefinement minimum;
-  on_rank0(comm, [&] { minimum = start_minimum(config, settings, files, state.brackets); });
+// Collective: the minimum's rounds, each the midpoints of the segments still open on rank 0.
+RoundsRun run_minimum_rounds(MPI_Comm comm, const SpectrumConfig& config,
+                             const RunSettings& settings, const SpectrumFiles& files,
+                             const SceneEvaluator& evaluate, MinimumRefinement& minimum) {
   const RoundPhase refinement{
       .next =
           [&](std::vector<double>& points) {
@@ -398,7 +377,48 @@ SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
       .one = "amplitude",
       .many = "amplitudes",
       .doing = "to probe"};
-  const RoundsRun refined = run_rounds(comm, config, settings, files, evaluate, refinement);
+  return run_rounds(comm, config, settings, files, evaluate, refinement);
+}
+
+}  // namespace
+
+SpectrumFiles SpectrumFiles::for_output(const std::filesystem::path& output) {
+  const auto next_to = [&](const char* suffix) {
+    auto path = output;
+    path += suffix;
+    return path;
+  };
+  return {bisection_state_path_for(output), minimum_refinement_path_for(output),
+          next_to(".round-checkpoint"), next_to(".round-records")};
+}
+
+SpectrumRunResult run_spectrum(MPI_Comm comm, const SpectrumConfig& config,
+                               const RunSettings& settings, const SpectrumFiles& files,
+                               const SceneEvaluator& evaluate) {
+  SpectrumRunResult result;
+  on_rank0(comm, [&] { check_round_files(config, files); });
+  result.map = run_spectrum_map(comm, config, settings, evaluate);
+  if (interrupted_on_rank0(comm, result.map.outcome)) {
+    result.outcome = RunOutcome::interrupted;
+    return result;
+  }
+
+  BisectionState state;
+  on_rank0(comm, [&] {
+    seal_map(config, settings);
+    state = start_bisection(config, settings, files);
+  });
+  const RoundsRun narrowed = run_bisection_rounds(comm, config, settings, files, evaluate, state);
+  result.rounds = narrowed.rounds;
+  result.midpoints = narrowed.midpoints;
+  if (narrowed.outcome == RunOutcome::interrupted) {
+    result.outcome = RunOutcome::interrupted;
+    return result;
+  }
+
+  MinimumRefinement minimum;
+  on_rank0(comm, [&] { minimum = start_minimum(config, settings, files, state.brackets); });
+  const RoundsRun refined = run_minimum_rounds(comm, config, settings, files, evaluate, minimum);
   result.minimum_rounds = refined.rounds;
   result.minimum_midpoints = refined.midpoints;
   if (refined.outcome == RunOutcome::interrupted) {

@@ -39,16 +39,9 @@ std::string interval_text(double low, double high) {
   return text.str();
 }
 
-}  // namespace
-
-void print_fragility_summary(std::ostream& out, const StudyConfig& config,
-                             const StudyFragility& fragility) {
-  const std::string unit = im_unit(config.intensity.type);
-  out << "fragility of " << im_label(config.intensity) << " (" << unit << ")";
-  if (config.bootstrap_resamples > 0) out << ", 95 % bootstrap intervals";
-  out << ":\n";
-  std::size_t width = 0;
-  for (const auto& state : config.limit_states) width = std::max(width, state.name.size());
+// One line per limit state, the least severe first: its median and beta, or why it has none.
+void print_curve_lines(std::ostream& out, const StudyConfig& config,
+                       const StudyFragility& fragility, std::size_t width) {
   for (const std::size_t k : fragility.severity) {
     const FragilityCurve& curve = fragility.curves[k];
     out << "  " << std::left << std::setw(static_cast<int>(width)) << config.limit_states[k].name
@@ -65,6 +58,11 @@ void print_fragility_summary(std::ostream& out, const StudyConfig& config,
     if (curve.gof_dof > 0) out << "  fit p = " << three_digits(curve.gof_p_value);
     out << '\n';
   }
+}
+
+// A curve the data reject, or whose intervals stand on fewer resamples than were drawn.
+void print_curve_warnings(std::ostream& out, const StudyConfig& config,
+                          const StudyFragility& fragility) {
   for (std::size_t k = 0; k < fragility.curves.size(); ++k) {
     const FragilityCurve& curve = fragility.curves[k];
     if (curve.gof_dof > 0 && curve.gof_p_value < kRejectedAt) {
@@ -82,6 +80,11 @@ void print_fragility_summary(std::ostream& out, const StudyConfig& config,
           << boot.fitted << " others\n";
     }
   }
+}
+
+void print_surface_lines(std::ostream& out, const StudyConfig& config,
+                         const StudyFragility& fragility, std::size_t width,
+                         const std::string& unit) {
   if (!fragility.surfaces.empty()) {
     out << "fragility surfaces (each level's curve above sums its cells over every period): "
            "median "
@@ -99,6 +102,10 @@ void print_fragility_summary(std::ostream& out, const StudyConfig& config,
           << "  beta " << three_digits(fit.beta1) << " +- " << three_digits(fit.beta1_se) << '\n';
     }
   }
+}
+
+void print_crossing_warnings(std::ostream& out, const StudyConfig& config,
+                             const StudyFragility& fragility, const std::string& unit) {
   for (const auto& [i, j] : fragility.crossings) {
     const FragilityCurve& a = fragility.curves[i];
     const FragilityCurve& b = fragility.curves[j];
@@ -107,6 +114,22 @@ void print_fragility_summary(std::ostream& out, const StudyConfig& config,
         << three_digits(crossing_intensity(a.median, a.beta, b.median, b.beta)) << ' ' << unit
         << ": as damage states of one component they would give a negative probability there\n";
   }
+}
+
+}  // namespace
+
+void print_fragility_summary(std::ostream& out, const StudyConfig& config,
+                             const StudyFragility& fragility) {
+  const std::string unit = im_unit(config.intensity.type);
+  out << "fragility of " << im_label(config.intensity) << " (" << unit << ")";
+  if (config.bootstrap_resamples > 0) out << ", 95 % bootstrap intervals";
+  out << ":\n";
+  std::size_t width = 0;
+  for (const auto& state : config.limit_states) width = std::max(width, state.name.size());
+  print_curve_lines(out, config, fragility, width);
+  print_curve_warnings(out, config, fragility);
+  print_surface_lines(out, config, fragility, width, unit);
+  print_crossing_warnings(out, config, fragility, unit);
 }
 
 }  // namespace blockfrag

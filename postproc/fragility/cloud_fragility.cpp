@@ -13,30 +13,38 @@
 
 namespace blockfrag {
 
-FragilityCurve fragility_from_samples(const std::vector<double>& im,
-                                      const std::vector<bool>& exceeded, std::size_t bins) {
-  if (im.size() != exceeded.size())
-    throw FitError("cloud fragility: im and exceeded differ in size");
-  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  // The fit: samples grouped by their exact intensity.
+namespace {
+
+constexpr double kCloudNan = std::numeric_limits<double>::quiet_NaN();
+
+// The samples grouped by their exact intensity, in increasing order: what the fit sees.
+struct IntensityGroups {
+  std::vector<double> distinct;
+  std::vector<std::int64_t> trials, exceedances;
+};
+
+IntensityGroups group_by_intensity(const std::vector<double>& im,
+                                   const std::vector<bool>& exceeded) {
   std::map<double, std::pair<std::int64_t, std::int64_t>> groups;  // im -> (trials, exceedances)
   for (std::size_t i = 0; i < im.size(); ++i) {
     auto& [trials, exceedances] = groups[im[i]];
     ++trials;
     if (exceeded[i]) ++exceedances;
   }
-  std::vector<double> distinct;
-  std::vector<std::int64_t> trials, exceedances;
+  IntensityGroups grouped;
   for (const auto& [x, counts] : groups) {
-    distinct.push_back(x);
-    trials.push_back(counts.first);
-    exceedances.push_back(counts.second);
+    grouped.distinct.push_back(x);
+    grouped.trials.push_back(counts.first);
+    grouped.exceedances.push_back(counts.second);
   }
-  const LognormalFit fit = fit_lognormal_fragility(distinct, trials, exceedances);
+  return grouped;
+}
 
-  // The display bins: equal widths in ln IM from the smallest intensity to the largest.
+// The fit's parameters and their standard errors; NaN where the fit failed, with the bounds the
+// data still place on the median.
+FragilityCurve curve_of_cloud_fit(const IntensityGroups& groups, const LognormalFit& fit) {
   FragilityCurve curve;
-  curve.median = curve.beta = curve.log_likelihood = nan;
+  curve.median = curve.beta = curve.log_likelihood = kCloudNan;
   curve.fit_status = fit_status_name(fit.status);
   curve.median_low = fit.median_low;
   curve.median_high = fit.median_high;
@@ -44,39 +52,74 @@ FragilityCurve fragility_from_samples(const std::vector<double>& im,
     curve.median = fit.median;
     curve.beta = fit.beta;
     curve.log_likelihood = fit.log_likelihood;
-    const StandardErrors errors = fit_standard_errors(distinct, trials, exceedances, fit);
+    const StandardErrors errors =
+        fit_standard_errors(groups.distinct, groups.trials, groups.exceedances, fit);
     curve.median_se = errors.median;
     curve.beta_se = errors.beta;
   }
-  if (im.empty() || bins == 0) return curve;
-  const double low = std::log(distinct.front()), high = std::log(distinct.back());
+  return curve;
+}
+
+// Each display bin's sums over its samples; expected: their fitted probabilities.
+struct DisplayBins {
+  std::vector<double> log_sum, expected;
+  std::vector<std::int64_t> trials, exceedances;
+};
+
+// Equal widths in ln IM from the smallest intensity to the largest.
+DisplayBins fill_display_bins(const std::vector<double>& im, const std::vector<bool>& exceeded,
+                              const IntensityGroups& groups, const LognormalFit& fit,
+                              std::size_t bins) {
+  const double low = std::log(groups.distinct.front()), high = std::log(groups.distinct.back());
   const double width = high > low ? (high - low) / static_cast<double>(bins) : 1.0;
-  std::vector<double> log_sum(bins, 0.0), bin_expected(bins, 0.0);
-  std::vector<std::int64_t> bin_trials(bins, 0), bin_exceedances(bins, 0);
+  DisplayBins binned{std::vector<double>(bins, 0.0), std::vector<double>(bins, 0.0),
+                     std::vector<std::int64_t>(bins, 0), std::vector<std::int64_t>(bins, 0)};
   for (std::size_t i = 0; i < im.size(); ++i) {
     const double position = (std::log(im[i]) - low) / width;
     const auto k = std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, position)));
-    log_sum[k] += std::log(im[i]);
-    ++bin_trials[k];
-    if (exceeded[i]) ++bin_exceedances[k];
+    binned.log_sum[k] += std::log(im[i]);
+    ++binned.trials[k];
+    if (exceeded[i]) ++binned.exceedances[k];
     if (fit.status == FitStatus::ok) {
-      bin_expected[k] +=
+      binned.expected[k] +=
           0.5 * std::erfc(-std::log(im[i] / fit.median) / (fit.beta * std::sqrt(2.0)));
     }
   }
+  return binned;
+}
+
+// The curve's points, one per bin that holds a sample (at the bin's geometric mean intensity);
+// returns their expected exceedances.
+std::vector<double> add_display_points(const DisplayBins& binned, FragilityCurve& curve) {
   std::vector<double> expected;
-  for (std::size_t k = 0; k < bins; ++k) {
-    const std::int64_t n = bin_trials[k], z = bin_exceedances[k];
+  for (std::size_t k = 0; k < binned.trials.size(); ++k) {
+    const std::int64_t n = binned.trials[k], z = binned.exceedances[k];
     if (n == 0) continue;
-    curve.im.push_back(std::exp(log_sum[k] / static_cast<double>(n)));
+    curve.im.push_back(std::exp(binned.log_sum[k] / static_cast<double>(n)));
     curve.trials.push_back(n);
     curve.exceedances.push_back(z);
     curve.probability.push_back(static_cast<double>(z) / static_cast<double>(n));
     const ProportionInterval interval = wilson_interval(z, n, 0.95);
     curve.ci_low.push_back(interval.low);
     curve.ci_high.push_back(interval.high);
-    expected.push_back(bin_expected[k]);
+    expected.push_back(binned.expected[k]);
   }
+  return expected;
+}
+
+}  // namespace
+
+FragilityCurve fragility_from_samples(const std::vector<double>& im,
+                                      const std::vector<bool>& exceeded, std::size_t bins) {
+  if (im.size() != exceeded.size())
+    throw FitError("cloud fragility: im and exceeded differ in size");
+  const IntensityGroups groups = group_by_intensity(im, exceeded);
+  const LognormalFit fit =
+      fit_lognormal_fragility(groups.distinct, groups.trials, groups.exceedances);
+  FragilityCurve curve = curve_of_cloud_fit(groups, fit);
+  if (im.empty() || bins == 0) return curve;
+  const std::vector<double> expected =
+      add_display_points(fill_display_bins(im, exceeded, groups, fit, bins), curve);
   // Goodness of fit over the display bins (Hosmer & Lemeshow's grouping): each bin's expected
   // exceedances are the sum of its samples' fitted probabilities.
   if (fit.status == FitStatus::ok) {

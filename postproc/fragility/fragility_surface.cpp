@@ -245,6 +245,71 @@ void fill_median_form(SurfaceFit& fit) {
   fit.beta1_se = std::sqrt(fit.covariance[1][1]) / (b1 * b1);
 }
 
+// Where the Newton iteration stopped, after how many steps, and whether it met the tolerance
+// there; newton_decrement: the last step's predicted gain (NaN when the information was singular).
+struct SurfaceClimb {
+  Vector3 theta;
+  Evaluation e;
+  int iterations = 0;
+  bool converged = false;
+  double newton_decrement = SurfaceFit::nan;
+};
+
+// The backtracking line search along `step` from theta, which it moves with e; false when even the
+// shortest step gains nothing (rounding alone is left).
+bool search_along_step(const std::vector<Cell>& cells, double c1, double c2, const Vector3& step,
+                       double predicted, bool unresolvable, Vector3& theta, Evaluation& e) {
+  for (double t = 1.0; t > 1e-18; t *= 0.5) {
+    const Vector3 trial{theta[0] + t * step[0], theta[1] + t * step[1], theta[2] + t * step[2]};
+    const Evaluation trial_e = evaluate(cells, c1, c2, trial);
+    if (unresolvable || trial_e.kernel >= e.kernel + 1e-4 * t * predicted) {
+      theta = trial;
+      e = trial_e;
+      return true;
+    }
+  }
+  return false;
+}
+
+SurfaceClimb climb_surface(const std::vector<Cell>& cells, double c1, double c2,
+                           const SurfaceFitOptions& options) {
+  const Vector3 start = starting_point(cells, c1, c2);
+  SurfaceClimb climb{start, evaluate(cells, c1, c2, start)};
+  for (; climb.iterations < options.max_iterations; ++climb.iterations) {
+    const Evaluation& e = climb.e;
+    // Newton's step on the concave ln L; steepest ascent if the information is numerically
+    // singular (far out in a tail, where every weight underflows).
+    const auto inverse = inverse_spd(e.information);
+    const Vector3 step = inverse ? times(*inverse, e.gradient) : e.gradient;
+    const double predicted = dot(e.gradient, step);
+    climb.newton_decrement = inverse ? predicted : SurfaceFit::nan;
+    if (inverse && predicted <= options.decrement_tolerance) {
+      climb.converged = true;
+      break;
+    }
+    // Close to the maximum the predicted gain is below what ln L can resolve: take the step whole.
+    const bool unresolvable = inverse && predicted <= 1e-13 * (e.kernel_scale + 1.0);
+    if (!search_along_step(cells, c1, c2, step, predicted, unresolvable, climb.theta, climb.e))
+      break;
+  }
+  return climb;
+}
+
+// b0 = a - b1 c1 - b2 c2: the covariance of (b0, b1, b2) is J C J' with J's first row
+// (1, -c1, -c2) and the identity below it.
+void fill_uncentred_coefficients(const Vector3& theta, const Matrix3& c, double c1, double c2,
+                                 SurfaceFit& fit) {
+  const Vector3 j0{1.0, -c1, -c2};
+  fit.coefficients = {theta[0] - theta[1] * c1 - theta[2] * c2, theta[1], theta[2]};
+  const Vector3 c_j0 = times(c, j0);
+  fit.covariance[0][0] = dot(j0, c_j0);
+  for (int i = 1; i < 3; ++i) {
+    fit.covariance[0][i] = fit.covariance[i][0] = c_j0[i];
+    for (int k = 1; k < 3; ++k) fit.covariance[i][k] = c[i][k];
+  }
+  for (int i = 0; i < 3; ++i) fit.standard_errors[i] = std::sqrt(fit.covariance[i][i]);
+}
+
 }  // namespace
 
 const char* surface_fit_status_name(SurfaceFitStatus status) {
@@ -292,56 +357,17 @@ SurfaceFit fit_fragility_surface(std::span<const double> im1, std::span<const do
   c1 /= n_total;
   c2 /= n_total;
 
-  Vector3 theta = starting_point(cells, c1, c2);
-  Evaluation e = evaluate(cells, c1, c2, theta);
-  bool converged = false;
-  int iteration = 0;
-  for (; iteration < options.max_iterations; ++iteration) {
-    // Newton's step on the concave ln L; steepest ascent if the information is numerically
-    // singular (far out in a tail, where every weight underflows).
-    const auto inverse = inverse_spd(e.information);
-    const Vector3 step = inverse ? times(*inverse, e.gradient) : e.gradient;
-    const double predicted = dot(e.gradient, step);
-    fit.newton_decrement = inverse ? predicted : fit.nan;
-    if (inverse && predicted <= options.decrement_tolerance) {
-      converged = true;
-      break;
-    }
-    // Close to the maximum the predicted gain is below what ln L can resolve: take the step whole.
-    const bool unresolvable = inverse && predicted <= 1e-13 * (e.kernel_scale + 1.0);
-    bool moved = false;
-    for (double t = 1.0; t > 1e-18; t *= 0.5) {
-      const Vector3 trial{theta[0] + t * step[0], theta[1] + t * step[1], theta[2] + t * step[2]};
-      const Evaluation trial_e = evaluate(cells, c1, c2, trial);
-      if (unresolvable || trial_e.kernel >= e.kernel + 1e-4 * t * predicted) {
-        theta = trial;
-        e = trial_e;
-        moved = true;
-        break;
-      }
-    }
-    if (!moved) break;
-  }
-  fit.iterations = iteration;
-  fit.log_likelihood = e.log_likelihood;
-  const auto centred_covariance = inverse_spd(e.information);
-  if (!converged || !centred_covariance) {
+  const SurfaceClimb climb = climb_surface(cells, c1, c2, options);
+  fit.newton_decrement = climb.newton_decrement;
+  fit.iterations = climb.iterations;
+  fit.log_likelihood = climb.e.log_likelihood;
+  const auto centred_covariance = inverse_spd(climb.e.information);
+  if (!climb.converged || !centred_covariance) {
     fit.status = SurfaceFitStatus::not_converged;
     return fit;
   }
-  // b0 = a - b1 c1 - b2 c2: the covariance of (b0, b1, b2) is J C J' with J's first row
-  // (1, -c1, -c2) and the identity below it.
-  const Matrix3& c = *centred_covariance;
-  const Vector3 j0{1.0, -c1, -c2};
-  fit.coefficients = {theta[0] - theta[1] * c1 - theta[2] * c2, theta[1], theta[2]};
-  const Vector3 c_j0 = times(c, j0);
-  fit.covariance[0][0] = dot(j0, c_j0);
-  for (int i = 1; i < 3; ++i) {
-    fit.covariance[0][i] = fit.covariance[i][0] = c_j0[i];
-    for (int k = 1; k < 3; ++k) fit.covariance[i][k] = c[i][k];
-  }
-  for (int i = 0; i < 3; ++i) fit.standard_errors[i] = std::sqrt(fit.covariance[i][i]);
-  fit.status = theta[1] > 0.0 ? SurfaceFitStatus::ok : SurfaceFitStatus::not_increasing;
+  fill_uncentred_coefficients(climb.theta, *centred_covariance, c1, c2, fit);
+  fit.status = climb.theta[1] > 0.0 ? SurfaceFitStatus::ok : SurfaceFitStatus::not_increasing;
   if (fit.status == SurfaceFitStatus::ok) fill_median_form(fit);
   return fit;
 }

@@ -226,6 +226,85 @@ bool stationary(const ProbitEvaluation& e, double s, double tolerance) {
          (s <= 0.0 || gradient_norm(e) <= tolerance);
 }
 
+// Where the Newton iteration stopped, after how many steps, and whether it was stationary there.
+struct ProbitClimb {
+  ProbitPoint point;
+  ProbitEvaluation e;
+  int iterations = 0;
+  bool converged = false;
+};
+
+// One step up ln L from point, e updated with it; false when even the shortest step gains nothing
+// (rounding alone is left).
+bool climb_one_step(const std::vector<Level>& levels, double centre, ProbitPoint& point,
+                    ProbitEvaluation& e) {
+  // Newton's step on the concave ln L; steepest ascent if the curvature is numerically singular.
+  const double det = e.curvature_aa * e.curvature_ss - e.curvature_as * e.curvature_as;
+  const bool newton = det > 1e-12 * e.curvature_aa * e.curvature_ss;
+  const double da =
+      newton ? (e.curvature_ss * e.gradient_a - e.curvature_as * e.gradient_s) / det : e.gradient_a;
+  const double ds =
+      newton ? (e.curvature_aa * e.gradient_s - e.curvature_as * e.gradient_a) / det : e.gradient_s;
+  const double predicted = e.gradient_a * da + e.gradient_s * ds;
+  // Close to the maximum the predicted gain is below what ln L can resolve: take the step whole.
+  const bool unresolvable = newton && predicted <= 1e-13 * (e.kernel_scale + 1.0);
+  for (double t = 1.0; t > 1e-18; t *= 0.5) {
+    const ProbitPoint trial{point.a + t * da, point.s + t * ds};
+    const ProbitEvaluation trial_e = evaluate(levels, centre, trial);
+    if (unresolvable || trial_e.kernel >= e.kernel + 1e-4 * t * predicted) {
+      point = trial;
+      e = trial_e;
+      return true;
+    }
+  }
+  return false;
+}
+
+ProbitClimb climb_to_maximum(const std::vector<Level>& levels, double centre, double tolerance,
+                             int max_iterations, const ProbitPoint& start) {
+  ProbitClimb climb{start, evaluate(levels, centre, start)};
+  for (; climb.iterations < max_iterations; ++climb.iterations) {
+    if (stationary(climb.e, climb.point.s, tolerance)) {
+      climb.converged = true;
+      break;
+    }
+    if (!climb_one_step(levels, centre, climb.point, climb.e)) break;
+  }
+  return climb;
+}
+
+// The fit where the climb stopped: not converged, flat (no_trend) or the maximum's median and beta.
+LognormalFit fit_at_maximum(const std::vector<Level>& levels, double centre,
+                            const ProbitClimb& climb) {
+  const ProbitPoint& point = climb.point;
+  LognormalFit fit;
+  fit.iterations = climb.iterations;
+  fit.log_likelihood = climb.e.log_likelihood;
+  if (!climb.converged) {
+    fit.status = FitStatus::not_converged;
+    fit.median_low = 0.0;
+    fit.median_high = inf;
+    return fit;
+  }
+  // The unconstrained maximum has a falling curve, or one flat to rounding over the levels (equal
+  // proportions everywhere: median and beta then overflow): under beta > 0 the best is a flat one.
+  const auto [lowest, highest] = std::minmax_element(
+      levels.begin(), levels.end(), [](const Level& l, const Level& r) { return l.u < r.u; });
+  const double median = std::exp(centre - point.a / point.s);
+  if (!(point.s * (highest->u - lowest->u) > 1e-9) || !std::isfinite(median) || median == 0.0) {
+    auto flat = degenerate(FitStatus::no_trend, flat_log_likelihood(levels), 0.0, inf);
+    flat.iterations = climb.iterations;
+    return flat;
+  }
+  fit.status = FitStatus::ok;
+  fit.converged = true;
+  fit.median = median;
+  fit.beta = 1.0 / point.s;
+  fit.median_low = fit.median_high = fit.median;
+  fit.gradient_norm = gradient_norm(climb.e);
+  return fit;
+}
+
 }  // namespace
 
 const char* fit_status_name(FitStatus status) {
@@ -258,66 +337,9 @@ LognormalFit fit_lognormal_fragility(std::span<const double> im,
   }
   centre /= n_total;
   const double tolerance = options.gradient_tolerance * n_total;
-
-  ProbitPoint point = starting_point(levels, centre, n_total);
-  ProbitEvaluation e = evaluate(levels, centre, point);
-  int iteration = 0;
-  bool converged = false;
-  for (; iteration < options.max_iterations; ++iteration) {
-    if (stationary(e, point.s, tolerance)) {
-      converged = true;
-      break;
-    }
-    // Newton's step on the concave ln L; steepest ascent if the curvature is numerically singular.
-    const double det = e.curvature_aa * e.curvature_ss - e.curvature_as * e.curvature_as;
-    const bool newton = det > 1e-12 * e.curvature_aa * e.curvature_ss;
-    const double da = newton ? (e.curvature_ss * e.gradient_a - e.curvature_as * e.gradient_s) / det
-                             : e.gradient_a;
-    const double ds = newton ? (e.curvature_aa * e.gradient_s - e.curvature_as * e.gradient_a) / det
-                             : e.gradient_s;
-    const double predicted = e.gradient_a * da + e.gradient_s * ds;
-    // Close to the maximum the predicted gain is below what ln L can resolve: take the step whole.
-    const bool unresolvable = newton && predicted <= 1e-13 * (e.kernel_scale + 1.0);
-    bool moved = false;
-    for (double t = 1.0; t > 1e-18; t *= 0.5) {
-      const ProbitPoint trial{point.a + t * da, point.s + t * ds};
-      const ProbitEvaluation trial_e = evaluate(levels, centre, trial);
-      if (unresolvable || trial_e.kernel >= e.kernel + 1e-4 * t * predicted) {
-        point = trial;
-        e = trial_e;
-        moved = true;
-        break;
-      }
-    }
-    if (!moved) break;
-  }
-
-  LognormalFit fit;
-  fit.iterations = iteration;
-  fit.log_likelihood = e.log_likelihood;
-  if (!converged) {
-    fit.status = FitStatus::not_converged;
-    fit.median_low = 0.0;
-    fit.median_high = inf;
-    return fit;
-  }
-  // The unconstrained maximum has a falling curve, or one flat to rounding over the levels (equal
-  // proportions everywhere: median and beta then overflow): under beta > 0 the best is a flat one.
-  const auto [lowest, highest] = std::minmax_element(
-      levels.begin(), levels.end(), [](const Level& l, const Level& r) { return l.u < r.u; });
-  const double median = std::exp(centre - point.a / point.s);
-  if (!(point.s * (highest->u - lowest->u) > 1e-9) || !std::isfinite(median) || median == 0.0) {
-    auto flat = degenerate(FitStatus::no_trend, flat_log_likelihood(levels), 0.0, inf);
-    flat.iterations = iteration;
-    return flat;
-  }
-  fit.status = FitStatus::ok;
-  fit.converged = true;
-  fit.median = median;
-  fit.beta = 1.0 / point.s;
-  fit.median_low = fit.median_high = fit.median;
-  fit.gradient_norm = gradient_norm(e);
-  return fit;
+  const ProbitClimb climb = climb_to_maximum(levels, centre, tolerance, options.max_iterations,
+                                             starting_point(levels, centre, n_total));
+  return fit_at_maximum(levels, centre, climb);
 }
 
 double lognormal_log_likelihood(std::span<const double> im, std::span<const std::int64_t> trials,
