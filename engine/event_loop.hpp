@@ -86,6 +86,14 @@ class EventLoop {
   template <class Ode, class Stepper>
   auto integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece, double t_stop,
                       ModeKind kind);
+  // integrate_with's steps: the stepper's work since it last counted, into the summary; the
+  // first guard crossing in the step from (t0, q0) to (t, q), placed by the ground.
+  template <class Stepper>
+  void count_stepper_work(Stepper& stepper, long& steps_counted, long& rhs_counted);
+  template <class Ode, class Stepper, class StateAt, class Q, class Guards>
+  auto crossing_in_step(const Ode& ode, Stepper& stepper, GuardWatch<Ode::kGuards>& watch,
+                        const StateAt& state_at, double t0, double t, const Q& q0, const Q& q,
+                        const Guards& next, ModeKind kind);
 
   const Scene& scene_;
   BlockGeometry geometry_;
@@ -297,6 +305,40 @@ GuardWatch<Ode::kGuards> watch_guards(const Ode& ode, double t, const OdeState<O
 }
 
 template <class Ground>
+template <class Stepper>
+void EventLoop<Ground>::count_stepper_work(Stepper& stepper, long& steps_counted,
+                                           long& rhs_counted) {
+  summary_.steps += stepper.steps() - steps_counted;
+  summary_.rhs_evaluations += stepper.rhs_evaluations() - rhs_counted;
+  steps_counted = stepper.steps();
+  rhs_counted = stepper.rhs_evaluations();
+  if ((summary_.steps & kBudgetCheckMask) == 0) check_budget();
+}
+
+template <class Ground>
+template <class Ode, class Stepper, class StateAt, class Q, class Guards>
+auto EventLoop<Ground>::crossing_in_step(const Ode& ode, Stepper& stepper,
+                                         GuardWatch<Ode::kGuards>& watch, const StateAt& state_at,
+                                         double t0, double t, const Q& q0, const Q& q,
+                                         const Guards& next, ModeKind kind) {
+  const Overloads guards_at{[&](double x) { return ode.guards(x, stepper.dense(x)); },
+                            [&](int i, double x) { return ode_guard(ode, i, x, stepper.dense(x)); },
+                            [&](double x, const std::array<bool, Ode::kGuards>& wanted) {
+                              return ode_guards(ode, x, stepper.dense(x), wanted);
+                            }};
+  const auto least_at_ends = [&](const std::array<bool, Ode::kGuards>& asked) {
+    const auto one_way = [&](int i) { return stepper.moves_one_way(i); };
+    if constexpr (requires { ode.guard_claims(q0, q, one_way, asked); }) {
+      return ode.guard_claims(q0, q, one_way, asked);
+    } else {
+      return ode.least_at_ends(q0, q, one_way);
+    }
+  };
+  return self().refine_crossing(ode, watch, guards_at, state_at, t0, t,
+                                watch.first_crossing(guards_at, t0, t, next, least_at_ends), kind);
+}
+
+template <class Ground>
 template <class Ode, class Stepper>
 auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece,
                                        double t_stop, ModeKind kind) {
@@ -323,30 +365,10 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
     stepper.step(ode, t, q, std::min({t_stop - t, cap, retake_until - t}));
     retake_until = std::numeric_limits<double>::infinity();
     if (reached(t, t_stop)) t = t_stop;
-    summary_.steps += stepper.steps() - steps_counted;
-    summary_.rhs_evaluations += stepper.rhs_evaluations() - rhs_counted;
-    steps_counted = stepper.steps();
-    rhs_counted = stepper.rhs_evaluations();
-    if ((summary_.steps & kBudgetCheckMask) == 0) check_budget();
+    count_stepper_work(stepper, steps_counted, rhs_counted);
 
     const auto next = ode.guards(t, q);
-    const Overloads guards_at{
-        [&](double x) { return ode.guards(x, stepper.dense(x)); },
-        [&](int i, double x) { return ode_guard(ode, i, x, stepper.dense(x)); },
-        [&](double x, const std::array<bool, Ode::kGuards>& wanted) {
-          return ode_guards(ode, x, stepper.dense(x), wanted);
-        }};
-    const auto least_at_ends = [&](const std::array<bool, Ode::kGuards>& asked) {
-      const auto one_way = [&](int i) { return stepper.moves_one_way(i); };
-      if constexpr (requires { ode.guard_claims(q0, q, one_way, asked); }) {
-        return ode.guard_claims(q0, q, one_way, asked);
-      } else {
-        return ode.least_at_ends(q0, q, one_way);
-      }
-    };
-    const auto crossing =
-        ground.refine_crossing(ode, watch, guards_at, state_at, t0, t,
-                               watch.first_crossing(guards_at, t0, t, next, least_at_ends), kind);
+    const auto crossing = crossing_in_step(ode, stepper, watch, state_at, t0, t, q0, q, next, kind);
     const int which = crossing.which;
     const double t_event = crossing.after;
     if (kRetakesStepToEvent && which >= 0 && !retaking && t_event < t) {

@@ -122,6 +122,12 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   EventReport advance(const RestMode&, const MotionPiece& piece, double t_stop);
   // Flight without vertical motion: theta, y and x in closed form.
   EventReport advance(const FlightMode&, const MotionPiece& piece, double t_stop);
+  // Where a flight from `start` at t_ ends (by t_stop), and whether it ends overturned there.
+  struct FlightEnd {
+    double t;
+    bool overturns;
+  };
+  FlightEnd flight_end_of(const FlightStart& start, double t_stop) const;
   template <class System>
   EventReport advance(const System& system, const MotionPiece& piece, double t_stop);
 
@@ -241,11 +247,9 @@ FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const RestMode&,
   return {};
 }
 
-FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode&,
-                                                                const MotionPiece& piece,
-                                                                double t_stop) {
+FlatGroundSimulation::FlightEnd FlatGroundSimulation::flight_end_of(const FlightStart& start,
+                                                                    double t_stop) const {
   const double g = scene_.g;
-  const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
   const double t0 = t_;
   const double min_step = kFlightMinStep * block_time_;
   // The flight ends where it lands or overturns. When this stretch ends the run, both are looked
@@ -273,6 +277,18 @@ FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode
     t_end = t_stop;
     overturns = false;
   }
+  return {t_end, overturns};
+}
+
+FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode&,
+                                                                const MotionPiece& piece,
+                                                                double t_stop) {
+  const double g = scene_.g;
+  const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
+  const double t0 = t_;
+  const FlightEnd flight_end = flight_end_of(start, t_stop);
+  const double t_end = flight_end.t;
+  const bool overturns = flight_end.overturns;
   // Only the horizontal drift feels the ground motion, and it has a closed form too.
   const GroundDrift drift(piece, t0);
   const double x0 = state_.x, vx0 = state_.vx;

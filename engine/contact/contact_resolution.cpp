@@ -50,6 +50,34 @@ void note_energy_change(double before, double after, ContactOutcome& out) {
     out.impact_energy_gain = std::max(out.impact_energy_gain, (after - before) / before);
 }
 
+// The flat impact's system for z = (Py_left, Py_right, Px) under one active set and friction
+// state (0: the base sticks, else its slip direction): Newton's law at an active corner, no
+// impulse at the other; the base's slip stopped, or Coulomb's impulse against it.
+template <class NormalRow>
+std::array<std::array<double, 4>, 3> flat_impact_system(const std::array<bool, 2>& active,
+                                                        int friction, const NormalRow& normal_row,
+                                                        const std::array<double, 2>& target,
+                                                        const std::array<double, 2>& u_y,
+                                                        const std::array<double, 3>& tangent_row,
+                                                        double u_x, double mu) {
+  std::array<std::array<double, 4>, 3> m{};
+  for (int j = 0; j < 2; ++j) {
+    if (active[j]) {
+      const auto row = normal_row(j);
+      m[j] = {row[0], row[1], row[2], target[j] - u_y[j]};
+    } else {
+      m[j] = {0, 0, 0, 0};
+      m[j][j] = 1.0;
+    }
+  }
+  if (friction == 0) {
+    m[2] = {tangent_row[0], tangent_row[1], tangent_row[2], -u_x};
+  } else {
+    m[2] = {friction * mu, friction * mu, 1.0, 0.0};
+  }
+  return m;
+}
+
 }  // namespace
 
 ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g)
@@ -119,21 +147,8 @@ bool ContactResolver::flat_impact(BlockState& s, double e) const {
   for (const std::array<bool, 2> active :
        {std::array{true, false}, std::array{false, true}, std::array{true, true}}) {
     for (const int friction : {0, 1, -1}) {  // 0: stick, else slip direction
-      std::array<std::array<double, 4>, 3> m{};
-      for (int j = 0; j < 2; ++j) {
-        if (active[j]) {
-          const auto row = normal_row(j);
-          m[j] = {row[0], row[1], row[2], target[j] - u_y[j]};
-        } else {
-          m[j] = {0, 0, 0, 0};
-          m[j][j] = 1.0;
-        }
-      }
-      if (friction == 0) {
-        m[2] = {tangent_row[0], tangent_row[1], tangent_row[2], -u_x};
-      } else {
-        m[2] = {friction * mu_, friction * mu_, 1.0, 0.0};
-      }
+      const auto m =
+          flat_impact_system(active, friction, normal_row, target, u_y, tangent_row, u_x, mu_);
       std::array<double, 3> z{};
       if (!solve3(m, z)) continue;
       if (z[0] < -eps * M || z[1] < -eps * M) continue;

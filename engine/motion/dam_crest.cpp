@@ -110,6 +110,32 @@ std::size_t dam_crest_nodes(const GroundMotionPieces& foundation, double period,
   return nodes;
 }
 
+namespace {
+
+void check_crest_node_count(std::size_t nodes, double period, double duration) {
+  if (nodes > kMaxCrestNodes) {
+    std::ostringstream why;
+    why << "invalid scene: the dam's period (" << period << " s) is too short for the duration ("
+        << duration << " s): the crest motion would need " << nodes
+        << " nodes (one per period / 100), more than " << kMaxCrestNodes;
+    throw InvalidInput(why.str());
+  }
+}
+
+// The grids of the foundation's pieces that start before `duration` and last.
+std::vector<PieceGrid> crest_piece_grids(const GroundMotionPieces& foundation, double period,
+                                         double duration) {
+  std::vector<PieceGrid> grids;
+  for (const MotionPiece& piece : foundation.pieces()) {
+    if (piece.start() >= duration) break;
+    if (piece.end() <= piece.start()) continue;
+    grids.push_back(piece_grid(piece, duration, period));
+  }
+  return grids;
+}
+
+}  // namespace
+
 CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCrest& dam,
                                double duration, double g, bool until_quiet) {
   const DamMode mode = dam_mode(dam);
@@ -118,19 +144,8 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
   const double zeta = mode.damping, gamma_phi = dam.participation;
 
   const std::size_t nodes = dam_crest_nodes(foundation, period, duration);
-  if (nodes > kMaxCrestNodes) {
-    std::ostringstream why;
-    why << "invalid scene: the dam's period (" << period << " s) is too short for the duration ("
-        << duration << " s): the crest motion would need " << nodes
-        << " nodes (one per period / 100), more than " << kMaxCrestNodes;
-    throw InvalidInput(why.str());
-  }
-  std::vector<PieceGrid> grids;
-  for (const MotionPiece& piece : foundation.pieces()) {
-    if (piece.start() >= duration) break;
-    if (piece.end() <= piece.start()) continue;
-    grids.push_back(piece_grid(piece, duration, period));
-  }
+  check_crest_node_count(nodes, period, duration);
+  const std::vector<PieceGrid> grids = crest_piece_grids(foundation, period, duration);
 
   CrestHistory h;
   h.times.reserve(nodes);

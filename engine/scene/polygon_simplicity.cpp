@@ -35,6 +35,26 @@ struct Event {
   std::size_t edge;
 };
 
+// The polygon's edges (into `edges`, n of them) and their ends as the sweep meets them.
+std::vector<Event> sorted_sweep_events(const std::vector<Vertex>& v, std::vector<Edge>& edges) {
+  const std::size_t n = v.size();
+  std::vector<Event> events;
+  events.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Vertex a = v[i], b = v[(i + 1) % n];
+    if (b[0] < a[0] || (b[0] == a[0] && b[1] < a[1])) std::swap(a, b);
+    edges[i] = {a, b, i};
+    events.push_back({a[0], a[1], true, i});
+    events.push_back({b[0], b[1], false, i});
+  }
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.insert != b.insert) return a.insert;
+    return a.y < b.y;
+  });
+  return events;
+}
+
 }  // namespace
 
 bool segments_meet(const Vertex& p, const Vertex& q, const Vertex& r, const Vertex& s) {
@@ -55,20 +75,7 @@ std::optional<std::pair<std::size_t, std::size_t>> first_meeting_edges(
     const std::vector<Vertex>& v) {
   const std::size_t n = v.size();
   std::vector<Edge> edges(n);
-  std::vector<Event> events;
-  events.reserve(2 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    Vertex a = v[i], b = v[(i + 1) % n];
-    if (b[0] < a[0] || (b[0] == a[0] && b[1] < a[1])) std::swap(a, b);
-    edges[i] = {a, b, i};
-    events.push_back({a[0], a[1], true, i});
-    events.push_back({b[0], b[1], false, i});
-  }
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-    if (a.x != b.x) return a.x < b.x;
-    if (a.insert != b.insert) return a.insert;
-    return a.y < b.y;
-  });
+  const std::vector<Event> events = sorted_sweep_events(v, edges);
 
   // The sweep's order of the edges it crosses, from below: valid for as long as no two of them
   // have met, which is all the search needs (Shamos & Hoey 1976: the first meeting pair is

@@ -148,11 +148,10 @@ PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
           PlanarContact{minus(p, centre), edge.normal, ContactKind::seat_point}};
 }
 
-std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double tolerance,
-                                             const std::optional<SeatPair>& left,
-                                             int arrived) const {
-  std::vector<SeatPair> found;
-  std::vector<bool> vertex_on_seat(body_.size(), false);
+void SeatContacts::vertices_on_segments(const BlockState& s, double tolerance,
+                                        const std::optional<SeatPair>& left,
+                                        std::vector<SeatPair>& found,
+                                        std::vector<bool>& vertex_on_seat) const {
   for (int i = 0; i < vertex_count(); ++i) {
     for (int j = 0; j + 1 < point_count(); ++j) {
       const SeatPair pair{ContactKind::block_vertex, i, j};
@@ -165,16 +164,85 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
       }
     }
   }
+}
+
+Vec2 SeatContacts::upward_at_point(int k) const {
+  // The sum of the normals of the segments either side of the point.
+  Vec2 up{0.0, 0.0};
+  for (const int j : {k - 1, k}) {
+    if (j < 0 || j + 1 >= point_count()) continue;
+    const Vec2 n =
+        segment_frame(seat_[static_cast<std::size_t>(j)], seat_[static_cast<std::size_t>(j) + 1])
+            .normal;
+    up = {up.x + n.x, up.y + n.y};
+  }
+  return up;
+}
+
+namespace {
+
+// Of a seat point arrived at a block vertex whose two edges' normals are equally near the seat's
+// upward direction (the block's fold in the seat's fold): whether it belongs on the other edge
+// rather than on `here`'s. It goes on along the edge whose range it moves into (the block's base
+// as the block slides over it), or, into neither, the one it approaches faster.
+bool arrived_point_prefers_other_edge(const PlanarContact& here_contact, const PlanarContact& other,
+                                      bool at_start, const BlockState& s) {
+  const RigidVelocity v{s.vx, s.vy, s.omega};
+  const ContactVelocity here = contact_velocity(here_contact, v);
+  const ContactVelocity there = contact_velocity(other, v);
+  // The point moves along an edge at minus the block's tangential velocity there; the
+  // other edge meets this vertex at its other end.
+  // Rates below the velocities' rounding say nothing.
+  const double noise = kSeatPointRateRounding * (std::abs(here.tangent) + std::abs(there.tangent) +
+                                                 std::abs(here.normal) + std::abs(there.normal));
+  const bool enters_here = at_start ? here.tangent < -noise : here.tangent > noise;
+  const bool enters_there = at_start ? there.tangent > noise : there.tangent < -noise;
+  // Into both: the edge it moves more nearly along (a seat point at the joint of two
+  // collinear segments slides along the base, whatever the face beside it does).
+  bool other_edge_better = here.normal > there.normal;
+  if (enters_here != enters_there) {
+    other_edge_better = !enters_here;
+  } else if (enters_here) {
+    other_edge_better = std::abs(here.tangent) < std::abs(there.tangent);
+  }
+  return other_edge_better;
+}
+
+}  // namespace
+
+bool SeatContacts::takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k,
+                                         bool at_start, Vec2 up, int arrived,
+                                         const std::vector<bool>& vertex_on_seat) const {
+  // Taken only when that vertex is on no seat segment, and only on the one of the vertex's two
+  // edges whose normal is nearer the seat's upward direction (the heel's base, not its upstream
+  // face).
+  const int n = vertex_count();
+  const int vertex = at_start ? m : (m + 1) % n;
+  // A vertex that already has a contact on a seat segment there carries the block at this
+  // point: the seat point is not taken again on an edge, even when it has just arrived. The
+  // two pairs are one constraint (rows equal but for the edge's turn, theta), and the
+  // projection onto both moved the block along the incline by their gaps' difference over
+  // theta (record-suite sample 74: 6e-4 m at theta = 1.5e-12).
+  if (vertex_on_seat[static_cast<std::size_t>(vertex)]) return false;
+  const int other_edge = at_start ? (m + n - 1) % n : (m + 1) % n;
+  const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
+  // How much nearer the seat's upward direction this edge's normal is than the other's.
+  const double nearer_up = dot(p.contact.normal, up) - dot(other.normal, up);
+  if (k == arrived && std::abs(nearer_up) <= kEdgeNormalTie * norm(up)) {
+    return !arrived_point_prefers_other_edge(p.contact, other, at_start, s);
+  }
+  if (nearer_up < 0) return false;
+  return true;
+}
+
+std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double tolerance,
+                                             const std::optional<SeatPair>& left,
+                                             int arrived) const {
+  std::vector<SeatPair> found;
+  std::vector<bool> vertex_on_seat(body_.size(), false);
+  vertices_on_segments(s, tolerance, left, found, vertex_on_seat);
   for (int k = 0; k < point_count(); ++k) {
-    // The seat's upward direction at the point: its segments' normals together.
-    Vec2 up{0.0, 0.0};
-    for (const int j : {k - 1, k}) {
-      if (j < 0 || j + 1 >= point_count()) continue;
-      const Vec2 n =
-          segment_frame(seat_[static_cast<std::size_t>(j)], seat_[static_cast<std::size_t>(j) + 1])
-              .normal;
-      up = {up.x + n.x, up.y + n.y};
-    }
+    const Vec2 up = upward_at_point(k);
     if (!touches_edges(k)) continue;
     for (int m = 0; m < vertex_count(); ++m) {
       const SeatPair pair{ContactKind::seat_point, m, k};
@@ -185,50 +253,9 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
         continue;
       }
       const bool at_start = p.along <= tolerance, at_end = p.along >= p.length - tolerance;
-      if (at_start || at_end) {
-        // The point is at a block vertex: taken there only when that vertex is on no seat
-        // segment, and only on the one of the vertex's two edges whose normal is nearer the
-        // seat's upward direction (the heel's base, not its upstream face).
-        const int n = vertex_count();
-        const int vertex = at_start ? m : (m + 1) % n;
-        // A vertex that already has a contact on a seat segment there carries the block at this
-        // point: the seat point is not taken again on an edge, even when it has just arrived. The
-        // two pairs are one constraint (rows equal but for the edge's turn, theta), and the
-        // projection onto both moved the block along the incline by their gaps' difference over
-        // theta (record-suite sample 74: 6e-4 m at theta = 1.5e-12).
-        if (vertex_on_seat[static_cast<std::size_t>(vertex)]) continue;
-        const int other_edge = at_start ? (m + n - 1) % n : (m + 1) % n;
-        const PlanarContact other = pose({ContactKind::seat_point, other_edge, k}, s).contact;
-        // How much nearer the seat's upward direction this edge's normal is than the other's.
-        const double nearer_up = dot(p.contact.normal, up) - dot(other.normal, up);
-        if (k == arrived && std::abs(nearer_up) <= kEdgeNormalTie * norm(up)) {
-          // The normals do not tell the edges apart (the block's fold in the seat's fold, its two
-          // edges symmetric about the seat's upward direction there): the point goes on along the
-          // edge whose range it moves into (the block's base as the block slides over it), or,
-          // into neither, the one it approaches faster.
-          const RigidVelocity v{s.vx, s.vy, s.omega};
-          const ContactVelocity here = contact_velocity(p.contact, v);
-          const ContactVelocity there = contact_velocity(other, v);
-          // The point moves along an edge at minus the block's tangential velocity there; the
-          // other edge meets this vertex at its other end.
-          // Rates below the velocities' rounding say nothing.
-          const double noise =
-              kSeatPointRateRounding * (std::abs(here.tangent) + std::abs(there.tangent) +
-                                        std::abs(here.normal) + std::abs(there.normal));
-          const bool enters_here = at_start ? here.tangent < -noise : here.tangent > noise;
-          const bool enters_there = at_start ? there.tangent > noise : there.tangent < -noise;
-          // Into both: the edge it moves more nearly along (a seat point at the joint of two
-          // collinear segments slides along the base, whatever the face beside it does).
-          bool other_edge_better = here.normal > there.normal;
-          if (enters_here != enters_there) {
-            other_edge_better = !enters_here;
-          } else if (enters_here) {
-            other_edge_better = std::abs(here.tangent) < std::abs(there.tangent);
-          }
-          if (other_edge_better) continue;
-        } else if (nearer_up < 0) {
-          continue;
-        }
+      if ((at_start || at_end) &&
+          !takes_point_at_vertex(s, p, m, k, at_start, up, arrived, vertex_on_seat)) {
+        continue;
       }
       found.push_back(pair);
     }

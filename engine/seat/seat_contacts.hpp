@@ -141,6 +141,16 @@ class SeatContacts {
   double height_over_fall(const BlockState& s, std::span<const Vec2> world, double depth) const;
 
  private:
+  // touching's steps: the block vertices on seat segments (marking those vertices), the seat's
+  // upward direction at point k, and whether a seat point at a block vertex (the pair's point at
+  // the start of edge m, or at its end) is taken on that edge.
+  void vertices_on_segments(const BlockState& s, double tolerance,
+                            const std::optional<SeatPair>& left, std::vector<SeatPair>& found,
+                            std::vector<bool>& vertex_on_seat) const;
+  Vec2 upward_at_point(int k) const;
+  bool takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k, bool at_start,
+                             Vec2 up, int arrived, const std::vector<bool>& vertex_on_seat) const;
+
   struct Segment {  // a seat segment's unit direction, upward normal and length
     Vec2 direction, normal;
     double length;

@@ -139,6 +139,16 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   // Impacts at the contacts that approach, one at a time as on the flat ground, until none does.
   // impacted: some contact approached.
   bool resolve_impacts(BlockState& s, const std::vector<SeatPair>& touching, bool& impacted);
+  // resolve_impacts' steps: the pairs' contacts and the one that approaches fastest (first: -1
+  // where none approaches), and the impact at that one by the scene's restitution.
+  struct Approach {
+    std::vector<PlanarContact> all;
+    double fastest;
+    int first;
+  };
+  Approach fastest_approach(const std::vector<SeatPair>& pairs, const BlockState& s) const;
+  void landing_impact(BlockState& s, const Approach& approach, const BlockState& start,
+                      const BodyInertia& inertia);
   bool plastic_landing(const std::vector<SeatPair>& pairs) const;
   SeatMode resolve(const EventReport& report);
   // The named steps of resolve (engine/seat/seat_resolution.cpp).

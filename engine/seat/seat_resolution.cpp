@@ -36,21 +36,60 @@ std::vector<SeatPair> SeatSimulation::touching(const BlockState& s,
   return out;
 }
 
+SeatSimulation::Approach SeatSimulation::fastest_approach(const std::vector<SeatPair>& pairs,
+                                                          const BlockState& s) const {
+  Approach approach{{}, 0.0, -1};
+  for (const SeatPair& pair : pairs) {
+    approach.all.push_back(contact_of(pair, s));
+    const double u_n = contact_velocity(approach.all.back(), velocity_of(s)).normal;
+    if (u_n < -velocity_tol_ && u_n < approach.fastest) {
+      approach.fastest = u_n;
+      approach.first = static_cast<int>(approach.all.size()) - 1;
+    }
+  }
+  return approach;
+}
+
+void SeatSimulation::landing_impact(BlockState& s, const Approach& approach,
+                                    const BlockState& start, const BodyInertia& inertia) {
+  const double mu = scene_.contact.friction;
+  const std::vector<PlanarContact>& all = approach.all;
+  const int first = approach.first;
+  const double e =
+      landing_restitution(scene_.contact.restitution, approach.fastest, settle_velocity());
+  const PlanarImpactInput one{
+      {all[static_cast<std::size_t>(first)]}, velocity_of(s), inertia, mu, e, R_};
+  PlanarImpact impact = resolve_contact_impact(one);
+  set_velocity(s, impact.after);
+  // The paper's law at the contact that hits first, as on the flat ground; when that drives
+  // another touching contact into the seat (a flat landing), all take their impulses together.
+  bool others_approach = false;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (static_cast<int>(i) == first) continue;
+    others_approach =
+        others_approach || contact_velocity(all[i], velocity_of(s)).normal < -velocity_tol_;
+  }
+  if (others_approach) {
+    const PlanarImpact together =
+        simultaneous_impact({all, velocity_of(start), inertia, mu, e, R_});
+    if (together.determinacy != Determinacy::unique) ++summary_.painleve_events;
+    // No consistent choice of impulses together (two pairs of one contact point, a block vertex
+    // on a seat point, whose geometries differ by the contact tolerance): the first contact's
+    // impact stands, and the next round takes any contact it leaves approaching.
+    if (together.determinacy != Determinacy::inconsistent) {
+      s = start;
+      set_velocity(s, together.after);
+    }
+  }
+}
+
 bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>& pairs,
                                      bool& impacted) {
   const double mu = scene_.contact.friction;
   for (int round = 0; round < kMaxImpactRounds; ++round) {
-    std::vector<PlanarContact> all;
-    double fastest = 0.0;
-    int first = -1;
-    for (const SeatPair& pair : pairs) {
-      all.push_back(contact_of(pair, s));
-      const double u_n = contact_velocity(all.back(), velocity_of(s)).normal;
-      if (u_n < -velocity_tol_ && u_n < fastest) {
-        fastest = u_n;
-        first = static_cast<int>(all.size()) - 1;
-      }
-    }
+    const Approach approach = fastest_approach(pairs, s);
+    const double fastest = approach.fastest;
+    const int first = approach.first;
     if (first < 0) return true;
     impacted = true;
     if (round == 0) {
@@ -72,38 +111,14 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
     const auto rocking =
         laid || !rocking_restitution
             ? std::nullopt
-            : rocking_impact({all, static_cast<std::size_t>(first), velocity_of(s), inertia.k2, mu,
-                              velocity_tol_, *rocking_restitution});
+            : rocking_impact({approach.all, static_cast<std::size_t>(first), velocity_of(s),
+                              inertia.k2, mu, velocity_tol_, *rocking_restitution});
     if (laid) {
       lay_on(pairs, s);
     } else if (rocking) {
       set_velocity(s, rocking->after);
     } else {
-      const double e = landing_restitution(scene_.contact.restitution, fastest, settle_velocity());
-      const PlanarImpactInput one{
-          {all[static_cast<std::size_t>(first)]}, velocity_of(s), inertia, mu, e, R_};
-      PlanarImpact impact = resolve_contact_impact(one);
-      set_velocity(s, impact.after);
-      // The paper's law at the contact that hits first, as on the flat ground; when that drives
-      // another touching contact into the seat (a flat landing), all take their impulses together.
-      bool others_approach = false;
-      for (std::size_t i = 0; i < all.size(); ++i) {
-        if (static_cast<int>(i) == first) continue;
-        others_approach =
-            others_approach || contact_velocity(all[i], velocity_of(s)).normal < -velocity_tol_;
-      }
-      if (others_approach) {
-        const PlanarImpact together =
-            simultaneous_impact({all, velocity_of(start), inertia, mu, e, R_});
-        if (together.determinacy != Determinacy::unique) ++summary_.painleve_events;
-        // No consistent choice of impulses together (two pairs of one contact point, a block vertex
-        // on a seat point, whose geometries differ by the contact tolerance): the first contact's
-        // impact stands, and the next round takes any contact it leaves approaching.
-        if (together.determinacy != Determinacy::inconsistent) {
-          s = start;
-          set_velocity(s, together.after);
-        }
-      }
+      landing_impact(s, approach, start, inertia);
     }
     const double after = kinetic_energy(s);
     if (before > 0) {
