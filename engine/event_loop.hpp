@@ -293,6 +293,8 @@ template <class... Calls>
 struct Overloads : Calls... {
   using Calls::operator()...;
 };
+template <class... Calls>
+Overloads(Calls...) -> Overloads<Calls...>;
 
 // A system that leaves some of its guard slots unused names the others (live_guards()).
 template <class Ode>
