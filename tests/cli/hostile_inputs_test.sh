@@ -73,6 +73,8 @@ study_with '{"samples_per_level": 100000000, "design": "monte_carlo", "checkpoin
 (ulimit -v "$address_limit_kb"; exec "$B" run billion.json --output billion.h5) >billion.out 2>billion.err &
 billion_pid=$!
 sleep 5
+# and, on a loaded machine that was slow to start it, until its first checkpoint (25 s at most)
+for _ in $(seq 250); do [[ -e billion.h5.checkpoint ]] && break; sleep 0.1; done
 peak_kb=$(awk '/^VmHWM/ { print $2 }' "/proc/$billion_pid/status" 2>/dev/null || echo 0)
 kill -TERM "$billion_pid"
 wait "$billion_pid"

@@ -122,7 +122,8 @@ JSON
 study_with '{"samples_per_level": 1000, "checkpoint_interval_s": 0.01}' >long.json
 "$B" run long.json --output X.h5.round 2>long.err &
 long_run=$!
-for _ in $(seq 200); do [[ -e X.h5.round.checkpoint ]] && break; sleep 0.02; done
+# Waits up to 20 s for the first checkpoint: a loaded machine can take seconds to start the run.
+for _ in $(seq 1000); do [[ -e X.h5.round.checkpoint ]] && break; sleep 0.02; done
 kill -TERM "$long_run"
 wait "$long_run"
 long_code=$?
