@@ -86,6 +86,10 @@ inline constexpr double kRestTolerance = 1e-13;
 // (the type B block's are below 340), and trusted where its answer fails a check by more than
 // kClearlyFailing of its size, some 450 times the two solves' difference at that condition.
 inline constexpr double kMaxScreenedCondition = 1e4;
+// Relative room for rounding in the seat's geometric shortcuts: a point beside an edge's ends, or
+// a seat point or end beyond the block's reach, by more than this fraction of the sizes compared
+// is beside or beyond it without the exact test (many ulps, far below any contact height).
+inline constexpr double kGeometryRounding = 1e-9;
 inline constexpr double kClearlyFailing = 1e-9;
 // Two seat segments whose directions' cross product is within this of zero (and whose lines are
 // within the contact height) are on one line: a flat seat given as a polyline rounds to 1e-16.

@@ -50,7 +50,7 @@ bool crossed_right_of(Vec2 p, Vec2 a, Vec2 b) {
   // The edge's x at the point's level lies between a.x and b.x but for a few ulps of them: a
   // point beside both by more is left or right of it without the division (a seat's far ends at
   // every guard evaluation).
-  const double rounding = 1e-9 * (std::abs(a.x) + std::abs(b.x));
+  const double rounding = kGeometryRounding * (std::abs(a.x) + std::abs(b.x));
   if (p.x < std::min(a.x, b.x) - rounding) return true;
   if (p.x > std::max(a.x, b.x) + rounding) return false;
   return p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
@@ -354,7 +354,7 @@ double SeatContacts::penetration(const BlockState& s) const {
   // A point outside adds nothing: its -clearance is not above 0. A point farther from the first
   // vertex than the block's diameter (and its rounding) is outside without a pass over its edges
   // (a flat seat's ends, 1e4 R away, at every step).
-  const double reach = 2.0 * block_radius_ * (1.0 + 1e-9);
+  const double reach = 2.0 * block_radius_ * (1.0 + kGeometryRounding);
   for (int k = 0; k < point_count(); ++k) {
     const Vec2 off = minus(seat_[static_cast<std::size_t>(k)], world[0]);
     if (dot(off, off) > reach * reach) continue;

@@ -13,6 +13,7 @@
 #include "engine/scene/block_state.hpp"
 #include "engine/scene/polygon_properties.hpp"
 #include "engine/seat/turn_cache.hpp"
+#include "engine/tolerances.hpp"
 
 namespace blockfrag {
 
@@ -107,7 +108,7 @@ class SeatContacts {
 
   // Whether every point of the block at the pose lies over the seat's x range, its ends included.
   bool within_ends(const BlockState& s) const {
-    const double reach = block_radius_ * (1.0 + 1e-9);  // and its rounding
+    const double reach = block_radius_ * (1.0 + kGeometryRounding);
     return s.x - reach >= seat_.front().x && s.x + reach <= seat_.back().x;
   }
   // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
