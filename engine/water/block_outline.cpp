@@ -17,9 +17,8 @@ BlockOutline::BlockOutline(const Scene& scene) : rest_(scene_block_vertices(scen
   offset_ = scene.seat ? Vertex{0.0, 0.0} : Vertex{centre_[0], bottom_};
 }
 
-void BlockOutline::place(const BlockState& s, const SineCosine& turn, WorldPolygon& out) const {
+void BlockOutline::place(const BlockState& s, const SineCosine& turn, std::span<Vertex> out) const {
   const Vertex c = centre(s);
-  out.resize(body_.size());
   for (std::size_t i = 0; i < body_.size(); ++i) {
     const Vertex& p = body_[i];
     out[i] = {c[0] + p[0] * turn.cos - p[1] * turn.sin, c[1] + p[0] * turn.sin + p[1] * turn.cos};

@@ -5,6 +5,7 @@
 // lowest vertex at rest.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "engine/scene/block_state.hpp"
@@ -34,10 +35,12 @@ class BlockOutline {
   }
   // The centre of mass at pose s, in the scene's frame.
   Vertex centre(const BlockState& s) const { return {offset_[0] + s.x, offset_[1] + s.y}; }
-  // The vertices at pose s; `out` is overwritten (its storage reused).
-  void place(const BlockState& s, WorldPolygon& out) const { place(s, sine_cosine(s.theta), out); }
+  // The vertices at pose s into `out` (as many as body()).
+  void place(const BlockState& s, std::span<Vertex> out) const {
+    place(s, sine_cosine(s.theta), out);
+  }
   // The same with s.theta's sine and cosine given, for a caller that turns more than the outline.
-  void place(const BlockState& s, const SineCosine& turn, WorldPolygon& out) const;
+  void place(const BlockState& s, const SineCosine& turn, std::span<Vertex> out) const;
 
  private:
   std::vector<Vertex> rest_, body_;

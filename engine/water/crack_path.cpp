@@ -93,8 +93,7 @@ CrackPath crack_under(const WorldPolygon& block, const std::vector<Support>& sup
 }
 
 void place_crack(const std::vector<Vertex>& body_points, double cos_theta, double sin_theta,
-                 const Vertex& shift, std::vector<Vertex>& out) {
-  out.resize(body_points.size());
+                 const Vertex& shift, std::span<Vertex> out) {
   for (std::size_t i = 0; i < body_points.size(); ++i) {
     const Vertex& p = body_points[i];
     out[i] = {shift[0] + p[0] * cos_theta - p[1] * sin_theta,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "engine/water/block_supports.hpp"
@@ -34,8 +35,8 @@ CrackPath crack_under(const WorldPolygon& block, const std::vector<Support>& sup
                       double tolerance);
 
 // The same crack in another pose: each point turned by (cos, sin) about the origin, then moved by
-// `shift`. `out` is overwritten (its storage reused).
+// `shift`, into `out` (as many as body_points).
 void place_crack(const std::vector<Vertex>& body_points, double cos_theta, double sin_theta,
-                 const Vertex& shift, std::vector<Vertex>& out);
+                 const Vertex& shift, std::span<Vertex> out);
 
 }  // namespace blockfrag

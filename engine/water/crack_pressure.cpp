@@ -41,7 +41,7 @@ CrackPressure crack_pressure(UpliftRule rule, double length, double closed_mouth
   return pressure;
 }
 
-std::vector<double> segment_lengths(const std::vector<Vertex>& points) {
+std::vector<double> segment_lengths(std::span<const Vertex> points) {
   std::vector<double> lengths;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     lengths.push_back(std::hypot(points[i + 1][0] - points[i][0], points[i + 1][1] - points[i][1]));
@@ -49,12 +49,12 @@ std::vector<double> segment_lengths(const std::vector<Vertex>& points) {
   return lengths;
 }
 
-WaterLoad crack_pressure_load(const std::vector<Vertex>& points, const CrackPressure& pressure,
+WaterLoad crack_pressure_load(std::span<const Vertex> points, const CrackPressure& pressure,
                               const Vertex& reference) {
   return crack_pressure_load(points, segment_lengths(points), pressure, reference);
 }
 
-WaterLoad crack_pressure_load(const std::vector<Vertex>& points, std::span<const double> lengths,
+WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const double> lengths,
                               const CrackPressure& pressure, const Vertex& reference) {
   WaterLoad total;
   for_each_pressure_piece(points, lengths, pressure, [&](const PressurePiece& piece) {

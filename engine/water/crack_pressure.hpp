@@ -81,14 +81,14 @@ struct PressurePiece {
 };
 
 // The lengths of the crack's straight pieces, points[i] to points[i + 1].
-std::vector<double> segment_lengths(const std::vector<Vertex>& points);
+std::vector<double> segment_lengths(std::span<const Vertex> points);
 
 // Calls visit(const PressurePiece&) for each piece of the crack `points` (mouth to end, along the
 // counter-clockwise block's bottom) under one span of `pressure`; `lengths` are its pieces'
 // (segment_lengths: a moving crack keeps its lengths at rest, which place pressure spans found at
 // rest where they were).
 template <class Visit>
-void for_each_pressure_piece(const std::vector<Vertex>& points, std::span<const double> lengths,
+void for_each_pressure_piece(std::span<const Vertex> points, std::span<const double> lengths,
                              const CrackPressure& pressure, Visit&& visit) {
   double s0 = 0.0;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
@@ -117,16 +117,16 @@ void for_each_pressure_piece(const std::vector<Vertex>& points, std::span<const 
 }
 
 template <class Visit>
-void for_each_pressure_piece(const std::vector<Vertex>& points, const CrackPressure& pressure,
+void for_each_pressure_piece(std::span<const Vertex> points, const CrackPressure& pressure,
                              Visit&& visit) {
   for_each_pressure_piece(points, segment_lengths(points), pressure, visit);
 }
 
 // The resultant on the block about `reference` (engine/water/linear_pressure.hpp).
-WaterLoad crack_pressure_load(const std::vector<Vertex>& points, const CrackPressure& pressure,
+WaterLoad crack_pressure_load(std::span<const Vertex> points, const CrackPressure& pressure,
                               const Vertex& reference);
 // The same with the pieces' lengths given (segment_lengths).
-WaterLoad crack_pressure_load(const std::vector<Vertex>& points, std::span<const double> lengths,
+WaterLoad crack_pressure_load(std::span<const Vertex> points, std::span<const double> lengths,
                               const CrackPressure& pressure, const Vertex& reference);
 
 }  // namespace blockfrag

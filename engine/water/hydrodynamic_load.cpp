@@ -3,20 +3,20 @@
 #include <cmath>
 #include <utility>
 
+#include "engine/water/vertex_buffer.hpp"
 #include "engine/water/westergaard.hpp"
 
 namespace blockfrag {
 
 WorldPolygon world_polygon(const std::vector<Vertex>& body, double x, double y, double theta) {
-  WorldPolygon out;
+  WorldPolygon out(body.size());
   place_body(body, x, y, theta, out);
   return out;
 }
 
 void place_body(const std::vector<Vertex>& body, double x, double y, double theta,
-                WorldPolygon& out) {
+                std::span<Vertex> out) {
   const double c = std::cos(theta), s = std::sin(theta);
-  out.resize(body.size());
   for (std::size_t i = 0; i < body.size(); ++i) {
     const Vertex& v = body[i];
     out[i] = {x + c * v[0] - s * v[1], y + s * v[0] + c * v[1]};
@@ -31,10 +31,12 @@ HydrodynamicLoad::HydrodynamicLoad(WettedBlock block, double surface, double den
       reservoir_depth_(reservoir_depth) {}
 
 LoadAddition HydrodynamicLoad::at(const BlockState& s, double lambda, double g, Footing) const {
-  place_body(block_.body, 0.0, s.y, s.theta, world_);
-  return from_rates(westergaard_added_mass_with_rates(world_, surface_, density_, reservoir_depth_,
-                                                      block_.crack_edges, {0.0, s.y}),
-                    s, lambda, g);
+  VertexBuffer world(block_.body.size());
+  place_body(block_.body, 0.0, s.y, s.theta, world.vertices());
+  return from_rates(
+      westergaard_added_mass_with_rates(world.vertices(), surface_, density_, reservoir_depth_,
+                                        block_.crack_edges, {0.0, s.y}),
+      s, lambda, g);
 }
 
 LoadAddition HydrodynamicLoad::from_rates(const AddedMassWithRates& a, const BlockState& s,

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "engine/contact/body_load.hpp"
@@ -35,11 +36,10 @@ struct WettedBlock {
 
 // The block's outline at the pose (x, y, theta) of its centre of mass.
 WorldPolygon world_polygon(const std::vector<Vertex>& body, double x, double y, double theta);
-// The same into `out`, overwritten (its storage reused).
+// The same into `out` (as many as body).
 void place_body(const std::vector<Vertex>& body, double x, double y, double theta,
-                WorldPolygon& out);
+                std::span<Vertex> out);
 
-// Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
 class HydrodynamicLoad : public ExternalLoad {
  public:
   // `surface`: the water's y; `reservoir_depth`: H, > 0.
@@ -60,9 +60,6 @@ class HydrodynamicLoad : public ExternalLoad {
 
   WettedBlock block_;
   double surface_, density_, reservoir_depth_;
-  // at() runs at every right-hand side of the block's equations: the outline's storage is kept
-  // rather than allocated anew each call.
-  mutable WorldPolygon world_;
 };
 
 }  // namespace blockfrag

@@ -4,7 +4,7 @@
 
 namespace blockfrag {
 
-WaterLoad hydrostatic_load(const WorldPolygon& polygon, const StillWater& water,
+WaterLoad hydrostatic_load(std::span<const Vertex> polygon, const StillWater& water,
                            std::span<const std::size_t> crack_edges, const Vertex& reference) {
   const double weight = water.density * water.g;  // rho_w g, N/m^3
   WaterLoad total;

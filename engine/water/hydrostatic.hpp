@@ -16,7 +16,7 @@ namespace blockfrag {
 
 // The force and its moment about `reference` (the block's centre of mass in the world frame).
 // `crack_edges`: the edge indices the reservoir does not wet (the crack's: see wetted_face.hpp).
-WaterLoad hydrostatic_load(const WorldPolygon& polygon, const StillWater& water,
+WaterLoad hydrostatic_load(std::span<const Vertex> polygon, const StillWater& water,
                            std::span<const std::size_t> crack_edges, const Vertex& reference);
 
 // One wetted piece's push and moment added to `total`; `unit_weight` rho_w g.

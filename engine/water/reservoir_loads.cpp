@@ -9,6 +9,7 @@
 #include "engine/seat/turn_cache.hpp"
 #include "engine/tolerances.hpp"
 #include "engine/water/hydrostatic.hpp"
+#include "engine/water/vertex_buffer.hpp"
 
 namespace blockfrag {
 
@@ -66,7 +67,8 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
 ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
   ReservoirPose out;
   const SineCosine turn = cached_turn(s.theta);
-  outline_.place(s, turn, world_);
+  VertexBuffer world(outline_.body().size());
+  outline_.place(s, turn, world.vertices());
   out.centre = outline_.centre(s);
   out.turn = turn;
   const Vertex& centre = out.centre;
@@ -74,12 +76,13 @@ ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
   const double unit_weight = reservoir_.density * g_;
   const bool added_mass = reservoir_.hydrodynamic == Hydrodynamic::westergaard;
   const double z = reservoir_.level - centre[1];
-  for_each_wetted_piece(world_, reservoir_.level, crack_.edges, [&](const WettedPiece& piece) {
+  const auto add_piece = [&](const WettedPiece& piece) {
     add_hydrostatic_piece(out.hydrostatic, piece, unit_weight, centre);
     if (added_mass) add_added_mass_piece(out.added, piece, added_mass_scale_, z, centre);
-  });
+  };
+  for_each_wetted_piece(world.vertices(), reservoir_.level, crack_.edges, add_piece);
   if (reservoir_.uplift == UpliftRule::none) return out;
-  const double head = std::max(0.0, reservoir_.level - mouth_height(out));
+  const double head = std::max(0.0, reservoir_.level - mouth_height(world.vertices(), out));
   out.full_head = reservoir_.density * g_ * head;
   out.closed_mouth = reservoir_.uplift == UpliftRule::unchanged
                          ? rest_mouth_pressure_
@@ -104,10 +107,17 @@ WaterLoad ReservoirLoads::uplift(const ReservoirPose& at_pose, CrackOpening open
     return {turn.cos * fx - turn.sin * fy, turn.sin * fx + turn.cos * fy,
             mouth * per_mouth.moment + head * per_head.moment};
   }
+  return placed_crack_uplift(at_pose, open);
+}
+
+WaterLoad ReservoirLoads::placed_crack_uplift(const ReservoirPose& at_pose,
+                                              CrackOpening open) const {
   const CrackPressure pressure = crack_pressure(reservoir_.uplift, crack_length_,
                                                 at_pose.closed_mouth, at_pose.full_head, open);
-  place_crack(crack_.points, at_pose.turn.cos, at_pose.turn.sin, at_pose.centre, crack_world_);
-  return crack_pressure_load(crack_world_, crack_lengths_, pressure, at_pose.centre);
+  VertexBuffer placed_crack(crack_.points.size());
+  place_crack(crack_.points, at_pose.turn.cos, at_pose.turn.sin, at_pose.centre,
+              placed_crack.vertices());
+  return crack_pressure_load(placed_crack.vertices(), crack_lengths_, pressure, at_pose.centre);
 }
 
 ReservoirLoads::UnitUplifts ReservoirLoads::unit_uplifts(CrackOpening open) const {
@@ -120,8 +130,9 @@ ReservoirLoads::UnitUplifts ReservoirLoads::unit_uplifts(CrackOpening open) cons
   return {per_unit(1.0, 0.0), per_unit(0.0, 1.0)};
 }
 
-double ReservoirLoads::mouth_height(const ReservoirPose& pose) const {
-  if (mouth_vertex_) return world_[*mouth_vertex_][1];
+double ReservoirLoads::mouth_height(std::span<const Vertex> placed,
+                                    const ReservoirPose& pose) const {
+  if (mouth_vertex_) return placed[*mouth_vertex_][1];
   const Vertex& mouth = crack_.points.front();
   return pose.centre[1] + mouth[0] * pose.turn.sin + mouth[1] * pose.turn.cos;
 }

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "engine/scene/block_state.hpp"
@@ -42,7 +43,6 @@ struct ReservoirPose {
   double closed_mouth = 0.0, full_head = 0.0;  // crack_pressure's, "none" aside
 };
 
-// Not to be shared between threads (it keeps the last pose's outline to reuse its storage).
 class ReservoirLoads {
  public:
   // The scene must be valid and have a reservoir.
@@ -68,8 +68,9 @@ class ReservoirLoads {
   WaterLoad uplift(const ReservoirPose& pose, CrackOpening open) const;
 
  private:
-  // The height of the crack's mouth at the pose the outline was last placed at (world_).
-  double mouth_height(const ReservoirPose& pose) const;
+  // The height of the crack's mouth at the pose whose centre and turn `pose` holds, the outline
+  // placed there being `placed`.
+  double mouth_height(std::span<const Vertex> placed, const ReservoirPose& pose) const;
 
   Reservoir reservoir_;
   double g_;
@@ -88,11 +89,11 @@ class ReservoirLoads {
     WaterLoad per_closed_mouth, per_full_head;
   };
   UnitUplifts unit_uplifts(CrackOpening open) const;
+  // The uplift at any other opening: the crack placed at the pose and its pressure integrated.
+  WaterLoad placed_crack_uplift(const ReservoirPose& pose, CrackOpening open) const;
   UnitUplifts closed_uplifts_, whole_uplifts_;
   double rest_mouth_pressure_;  // c rho_w g h at rest
   double added_mass_scale_;     // westergaard_scale, "westergaard" only
-  mutable WorldPolygon world_;
-  mutable std::vector<Vertex> crack_world_;
 };
 
 // The crack of the scene's block at rest, in the scene's frame.

@@ -24,7 +24,9 @@ struct WaterLoad {
 };
 
 // The block's outline at its current pose, in the world frame: counter-clockwise vertices, edge i
-// from vertex i to vertex i + 1 (the last edge closes the polygon).
+// from vertex i to vertex i + 1 (the last edge closes the polygon). What reads an outline placed at
+// every right-hand side takes its vertices as std::span<const Vertex>, which the outline's room on
+// the caller's stack (engine/water/vertex_buffer.hpp) serves as a WorldPolygon does.
 using WorldPolygon = std::vector<Vertex>;
 
 }  // namespace blockfrag

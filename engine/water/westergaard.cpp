@@ -74,8 +74,9 @@ void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, dou
   add_scaled(out.d_dtheta, scale * shallow_x, f_shallow);
 }
 
-AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon, double surface,
-                                                     double density, double reservoir_depth,
+AddedMassWithRates westergaard_added_mass_with_rates(std::span<const Vertex> polygon,
+                                                     double surface, double density,
+                                                     double reservoir_depth,
                                                      std::span<const std::size_t> crack_edges,
                                                      const Vertex& centre) {
   const double scale = westergaard_scale(density, reservoir_depth);
@@ -87,7 +88,7 @@ AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon
   return out;
 }
 
-AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, double density,
+AddedMass westergaard_added_mass(std::span<const Vertex> polygon, double surface, double density,
                                  double reservoir_depth, std::span<const std::size_t> crack_edges,
                                  double reference_y) {
   const double scale = westergaard_scale(density, reservoir_depth);

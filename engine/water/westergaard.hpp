@@ -39,7 +39,7 @@ struct AddedMass {
 // `reservoir_depth` H > 0 (the reservoir's depth at the dam, surface to bottom); the moments are
 // about the height `reference_y` (the block's centre of mass, or its base). `crack_edges` as for
 // the hydrostatic load (engine/water/wetted_face.hpp).
-AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, double density,
+AddedMass westergaard_added_mass(std::span<const Vertex> polygon, double surface, double density,
                                  double reservoir_depth, std::span<const std::size_t> crack_edges,
                                  double reference_y);
 
@@ -52,8 +52,9 @@ AddedMass westergaard_added_mass(const WorldPolygon& polygon, double surface, do
 struct AddedMassWithRates {
   AddedMass at, d_dy, d_dtheta;
 };
-AddedMassWithRates westergaard_added_mass_with_rates(const WorldPolygon& polygon, double surface,
-                                                     double density, double reservoir_depth,
+AddedMassWithRates westergaard_added_mass_with_rates(std::span<const Vertex> polygon,
+                                                     double surface, double density,
+                                                     double reservoir_depth,
                                                      std::span<const std::size_t> crack_edges,
                                                      const Vertex& centre);
 

@@ -37,7 +37,7 @@ struct WettedPiece {
 // Calls visit(const WettedPiece&) for each wetted piece of the counter-clockwise polygon. A surface
 // at or below the polygon's lowest point wets nothing.
 template <class Visit>
-void for_each_wetted_piece(const WorldPolygon& polygon, double surface,
+void for_each_wetted_piece(std::span<const Vertex> polygon, double surface,
                            std::span<const std::size_t> crack_edges, Visit&& visit) {
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {

@@ -56,7 +56,7 @@ Scene wet_type_b_short_seat(UpliftRule rule) {
 
 // The crack at the pose, as the general uplift places it.
 std::vector<Vertex> placed_crack(const ReservoirLoads& loads, const ReservoirPose& pose) {
-  std::vector<Vertex> placed;
+  std::vector<Vertex> placed(loads.crack().points.size());
   place_crack(loads.crack().points, pose.turn.cos, pose.turn.sin, pose.centre, placed);
   return placed;
 }
