@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <map>
 #include <vector>
 
@@ -14,8 +13,6 @@
 namespace blockfrag {
 
 namespace {
-
-constexpr double kCloudNan = std::numeric_limits<double>::quiet_NaN();
 
 // The samples grouped by their exact intensity, in increasing order: what the fit sees.
 struct IntensityGroups {
@@ -38,26 +35,6 @@ IntensityGroups group_by_intensity(const std::vector<double>& im,
     grouped.exceedances.push_back(counts.second);
   }
   return grouped;
-}
-
-// The fit's parameters and their standard errors; NaN where the fit failed, with the bounds the
-// data still place on the median.
-FragilityCurve curve_of_cloud_fit(const IntensityGroups& groups, const LognormalFit& fit) {
-  FragilityCurve curve;
-  curve.median = curve.beta = curve.log_likelihood = kCloudNan;
-  curve.fit_status = fit_status_name(fit.status);
-  curve.median_low = fit.median_low;
-  curve.median_high = fit.median_high;
-  if (fit.status == FitStatus::ok) {
-    curve.median = fit.median;
-    curve.beta = fit.beta;
-    curve.log_likelihood = fit.log_likelihood;
-    const StandardErrors errors =
-        fit_standard_errors(groups.distinct, groups.trials, groups.exceedances, fit);
-    curve.median_se = errors.median;
-    curve.beta_se = errors.beta;
-  }
-  return curve;
 }
 
 // Each display bin's sums over its samples; expected: their fitted probabilities.
@@ -116,19 +93,16 @@ FragilityCurve fragility_from_samples(const std::vector<double>& im,
   const IntensityGroups groups = group_by_intensity(im, exceeded);
   const LognormalFit fit =
       fit_lognormal_fragility(groups.distinct, groups.trials, groups.exceedances);
-  FragilityCurve curve = curve_of_cloud_fit(groups, fit);
+  FragilityCurve curve;
+  fill_lognormal_fit(curve, fit, groups.distinct, groups.trials, groups.exceedances);
   if (im.empty() || bins == 0) return curve;
   const std::vector<double> expected =
       add_display_points(fill_display_bins(im, exceeded, groups, fit, bins), curve);
   // Goodness of fit over the display bins (Hosmer & Lemeshow's grouping): each bin's expected
   // exceedances are the sum of its samples' fitted probabilities.
   if (fit.status == FitStatus::ok) {
-    const GoodnessOfFit gof =
-        goodness_of_fit(curve.im, curve.trials, curve.exceedances, fit.median, fit.beta, expected);
-    curve.deviance = gof.deviance;
-    curve.gof_dof = gof.dof;
-    curve.gof_p_value = gof.p_value;
-    curve.max_misfit = gof.max_misfit;
+    fill_goodness_of_fit(curve, goodness_of_fit(curve.im, curve.trials, curve.exceedances,
+                                                fit.median, fit.beta, expected));
   }
   return curve;
 }

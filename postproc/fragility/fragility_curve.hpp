@@ -4,12 +4,16 @@
 
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "postproc/fragility/bootstrap.hpp"
 
 namespace blockfrag {
+
+struct LognormalFit;
+struct GoodnessOfFit;
 
 struct FragilityCurve {
   std::vector<double> im;
@@ -40,5 +44,14 @@ struct FragilityCurve {
 // im[k] is level k's intensity, trials[k] its samples, exceedances[k] those past the limit state.
 FragilityCurve fragility_from_counts(std::vector<double> im, std::vector<std::int64_t> trials,
                                      std::vector<std::int64_t> exceedances);
+
+// The fit's status and the bounds the data place on its median; with a fit (status ok) its median,
+// beta, log-likelihood and their standard errors over the counts it was fitted to, NaN without.
+// The binned and the cloud curves (cloud_fragility.hpp) report their fits alike.
+void fill_lognormal_fit(FragilityCurve& curve, const LognormalFit& fit, std::span<const double> im,
+                        std::span<const std::int64_t> trials,
+                        std::span<const std::int64_t> exceedances);
+
+void fill_goodness_of_fit(FragilityCurve& curve, const GoodnessOfFit& gof);
 
 }  // namespace blockfrag

@@ -10,6 +10,7 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_erf.h>
 
+#include "postproc/fragility/backtracking_line_search.hpp"
 #include "postproc/fragility/lognormal_fit.hpp"
 #include "postproc/fragility/normal_probability.hpp"
 
@@ -255,20 +256,21 @@ struct SurfaceClimb {
   double newton_decrement = SurfaceFit::nan;
 };
 
-// The backtracking line search along `step` from theta, which it moves with e; false when even the
-// shortest step gains nothing (rounding alone is left).
+// theta moved along `step` by the backtracking line search, with e; false when even the shortest
+// step gains nothing (rounding alone is left).
 bool search_along_step(const std::vector<Cell>& cells, double c1, double c2, const Vector3& step,
-                       double predicted, bool unresolvable, Vector3& theta, Evaluation& e) {
-  for (double t = 1.0; t > 1e-18; t *= 0.5) {
-    const Vector3 trial{theta[0] + t * step[0], theta[1] + t * step[1], theta[2] + t * step[2]};
-    const Evaluation trial_e = evaluate(cells, c1, c2, trial);
-    if (unresolvable || trial_e.kernel >= e.kernel + 1e-4 * t * predicted) {
-      theta = trial;
-      e = trial_e;
-      return true;
-    }
-  }
-  return false;
+                       const AscentStart& start, Vector3& theta, Evaluation& e) {
+  Vector3 trial = theta;
+  Evaluation trial_e;
+  const auto kernel_at = [&](double t) {
+    trial = {theta[0] + t * step[0], theta[1] + t * step[1], theta[2] + t * step[2]};
+    trial_e = evaluate(cells, c1, c2, trial);
+    return trial_e.kernel;
+  };
+  if (!backtracking_line_search(start, kernel_at)) return false;
+  theta = trial;
+  e = trial_e;
+  return true;
 }
 
 SurfaceClimb climb_surface(const std::vector<Cell>& cells, double c1, double c2,
@@ -287,10 +289,8 @@ SurfaceClimb climb_surface(const std::vector<Cell>& cells, double c1, double c2,
       climb.converged = true;
       break;
     }
-    // Close to the maximum the predicted gain is below what ln L can resolve: take the step whole.
-    const bool unresolvable = inverse && predicted <= 1e-13 * (e.kernel_scale + 1.0);
-    if (!search_along_step(cells, c1, c2, step, predicted, unresolvable, climb.theta, climb.e))
-      break;
+    const AscentStart from{e.kernel, e.kernel_scale, predicted, inverse.has_value()};
+    if (!search_along_step(cells, c1, c2, step, from, climb.theta, climb.e)) break;
   }
   return climb;
 }

@@ -11,6 +11,7 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_sf_erf.h>
 
+#include "postproc/fragility/backtracking_line_search.hpp"
 #include "postproc/fragility/normal_probability.hpp"
 
 // The fit works in probit coordinates: p_j = Phi(a + s (u_j - centre)), u_j = ln x_j, s = 1 / beta,
@@ -246,18 +247,18 @@ bool climb_one_step(const std::vector<Level>& levels, double centre, ProbitPoint
   const double ds =
       newton ? (e.curvature_aa * e.gradient_s - e.curvature_as * e.gradient_a) / det : e.gradient_s;
   const double predicted = e.gradient_a * da + e.gradient_s * ds;
-  // Close to the maximum the predicted gain is below what ln L can resolve: take the step whole.
-  const bool unresolvable = newton && predicted <= 1e-13 * (e.kernel_scale + 1.0);
-  for (double t = 1.0; t > 1e-18; t *= 0.5) {
-    const ProbitPoint trial{point.a + t * da, point.s + t * ds};
-    const ProbitEvaluation trial_e = evaluate(levels, centre, trial);
-    if (unresolvable || trial_e.kernel >= e.kernel + 1e-4 * t * predicted) {
-      point = trial;
-      e = trial_e;
-      return true;
-    }
-  }
-  return false;
+  ProbitPoint trial = point;
+  ProbitEvaluation trial_e;
+  const auto kernel_at = [&](double t) {
+    trial = {point.a + t * da, point.s + t * ds};
+    trial_e = evaluate(levels, centre, trial);
+    return trial_e.kernel;
+  };
+  if (!backtracking_line_search({e.kernel, e.kernel_scale, predicted, newton}, kernel_at))
+    return false;
+  point = trial;
+  e = trial_e;
+  return true;
 }
 
 ProbitClimb climb_to_maximum(const std::vector<Level>& levels, double centre, double tolerance,

@@ -99,7 +99,9 @@ std::pair<double, double> state_slopes(const NestedStateData& state, double u, d
 }
 
 // ln theta maximising one state's ln L at this beta (concave in it): Newton's method from
-// `start`, each step halved until ln L rises, kept in the search range.
+// `start`, each step halved until ln L rises, kept in the search range. A search of its own, not
+// backtracking_line_search.hpp: the move is clamped to the range (halving the step need not halve
+// it), a move that does not lower ln L is accepted and the halving stops on the move's size.
 double best_log_median(const NestedStateData& state, double beta, double start) {
   const MedianSearch range = median_range(state);
   double u = std::clamp(start, range.low, range.high);
