@@ -35,11 +35,8 @@ class BlockOutline {
   }
   // The centre of mass at pose s, in the scene's frame.
   Vertex centre(const BlockState& s) const { return {offset_[0] + s.x, offset_[1] + s.y}; }
-  // The vertices at pose s into `out` (as many as body()).
-  void place(const BlockState& s, std::span<Vertex> out) const {
-    place(s, sine_cosine(s.theta), out);
-  }
-  // The same with s.theta's sine and cosine given, for a caller that turns more than the outline.
+  // The vertices at pose s into `out` (as many as body()), s.theta's sine and cosine given: the
+  // caller turns more than the outline.
   void place(const BlockState& s, const SineCosine& turn, std::span<Vertex> out) const;
 
  private:
