@@ -4,6 +4,7 @@
 // vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -110,6 +111,13 @@ class SeatContacts {
   bool within_ends(const BlockState& s) const {
     const double reach = block_radius_ * (1.0 + kGeometryRounding);
     return s.x - reach >= seat_.front().x && s.x + reach <= seat_.back().x;
+  }
+  // Whether within_ends holds at every tilt of a block turning about its point at p (each of its
+  // points within the block's diameter of p): a pivot's, asked once for all its steps.
+  bool within_ends_turning_about(Vec2 p) const {
+    const double reach =
+        2.0 * block_radius_ * (1.0 + kGeometryRounding) + kGeometryRounding * std::abs(p.x);
+    return p.x - reach >= seat_.front().x && p.x + reach <= seat_.back().x;
   }
   // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
   // rotation for all, for the guards that look at every vertex.

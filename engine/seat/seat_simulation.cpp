@@ -238,6 +238,10 @@ SeatSimulation::Crossing SeatSimulation::refine_crossing(
       system.event(found.which) == SeatEvent::touches) {
     found = landing_at_zero(guards_at, t0, found, clearance_noise(state_));
   }
+  // Turning about a pivot well inside the seat's ends, no vertex can pass one (a flat seat's).
+  if constexpr (std::is_same_v<Ode, SeatOde<PivotChart>>) {
+    if (contacts_.within_ends_turning_about(ode.chart().point)) return found;
+  }
   const Crossing under = touch_before_an_end(system, state_at, t0, t1);
   if (under.which >= 0 && under.after < found.after) found = under;
   return found;

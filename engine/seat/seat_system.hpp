@@ -240,6 +240,7 @@ class SeatOde {
       : system_(&system), chart_(chart), sweep_(&sweep) {}
 
   SeatSystem& system() const { return *system_; }
+  const Chart& chart() const { return chart_; }
   OdeState<N> scale() const { return chart_.scale(system_->length_scale(), system_->g()); }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
     const BlockState s = chart_.full(t, q);
