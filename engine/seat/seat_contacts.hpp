@@ -174,6 +174,9 @@ class SeatContacts {
   // The contact height (m): a vertex at a seat's end, the type B block rocking on its toe there, is
   // under the end segment's line or past its end by rounding only.
   double end_depth_ = 0.0;
+  // Above the seat: a point over its x range higher than this is above every segment there, its
+  // clearance positive (the seat's highest point and its rounding).
+  double over_top_ = 0.0;
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
 };
