@@ -102,8 +102,17 @@ class GuardWatch {
 
   // The step is kept: its end values become the next step's start.
   void advance(const std::array<double, G>& next) {
-    for (const int i : live()) armed_[i] = armed_[i] || next[i] > kArmingMargin;
-    value_ = next;
+    if constexpr (G > kCopiedWhole) {
+      // Only the live guards' values are read: copying all G was half of this on a seat (G = 64,
+      // most slots unused).
+      for (const int i : live()) {
+        armed_[i] = armed_[i] || next[i] > kArmingMargin;
+        value_[i] = next[i];
+      }
+    } else {
+      for (const int i : live()) armed_[i] = armed_[i] || next[i] > kArmingMargin;
+      value_ = next;
+    }
   }
 
  private:
@@ -257,6 +266,10 @@ class GuardWatch {
       return;
     }
   }
+
+  // A system of at most this many guards (the flat ground's modes' few) has its values copied
+  // whole at each step: one copy costs less than a loop over them.
+  static constexpr int kCopiedWhole = 8;
 
   std::array<double, G> value_;
   std::array<double, G> unarmed_offset_{};  // an unarmed guard fires below minus this
