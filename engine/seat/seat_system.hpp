@@ -244,7 +244,7 @@ class SeatOde {
   OdeState<N> scale() const { return chart_.scale(system_->length_scale(), system_->g()); }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
     if constexpr (std::is_same_v<Chart, PivotChart>) {
-      const Vec2 r = chart_.arm(q[0]);
+      const Vec2 r = chart_.fresh_arm(q[0]);
       const BlockState s = chart_.full_at_arm(q, r);
       if (const std::optional<double> turning = system_->pivot_turning(t, s, r)) {
         dq = {q[1], *turning};
