@@ -252,7 +252,7 @@ void SeatSimulation::note_contact_violation(const Ode& ode, double t, const Stat
                                             const ForcesAt&) {
   SeatSystem& system = ode.system();
   if (system.active_count() == 0) return;
-  const FixedStateForces f = system.solve(t, state_at(t));
+  const FixedStateForces& f = system.solve(t, state_at(t));
   for (int i = 0; i < system.active_count(); ++i) {
     const auto at = static_cast<std::size_t>(i);
     summary_.max_contact_violation =

@@ -103,8 +103,8 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, co
       count_ >= 2 ? seated_load(in, s, std::span(contacts).first(n), std::span(states).first(n))
       : c_.external == nullptr ? dry_lifted_load(c_, t, s)
                                : wet_lifted_load(t, s);
-  std::optional<FixedStateForces> one;
-  if (count_ == 1) one = one_contact_forces(contacts[0], states[0], s, load, c_.mu);
+  const std::optional<FixedStateForces> one =
+      count_ == 1 ? one_contact_forces(contacts[0], states[0], s, load, c_.mu) : std::nullopt;
   last_solve_.forces = one ? *one
                            : fixed_state_forces(std::span(contacts).first(n),
                                                 std::span(states).first(n), s, load, c_.mu);
