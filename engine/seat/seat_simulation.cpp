@@ -20,11 +20,15 @@
 
 namespace blockfrag {
 
+SeatSystemContext SeatSimulation::system_context(const MotionPiece& piece) const {
+  return {&contacts_,      &geometry_,
+          &piece,          &vertical_.piece_at(t_),
+          scene_.g,        scene_.contact.friction,
+          kFallDepth * R_, external_};
+}
+
 SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
-  const SeatSystemContext context{&contacts_,      &geometry_,
-                                  &piece,          &vertical_.piece_at(t_),
-                                  scene_.g,        scene_.contact.friction,
-                                  kFallDepth * R_, external_};
+  const SeatSystemContext context = system_context(piece);
   // Vertices and points in an active contact are not watched for touching: they touch.
   WatchedList vertices, points;
   const double near = kSeatContactDrift * R_;
@@ -302,7 +306,7 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) const {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
-  return system(piece).contacts_hold(t_, state_);
+  return forces_system(piece).contacts_hold(t_, state_);
 }
 
 void SeatSimulation::place_at_start() {
@@ -372,7 +376,7 @@ ContactForces SeatSimulation::forces_now() const {
     return {-f.x, -f.y};
   }
   if (!stopped_ && !mode_.active.empty()) {
-    SeatSystem now = system(motion_.piece_at(t_));
+    SeatSystem now = forces_system(motion_.piece_at(t_));
     return now.forces(t_, state_);
   }
   return {0.0, 0.0};
