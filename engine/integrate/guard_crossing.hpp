@@ -102,8 +102,17 @@ class GuardWatch {
 
   // The step is kept: its end values become the next step's start.
   void advance(const std::array<double, G>& next) {
-    for (const int i : live()) armed_[i] = armed_[i] || next[i] > kArmingMargin;
-    value_ = next;
+    if constexpr (G > kCopiedWhole) {
+      // Only the live guards' values are read: copying all G was half of this on a seat (G = 64,
+      // most slots unused).
+      for (const int i : live()) {
+        armed_[i] = armed_[i] || next[i] > kArmingMargin;
+        value_[i] = next[i];
+      }
+    } else {
+      for (const int i : live()) armed_[i] = armed_[i] || next[i] > kArmingMargin;
+      value_ = next;
+    }
   }
 
  private:
@@ -129,28 +138,38 @@ class GuardWatch {
     std::array<int, G> seen_count;
   };
 
-  // The step's ends, and which guards are looked inside; returns whether any is.
+  // The step's ends, and which guards are looked inside; returns whether any is. Of an armed guard
+  // clearly positive at both ends (most of a seat's, at most steps) only its end value is read
+  // after: its bracket, its samples and its question to least_at_ends are left unset.
   template <class LeastAtEnds>
   bool start_scan(Scan& scan, double t0, double t1, const std::array<double, G>& next,
                   const LeastAtEnds& least_at_ends) const {
     std::array<bool, G> asked{};
     bool any_asked = false;
+    std::array<int, G> bracketed;  // the guards whose bracket is set, the first count of them
+    int count = 0;
     for (const int i : live()) {
       scan.offset[i] = armed_[i] ? 0.0 : unarmed_offset_[i];
-      scan.a[i] = t0;
-      scan.fa[i] = std::max(value_[i] + scan.offset[i], std::numeric_limits<double>::min());
-      scan.b[i] = t1;
+      const double fa = std::max(value_[i] + scan.offset[i], std::numeric_limits<double>::min());
       scan.fb[i] = next[i] + scan.offset[i];
-      const double least = std::min(scan.fa[i], scan.fb[i]);
+      const double least = std::min(fa, scan.fb[i]);
       // A guard close to zero may dip below it and come back inside one step: look inside.
       scan.sampled[i] = !armed_[i] || least < kNearZero;
+      if (!scan.sampled[i] && scan.fb[i] > 0) {
+        scan.looked_inside[i] = false;
+        continue;
+      }
+      scan.a[i] = t0;
+      scan.fa[i] = fa;
+      scan.b[i] = t1;
       // Clearly positive: above the guards' rounding noise by far.
       asked[i] = scan.sampled[i] && least > 0.5 * kArmingMargin;
       any_asked = any_asked || asked[i];
+      bracketed[static_cast<std::size_t>(count++)] = i;
     }
     const std::array<bool, G> claimed = any_asked ? least_at_ends(asked) : std::array<bool, G>{};
     bool any_sampled = false;
-    for (const int i : live()) {
+    for (const int i : std::span(bracketed).first(static_cast<std::size_t>(count))) {
       scan.sampled[i] = scan.sampled[i] && !(asked[i] && claimed[i]);
       scan.looked_inside[i] = scan.sampled[i];
       scan.seen[i][0] = scan.fa[i];
@@ -247,6 +266,10 @@ class GuardWatch {
       return;
     }
   }
+
+  // A system of at most this many guards (the flat ground's modes' few) has its values copied
+  // whole at each step: one copy costs less than a loop over them.
+  static constexpr int kCopiedWhole = 8;
 
   std::array<double, G> value_;
   std::array<double, G> unarmed_offset_{};  // an unarmed guard fires below minus this

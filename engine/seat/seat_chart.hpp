@@ -67,8 +67,15 @@ struct PivotChart {
   OdeState<N> scale(double R, double g) const { return {1.0, std::sqrt(g / R)}; }
   // The pivot less the centre of mass at theta.
   Vec2 arm(double theta) const { return seat_chart_detail::turned(body, theta); }
-  BlockState full(double, const OdeState<N>& q) const {
-    const Vec2 r = arm(q[0]);
+  // arm(theta) at a tilt not asked for before (a right-hand side's stage: fresh_turn).
+  Vec2 fresh_arm(double theta) const {
+    const SineCosine turn = fresh_turn(theta);
+    return rotate(body, turn.cos, turn.sin);
+  }
+  BlockState full(double, const OdeState<N>& q) const { return full_at_arm(q, arm(q[0])); }
+  // full() with the arm at q's tilt given: a right-hand side turns it once for the state and the
+  // turning.
+  BlockState full_at_arm(const OdeState<N>& q, Vec2 r) const {
     return {point.x - r.x, point.y - r.y, q[0], q[1] * r.y, -q[1] * r.x, q[1]};
   }
   OdeState<N> coordinates(const BlockState& b) const { return {b.theta, b.omega}; }

@@ -4,6 +4,7 @@
 // vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -111,6 +112,13 @@ class SeatContacts {
     const double reach = block_radius_ * (1.0 + kGeometryRounding);
     return s.x - reach >= seat_.front().x && s.x + reach <= seat_.back().x;
   }
+  // Whether within_ends holds at every tilt of a block turning about its point at p (each of its
+  // points within the block's diameter of p): a pivot's, asked once for all its steps.
+  bool within_ends_turning_about(Vec2 p) const {
+    const double reach =
+        2.0 * block_radius_ * (1.0 + kGeometryRounding) + kGeometryRounding * std::abs(p.x);
+    return p.x - reach >= seat_.front().x && p.x + reach <= seat_.back().x;
+  }
   // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
   // rotation for all, for the guards that look at every vertex.
   void world_vertices(const BlockState& s, std::span<Vec2> out) const;
@@ -166,6 +174,9 @@ class SeatContacts {
   // The contact height (m): a vertex at a seat's end, the type B block rocking on its toe there, is
   // under the end segment's line or past its end by rounding only.
   double end_depth_ = 0.0;
+  // Above the seat: a point over its x range higher than this is above every segment there, its
+  // clearance positive (the seat's highest point and its rounding).
+  double over_top_ = 0.0;
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
 };

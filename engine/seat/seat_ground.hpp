@@ -128,7 +128,13 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   double kinetic_energy(const BlockState& s) const {
     return 0.5 * load_at(t_, s).inertia.twice_kinetic(velocity_of(s));
   }
+  SeatSystemContext system_context(const MotionPiece& piece) const;
   SeatSystem system(const MotionPiece& piece) const;
+  // The system of the current mode for its contact forces alone, watching no vertex or point: what
+  // a piece boundary asks of the mode, at each sample of a record.
+  SeatSystem forces_system(const MotionPiece& piece) const {
+    return SeatSystem(system_context(piece), mode_.active, {}, {});
+  }
   // The sweep of `system` turning on `chart`: the last one built where it serves them, rebound.
   const PivotSweep& sweep_for(const SeatSystem& system, const PivotChart& chart);
   PlanarContact contact_of(const SeatPair& pair, const BlockState& s) const {

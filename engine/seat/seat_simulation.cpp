@@ -20,11 +20,15 @@
 
 namespace blockfrag {
 
+SeatSystemContext SeatSimulation::system_context(const MotionPiece& piece) const {
+  return {&contacts_,      &geometry_,
+          &piece,          &vertical_.piece_at(t_),
+          scene_.g,        scene_.contact.friction,
+          kFallDepth * R_, external_};
+}
+
 SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
-  const SeatSystemContext context{&contacts_,      &geometry_,
-                                  &piece,          &vertical_.piece_at(t_),
-                                  scene_.g,        scene_.contact.friction,
-                                  kFallDepth * R_, external_};
+  const SeatSystemContext context = system_context(piece);
   // Vertices and points in an active contact are not watched for touching: they touch.
   WatchedList vertices, points;
   const double near = kSeatContactDrift * R_;
@@ -40,7 +44,11 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
     const bool active = std::any_of(mode_.active.begin(), mode_.active.end(), [&](const auto& a) {
       if (a.pair.kind == ContactKind::seat_point) return a.pair.seat == k;
       const Vec2 v = contacts_.vertex_at(a.pair.block, state_);
-      return std::hypot(v.x - p.x, v.y - p.y) <= near;
+      // hypot is never below the larger of its arguments: farther than `near` along x or y, the
+      // vertex is farther in all (most points, at each piece of a record), without the hypot.
+      const double dx = v.x - p.x, dy = v.y - p.y;
+      if (std::max(std::abs(dx), std::abs(dy)) > near) return false;
+      return std::hypot(dx, dy) <= near;
     });
     if (!active) points.push_back(k);
   }
@@ -238,6 +246,10 @@ SeatSimulation::Crossing SeatSimulation::refine_crossing(
       system.event(found.which) == SeatEvent::touches) {
     found = landing_at_zero(guards_at, t0, found, clearance_noise(state_));
   }
+  // Turning about a pivot well inside the seat's ends, no vertex can pass one (a flat seat's).
+  if constexpr (std::is_same_v<Ode, SeatOde<PivotChart>>) {
+    if (contacts_.within_ends_turning_about(ode.chart().point)) return found;
+  }
   const Crossing under = touch_before_an_end(system, state_at, t0, t1);
   if (under.which >= 0 && under.after < found.after) found = under;
   return found;
@@ -248,7 +260,7 @@ void SeatSimulation::note_contact_violation(const Ode& ode, double t, const Stat
                                             const ForcesAt&) {
   SeatSystem& system = ode.system();
   if (system.active_count() == 0) return;
-  const FixedStateForces f = system.solve(t, state_at(t));
+  const FixedStateForces& f = system.solve(t, state_at(t));
   for (int i = 0; i < system.active_count(); ++i) {
     const auto at = static_cast<std::size_t>(i);
     summary_.max_contact_violation =
@@ -298,7 +310,7 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) const {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
-  return system(piece).contacts_hold(t_, state_);
+  return forces_system(piece).contacts_hold(t_, state_);
 }
 
 void SeatSimulation::place_at_start() {
@@ -368,7 +380,7 @@ ContactForces SeatSimulation::forces_now() const {
     return {-f.x, -f.y};
   }
   if (!stopped_ && !mode_.active.empty()) {
-    SeatSystem now = system(motion_.piece_at(t_));
+    SeatSystem now = forces_system(motion_.piece_at(t_));
     return now.forces(t_, state_);
   }
   return {0.0, 0.0};

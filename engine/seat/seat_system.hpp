@@ -240,16 +240,21 @@ class SeatOde {
       : system_(&system), chart_(chart), sweep_(&sweep) {}
 
   SeatSystem& system() const { return *system_; }
+  const Chart& chart() const { return chart_; }
   OdeState<N> scale() const { return chart_.scale(system_->length_scale(), system_->g()); }
   void operator()(double t, const OdeState<N>& q, OdeState<N>& dq) const {
-    const BlockState s = chart_.full(t, q);
     if constexpr (std::is_same_v<Chart, PivotChart>) {
-      if (const std::optional<double> turning = system_->pivot_turning(t, s, chart_.arm(q[0]))) {
+      const Vec2 r = chart_.fresh_arm(q[0]);
+      const BlockState s = chart_.full_at_arm(q, r);
+      if (const std::optional<double> turning = system_->pivot_turning(t, s, r)) {
         dq = {q[1], *turning};
         return;
       }
+      dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
+    } else {
+      const BlockState s = chart_.full(t, q);
+      dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
     }
-    dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
   }
   std::array<double, kGuards> guards(double t, const OdeState<N>& q) const {
     return system_->guards(t, chart_.full(t, q));

@@ -23,21 +23,41 @@ struct RecentTurns {
   std::size_t next = 0;  // the entry replaced next, in turn
 };
 
-}  // namespace turn_cache_detail
-
-// sine_cosine(theta), to the bit.
-inline SineCosine cached_turn(double theta) {
-  using turn_cache_detail::RecentTurns;
+// The one cache per thread.
+inline RecentTurns& recent_turns() {
   thread_local RecentTurns recent;
-  const auto bits = std::bit_cast<std::uint64_t>(theta);
-  for (std::size_t i = 0; i < RecentTurns::kEntries; ++i) {
-    if (recent.bits[i] == bits) return recent.turns[i];
-  }
+  return recent;
+}
+
+// Computes and remembers sine_cosine(theta) in the entry replaced next.
+inline SineCosine remember_turn(RecentTurns& recent, std::uint64_t bits, double theta) {
   const std::size_t at = recent.next;
   recent.next = (at + 1) % RecentTurns::kEntries;
   recent.bits[at] = bits;
   recent.turns[at] = sine_cosine(theta);
   return recent.turns[at];
+}
+
+}  // namespace turn_cache_detail
+
+// sine_cosine(theta), to the bit.
+inline SineCosine cached_turn(double theta) {
+  using turn_cache_detail::RecentTurns;
+  RecentTurns& recent = turn_cache_detail::recent_turns();
+  const auto bits = std::bit_cast<std::uint64_t>(theta);
+  for (std::size_t i = 0; i < RecentTurns::kEntries; ++i) {
+    if (recent.bits[i] == bits) return recent.turns[i];
+  }
+  return turn_cache_detail::remember_turn(recent, bits, theta);
+}
+
+// cached_turn(theta) for a tilt not asked for before, remembered for the askers after it without
+// looking for it first: a Runge-Kutta stage's (a pivot's right-hand side turns its arm to each
+// stage's new tilt; its step's end is asked for again by the guards). Were it there, the entry
+// added holds the same bits as the one found.
+inline SineCosine fresh_turn(double theta) {
+  return turn_cache_detail::remember_turn(turn_cache_detail::recent_turns(),
+                                          std::bit_cast<std::uint64_t>(theta), theta);
 }
 
 }  // namespace blockfrag
