@@ -111,7 +111,8 @@ class GroundMotionPieces {
   GroundMotionPieces(const std::vector<double>& times, const std::vector<double>& lambdas);
 
   // The first piece with t < end. A simulation asks in time order, mostly for the piece it asked
-  // for last: that one is looked at here, inline (every event asks), the others by search().
+  // for last: that one is looked at here, inline (every event asks), the others by search(). The
+  // piece found is kept (last_), so a motion is not to be shared between threads.
   const MotionPiece& piece_at(double t) const {
     if (t < pieces_[last_].end() && (last_ == 0 || !(t < pieces_[last_ - 1].end()))) {
       return pieces_[last_];
