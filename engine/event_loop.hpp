@@ -330,8 +330,8 @@ auto EventLoop<Ground>::crossing_in_step(const Ode& ode, Stepper& stepper,
                             }};
   const auto least_at_ends = [&](const std::array<bool, Ode::kGuards>& asked) {
     const auto one_way = [&](int i) { return stepper.moves_one_way(i); };
-    if constexpr (requires { ode.guard_claims(q0, q, one_way, asked); }) {
-      return ode.guard_claims(q0, q, one_way, asked);
+    if constexpr (requires { ode.guard_claims(t0, t, q0, q, one_way, asked); }) {
+      return ode.guard_claims(t0, t, q0, q, one_way, asked);
     } else {
       return ode.least_at_ends(q0, q, one_way);
     }

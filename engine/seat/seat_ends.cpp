@@ -47,6 +47,19 @@ void SeatSystem::claim_contact_guards(bool place_one_way, bool rate_one_way,
   }
 }
 
+void SeatSystem::claim_lift_offs(GuardClaims& claims) const {
+  for (int i = 0; i < count_; ++i) {
+    if (active_[static_cast<std::size_t>(i)].state == ContactState::stick) continue;
+    claims[static_cast<std::size_t>(2 + kSeatContactGuards * i)] = true;
+  }
+}
+
+bool SeatSystem::slide_forces_one_way(double t0, double t1, double rise) const {
+  if (!c_.vertical->is_zero() || !c_.piece->extrema_between(t0, t1).empty()) return false;
+  if (c_.external == nullptr) return true;
+  return rise == 0.0 && c_.external->seated_crack() == SeatedCrack::unaffected;
+}
+
 template <class HeightLeastAtEnds>
 bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
                                          const HeightLeastAtEnds& height_least_at_ends) const {
@@ -215,9 +228,11 @@ GuardClaims SeatSystem::slip_claims(bool place_one_way, bool rate_one_way) const
 // linear in the place, and the least of such heights over a valley is concave in it. A seat point's
 // distance from a moving edge is convex in the place, and can be least inside: not claimed.
 GuardClaims SeatSystem::slide_claims(const BlockState& s0, const BlockState& s1, bool place_one_way,
-                                     bool rate_one_way, const GuardClaims& asked) const {
+                                     bool rate_one_way, bool forces_one_way,
+                                     const GuardClaims& asked) const {
   GuardClaims claims = unused_guards();
   claim_contact_guards(place_one_way, rate_one_way, claims);
+  if (forces_one_way) claim_lift_offs(claims);
   if (!place_one_way) return claims;
   claim_overturn_and_fall(std::min(s0.x, s1.x), std::max(s0.x, s1.x), true, true, claims);
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);

@@ -115,9 +115,18 @@ class SeatSystem {
   // guard not asked is not looked at. Turning about a fixed point: PivotSweep.
   // A vertex slipping along a line, its place and its rate along it moving one way or not:
   GuardClaims slip_claims(bool place_one_way, bool rate_one_way) const;
-  // Sliding without turning between the states s0 and s1, its place and rate likewise:
+  // Sliding without turning between the states s0 and s1, its place and rate likewise, and its
+  // contacts' normal forces moving one way or not (slide_forces_one_way):
   GuardClaims slide_claims(const BlockState& s0, const BlockState& s1, bool place_one_way,
-                           bool rate_one_way, const GuardClaims& asked) const;
+                           bool rate_one_way, bool forces_one_way, const GuardClaims& asked) const;
+  // Whether, sliding from t0 to t1 along a line whose direction's y is `rise`, each contact's
+  // normal force moves one way. The contact problem's matrix is the slide's, unchanged, and its
+  // right-hand side is affine in lambda where the loads do not depend on the place: without water
+  // (gravity and the ground's inertia act at the centre of mass at any pose), and with water on a
+  // level slide (rise 0: the block keeps its height and tilt, and the water's loads move with it)
+  // whose crack the contact forces do not open (SeatedCrack::unaffected). There, while lambda
+  // moves one way and lambda_v is zero, so does each normal force.
+  bool slide_forces_one_way(double t0, double t1, double rise) const;
   // Any other motion, the centre of mass's x from x0 to x1 (in flight theta is linear in time: it
   // moves one way):
   GuardClaims free_claims(double x0, double x1, bool x_one_way, bool theta_one_way) const;
@@ -135,6 +144,8 @@ class SeatSystem {
   // A slipping contact's guards, where its tangential velocity is a positive multiple of the
   // chart's rate and its place along its run is linear in the chart's place.
   void claim_contact_guards(bool place_one_way, bool rate_one_way, GuardClaims& claims) const;
+  // The lift-off guards of the slipping contacts (their normal forces moving one way).
+  void claim_lift_offs(GuardClaims& claims) const;
   // A watched vertex whose x stays in [x_lo, x_hi]: where the segments there make a valley, its
   // clearance is the least of its heights over their lines, and is least at an end when each of
   // those is (height_least_at_ends(k) for the line of segment k, whose slope is finite).
@@ -273,20 +284,21 @@ class SeatOde {
     return system_->forces(t, chart_.full(t, q));
   }
   OdeState<N> coordinates(const BlockState& b) const { return chart_.coordinates(b); }
-  // The claims of the guards `asked` names over a step from q0 to q1 (a guard claimed is least at
-  // one of its ends, so no sample inside can find it lower): one_way(i) says whether coordinate i
-  // of the dense output moves one way.
+  // The claims of the guards `asked` names over a step from q0 at t0 to q1 at t1 (a guard claimed
+  // is least at one of its ends, so no sample inside can find it lower): one_way(i) says whether
+  // coordinate i of the dense output moves one way.
   template <class OneWay>
-  GuardClaims guard_claims(const OdeState<N>& q0, const OdeState<N>& q1, const OneWay& one_way,
-                           const GuardClaims& asked) const {
+  GuardClaims guard_claims(double t0, double t1, const OdeState<N>& q0, const OdeState<N>& q1,
+                           const OneWay& one_way, const GuardClaims& asked) const {
     if constexpr (std::is_same_v<Chart, PivotChart>) {
       if (!one_way(0)) return system_->unused_guards();
       return sweep_->claims(q0[0], q1[0], asked);
     } else if constexpr (std::is_same_v<Chart, SlipChart>) {
       return system_->slip_claims(one_way(2), one_way(3));
     } else if constexpr (std::is_same_v<Chart, SlideChart>) {
-      return system_->slide_claims(chart_.full(0.0, q0), chart_.full(0.0, q1), one_way(0),
-                                   one_way(1), asked);
+      return system_->slide_claims(
+          chart_.full(0.0, q0), chart_.full(0.0, q1), one_way(0), one_way(1),
+          system_->slide_forces_one_way(t0, t1, chart_.line.direction.y), asked);
     } else if constexpr (std::is_same_v<Chart, FlightChart>) {
       return system_->free_claims(chart_.full(chart_.t0, q0).x, chart_.full(chart_.t0, q1).x,
                                   one_way(0), true);

@@ -5,6 +5,7 @@
 // made.
 #include <algorithm>
 #include <array>
+#include <numbers>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -130,7 +131,7 @@ TEST(SeatEnds, PivotClaimsHoldOverRandomSteps) {
       const double theta0 = u(-0.6, 0.6);
       const double theta1 = theta0 + (n % 2 == 0 ? u(-0.3, 0.3) : u(-1e-3, 1e-3));
       const auto claims = ode.guard_claims(
-          {theta0, 0.2}, {theta1, 0.2}, [](int) { return true; }, kEveryGuard);
+          0.0, 0.0, {theta0, 0.2}, {theta1, 0.2}, [](int) { return true; }, kEveryGuard);
       claimed += check_claims(system, claims, [&](double f) {
         return ode.guards(0.0, {theta0 + f * (theta1 - theta0), 0.2});
       });
@@ -153,14 +154,14 @@ TEST(SeatEnds, RockingOnTheHeelTheFoldsClearancesAreLeastAtAnEnd) {
   const SeatOde ode(system, chart, sweep);
   for (const double theta : {1e-6, 1e-3, 0.1}) {
     const auto claims = ode.guard_claims(
-        {theta, 0.1}, {theta * 1.01, 0.1}, [](int) { return true; }, kEveryGuard);
+        0.0, 0.0, {theta, 0.1}, {theta * 1.01, 0.1}, [](int) { return true; }, kEveryGuard);
     EXPECT_TRUE(claims[0]);                         // overturning
     EXPECT_TRUE(claims[kFirstClearanceGuard]);      // the fold's vertex over the seat
     EXPECT_TRUE(claims[kFirstClearanceGuard + 5]);  // the fold's seat point under the base
   }
   // theta not moving one way: nothing is claimed but the unused slots.
   const auto none = ode.guard_claims(
-      {0.1, 0.1}, {0.11, 0.1}, [](int) { return false; }, kEveryGuard);
+      0.0, 0.0, {0.1, 0.1}, {0.11, 0.1}, [](int) { return false; }, kEveryGuard);
   EXPECT_FALSE(none[0]);
   EXPECT_FALSE(none[kFirstClearanceGuard]);
   EXPECT_TRUE(none[kSeatGuards - 1]);
@@ -186,14 +187,14 @@ TEST(SeatEnds, SlideAndSlipClaimsHoldOverRandomSteps) {
     const OdeState<2> a{c.rest_centre().x + u(-8, 8), u(-1, 1)};
     const OdeState<2> b{a[0] + u(-3, 3), u(-1, 1)};
     const auto claims = slide.guard_claims(
-        a, b, [](int) { return true; }, kEveryGuard);
+        0.0, 0.0, a, b, [](int) { return true; }, kEveryGuard);
     claimed += check_claims(sliding, claims, [&](double f) {
       return slide.guards(0.0, {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])});
     });
     const OdeState<4> p{u(0, 0.3), 0.2, u(-2, 8), u(-1, 0)};
     const OdeState<4> q{p[0] + u(-0.1, 0.1), 0.2, p[2] + u(-1, 1), u(-1, 0)};
     const auto slip_claims = slip.guard_claims(
-        p, q, [](int i) { return i >= 2; }, kEveryGuard);
+        0.0, 0.0, p, q, [](int i) { return i >= 2; }, kEveryGuard);
     EXPECT_TRUE(slip_claims[3]);  // the slip's velocity
     EXPECT_TRUE(slip_claims[4]);  // its distance from its run's ends
     check_claims(slipping, slip_claims, [&](double f) {
@@ -202,6 +203,50 @@ TEST(SeatEnds, SlideAndSlipClaimsHoldOverRandomSteps) {
     });
   }
   EXPECT_GT(claimed, 300);
+}
+
+// Sliding down the inclined segment under a sine: the ground's inertia has a part across the line,
+// so the contacts' normal forces are affine in lambda, and their lift-off guards are claimed over a
+// step where lambda moves one way, and only there (where lambda turns inside the step, one of the
+// forces turns with it, below both its ends).
+TEST(SeatEnds, ASlidesLiftOffsAreClaimedWhereLambdaMovesOneWay) {
+  const TypeBSeat seat;
+  const SeatContacts& c = seat.contacts;
+  const MotionPiece shaking{{.shape = MotionPiece::Shape::sine,
+                             .amplitude = 0.4,
+                             .angular_frequency = 2.0 * std::numbers::pi},
+                            0.0,
+                            1e3};
+  SeatSystemContext context = seat.context;
+  context.piece = &shaking;
+  SeatSystem sliding(context,
+                     {{{ContactKind::block_vertex, 1, 1}, ContactState::slip_positive},
+                      {{ContactKind::block_vertex, 2, 1}, ContactState::slip_positive}},
+                     {0, 3, 4, 5}, {0});
+  const SeatLine line = c.segment_line(1);
+  const Vec2 fold = c.seat_point(1), centre = c.rest_centre();
+  const Vec2 from_fold{centre.x - fold.x, centre.y - fold.y};
+  const double along = from_fold.x * line.direction.x + from_fold.y * line.direction.y;
+  const double offset = from_fold.x * line.normal.x + from_fold.y * line.normal.y;
+  const SeatOde slide(sliding, SlideChart{fold, line, offset, 0.0});
+  FixedUniforms u(37);
+  int one_way = 0;
+  for (int n = 0; n < 300; ++n) {
+    const OdeState<2> a{along + u(-3, 3), u(-1, 1)};
+    const OdeState<2> b{a[0] + u(-3, 3), u(-1, 1)};
+    const double t0 = u(0, 2), t1 = t0 + u(0, 0.6);
+    const auto claims = slide.guard_claims(
+        t0, t1, a, b, [](int) { return true; }, kEveryGuard);
+    const bool lambda_one_way = shaking.extrema_between(t0, t1).empty();
+    EXPECT_EQ(claims[2], lambda_one_way) << n;
+    EXPECT_EQ(claims[2 + kSeatContactGuards], lambda_one_way) << n;
+    check_claims(sliding, claims, [&](double f) {
+      return slide.guards(t0 + f * (t1 - t0), {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])});
+    });
+    one_way += lambda_one_way;
+  }
+  EXPECT_GT(one_way, 100);
+  EXPECT_LT(one_way, 250);
 }
 
 // In flight theta is linear in time: the overturning margin is least at an end while x moves one
@@ -218,7 +263,7 @@ TEST(SeatEnds, FlightClaimsHoldOverRandomSteps) {
     const double h = u(0.01, 0.5);
     const OdeState<4> b{a[0] + h * a[1], a[1], a[2], 0.0};
     const auto claims = ode.guard_claims(
-        a, b, [](int i) { return i == 0; }, kEveryGuard);
+        0.0, 0.0, a, b, [](int i) { return i == 0; }, kEveryGuard);
     claimed += claims[0];
     check_claims(flying, claims, [&](double f) {
       return ode.guards(f * h, {a[0] + f * h * a[1], a[1], a[2], 0.0});
