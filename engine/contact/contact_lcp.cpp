@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -364,33 +365,65 @@ struct LcpDecompositions::Kept {
 LcpDecompositions::LcpDecompositions() : kept_(std::make_unique<Kept>()) {}
 LcpDecompositions::~LcpDecompositions() = default;
 
+namespace {
+
+// The choices of states in preference order, decomposing each once where they are kept.
+class ChoiceSearch {
+ public:
+  ChoiceSearch(const LcpProblem& p, LcpDecompositions::Kept* kept) : p_(p), kept_(kept) {
+    if (p.contacts.size() > kMaxContacts) {
+      throw ContractViolation("contact problem: more than 6 contacts at once");
+    }
+    if (kept_ && !kept_->fits(p)) kept_->refit(p);
+    if (!kept_) own_ = choices_in_order(p);
+  }
+
+  const std::vector<std::vector<ContactState>>& choices() const {
+    return kept_ ? kept_->choices : own_;
+  }
+
+  std::optional<LcpSolution> solve(std::size_t at) const {
+    const Choice choice(p_, choices()[at]);
+    if (!kept_) {
+      ChoiceDecomposition m = choice.decompose();
+      return choice.solve(m);
+    }
+    std::optional<ChoiceDecomposition>& m = kept_->decomposed[at];
+    if (!m) m = choice.decompose();
+    return choice.solve(*m);
+  }
+
+  // What is chosen where no choice is consistent: no forces.
+  LcpSolution none() const {
+    LcpSolution out;
+    out.states.assign(p_.contacts.size(), ContactState::off);
+    out.normal.assign(p_.contacts.size(), 0.0);
+    out.tangent.assign(p_.contacts.size(), 0.0);
+    out.change.setZero();
+    return out;
+  }
+
+ private:
+  const LcpProblem& p_;
+  LcpDecompositions::Kept* kept_;
+  std::vector<std::vector<ContactState>> own_;
+};
+
+bool slips(const std::vector<ContactState>& states) {
+  return std::any_of(states.begin(), states.end(),
+                     [](ContactState s) { return slip_sign(s) != 0; });
+}
+
+}  // namespace
+
 LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search,
                               LcpDecompositions* decompositions) {
-  if (p.contacts.size() > kMaxContacts) {
-    throw ContractViolation("contact problem: more than 6 contacts at once");
-  }
-  LcpDecompositions::Kept* kept = decompositions ? decompositions->kept_.get() : nullptr;
-  if (kept && !kept->fits(p)) kept->refit(p);
-  const std::vector<std::vector<ContactState>> own = kept ? decltype(own){} : choices_in_order(p);
-  const std::vector<std::vector<ContactState>>& choices = kept ? kept->choices : own;
-  LcpSolution chosen;
-  chosen.states.assign(p.contacts.size(), ContactState::off);
-  chosen.normal.assign(p.contacts.size(), 0.0);
-  chosen.tangent.assign(p.contacts.size(), 0.0);
-  chosen.change.setZero();
+  const ChoiceSearch choices(p, decompositions ? decompositions->kept_.get() : nullptr);
+  LcpSolution chosen = choices.none();
   int consistent = 0;
   bool differ = false;
-  for (std::size_t at = 0; at < choices.size(); ++at) {
-    const Choice choice(p, choices[at]);
-    std::optional<LcpSolution> solution;
-    if (kept) {
-      std::optional<ChoiceDecomposition>& m = kept->decomposed[at];
-      if (!m) m = choice.decompose();
-      solution = choice.solve(*m);
-    } else {
-      ChoiceDecomposition m = choice.decompose();
-      solution = choice.solve(m);
-    }
+  for (std::size_t at = 0; at < choices.choices().size(); ++at) {
+    std::optional<LcpSolution> solution = choices.solve(at);
     if (!solution) continue;
     if (consistent == 0) {
       chosen = *solution;
@@ -406,6 +439,35 @@ LcpSolution solve_contact_lcp(const LcpProblem& p, LcpSearch search,
                        : differ        ? Determinacy::indeterminate
                                        : Determinacy::unique;
   return chosen;
+}
+
+// The choices without a slip first: the first consistent one, c, decides unless a choice with a
+// slip comes before it and is consistent, and either way decides false where it fails `still` (a
+// slip fails it too). So the choices with a slip are tried only before a c that passes, and only
+// until one is consistent. Where none without a slip is consistent, the choice with every contact
+// off is not, and what is chosen is no forces, or a choice with a slip.
+bool first_consistent_is_still(const LcpProblem& p,
+                               const std::function<bool(const LcpSolution&)>& still,
+                               LcpDecompositions* decompositions) {
+  const ChoiceSearch choices(p, decompositions ? decompositions->kept_.get() : nullptr);
+  const std::size_t count = choices.choices().size();
+  std::size_t end = count;
+  LcpSolution first = choices.none();
+  for (std::size_t at = 0; at < count; ++at) {
+    if (slips(choices.choices()[at])) continue;
+    if (std::optional<LcpSolution> solution = choices.solve(at)) {
+      first = *std::move(solution);
+      first.consistent_choices = 1;
+      first.determinacy = Determinacy::unique;
+      end = at;
+      break;
+    }
+  }
+  if (!still(first)) return false;
+  for (std::size_t at = 0; at < end; ++at) {
+    if (slips(choices.choices()[at]) && choices.solve(at)) return false;
+  }
+  return true;
 }
 
 }  // namespace blockfrag

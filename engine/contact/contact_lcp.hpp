@@ -9,6 +9,7 @@
 // touches a seat at a few points) make this exact and let every consistent choice be seen.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -67,11 +68,23 @@ class LcpDecompositions {
 
  private:
   friend LcpSolution solve_contact_lcp(const LcpProblem&, LcpSearch, LcpDecompositions*);
+  friend bool first_consistent_is_still(const LcpProblem&,
+                                        const std::function<bool(const LcpSolution&)>&,
+                                        LcpDecompositions*);
   std::unique_ptr<Kept> kept_;
 };
 
 LcpSolution solve_contact_lcp(const LcpProblem& problem, LcpSearch search = LcpSearch::every_choice,
                               LcpDecompositions* decompositions = nullptr);
+
+// Whether the choice solve_contact_lcp takes first (LcpSearch::first_consistent; no forces where
+// none is consistent) has no slipping contact and passes `still`: whether a body stays at rest.
+// Found with fewer choices tried: those without a slip first, those with one only before the
+// first consistent choice without, and only where that one passes `still` (a block past the end of
+// its rest range pivots on one contact, a choice that comes after most of those with a slip).
+bool first_consistent_is_still(const LcpProblem& problem,
+                               const std::function<bool(const LcpSolution&)>& still,
+                               LcpDecompositions* decompositions = nullptr);
 
 // y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
 // Inline: every right-hand side on a seat asks for it several times per contact.

@@ -3,6 +3,7 @@
 // friction (docs/physics.md, "Contact on a seat"). Per unit mass, as the rest of the engine.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "engine/contact/body_load.hpp"
@@ -103,5 +104,12 @@ struct PlanarForces {
 PlanarForces resolve_contact_forces(const PlanarForcesInput& in,
                                     LcpSearch search = LcpSearch::every_choice,
                                     LcpDecompositions* decompositions = nullptr);
+
+// Whether the forces resolve_contact_forces gives with LcpSearch::first_consistent have no
+// slipping contact and pass `still` (whether a body stays at rest), found trying fewer choices
+// (first_consistent_is_still, engine/contact/contact_lcp.hpp).
+bool first_consistent_forces_are_still(const PlanarForcesInput& in,
+                                       const std::function<bool(const PlanarForces&)>& still,
+                                       LcpDecompositions* decompositions);
 
 }  // namespace blockfrag

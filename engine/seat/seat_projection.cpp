@@ -164,8 +164,8 @@ bool SeatSimulation::rest_holds(double lambda, LcpDecompositions& decompositions
   in.tolerance = kRestTolerance;
   in.applied_moment = load.moment;
   // The first consistent choice decides rest; whether others disagree does not matter here.
-  return holds_at_rest(resolve_contact_forces(in, LcpSearch::first_consistent, &decompositions),
-                       in.tolerance);
+  return first_consistent_forces_are_still(
+      in, [&](const PlanarForces& f) { return holds_at_rest(f, in.tolerance); }, &decompositions);
 }
 
 // The lambda range of rest: rest holds on an interval of lambda (the contact forces that balance
