@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -37,9 +38,18 @@ struct ActiveContact {
   ContactState state;  // stick, slip_positive or slip_negative
 };
 
-// Per guard: whether its least value over a step is known to be at an end of it (a claim); or, as
-// a question, which guards are asked about.
+// Per guard: whether it is known not to reach zero inside a step where it is positive at both
+// ends (a claim: its least value over the step is at an end, or it stays positive throughout); or,
+// as a question, which guards are asked about.
 using GuardClaims = std::array<bool, kSeatGuards>;
+
+// How far a step can move the block from its state at the step's start, as the step's dense output
+// (which the guards are sampled on) moves it: its centre's x and y by at most dx and dy, its tilt
+// by at most dtheta.
+struct SweptMotion {
+  BlockState start;
+  double dx, dy, dtheta;
+};
 
 // What a guard reaching zero means on a seat.
 enum class SeatEvent {
@@ -123,6 +133,11 @@ class SeatSystem {
   GuardClaims free_claims(double x0, double x1, bool x_one_way, bool theta_one_way) const;
   // The guards whose slot is unused: their value is 1 throughout.
   GuardClaims unused_guards() const { return unused_; }
+  // Adds to `claims` the watched clearances among `asked` that stay positive over a step moving
+  // the block by at most `swept`, the guards at the step's start `at_start`
+  // (engine/seat/seat_swept_claims.cpp).
+  void claim_swept_clear(const SweptMotion& swept, const std::array<double, kGuards>& at_start,
+                         const GuardClaims& asked, GuardClaims& claims) const;
 
  private:
   friend class PivotSweep;
@@ -138,6 +153,9 @@ class SeatSystem {
   // A watched vertex whose x stays in [x_lo, x_hi]: where the segments there make a valley, its
   // clearance is the least of its heights over their lines, and is least at an end when each of
   // those is (height_least_at_ends(k) for the line of segment k, whose slope is finite).
+  // Whether a vertex at p, moving by at most reach_x in x and reach_y in y, stays above the seat
+  // (its clearance computed as its height over the seat throughout).
+  bool stays_above_seat(Vec2 p, double reach_x, double reach_y) const;
   template <class HeightLeastAtEnds>
   bool clearance_least_at_ends(double x_lo, double x_hi,
                                const HeightLeastAtEnds& height_least_at_ends) const;
@@ -294,6 +312,29 @@ class SeatOde {
       return system_->free_claims(chart_.full(0.0, q0).x, chart_.full(0.0, q1).x, one_way(0),
                                   one_way(2));
     }
+  }
+  // In flight, adds to `claims` the clearances among `asked` that a step from (t0, q0) to (t1, q1)
+  // cannot bring to zero, the guards at its start `at_start`: spread(i) bounds how far coordinate i
+  // of the step's dense output strays from the chord between its ends.
+  template <class Spread>
+  void claim_swept_clear(double t0, double t1, const OdeState<N>& q0, const OdeState<N>& q1,
+                         const Spread& spread, const std::array<double, kGuards>& at_start,
+                         const GuardClaims& asked, GuardClaims& claims) const
+      requires(std::is_same_v<Chart, FlightChart> || std::is_same_v<Chart, FreeChart>) {
+    // A coordinate's dense output lies within spread(i) of the range between its ends.
+    const auto strays = [&](int i) { return std::abs(q1[i] - q0[i]) + spread(i); };
+    SweptMotion swept{chart_.full(t0, q0), 0.0, 0.0, 0.0};
+    if constexpr (std::is_same_v<Chart, FlightChart>) {
+      swept.dx = strays(0);
+      swept.dy = strays(2);
+      swept.dtheta = std::abs(chart_.omega) * (t1 - t0);  // theta is linear in time
+    } else {
+      swept.dx = strays(0);
+      swept.dy = strays(1);
+      swept.dtheta = strays(2);
+    }
+    if (!(swept.dx + swept.dy + swept.dtheta < std::numeric_limits<double>::infinity())) return;
+    system_->claim_swept_clear(swept, at_start, asked, claims);
   }
 
  private:

@@ -1,0 +1,115 @@
+// Which clearances a step in flight cannot bring to zero (engine/seat/seat_swept_claims.cpp): over
+// random RK4 steps of the type B block flying low over its seat, every clearance claimed stays
+// positive at 200 points of the step's dense output (what the guard watch would have sampled); and
+// the claims are made for most clearances the watch would otherwise sample.
+#include <algorithm>
+#include <array>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/integrate/rk4_stepper.hpp"
+#include "engine/seat/seat_system.hpp"
+#include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/type_b_block.hpp"
+
+namespace blockfrag {
+namespace {
+
+using testing::FixedUniforms;
+using testing::kTypeB;
+using testing::kTypeBSeat;
+
+constexpr int kDensePoints = 200;
+
+const GuardClaims kEverySweptGuard = [] {
+  GuardClaims every;
+  every.fill(true);
+  return every;
+}();
+
+struct FlyingTypeB {
+  SeatContacts contacts{kTypeB, kTypeBSeat};
+  BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
+  SeatSystem system{context, {}, {0, 1, 2, 3, 4, 5}, {0, 1, 2}};
+};
+
+// Steps from a random pose within `lift` of resting on the seat; returns how many clearances near
+// zero (those the watch samples) were claimed, and counts them in `near`.
+template <class Chart, class Start>
+int check_random_flights(const FlyingTypeB& flying, SeatSystem& system, int seed,
+                         const Start& start, int& near) {
+  FixedUniforms u(static_cast<std::uint64_t>(seed));
+  const double R = flying.geometry.size();
+  int claimed = 0;
+  for (int n = 0; n < 400; ++n) {
+    const auto [chart, q0, t0] = start(u);
+    const SeatOde<Chart> ode(system, chart);
+    Rk4Stepper<Chart::N> stepper(u(1e-4, 0.05));
+    double t = t0;
+    auto q = q0;
+    stepper.step(ode, t, q, 1.0);
+    const auto at_start = ode.guards(t0, q0), at_end = ode.guards(t, q);
+    GuardClaims claims = system.unused_guards();
+    ode.claim_swept_clear(
+        t0, t, q0, q, [&](int i) { return stepper.dense_spread(i); }, at_start, kEverySweptGuard,
+        claims);
+    for (int i = kFirstClearanceGuard; i < kSeatGuards; ++i) {
+      const auto g = static_cast<std::size_t>(i);
+      if (system.event(i) != SeatEvent::touches) continue;
+      const bool sampled =
+          std::min(at_start[g], at_end[g]) < kNearZero && std::min(at_start[g], at_end[g]) > 0;
+      near += sampled;
+      claimed += sampled && claims[g];
+      if (!claims[g]) continue;
+      for (int k = 0; k <= kDensePoints; ++k) {
+        const double x = t0 + (t - t0) * k / kDensePoints;
+        EXPECT_GT(ode.guard(i, x, stepper.dense(x)), 0.0)
+            << "flight " << n << " guard " << i << " at " << k << " of a step of " << t - t0
+            << " s, R " << R;
+      }
+    }
+  }
+  return claimed;
+}
+
+// FreeChart: x, y and theta integrated, their dense output a cubic.
+TEST(SeatSweptClaims, FreeFlightClaimsStayPositiveOnTheDenseOutput) {
+  FlyingTypeB flying;
+  const Vec2 rest = flying.contacts.rest_centre();
+  int near = 0;
+  const int claimed = check_random_flights<FreeChart>(
+      flying, flying.system, 41,
+      [&](FixedUniforms& u) {
+        return std::tuple{
+            FreeChart{rest},
+            OdeState<6>{u(-1, 8), u(0, 0.6), u(-0.03, 0.03), u(-3, 3), u(-3, 3), u(-0.5, 0.5)},
+            0.0};
+      },
+      near);
+  EXPECT_GT(near, 500);
+  EXPECT_GT(claimed, near / 2);
+}
+
+// FlightChart: theta linear in time.
+TEST(SeatSweptClaims, FlightChartClaimsStayPositiveOnTheDenseOutput) {
+  FlyingTypeB flying;
+  const Vec2 rest = flying.contacts.rest_centre();
+  int near = 0;
+  const int claimed = check_random_flights<FlightChart>(
+      flying, flying.system, 42,
+      [&](FixedUniforms& u) {
+        const FlightChart chart{rest, u(0, 2), u(-0.03, 0.03), u(-0.5, 0.5)};
+        return std::tuple{chart, OdeState<4>{u(-1, 8), u(-3, 3), u(0, 0.6), u(-3, 3)},
+                          chart.t0 + u(0, 0.1)};
+      },
+      near);
+  EXPECT_GT(near, 500);
+  EXPECT_GT(claimed, near / 2);
+}
+
+}  // namespace
+}  // namespace blockfrag
