@@ -153,9 +153,9 @@ class SeatSystem {
   // A watched vertex whose x stays in [x_lo, x_hi]: where the segments there make a valley, its
   // clearance is the least of its heights over their lines, and is least at an end when each of
   // those is (height_least_at_ends(k) for the line of segment k, whose slope is finite).
-  // Whether a vertex at p, moving by at most reach_x in x and reach_y in y, stays above the seat
-  // (its clearance computed as its height over the seat throughout).
-  bool stays_above_seat(Vec2 p, double reach_x, double reach_y) const;
+  // Whether the clearance of a vertex at p, moving by at most reach_x in x and reach_y in y, stays
+  // positive.
+  bool stays_clear_of_seat(Vec2 p, double reach_x, double reach_y) const;
   template <class HeightLeastAtEnds>
   bool clearance_least_at_ends(double x_lo, double x_hi,
                                const HeightLeastAtEnds& height_least_at_ends) const;
