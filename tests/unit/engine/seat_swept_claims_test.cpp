@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/integrate/rk4_stepper.hpp"
+#include "engine/seat/closed_form_flight.hpp"
 #include "engine/seat/seat_system.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/type_b_block.hpp"
@@ -109,6 +110,52 @@ TEST(SeatSweptClaims, FlightChartClaimsStayPositiveOnTheDenseOutput) {
       near);
   EXPECT_GT(near, 500);
   EXPECT_GT(claimed, near / 2);
+}
+
+// The closed-form flight's x and y stay within their spread of the chord over steps of random
+// length under each shape of ground motion, and y's parabola is its bound above the chord at
+// mid-step.
+TEST(SeatSweptClaims, ClosedFormFlightStaysWithinItsSpreadOfTheChord) {
+  using Shape = MotionPiece::Shape;
+  FixedUniforms u(43);
+  double closest_x = 0.0;
+  for (int n = 0; n < 400; ++n) {
+    MotionPiece::Formula formula;
+    formula.shape = std::array{Shape::linear, Shape::sine, Shape::cosine, Shape::ricker,
+                               Shape::mavroeidis_papageorgiou}[static_cast<std::size_t>(n % 5)];
+    formula.amplitude = u(-0.8, 0.8);
+    // The Ricker wavelet's drift is found from exp(-v^2) at the start: kept within |v| < 20.
+    formula.angular_frequency = formula.shape == Shape::ricker ? u(2, 8) : u(2, 40);
+    formula.phase = u(-3, 3);
+    formula.origin = u(0, 2);
+    formula.slope = u(-5, 5);
+    formula.modulation = u(0.2, 0.9);
+    const MotionPiece piece(formula, 0.0, 3.0);
+    const double t0 = u(0, 1);
+    ClosedFormFlight flight({u(-1, 1), u(-2, 2), u(0, 1), u(-2, 2)},
+                            BlockState{0.0, 0.0, u(-0.1, 0.1), 0.0, 0.0, u(-1, 1)}, piece, t0,
+                            9.81);
+    double t = t0 + u(0, 0.5);
+    OdeState<4> q = flight.dense(t);
+    const OdeState<4> start = q;
+    const double h = u(1e-3, 1.0);
+    flight.step(0, t, q, h);
+    for (const int i : {0, 2}) {
+      const double lo = std::min(start[i], q[i]), hi = std::max(start[i], q[i]);
+      const double spread = flight.dense_spread(i);
+      for (int k = 0; k <= kDensePoints; ++k) {
+        const double y = flight.dense(t - h + h * k / kDensePoints)[static_cast<std::size_t>(i)];
+        const double strays = std::max(lo - y, y - hi);
+        EXPECT_LE(strays, spread + 1e-12) << "step " << n << " coordinate " << i;
+        if (i == 0 && spread > 1e-3) closest_x = std::max(closest_x, strays / spread);
+        if (i == 2 && k == kDensePoints / 2) {
+          const double chord = 0.5 * (start[2] + q[2]);
+          EXPECT_NEAR(y - chord, spread, 1e-9 * (1 + spread)) << "step " << n;
+        }
+      }
+    }
+  }
+  EXPECT_GT(closest_x, 0.3);
 }
 
 }  // namespace
