@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "engine/seat/seat_system.hpp"
+#include "engine/sine_cosine.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
@@ -23,12 +24,12 @@ double swept_norm(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 // end it is its distance from the end, positive but where an end segment leaning away from the end
 // puts it under that segment (SeatContacts::under_end_segment), which asks that the vertex project
 // onto the segment: a box wholly beyond the segment's end along its direction is never there.
-bool SeatSystem::stays_clear_of_seat(Vec2 p, double reach_x, double reach_y) const {
+bool SeatSystem::stays_clear_of_seat(double x_lo, double x_hi, double y_lo, double y_hi) const {
   const SeatContacts& seat = *c_.contacts;
   const int last = seat.point_count() - 1;
-  const double x_lo = p.x - reach_x, x_hi = p.x + reach_x, y_lo = p.y - reach_y;
   const double rounding =
-      kGeometryRounding * (length_scale() + std::abs(p.x) + std::abs(p.y) + reach_x + reach_y);
+      kGeometryRounding * (length_scale() + std::max(std::abs(x_lo), std::abs(x_hi)) +
+                           std::max(std::abs(y_lo), std::abs(y_hi)));
   const Vec2 first = seat.seat_point(0), end = seat.seat_point(last);
   // Beyond an end, every corner of the box's part there is past the end segment's end.
   const auto beyond = [&](int segment, Vec2 at, double from_x, double to_x, double sign) {
@@ -36,8 +37,8 @@ bool SeatSystem::stays_clear_of_seat(Vec2 p, double reach_x, double reach_y) con
     const bool leans = sign * d.y > 0;
     const double past = std::min(sign * (d.x * (from_x - at.x) + d.y * (y_lo - at.y)),
                                  sign * (d.x * (to_x - at.x) + d.y * (y_lo - at.y)));
-    const double past_top = std::min(sign * (d.x * (from_x - at.x) + d.y * (p.y + reach_y - at.y)),
-                                     sign * (d.x * (to_x - at.x) + d.y * (p.y + reach_y - at.y)));
+    const double past_top = std::min(sign * (d.x * (from_x - at.x) + d.y * (y_hi - at.y)),
+                                     sign * (d.x * (to_x - at.x) + d.y * (y_hi - at.y)));
     return !leans || std::min(past, past_top) > rounding;
   };
   if (x_lo < first.x && !beyond(0, first, x_lo, std::min(x_hi, first.x), -1.0)) return false;
@@ -53,23 +54,28 @@ bool SeatSystem::stays_clear_of_seat(Vec2 p, double reach_x, double reach_y) con
   return true;
 }
 
-// A vertex at body distance r from the centre moves by at most r |dtheta| as the block turns, on
-// top of its centre's move. A seat point at distance d outside the block at the step's start stays
-// outside while no point of the block moves by d or more (a lower bound on its distance where it
-// is far: point_clearance_within).
+// A vertex's offset from the centre, b turned by theta, has components whose second derivative in
+// theta is at most |b|: over the tilt's range each strays from the chord between its ends by at
+// most |b| (theta_hi - theta_lo)^2 / 8. A seat point at distance d outside the block at the
+// step's start stays outside while no point of the block moves by d or more (a lower bound on its
+// distance where it is far: point_clearance_within); a point at b from the centre moves by at most
+// its centre's move and |b| times the tilt's.
 void SeatSystem::claim_swept_clear(const SweptMotion& swept,
                                    const std::array<double, kGuards>& at_start,
                                    const GuardClaims& asked, GuardClaims& claims) const {
   const SeatContacts& seat = *c_.contacts;
   const double R = length_scale();
-  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
-  seat.world_vertices(swept.start, world);
+  const double turn = swept.theta_hi - swept.theta_lo;
+  const SineCosine lo = sine_cosine(swept.theta_lo), hi = sine_cosine(swept.theta_hi);
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const int i : watched_vertices_) {
     if (asked[g]) {
-      const double turn = swept_norm(seat.body_vertex(i)) * swept.dtheta;
-      claims[g] =
-          stays_clear_of_seat(world[static_cast<std::size_t>(i)], swept.dx + turn, swept.dy + turn);
+      const Vec2 b = seat.body_vertex(i);
+      const Vec2 a = rotate(b, lo.cos, lo.sin), c = rotate(b, hi.cos, hi.sin);
+      const double bend = 0.125 * swept_norm(b) * turn * turn;
+      claims[g] = stays_clear_of_seat(
+          swept.x_lo + std::min(a.x, c.x) - bend, swept.x_hi + std::max(a.x, c.x) + bend,
+          swept.y_lo + std::min(a.y, c.y) - bend, swept.y_hi + std::max(a.y, c.y) + bend);
     }
     ++g;
   }
@@ -78,9 +84,11 @@ void SeatSystem::claim_swept_clear(const SweptMotion& swept,
   for (int i = 0; i < seat.vertex_count(); ++i) {
     radius = std::max(radius, swept_norm(seat.body_vertex(i)));
   }
-  const double moves = std::hypot(swept.dx, swept.dy) + radius * swept.dtheta;
-  const double rounding =
-      kGeometryRounding * (R + std::abs(swept.start.x) + std::abs(swept.start.y));
+  const BlockState& s = swept.start;
+  const double moves = std::hypot(std::max(swept.x_hi - s.x, s.x - swept.x_lo),
+                                  std::max(swept.y_hi - s.y, s.y - swept.y_lo)) +
+                       radius * std::max(swept.theta_hi - s.theta, s.theta - swept.theta_lo);
+  const double rounding = kGeometryRounding * (R + std::abs(s.x) + std::abs(s.y));
   for (std::size_t k = 0; k < watched_points_.size(); ++k, ++g) {
     if (asked[g]) claims[g] = at_start[g] * R > moves + rounding;
   }

@@ -3,6 +3,7 @@
 // (docs/physics.md, "Contact on a seat"), and its ODE in the coordinates of a chart.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -43,12 +44,12 @@ struct ActiveContact {
 // as a question, which guards are asked about.
 using GuardClaims = std::array<bool, kSeatGuards>;
 
-// How far a step can move the block from its state at the step's start, as the step's dense output
-// (which the guards are sampled on) moves it: its centre's x and y by at most dx and dy, its tilt
-// by at most dtheta.
+// Where a step can take the block, as the step's dense output (which the guards are sampled on)
+// takes it: its centre within [x_lo, x_hi] x [y_lo, y_hi], its tilt within [theta_lo, theta_hi];
+// `start` is its state at the step's start.
 struct SweptMotion {
   BlockState start;
-  double dx, dy, dtheta;
+  double x_lo, x_hi, y_lo, y_hi, theta_lo, theta_hi;
 };
 
 // What a guard reaching zero means on a seat.
@@ -153,9 +154,8 @@ class SeatSystem {
   // A watched vertex whose x stays in [x_lo, x_hi]: where the segments there make a valley, its
   // clearance is the least of its heights over their lines, and is least at an end when each of
   // those is (height_least_at_ends(k) for the line of segment k, whose slope is finite).
-  // Whether the clearance of a vertex at p, moving by at most reach_x in x and reach_y in y, stays
-  // positive.
-  bool stays_clear_of_seat(Vec2 p, double reach_x, double reach_y) const;
+  // Whether the clearance of a vertex staying within [x_lo, x_hi] x [y_lo, y_hi] stays positive.
+  bool stays_clear_of_seat(double x_lo, double x_hi, double y_lo, double y_hi) const;
   template <class HeightLeastAtEnds>
   bool clearance_least_at_ends(double x_lo, double x_hi,
                                const HeightLeastAtEnds& height_least_at_ends) const;
@@ -322,18 +322,21 @@ class SeatOde {
                          const GuardClaims& asked, GuardClaims& claims) const
       requires(std::is_same_v<Chart, FlightChart> || std::is_same_v<Chart, FreeChart>) {
     // A coordinate's dense output lies within spread(i) of the range between its ends.
-    const auto strays = [&](int i) { return std::abs(q1[i] - q0[i]) + spread(i); };
-    SweptMotion swept{chart_.full(t0, q0), 0.0, 0.0, 0.0};
-    if constexpr (std::is_same_v<Chart, FlightChart>) {
-      swept.dx = strays(0);
-      swept.dy = strays(2);
-      swept.dtheta = std::abs(chart_.omega) * (t1 - t0);  // theta is linear in time
-    } else {
-      swept.dx = strays(0);
-      swept.dy = strays(1);
-      swept.dtheta = strays(2);
+    const auto range = [&](double a, double b, double strays, double& lo, double& hi) {
+      lo = std::min(a, b) - strays;
+      hi = std::max(a, b) + strays;
+    };
+    const BlockState s0 = chart_.full(t0, q0), s1 = chart_.full(t1, q1);
+    SweptMotion swept{s0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    constexpr bool kFlight = std::is_same_v<Chart, FlightChart>;
+    range(s0.x, s1.x, spread(0), swept.x_lo, swept.x_hi);
+    range(s0.y, s1.y, spread(kFlight ? 2 : 1), swept.y_lo, swept.y_hi);
+    // In a FlightChart theta is linear in time.
+    range(s0.theta, s1.theta, kFlight ? 0.0 : spread(2), swept.theta_lo, swept.theta_hi);
+    if (!(swept.x_hi - swept.x_lo + swept.y_hi - swept.y_lo + swept.theta_hi - swept.theta_lo <
+          std::numeric_limits<double>::infinity())) {
+      return;
     }
-    if (!(swept.dx + swept.dy + swept.dtheta < std::numeric_limits<double>::infinity())) return;
     system_->claim_swept_clear(swept, at_start, asked, claims);
   }
 
