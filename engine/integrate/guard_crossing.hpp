@@ -74,7 +74,8 @@ class GuardWatch {
   // The first crossing in the step [t0, t1] whose guards at t1 are `next`; guards_at(x) evaluates
   // all guards on the step's dense output (and guards_at(i, x), where given, guard i alone: root
   // finding and the dip search ask for one). least_at_ends(asked) says which of the guards `asked`
-  // names are known to be least at an end of this step (so no sample inside can find them lower);
+  // names are known to be least at an end of this step, or to stay positive throughout it (so no
+  // sample inside can find them at or below zero);
   // it is asked only for guards near zero that would be looked inside though clearly positive at
   // both ends, and such a guard that it names is not: the samples were most of a rocking block's
   // guard evaluations, and they find exactly what they found before.
@@ -99,6 +100,8 @@ class GuardWatch {
 
   // Whether guard i was armed at the step's start: a guard that was not fires below -offset.
   bool armed(int i) const { return armed_[i]; }
+  // The guards at the step's start (the live ones' values; the others are not to be read).
+  const std::array<double, G>& values() const { return value_; }
 
   // The step is kept: its end values become the next step's start.
   void advance(const std::array<double, G>& next) {

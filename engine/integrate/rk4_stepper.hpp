@@ -97,6 +97,15 @@ class Rk4Stepper {
     return blockfrag::moves_one_way(delta, b, delta - h * f1_[i] - b, 0.0);
   }
 
+  // How far component i of the dense output strays from the chord between its ends: it departs
+  // from it by theta (1 - theta) (b + theta c), theta (1 - theta) <= 1/4 and b + theta c between
+  // b and b + c.
+  double dense_spread(int i) const {
+    const double h = t1_ - t0_;
+    const double delta = q1_[i] - q0_[i];
+    return 0.25 * std::max(std::abs(h * f0_[i] - delta), std::abs(delta - h * f1_[i]));
+  }
+
   double step_start() const { return t0_; }
   double step_end() const { return t1_; }
 

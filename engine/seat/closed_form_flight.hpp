@@ -5,6 +5,8 @@
 // and each flight's landing came from the integrator's x instead of the exact one.
 #pragma once
 
+#include <limits>
+
 #include "engine/integrate/ode_state.hpp"
 #include "engine/modes/flight.hpp"
 #include "engine/motion/ground_drift.hpp"
@@ -23,11 +25,14 @@ class ClosedFormFlight {
         t0_(t0),
         x0_(start[0]),
         vx0_(start[1]),
-        g_(g) {}
+        g_(g),
+        max_x_acceleration_(g * piece.max_abs_lambda()) {}
 
   template <class Ode>
   void step(const Ode&, double& t, OdeState<4>& q, double h_max) {
+    step_start_ = t;
     t += h_max;
+    step_end_ = t;
     q = dense(t);
   }
   OdeState<4> dense(double t) const {
@@ -39,11 +44,22 @@ class ClosedFormFlight {
   long steps() const { return 0; }
   long rhs_evaluations() const { return 0; }
   bool moves_one_way(int) const { return false; }
+  // How far x (i = 0) or y (i = 2) strays over the last step from the chord between its ends: a
+  // function whose second derivative is at most a in size strays by at most a h^2 / 8 (x'' is
+  // lambda g, y'' is -g). The rates' are not bounded.
+  double dense_spread(int i) const {
+    const double h = step_end_ - step_start_;
+    if (i == 0) return 0.125 * max_x_acceleration_ * h * h;
+    if (i == 2) return 0.125 * g_ * h * h;
+    return std::numeric_limits<double>::infinity();
+  }
 
  private:
   FlightStart start_;
   GroundDrift drift_;
   double t0_, x0_, vx0_, g_;
+  double max_x_acceleration_;  // m/s^2: |x''| over the piece at most
+  double step_start_ = 0.0, step_end_ = 0.0;
 };
 
 }  // namespace blockfrag

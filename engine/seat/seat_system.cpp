@@ -147,13 +147,17 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
                                                            const GuardClaims& wanted) {
   std::array<double, kGuards> out = kUnusedGuardValues;
   const double R = c_.geometry->size();
-  // Lying on another face is overturning over the seat; past its ends the block falls instead.
-  const bool over_seat = s.x >= c_.contacts->seat_point(0).x &&
-                         s.x <= c_.contacts->seat_point(c_.contacts->point_count() - 1).x;
-  out[0] = over_seat ? c_.contacts->overturn_margin(*c_.geometry, s.theta) : 1.0;
+  // A sample inside a step mostly follows one clearance (a vertex just over the seat in flight):
+  // the overturning margin and the fall's height are found only where followed.
+  if (wanted[0]) {
+    // Lying on another face is overturning over the seat; past its ends the block falls instead.
+    const bool over_seat = s.x >= c_.contacts->seat_point(0).x &&
+                           s.x <= c_.contacts->seat_point(c_.contacts->point_count() - 1).x;
+    out[0] = over_seat ? c_.contacts->overturn_margin(*c_.geometry, s.theta) : 1.0;
+  }
   std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
   c_.contacts->world_vertices(s, world);
-  out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
+  if (wanted[1]) out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
   const auto contact_guards = std::span(wanted).subspan(2, kSeatContactGuards * count_);
   if (std::find(contact_guards.begin(), contact_guards.end(), true) != contact_guards.end()) {
     set_contact_guards(t, s, out);

@@ -3,7 +3,9 @@
 // (docs/physics.md, "Contact on a seat"), and its ODE in the coordinates of a chart.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -37,9 +39,18 @@ struct ActiveContact {
   ContactState state;  // stick, slip_positive or slip_negative
 };
 
-// Per guard: whether its least value over a step is known to be at an end of it (a claim); or, as
-// a question, which guards are asked about.
+// Per guard: whether it is known not to reach zero inside a step where it is positive at both
+// ends (a claim: its least value over the step is at an end, or it stays positive throughout); or,
+// as a question, which guards are asked about.
 using GuardClaims = std::array<bool, kSeatGuards>;
+
+// Where a step can take the block, as the step's dense output (which the guards are sampled on)
+// takes it: its centre within [x_lo, x_hi] x [y_lo, y_hi], its tilt within [theta_lo, theta_hi];
+// `start` is its state at the step's start.
+struct SweptMotion {
+  BlockState start;
+  double x_lo, x_hi, y_lo, y_hi, theta_lo, theta_hi;
+};
 
 // What a guard reaching zero means on a seat.
 enum class SeatEvent {
@@ -132,6 +143,11 @@ class SeatSystem {
   GuardClaims free_claims(double x0, double x1, bool x_one_way, bool theta_one_way) const;
   // The guards whose slot is unused: their value is 1 throughout.
   GuardClaims unused_guards() const { return unused_; }
+  // Adds to `claims` the watched clearances among `asked` that stay positive over a step moving
+  // the block by at most `swept`, the guards at the step's start `at_start`
+  // (engine/seat/seat_swept_claims.cpp).
+  void claim_swept_clear(const SweptMotion& swept, const std::array<double, kGuards>& at_start,
+                         const GuardClaims& asked, GuardClaims& claims) const;
 
  private:
   friend class PivotSweep;
@@ -149,6 +165,8 @@ class SeatSystem {
   // A watched vertex whose x stays in [x_lo, x_hi]: where the segments there make a valley, its
   // clearance is the least of its heights over their lines, and is least at an end when each of
   // those is (height_least_at_ends(k) for the line of segment k, whose slope is finite).
+  // Whether the clearance of a vertex staying within [x_lo, x_hi] x [y_lo, y_hi] stays positive.
+  bool stays_clear_of_seat(double x_lo, double x_hi, double y_lo, double y_hi) const;
   template <class HeightLeastAtEnds>
   bool clearance_least_at_ends(double x_lo, double x_hi,
                                const HeightLeastAtEnds& height_least_at_ends) const;
@@ -306,6 +324,32 @@ class SeatOde {
       return system_->free_claims(chart_.full(0.0, q0).x, chart_.full(0.0, q1).x, one_way(0),
                                   one_way(2));
     }
+  }
+  // In flight, adds to `claims` the clearances among `asked` that a step from (t0, q0) to (t1, q1)
+  // cannot bring to zero, the guards at its start `at_start`: spread(i) bounds how far coordinate i
+  // of the step's dense output strays from the chord between its ends.
+  template <class Spread>
+  void claim_swept_clear(double t0, double t1, const OdeState<N>& q0, const OdeState<N>& q1,
+                         const Spread& spread, const std::array<double, kGuards>& at_start,
+                         const GuardClaims& asked, GuardClaims& claims) const
+      requires(std::is_same_v<Chart, FlightChart> || std::is_same_v<Chart, FreeChart>) {
+    // A coordinate's dense output lies within spread(i) of the range between its ends.
+    const auto range = [&](double a, double b, double strays, double& lo, double& hi) {
+      lo = std::min(a, b) - strays;
+      hi = std::max(a, b) + strays;
+    };
+    const BlockState s0 = chart_.full(t0, q0), s1 = chart_.full(t1, q1);
+    SweptMotion swept{s0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    constexpr bool kFlight = std::is_same_v<Chart, FlightChart>;
+    range(s0.x, s1.x, spread(0), swept.x_lo, swept.x_hi);
+    range(s0.y, s1.y, spread(kFlight ? 2 : 1), swept.y_lo, swept.y_hi);
+    // In a FlightChart theta is linear in time.
+    range(s0.theta, s1.theta, kFlight ? 0.0 : spread(2), swept.theta_lo, swept.theta_hi);
+    if (!(swept.x_hi - swept.x_lo + swept.y_hi - swept.y_lo + swept.theta_hi - swept.theta_lo <
+          std::numeric_limits<double>::infinity())) {
+      return;
+    }
+    system_->claim_swept_clear(swept, at_start, asked, claims);
   }
 
  private:
