@@ -84,7 +84,12 @@ GroundDrift::Integrals GroundDrift::at(double t) const {
       // v e - v0 e0 and e0 - e written with e - e0 = e0 expm1(-(v^2 - v0^2)), v^2 - v0^2 =
       // delta (v + v0): no difference of nearly equal numbers for a short flight.
       const double v = omega_ * (t - origin_), e = std::exp(-v * v), delta = omega_ * u;
-      const double change = exp0_ * std::expm1(-delta * (v + v0_));  // e - e0
+      // A flight that starts far before the wavelet's centre (v0 < -26) has e0 below the smallest
+      // double and e far above it: there e - e0 is e, and expm1 of the exponent would overflow.
+      constexpr double kLargestExpm1Argument = 700.0;  // exp(700) is about 1e304
+      const double exponent = -delta * (v + v0_);
+      const double change =
+          exponent < kLargestExpm1Argument ? exp0_ * std::expm1(exponent) : e - exp0_;  // e - e0
       const double scale = amplitude_ / omega_;
       return {scale * (delta * e + v0_ * change),
               scale / omega_ * (-0.5 * change - delta * v0_ * exp0_)};

@@ -81,6 +81,21 @@ TEST(GroundDrift, KeepsItsRelativePrecisionOverAShortFlight) {
   }
 }
 
+// A flight that starts long before a Ricker wavelet's centre, where exp(-v0^2) is below the
+// smallest double, and lasts into the wavelet: the integrals stay finite and right.
+TEST(GroundDrift, AFlightFromLongBeforeARickerWaveletIntegratesIt) {
+  const MotionPiece piece(
+      {.shape = Shape::ricker, .amplitude = 0.9, .angular_frequency = 4.0, .origin = 10.0}, 0.0,
+      20.0);
+  const double t0 = 2.0;  // v0 = -32
+  const GroundDrift drift(piece, t0);
+  for (const double t : {8.0, 9.5, 11.0}) {
+    const GroundDrift::Integrals got = drift.at(t), want = simpson(piece, t0, t);
+    EXPECT_NEAR(got.first, want.first, 1e-12) << t;
+    EXPECT_NEAR(got.second, want.second, 1e-12) << t;
+  }
+}
+
 TEST(GroundDrift, AZeroPieceDoesNotMoveTheGround) {
   const MotionPiece zero({}, 0.0, 1.0);
   const GroundDrift::Integrals got = GroundDrift(zero, 0.2).at(0.9);
