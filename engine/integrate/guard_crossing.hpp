@@ -152,6 +152,14 @@ class GuardWatch {
     std::array<int, G> bracketed;  // the guards whose bracket is set, the first count of them
     int count = 0;
     for (const int i : live()) {
+      // Most guards at most steps: far from zero at both ends (and so armed), neither sampled nor
+      // looked inside; only the end value is read after.
+      if (value_[i] >= kNearZero && next[i] >= kNearZero) {
+        scan.fb[i] = next[i];
+        scan.sampled[i] = false;
+        scan.looked_inside[i] = false;
+        continue;
+      }
       scan.offset[i] = armed_[i] ? 0.0 : unarmed_offset_[i];
       const double fa = std::max(value_[i] + scan.offset[i], std::numeric_limits<double>::min());
       scan.fb[i] = next[i] + scan.offset[i];

@@ -71,5 +71,23 @@ TEST(GuardCrossing, AGuardLeastAtTheStepsEndsIsNotLookedInside) {
   EXPECT_EQ(evaluations, 0);
 }
 
+TEST(GuardCrossing, AGuardAtLeastNearZeroAtBothEndsIsNotLookedInside) {
+  // Far enough from zero at both ends, a guard is taken to stay positive through the step even
+  // where it would dip below zero inside: the steps are short enough for its values that it does
+  // not. Just under kNearZero at one end, the dip is looked for and found.
+  int evaluations = 0;
+  const auto dip = [&](double t) {
+    ++evaluations;
+    return std::array<double, 1>{kNearZero - 4 * (kNearZero + 0.01) * t * (1 - t)};
+  };
+  GuardWatch<1> watch({kNearZero});
+  evaluations = 0;
+  EXPECT_EQ(watch.first_crossing(dip, 0.0, 1.0, {kNearZero}, unknown).which, -1);
+  EXPECT_EQ(evaluations, 0);
+  const double just_under = std::nextafter(kNearZero, 0.0);
+  EXPECT_EQ(watch.first_crossing(dip, 0.0, 1.0, {just_under}, unknown).which, 0);
+  EXPECT_GT(evaluations, 0);
+}
+
 }  // namespace
 }  // namespace blockfrag
