@@ -66,7 +66,8 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
           at_pose.added.d_dtheta};
 }
 
-ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
+// Every call it makes inlined: each wetted piece's push and added mass were a call apiece.
+[[gnu::flatten]] ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
   ReservoirPose out;
   out.turn = cached_turn(s.theta);
   out.centre = outline_.centre(s);
