@@ -23,14 +23,15 @@ namespace {
 
 using testing::FixedUniforms;
 
-bool same_bits(double a, double b) {
+bool same_water_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
 void expect_same_added_mass(const AddedMass& a, const AddedMass& b) {
-  EXPECT_TRUE(same_bits(a.mass, b.mass)) << a.mass << " " << b.mass;
-  EXPECT_TRUE(same_bits(a.first_moment, b.first_moment)) << a.first_moment << " " << b.first_moment;
-  EXPECT_TRUE(same_bits(a.second_moment, b.second_moment))
+  EXPECT_TRUE(same_water_bits(a.mass, b.mass)) << a.mass << " " << b.mass;
+  EXPECT_TRUE(same_water_bits(a.first_moment, b.first_moment))
+      << a.first_moment << " " << b.first_moment;
+  EXPECT_TRUE(same_water_bits(a.second_moment, b.second_moment))
       << a.second_moment << " " << b.second_moment;
 }
 
@@ -83,9 +84,9 @@ void expect_pose_is_the_plain_pass(Scene scene, double level) {
     s.y += u(-1.0, 3.0);
     s.theta = i == 0 ? 0.0 : random_tilt(u, i);
     const ReservoirPose pose = loads.pose(s), plain = plain_pose(scene, loads, s);
-    EXPECT_TRUE(same_bits(pose.hydrostatic.fx, plain.hydrostatic.fx));
-    EXPECT_TRUE(same_bits(pose.hydrostatic.fy, plain.hydrostatic.fy));
-    EXPECT_TRUE(same_bits(pose.hydrostatic.moment, plain.hydrostatic.moment));
+    EXPECT_TRUE(same_water_bits(pose.hydrostatic.fx, plain.hydrostatic.fx));
+    EXPECT_TRUE(same_water_bits(pose.hydrostatic.fy, plain.hydrostatic.fy));
+    EXPECT_TRUE(same_water_bits(pose.hydrostatic.moment, plain.hydrostatic.moment));
     expect_same_rates(pose.added, plain.added);
   }
 }
