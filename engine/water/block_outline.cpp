@@ -19,10 +19,7 @@ BlockOutline::BlockOutline(const Scene& scene) : rest_(scene_block_vertices(scen
 
 void BlockOutline::place(const BlockState& s, const SineCosine& turn, std::span<Vertex> out) const {
   const Vertex c = centre(s);
-  for (std::size_t i = 0; i < body_.size(); ++i) {
-    const Vertex& p = body_[i];
-    out[i] = {c[0] + p[0] * turn.cos - p[1] * turn.sin, c[1] + p[0] * turn.sin + p[1] * turn.cos};
-  }
+  for (std::size_t i = 0; i < body_.size(); ++i) out[i] = placed_vertex(i, c, turn);
 }
 
 }  // namespace blockfrag

@@ -5,6 +5,7 @@
 // lowest vertex at rest.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -38,6 +39,12 @@ class BlockOutline {
   // The vertices at pose s into `out` (as many as body()), s.theta's sine and cosine given: the
   // caller turns more than the outline.
   void place(const BlockState& s, const SineCosine& turn, std::span<Vertex> out) const;
+  // Vertex i at the pose whose centre of mass is `centre`, to place()'s bits.
+  Vertex placed_vertex(std::size_t i, const Vertex& centre, const SineCosine& turn) const {
+    const Vertex& p = body_[i];
+    return {centre[0] + p[0] * turn.cos - p[1] * turn.sin,
+            centre[1] + p[0] * turn.sin + p[1] * turn.cos};
+  }
 
  private:
   std::vector<Vertex> rest_, body_;

@@ -1,7 +1,5 @@
 #include "engine/water/hydrostatic.hpp"
 
-#include "engine/water/linear_pressure.hpp"
-
 namespace blockfrag {
 
 WaterLoad hydrostatic_load(std::span<const Vertex> polygon, const StillWater& water,
@@ -12,15 +10,6 @@ WaterLoad hydrostatic_load(std::span<const Vertex> polygon, const StillWater& wa
     add_hydrostatic_piece(total, piece, weight, reference);
   });
   return total;
-}
-
-void add_hydrostatic_piece(WaterLoad& total, const WettedPiece& piece, double unit_weight,
-                           const Vertex& reference) {
-  const WaterLoad load = edge_pressure_load(piece.a, piece.b, unit_weight * piece.depth_a,
-                                            unit_weight * piece.depth_b, reference);
-  total.fx += load.fx;
-  total.fy += load.fy;
-  total.moment += load.moment;
 }
 
 }  // namespace blockfrag

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <span>
 
+#include "engine/water/linear_pressure.hpp"
 #include "engine/water/water_load.hpp"
 #include "engine/water/wetted_face.hpp"
 
@@ -20,7 +21,13 @@ WaterLoad hydrostatic_load(std::span<const Vertex> polygon, const StillWater& wa
                            std::span<const std::size_t> crack_edges, const Vertex& reference);
 
 // One wetted piece's push and moment added to `total`; `unit_weight` rho_w g.
-void add_hydrostatic_piece(WaterLoad& total, const WettedPiece& piece, double unit_weight,
-                           const Vertex& reference);
+inline void add_hydrostatic_piece(WaterLoad& total, const WettedPiece& piece, double unit_weight,
+                                  const Vertex& reference) {
+  const WaterLoad load = edge_pressure_load(piece.a, piece.b, unit_weight * piece.depth_a,
+                                            unit_weight * piece.depth_b, reference);
+  total.fx += load.fx;
+  total.fy += load.fy;
+  total.moment += load.moment;
+}
 
 }  // namespace blockfrag

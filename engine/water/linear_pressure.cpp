@@ -19,18 +19,4 @@ WaterLoad linear_pressure_load(const Vertex& a, const Vertex& b, double p_a, dou
   return load;
 }
 
-WaterLoad edge_pressure_load(const Vertex& a, const Vertex& b, double p_a, double p_b,
-                             const Vertex& reference) {
-  const double dx = b[0] - a[0], dy = b[1] - a[1];
-  const double mean = (p_a + p_b) / 2;
-  const double first = (p_a + 2 * p_b) / 6;
-  const double arm_x = (a[0] - reference[0]) * mean + dx * first;
-  const double arm_y = (a[1] - reference[1]) * mean + dy * first;
-  WaterLoad load;
-  load.fx = -dy * mean;
-  load.fy = dx * mean;
-  load.moment = cross(arm_x, arm_y, -dy, dx);
-  return load;
-}
-
 }  // namespace blockfrag

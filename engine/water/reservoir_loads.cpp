@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include "engine/errors.hpp"
@@ -10,6 +11,7 @@
 #include "engine/tolerances.hpp"
 #include "engine/water/hydrostatic.hpp"
 #include "engine/water/vertex_buffer.hpp"
+#include "engine/water/wetted_face.hpp"
 
 namespace blockfrag {
 
@@ -19,16 +21,10 @@ bool same_double_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
-// The index of the vertex `point` is, to the bit. Turned and moved as the outline is
-// (BlockOutline::place and place_crack compute alike), it lands where its vertex does.
-std::optional<std::size_t> vertex_index(const std::vector<Vertex>& vertices, const Vertex& point) {
-  const auto same = [&](const Vertex& v) {
-    return same_double_bits(v[0], point[0]) && same_double_bits(v[1], point[1]);
-  };
-  const auto found = std::find_if(vertices.begin(), vertices.end(), same);
-  if (found == vertices.end()) return std::nullopt;
-  return static_cast<std::size_t>(found - vertices.begin());
-}
+// An edge's rise (the turned edge's y) above which its ends placed at any pose rise too, as a
+// fraction of the centre of mass's height and the outline's reach: placing a vertex errs by a few
+// units in the last place of those, ~1e-16 of them.
+constexpr double kSurelyRisingEdge = 1e-12;
 
 }  // namespace
 
@@ -53,7 +49,13 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
                           : 0.0;
   const Vertex centre = outline_.rest_centre();
   for (Vertex& p : crack_.points) p = {p[0] - centre[0], p[1] - centre[1]};
-  mouth_vertex_ = vertex_index(outline_.body(), crack_.points.front());
+  const std::vector<Vertex>& body = outline_.body();
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    reach_ = std::max(reach_, std::abs(body[i][0]) + std::abs(body[i][1]));
+    if (std::find(crack_.edges.begin(), crack_.edges.end(), i) != crack_.edges.end()) continue;
+    const std::size_t next = i + 1 < body.size() ? i + 1 : 0;
+    face_edges_.push_back({i, next, {body[next][0] - body[i][0], body[next][1] - body[i][1]}});
+  }
   closed_uplifts_ = unit_uplifts(CrackOpening::closed());
   whole_uplifts_ = unit_uplifts(CrackOpening::whole());
 }
@@ -64,13 +66,12 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
           at_pose.added.d_dtheta};
 }
 
-ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
+// Every call it makes inlined: each wetted piece's push and added mass were a call apiece.
+[[gnu::flatten]] ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
   ReservoirPose out;
-  const SineCosine turn = cached_turn(s.theta);
-  VertexBuffer world(outline_.body().size());
-  outline_.place(s, turn, world.vertices());
+  out.turn = cached_turn(s.theta);
   out.centre = outline_.centre(s);
-  out.turn = turn;
+  const SineCosine& turn = out.turn;
   const Vertex& centre = out.centre;
   // The push and the added mass in one pass over the wetted face.
   const double unit_weight = reservoir_.density * g_;
@@ -80,9 +81,15 @@ ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
     add_hydrostatic_piece(out.hydrostatic, piece, unit_weight, centre);
     if (added_mass) add_added_mass_piece(out.added, piece, added_mass_scale_, z, centre);
   };
-  for_each_wetted_piece(world.vertices(), reservoir_.level, crack_.edges, add_piece);
+  // An edge that surely rises at the pose is dry (wetted_face.hpp): its ends are not placed.
+  const double surely_rising = kSurelyRisingEdge * (std::abs(centre[1]) + reach_);
+  for (const FaceEdge& edge : face_edges_) {
+    if (edge.along[0] * turn.sin + edge.along[1] * turn.cos > surely_rising) continue;
+    visit_wetted_edge(outline_.placed_vertex(edge.from, centre, turn),
+                      outline_.placed_vertex(edge.to, centre, turn), reservoir_.level, add_piece);
+  }
   if (reservoir_.uplift == UpliftRule::none) return out;
-  const double head = std::max(0.0, reservoir_.level - mouth_height(world.vertices(), out));
+  const double head = std::max(0.0, reservoir_.level - mouth_height(out));
   out.full_head = reservoir_.density * g_ * head;
   out.closed_mouth = reservoir_.uplift == UpliftRule::unchanged
                          ? rest_mouth_pressure_
@@ -130,9 +137,7 @@ ReservoirLoads::UnitUplifts ReservoirLoads::unit_uplifts(CrackOpening open) cons
   return {per_unit(1.0, 0.0), per_unit(0.0, 1.0)};
 }
 
-double ReservoirLoads::mouth_height(std::span<const Vertex> placed,
-                                    const ReservoirPose& pose) const {
-  if (mouth_vertex_) return placed[*mouth_vertex_][1];
+double ReservoirLoads::mouth_height(const ReservoirPose& pose) const {
   const Vertex& mouth = crack_.points.front();
   return pose.centre[1] + mouth[0] * pose.turn.sin + mouth[1] * pose.turn.cos;
 }

@@ -13,8 +13,6 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
-#include <span>
 #include <vector>
 
 #include "engine/scene/block_state.hpp"
@@ -68,9 +66,9 @@ class ReservoirLoads {
   WaterLoad uplift(const ReservoirPose& pose, CrackOpening open) const;
 
  private:
-  // The height of the crack's mouth at the pose whose centre and turn `pose` holds, the outline
-  // placed there being `placed`.
-  double mouth_height(std::span<const Vertex> placed, const ReservoirPose& pose) const;
+  // The height of the crack's mouth at the pose: a mouth on a vertex to the bits of the vertex
+  // placed there (its point at rest is the vertex's).
+  double mouth_height(const ReservoirPose& pose) const;
 
   Reservoir reservoir_;
   double g_;
@@ -78,9 +76,14 @@ class ReservoirLoads {
   CrackPath crack_;
   double crack_length_;
   std::vector<double> crack_lengths_;  // of its straight pieces, at rest
-  // The outline's vertex the crack's mouth is, to the bit (its place at a pose is the vertex's);
-  // none for a mouth inside an edge, which is placed on its own.
-  std::optional<std::size_t> mouth_vertex_;
+  // The outline's edges the reservoir may wet (all but the crack's), from vertex `from` to vertex
+  // `to`, and the edge at rest (to less from), unturned.
+  struct FaceEdge {
+    std::size_t from, to;
+    Vertex along;
+  };
+  std::vector<FaceEdge> face_edges_;
+  double reach_ = 0.0;  // the most |x| + |y| of a vertex from the centre of mass, unturned
   // The closed crack's and the whole open crack's uplift (a seated and a lifted block's: every
   // right-hand side asks for one of them) on the unturned block about its centre of mass, per unit
   // of each pressure crack_pressure takes: linear in both, the uplift at a pose is their sum

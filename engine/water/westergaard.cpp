@@ -52,6 +52,30 @@ double westergaard_scale(double density, double reservoir_depth) {
 void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, double scale, double z,
                           const Vertex& centre) {
   const bool a_deeper = piece.depth_a > piece.depth_b;
+  if ((a_deeper ? piece.depth_b : piece.depth_a) != 0.0) {
+    add_added_mass_piece_in_full(out, piece, scale, z, centre);
+    return;
+  }
+  // A piece cut by the surface: its shallow end's antiderivatives, integrands and derivatives are
+  // zeros (of either sign), and a zero added to a sum that started at +0 leaves it as it was (in
+  // round-to-nearest such a sum is never -0), so the deep end's terms alone give the full sums'
+  // bits.
+  const double deep = a_deeper ? piece.depth_a : piece.depth_b;
+  const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
+  const DepthPowers p_deep = depth_powers(deep);
+  const AddedMass at_deep = depth_antiderivatives(p_deep, z);
+  out.at.mass += scale * at_deep.mass;
+  out.at.first_moment += scale * at_deep.first_moment;
+  out.at.second_moment += scale * at_deep.second_moment;
+  const AddedMass f_deep = depth_integrands(deep, p_deep, z);
+  add_scaled(out.d_dy, -scale, f_deep);
+  add_scaled(out.d_dy, -scale, surface_height_derivatives(p_deep, z));
+  add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
+}
+
+void add_added_mass_piece_in_full(AddedMassWithRates& out, const WettedPiece& piece, double scale,
+                                  double z, const Vertex& centre) {
+  const bool a_deeper = piece.depth_a > piece.depth_b;
   const double deep = a_deeper ? piece.depth_a : piece.depth_b;
   const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
   const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];

@@ -64,7 +64,13 @@ double westergaard_scale(double density, double reservoir_depth);
 
 // One wetted piece's added mass and rates about `centre` added to `out`: `scale` from
 // westergaard_scale, `z` the surface's height above the centre.
+// The sums in `out` must have started at zero: a piece cut by the surface (its shallow end's depth
+// zero) adds its deep end's terms alone, to the same bits.
 void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, double scale, double z,
                           const Vertex& centre);
+// The same with both ends' terms whatever the depths: what add_added_mass_piece does with a piece
+// under the surface at both ends.
+void add_added_mass_piece_in_full(AddedMassWithRates& out, const WettedPiece& piece, double scale,
+                                  double z, const Vertex& centre);
 
 }  // namespace blockfrag

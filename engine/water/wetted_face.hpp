@@ -34,6 +34,23 @@ struct WettedPiece {
   }
 };
 
+// Calls visit(const WettedPiece&) with the wetted piece of the polygon's edge from a to b, if it
+// has one.
+template <class Visit>
+void visit_wetted_edge(const Vertex& a, const Vertex& b, double surface, Visit&& visit) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  // The outward normal (dy, -dx) / length has n_x < 0 on a descending edge, whose end b is its
+  // lowest point.
+  if (!(dy < 0.0) || !(b[1] < surface)) return;
+  WettedPiece piece{a, b, {dx, dy}, surface - a[1], surface - b[1]};
+  if (!(a[1] < surface)) {  // the edge crosses the surface: its wetted part starts there
+    const double t = (surface - a[1]) / dy;
+    piece.a = {a[0] + t * dx, surface};
+    piece.depth_a = 0.0;
+  }
+  visit(piece);
+}
+
 // Calls visit(const WettedPiece&) for each wetted piece of the counter-clockwise polygon. A surface
 // at or below the polygon's lowest point wets nothing.
 template <class Visit>
@@ -41,20 +58,8 @@ void for_each_wetted_piece(std::span<const Vertex> polygon, double surface,
                            std::span<const std::size_t> crack_edges, Visit&& visit) {
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vertex& a = polygon[i];
-    const Vertex& b = polygon[i + 1 < n ? i + 1 : 0];
-    const double dx = b[0] - a[0], dy = b[1] - a[1];
-    // The outward normal (dy, -dx) / length has n_x < 0 on a descending edge, whose end b is its
-    // lowest point.
-    if (!(dy < 0.0) || !(b[1] < surface)) continue;
     if (std::find(crack_edges.begin(), crack_edges.end(), i) != crack_edges.end()) continue;
-    WettedPiece piece{a, b, {dx, dy}, surface - a[1], surface - b[1]};
-    if (!(a[1] < surface)) {  // the edge crosses the surface: its wetted part starts there
-      const double t = (surface - a[1]) / dy;
-      piece.a = {a[0] + t * dx, surface};
-      piece.depth_a = 0.0;
-    }
-    visit(piece);
+    visit_wetted_edge(polygon[i], polygon[i + 1 < n ? i + 1 : 0], surface, visit);
   }
 }
 

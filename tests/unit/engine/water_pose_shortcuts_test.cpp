@@ -1,0 +1,136 @@
+// The reservoir's loads at a pose (ReservoirLoads::pose) against the plain pass over the whole
+// placed outline that they shortcut, to the bit: the pose leaves out the edges that surely rise
+// without placing their ends, and a piece cut by the surface adds its deep end's added mass alone
+// (add_added_mass_piece). Random poses over every tilt, tilts on either side of the rising test's
+// slack, and levels below, at and above the crest; cut and uncut pieces from sums that started at
+// zero.
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/scene/scene_validation.hpp"
+#include "engine/sine_cosine.hpp"
+#include "engine/water/hydrostatic.hpp"
+#include "engine/water/reservoir_loads.hpp"
+#include "engine/water/westergaard.hpp"
+#include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/wet_dam_blocks.hpp"
+
+namespace blockfrag {
+namespace {
+
+using testing::FixedUniforms;
+
+bool same_water_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+void expect_same_added_mass(const AddedMass& a, const AddedMass& b) {
+  EXPECT_TRUE(same_water_bits(a.mass, b.mass)) << a.mass << " " << b.mass;
+  EXPECT_TRUE(same_water_bits(a.first_moment, b.first_moment))
+      << a.first_moment << " " << b.first_moment;
+  EXPECT_TRUE(same_water_bits(a.second_moment, b.second_moment))
+      << a.second_moment << " " << b.second_moment;
+}
+
+void expect_same_rates(const AddedMassWithRates& a, const AddedMassWithRates& b) {
+  expect_same_added_mass(a.at, b.at);
+  expect_same_added_mass(a.d_dy, b.d_dy);
+  expect_same_added_mass(a.d_dtheta, b.d_dtheta);
+}
+
+// The pose's push and added mass as the whole outline placed and passed over gives them, every
+// piece's added mass with both ends' terms.
+ReservoirPose plain_pose(const Scene& scene, const ReservoirLoads& loads, const BlockState& s) {
+  const BlockOutline outline(scene);
+  std::vector<Vertex> world(outline.body().size());
+  ReservoirPose out;
+  out.turn = sine_cosine(s.theta);
+  out.centre = outline.centre(s);
+  outline.place(s, out.turn, world);
+  const Reservoir& water = *scene.reservoir;
+  const double scale = westergaard_scale(water.density, water.depth);
+  const double z = water.level - out.centre[1];
+  for_each_wetted_piece(world, water.level, loads.crack().edges, [&](const WettedPiece& piece) {
+    add_hydrostatic_piece(out.hydrostatic, piece, water.density * scene.g, out.centre);
+    add_added_mass_piece_in_full(out.added, piece, scale, z, out.centre);
+  });
+  return out;
+}
+
+// Tilts anywhere, near the upright, and right at a rising test's slack for the block's edges.
+double random_tilt(FixedUniforms& u, int i) {
+  switch (i % 5) {
+    case 0: return u(-3.1, 3.1);
+    case 1: return u(-0.3, 0.3);
+    case 2: return u(-1e-12, 1e-12);
+    case 3: return u(-1e-15, 1e-15);
+    default: return (i % 10 == 4 ? 1.0 : -1.0) * u(0.0, 1e-300);
+  }
+}
+
+void expect_pose_is_the_plain_pass(Scene scene, double level) {
+  scene.reservoir->level = level;
+  validate_scene(scene);
+  const ReservoirLoads loads(scene);
+  const BlockState rest = BlockOutline(scene).rest_state();
+  FixedUniforms u(41);
+  for (int i = 0; i < 400; ++i) {
+    SCOPED_TRACE(::testing::Message() << "pose " << i);
+    BlockState s = rest;
+    s.x += u(-2.0, 2.0);
+    s.y += u(-1.0, 3.0);
+    s.theta = i == 0 ? 0.0 : random_tilt(u, i);
+    const ReservoirPose pose = loads.pose(s), plain = plain_pose(scene, loads, s);
+    EXPECT_TRUE(same_water_bits(pose.hydrostatic.fx, plain.hydrostatic.fx));
+    EXPECT_TRUE(same_water_bits(pose.hydrostatic.fy, plain.hydrostatic.fy));
+    EXPECT_TRUE(same_water_bits(pose.hydrostatic.moment, plain.hydrostatic.moment));
+    expect_same_rates(pose.added, plain.added);
+  }
+}
+
+TEST(ReservoirPoseShortcuts, ThePoseIsThePlainPassOverTheWholeOutline) {
+  const Scene b = testing::wet_type_b_step(0.8, 0.3, UpliftRule::zero_in_gap);
+  const Scene a = testing::wet_type_a_step(0.8, 0.3, UpliftRule::unchanged);
+  for (const double level : {21.7, 15.0, 8.366666666666667, 25.0}) {
+    SCOPED_TRACE(::testing::Message() << "type B, level " << level);
+    expect_pose_is_the_plain_pass(b, level);
+  }
+  for (const double level : {16.7, 10.0, 20.0}) {
+    SCOPED_TRACE(::testing::Message() << "type A, level " << level);
+    expect_pose_is_the_plain_pass(a, level);
+  }
+}
+
+// A piece of a descending edge from a to b, cut by the surface at a when `cut`.
+WettedPiece random_piece(FixedUniforms& u, double surface, bool cut) {
+  const Vertex b{u(-5.0, 5.0), surface - u(1e-3, 20.0)};
+  const Vertex a{b[0] + u(-3.0, 3.0), cut ? surface : surface - u(0.0, 0.99) * (surface - b[1])};
+  return {a, b, {b[0] - a[0], b[1] - a[1]}, surface - a[1], surface - b[1]};
+}
+
+TEST(ReservoirPoseShortcuts, APieceCutByTheSurfaceAddsItsFullTermsBits) {
+  FixedUniforms u(43);
+  const double scale = westergaard_scale(1000.0, 100.0);
+  for (int i = 0; i < 2000; ++i) {
+    SCOPED_TRACE(::testing::Message() << "piece " << i);
+    const double surface = u(-10.0, 30.0);
+    const Vertex centre{u(-5.0, 5.0), surface + u(-25.0, 10.0)};
+    // Sums that start at zero, with an uncut piece or none before.
+    AddedMassWithRates shortcut, full;
+    if (i % 2 == 1) {
+      const WettedPiece before = random_piece(u, surface, false);
+      add_added_mass_piece(shortcut, before, scale, surface - centre[1], centre);
+      add_added_mass_piece_in_full(full, before, scale, surface - centre[1], centre);
+    }
+    const WettedPiece piece = random_piece(u, surface, i % 3 != 2);
+    add_added_mass_piece(shortcut, piece, scale, surface - centre[1], centre);
+    add_added_mass_piece_in_full(full, piece, scale, surface - centre[1], centre);
+    expect_same_rates(shortcut, full);
+  }
+}
+
+}  // namespace
+}  // namespace blockfrag
