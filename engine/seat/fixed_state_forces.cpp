@@ -190,10 +190,8 @@ namespace {
 
 // One contact under a coupled mass matrix (the reservoir's added mass): the same 2x2 or 1x1
 // system with M^-1 applied to each row in full.
-std::optional<FixedStateForces> coupled_one_contact_forces(const PlanarContact& c,
-                                                           ContactState state, const BlockState& s,
-                                                           const BodyLoad& load, double mu) {
-  FixedStateForces out;
+bool coupled_one_contact_forces(const PlanarContact& c, ContactState state, const BlockState& s,
+                                const BodyLoad& load, double mu, FixedStateForces& out) {
   const Eigen::Vector3d free_q = load.free_acceleration();
   const RigidVelocity v{s.vx, s.vy, s.omega};
   const Vec2 t = contact_tangent(c);
@@ -211,12 +209,12 @@ std::optional<FixedStateForces> coupled_one_contact_forces(const PlanarContact& 
     const auto amounts =
         full_pivot_solve({{{dot_w(jn, wn), dot_w(jn, wt)}, {dot_w(jt, wn), dot_w(jt, wt)}}},
                          {-y.normal, -y.tangent});
-    if (!amounts) return std::nullopt;
+    if (!amounts) return false;
     normal = (*amounts)[0];
     tangent = (*amounts)[1];
   } else {
     const double a = dot_w(jn, wn) - slip * mu * dot_w(jn, wt);
-    if (a == 0.0) return std::nullopt;
+    if (a == 0.0) return false;
     normal = -y.normal / a;
     tangent = -slip * mu * normal;
   }
@@ -225,16 +223,14 @@ std::optional<FixedStateForces> coupled_one_contact_forces(const PlanarContact& 
   out.total = {normal * c.normal.x + tangent * t.x, normal * c.normal.y + tangent * t.y};
   const Eigen::Vector3d change = normal * wn + tangent * wt;
   out.acceleration = {free_q(0) + change(0), free_q(1) + change(1), free_q(2) + change(2)};
-  return out;
+  return true;
 }
 
 }  // namespace
 
-std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
-                                                   const BlockState& s, const BodyLoad& load,
-                                                   double mu) {
-  if (load.inertia.coupled()) return coupled_one_contact_forces(c, state, s, load, mu);
-  FixedStateForces out;
+bool one_contact_forces(const PlanarContact& c, ContactState state, const BlockState& s,
+                        const BodyLoad& load, double mu, FixedStateForces& out) {
+  if (load.inertia.coupled()) return coupled_one_contact_forces(c, state, s, load, mu, out);
   const Eigen::Vector3d free_q = load.free_acceleration();
   const BodyAcceleration free{free_q(0), free_q(1), free_q(2)};
   const RigidVelocity v{s.vx, s.vy, s.omega};
@@ -249,24 +245,33 @@ std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, Conta
     const Row3 wt{jt.x, jt.y, jt.z * inverse_inertia};
     const auto amounts = full_pivot_solve(
         {{{dot(wn, jn), dot(wn, jt)}, {dot(wt, jn), dot(wt, jt)}}}, {-y.normal, -y.tangent});
-    if (!amounts) return std::nullopt;
+    if (!amounts) return false;
     normal = (*amounts)[0];
     tangent = (*amounts)[1];
   } else {
     const double s_mu = slip * mu;
     const double a = dot(wn, {jn.x - s_mu * jt.x, jn.y - s_mu * jt.y, jn.z - s_mu * jt.z});
-    if (a == 0.0) return std::nullopt;
+    if (a == 0.0) return false;
     normal = -y.normal / a;
     tangent = -slip * mu * normal;
   }
   out.normal[0] = normal;
   out.tangent[0] = tangent;
-  out.total.x += normal * c.normal.x + tangent * t.x;
-  out.total.y += normal * c.normal.y + tangent * t.y;
+  // The general solve's sums, from zero.
+  out.total.x = 0.0 + (normal * c.normal.x + tangent * t.x);
+  out.total.y = 0.0 + (normal * c.normal.y + tangent * t.y);
   const Row3 force{0.0 + (normal * jn.x + tangent * jt.x), 0.0 + (normal * jn.y + tangent * jt.y),
                    0.0 + (normal * jn.z + tangent * jt.z)};
   out.acceleration = {free.x_dd + force.x, free.y_dd + force.y,
                       free.theta_dd + inverse_inertia * force.z};
+  return true;
+}
+
+std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
+                                                   const BlockState& s, const BodyLoad& load,
+                                                   double mu) {
+  FixedStateForces out;
+  if (!one_contact_forces(c, state, s, load, mu, out)) return std::nullopt;
   return out;
 }
 

@@ -36,6 +36,13 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   events_[0] = SeatEvent::overturns;
   events_[1] = SeatEvent::falls;
   for (int i = 0; i < count_; ++i) {
+    const ActiveContact& a = active_[static_cast<std::size_t>(i)];
+    states_[static_cast<std::size_t>(i)] = a.state;
+    // A block vertex's contact normal is its segment's at any pose.
+    if (a.pair.kind == ContactKind::block_vertex) {
+      normals_[static_cast<std::size_t>(i)] =
+          c_.contacts->pose(a.pair, BlockState{}).contact.normal;
+    }
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
     events_[base] = SeatEvent::lift_off;
     events_[base + 1] = active_[static_cast<std::size_t>(i)].state == ContactState::stick
@@ -61,15 +68,31 @@ GuardClaims SeatSystem::live_guards() const {
   return live;
 }
 
-SeatSystem::Poses SeatSystem::active_poses(const BlockState& s) const {
+SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {
   // Only the active contacts' entries are set and read: zeroing all six was a tenth of a
   // right-hand side's instructions on one contact.
-  Poses poses;
+  Contacts contacts;
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
-    poses[at] = c_.contacts->pose(active_[at].pair, s);
+    contacts[at] = c_.contacts->pose(active_[at].pair, s).contact;
   }
-  return poses;
+  return contacts;
+}
+
+SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s,
+                                                 std::span<const Vec2> world) const {
+  Contacts contacts;
+  for (int i = 0; i < count_; ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    const SeatPair& pair = active_[at].pair;
+    if (pair.kind == ContactKind::block_vertex) {
+      const Vec2 p = world[static_cast<std::size_t>(pair.block)];
+      contacts[at] = {{p.x - s.x, p.y - s.y}, normals_[at], ContactKind::block_vertex};
+    } else {
+      contacts[at] = c_.contacts->pose(pair, s).contact;
+    }
+  }
+  return contacts;
 }
 
 bool SeatSystem::solved_at(double t, const BlockState& s) const {
@@ -77,37 +100,37 @@ bool SeatSystem::solved_at(double t, const BlockState& s) const {
 }
 
 const FixedStateForces& SeatSystem::solve(double t, const BlockState& s) {
-  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, active_poses(s));
+  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, active_contacts(s));
 }
 
-const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const Poses& poses) {
-  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, poses);
+const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const Contacts& contacts) {
+  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, contacts);
 }
 
-const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, const Poses& poses) {
-  std::array<PlanarContact, kMaxSeatContacts> contacts;  // the first count_ set and read
-  std::array<ContactState, kMaxSeatContacts> states;
-  for (int i = 0; i < count_; ++i) {
-    const auto at = static_cast<std::size_t>(i);
-    contacts[at] = poses[at].contact;
-    states[at] = active_[at].state;
-  }
+const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
+                                               const Contacts& contacts) {
   const auto n = static_cast<std::size_t>(count_);
-  const SeatedLoadInput in{c_.geometry->inertia_per_mass(),
-                           c_.piece->lambda(t),
-                           c_.vertical->lambda(t),
-                           c_.g,
-                           c_.mu,
-                           c_.external};
-  const BodyLoad load =
-      count_ >= 2 ? seated_load(in, s, std::span(contacts).first(n), std::span(states).first(n))
-      : c_.external == nullptr ? dry_lifted_load(c_, t, s)
-                               : wet_lifted_load(t, s);
-  const std::optional<FixedStateForces> one =
-      count_ == 1 ? one_contact_forces(contacts[0], states[0], s, load, c_.mu) : std::nullopt;
-  last_solve_.forces = one ? *one
-                           : fixed_state_forces(std::span(contacts).first(n),
-                                                std::span(states).first(n), s, load, c_.mu);
+  const std::span<const PlanarContact> active = std::span(contacts).first(n);
+  const std::span<const ContactState> states = std::span(states_).first(n);
+  if (count_ >= 2) {
+    const SeatedLoadInput in{c_.geometry->inertia_per_mass(),
+                             c_.piece->lambda(t),
+                             c_.vertical->lambda(t),
+                             c_.g,
+                             c_.mu,
+                             c_.external};
+    last_solve_.forces =
+        fixed_state_forces(active, states, s, seated_load(in, s, active, states), c_.mu);
+  } else {
+    const BodyLoad load =
+        c_.external == nullptr ? dry_lifted_load(c_, t, s) : wet_lifted_load(t, s);
+    // One contact's forces go straight into the kept ones; where its fixed-size solve gives
+    // none, the general solve overwrites them whole.
+    if (!(count_ == 1 &&
+          one_contact_forces(contacts[0], states_[0], s, load, c_.mu, last_solve_.forces))) {
+      last_solve_.forces = fixed_state_forces(active, states, s, load, c_.mu);
+    }
+  }
   last_solve_.t = t;
   last_solve_.s = s;
   return last_solve_.forces;
@@ -160,7 +183,8 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   if (wanted[1]) out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
   const auto contact_guards = std::span(wanted).subspan(2, kSeatContactGuards * count_);
   if (std::find(contact_guards.begin(), contact_guards.end(), true) != contact_guards.end()) {
-    set_contact_guards(t, s, out);
+    set_contact_guards(
+        t, s, std::span(world).first(static_cast<std::size_t>(c_.contacts->vertex_count())), out);
   }
   std::size_t g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const int i : watched_vertices_) {
@@ -174,27 +198,28 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   return out;
 }
 
-void SeatSystem::set_contact_guards(double t, const BlockState& s,
+void SeatSystem::set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
                                     std::array<double, kGuards>& out) {
   const double R = c_.geometry->size();
-  const Poses poses = active_poses(s);
-  const FixedStateForces& f = solve(t, s, poses);
+  const Contacts contacts = active_contacts(s, world);
+  const FixedStateForces& f = solve(t, s, contacts);
   const RigidVelocity v{s.vx, s.vy, s.omega};
   const double velocity_scale = std::sqrt(c_.g * R);
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
-    const PairPose& p = poses[at];
+    const PlanarContact& c = contacts[at];
     out[base] = lift_off_guard(f, at);
     const int slip = slip_sign(active_[at].state);
-    out[base + 1] = slip == 0 ? friction_guard(f, at)
-                              : slip * contact_velocity(p.contact, v).tangent / velocity_scale;
+    out[base + 1] =
+        slip == 0 ? friction_guard(f, at) : slip * contact_velocity(c, v).tangent / velocity_scale;
     if (slip != 0 && active_[at].pair.kind == ContactKind::block_vertex) {
-      const SeatContacts::RunPlace run = c_.contacts->place_on_run(
-          active_[at].pair.seat, {s.x + p.contact.r.x, s.y + p.contact.r.y});
+      const SeatContacts::RunPlace run =
+          c_.contacts->place_on_run(active_[at].pair.seat, {s.x + c.r.x, s.y + c.r.y});
       out[base + 2] = run.along / R;
       out[base + 3] = (run.length - run.along) / R;
     } else if (slip != 0) {
+      const PairPose p = c_.contacts->pose(active_[at].pair, s);
       out[base + 2] = p.along / R;
       out[base + 3] = (p.length - p.along) / R;
     }
@@ -222,7 +247,7 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
 
 bool SeatSystem::contacts_hold(double t, const BlockState& s) {
   if (count_ == 0) return true;
-  const FixedStateForces& f = solve(t, s, active_poses(s));
+  const FixedStateForces& f = solve(t, s, active_contacts(s));
   for (std::size_t at = 0; at < static_cast<std::size_t>(count_); ++at) {
     if (!(lift_off_guard(f, at) > 0)) return false;
     if (active_[at].state == ContactState::stick && !(friction_guard(f, at) > 0)) return false;

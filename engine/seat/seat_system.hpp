@@ -179,21 +179,31 @@ class SeatSystem {
   double friction_guard(const FixedStateForces& f, std::size_t at) const {
     return (c_.mu * f.normal[at] - std::abs(f.tangent[at])) / c_.g;
   }
-  // The active contacts' guards (four each from slot 2) into `out`.
-  void set_contact_guards(double t, const BlockState& s, std::array<double, kGuards>& out);
-  using Poses = std::array<PairPose, kMaxSeatContacts>;
-  Poses active_poses(const BlockState& s) const;
+  // The active contacts' guards (four each from slot 2) into `out`; `world`: the block's vertices
+  // at s (SeatContacts::world_vertices).
+  void set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
+                          std::array<double, kGuards>& out);
+  // The active contacts at s (the first count_ set), as SeatContacts::pose gives them.
+  using Contacts = std::array<PlanarContact, kMaxSeatContacts>;
+  Contacts active_contacts(const BlockState& s) const;
+  // The same with the block's vertices at s given: a block vertex's contact is its world vertex
+  // less the centre of mass, on its segment's fixed normal, as pose() finds it, without turning
+  // the vertex again (a rocking block's guards, at every step).
+  Contacts active_contacts(const BlockState& s, std::span<const Vec2> world) const;
   // Whether the last forces solved are at this time and state.
   bool solved_at(double t, const BlockState& s) const;
-  // The forces with the active contacts' poses at s given; solve_anew does not look at the last.
-  const FixedStateForces& solve(double t, const BlockState& s, const Poses& poses);
-  const FixedStateForces& solve_anew(double t, const BlockState& s, const Poses& poses);
+  // The forces with the active contacts at s given; solve_anew does not look at the last.
+  const FixedStateForces& solve(double t, const BlockState& s, const Contacts& contacts);
+  const FixedStateForces& solve_anew(double t, const BlockState& s, const Contacts& contacts);
   // The load on the block lifted from its seat (one contact or none) under the external load at
   // time t in the state s, kept for the next call at the same time and state.
   const BodyLoad& wet_lifted_load(double t, const BlockState& s);
 
   SeatSystemContext c_;
   std::array<ActiveContact, kMaxSeatContacts> active_{};
+  std::array<ContactState, kMaxSeatContacts>
+      states_{};                                  // active_'s states, as the solves take them
+  std::array<Vec2, kMaxSeatContacts> normals_{};  // a block vertex's contact normal: its segment's
   int count_ = 0;
   WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
