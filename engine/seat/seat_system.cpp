@@ -17,13 +17,15 @@ BodyLoad dry_lifted_load(const SeatSystemContext& c, double t, const BlockState&
                    nullptr, s, Footing::lifted);
 }
 
-// Every guard at 1, an unused slot's value: copied whole, it costs half of filling the 64 slots
-// one by one (a rocking block's guards, at every step).
-constexpr std::array<double, SeatSystem::kGuards> kUnusedGuardValues = [] {
-  std::array<double, SeatSystem::kGuards> ones{};
-  ones.fill(1.0);
+// Every guard at 1, an unused slot's value. Unrolled, the fill is one store per two slots: a
+// loop's, or a copy of a constant array (a string copy, one instruction per slot), cost twice
+// that or more (a rocking block's guards, at every step).
+std::array<double, SeatSystem::kGuards> unused_guard_values() {
+  std::array<double, SeatSystem::kGuards> ones;
+#pragma GCC unroll 64
+  for (double& one : ones) one = 1.0;
   return ones;
-}();
+}
 
 }  // namespace
 
@@ -168,7 +170,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s,
                                                            const GuardClaims& wanted) {
-  std::array<double, kGuards> out = kUnusedGuardValues;
+  std::array<double, kGuards> out = unused_guard_values();
   const double R = c_.geometry->size();
   // A sample inside a step mostly follows one clearance (a vertex just over the seat in flight):
   // the overturning margin and the fall's height are found only where followed.
