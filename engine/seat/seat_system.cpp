@@ -11,12 +11,6 @@ namespace blockfrag {
 
 namespace {
 
-// The dry block's load lifted from its seat: cheaper to find again than to look up.
-BodyLoad dry_lifted_load(const SeatSystemContext& c, double t, const BlockState& s) {
-  return body_load(c.geometry->inertia_per_mass(), c.piece->lambda(t), c.vertical->lambda(t), c.g,
-                   nullptr, s, Footing::lifted);
-}
-
 // Every guard at 1, an unused slot's value. Unrolled, the fill is one store per two slots: a
 // loop's, or a copy of a constant array (a string copy, one instruction per slot), cost twice
 // that or more (a rocking block's guards, at every step).
@@ -31,7 +25,10 @@ std::array<double, SeatSystem::kGuards> unused_guard_values() {
 
 SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
                        const WatchedList& watched_vertices, const WatchedList& watched_points)
-    : c_(c), watched_vertices_(watched_vertices), watched_points_(watched_points) {
+    : c_(c),
+      vertical_still_(c.vertical->is_zero()),
+      watched_vertices_(watched_vertices),
+      watched_points_(watched_points) {
   count_ = static_cast<int>(active.size());
   std::copy(active.begin(), active.end(), active_.begin());
   events_.fill(SeatEvent::none);
@@ -117,15 +114,14 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
   if (count_ >= 2) {
     const SeatedLoadInput in{c_.geometry->inertia_per_mass(),
                              c_.piece->lambda(t),
-                             c_.vertical->lambda(t),
+                             lambda_v(t),
                              c_.g,
                              c_.mu,
                              c_.external};
     last_solve_.forces =
         fixed_state_forces(active, states, s, seated_load(in, s, active, states), c_.mu);
   } else {
-    const BodyLoad load =
-        c_.external == nullptr ? dry_lifted_load(c_, t, s) : wet_lifted_load(t, s);
+    const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
     // One contact's forces go straight into the kept ones; where its fixed-size solve gives
     // none, the general solve overwrites them whole.
     if (!(count_ == 1 &&
@@ -140,8 +136,8 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
 
 const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
   if (!(t == last_lifted_.t && std::memcmp(&s, &last_lifted_.s, sizeof s) == 0)) {
-    last_lifted_.load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
-                                  c_.vertical->lambda(t), c_.g, c_.external, s, Footing::lifted);
+    last_lifted_.load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t), lambda_v(t),
+                                  c_.g, c_.external, s, Footing::lifted);
     last_lifted_.t = t;
     last_lifted_.s = s;
   }
@@ -150,7 +146,7 @@ const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
 
 std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) {
   if (count_ != 1) return std::nullopt;
-  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(c_, t, s) : wet_lifted_load(t, s);
+  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
   const BodyInertia& m = load.inertia;
   const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
   const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta

@@ -198,8 +198,18 @@ class SeatSystem {
   // The load on the block lifted from its seat (one contact or none) under the external load at
   // time t in the state s, kept for the next call at the same time and state.
   const BodyLoad& wet_lifted_load(double t, const BlockState& s);
+  // The same for the dry block: cheaper to find again than to look up.
+  BodyLoad dry_lifted_load(double t, const BlockState& s) const {
+    return body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t), lambda_v(t), c_.g,
+                     nullptr, s, Footing::lifted);
+  }
+  // lambda_v at t. The loads take it only as 1 + lambda_v, which a zero of either sign leaves 1:
+  // without vertical motion (most scenes) the piece's formula is not asked at each new time (a
+  // rocking block's right-hand sides, at two new times a step).
+  double lambda_v(double t) const { return vertical_still_ ? 0.0 : c_.vertical->lambda(t); }
 
   SeatSystemContext c_;
+  bool vertical_still_;  // c_.vertical is zero throughout
   std::array<ActiveContact, kMaxSeatContacts> active_{};
   std::array<ContactState, kMaxSeatContacts>
       states_{};                                  // active_'s states, as the solves take them
