@@ -28,9 +28,10 @@ Row3 row_of(const PlanarContact& c, Vec2 d) { return {d.x, d.y, c.r.x * d.y - c.
 double dot(Row3 a, Row3 b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
 
 // The solution of a x = d by Eigen's FullPivLU, step by step: the pivot is the first largest
-// entry in column-major order; nothing where the rank falls short.
-std::optional<std::array<double, 2>> full_pivot_solve(std::array<std::array<double, 2>, 2> a,
-                                                      std::array<double, 2> d) {
+// entry in column-major order; nothing where the rank falls short. Inlined into its callers: a
+// call passed its system through memory, an eighth of a rocking block's contact guards.
+[[gnu::always_inline]] inline std::optional<std::array<double, 2>> full_pivot_solve(
+    std::array<std::array<double, 2>, 2> a, std::array<double, 2> d) {
   const std::array<double, 4> score{std::abs(a[0][0]), std::abs(a[1][0]), std::abs(a[0][1]),
                                     std::abs(a[1][1])};
   int best = 0;
