@@ -78,8 +78,9 @@ SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {
   return contacts;
 }
 
-SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s,
-                                                 std::span<const Vec2> world) const {
+// Inlined into the guards, its one caller: a call returned the six contacts through memory.
+[[gnu::always_inline]] inline SeatSystem::Contacts SeatSystem::active_contacts(
+    const BlockState& s, std::span<const Vec2> world) const {
   Contacts contacts;
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
