@@ -73,7 +73,12 @@ SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {
   Contacts contacts;
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
-    contacts[at] = c_.contacts->pose(active_[at].pair, s).contact;
+    const SeatPair& pair = active_[at].pair;
+    if (pair.kind == ContactKind::block_vertex) {
+      contacts[at] = vertex_contact(at, c_.contacts->vertex_at(pair.block, s), s);
+    } else {
+      contacts[at] = c_.contacts->pose(pair, s).contact;
+    }
   }
   return contacts;
 }
@@ -86,8 +91,7 @@ SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {
     const auto at = static_cast<std::size_t>(i);
     const SeatPair& pair = active_[at].pair;
     if (pair.kind == ContactKind::block_vertex) {
-      const Vec2 p = world[static_cast<std::size_t>(pair.block)];
-      contacts[at] = {{p.x - s.x, p.y - s.y}, normals_[at], ContactKind::block_vertex};
+      contacts[at] = vertex_contact(at, world[static_cast<std::size_t>(pair.block)], s);
     } else {
       contacts[at] = c_.contacts->pose(pair, s).contact;
     }

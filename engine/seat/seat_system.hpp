@@ -183,13 +183,18 @@ class SeatSystem {
   // at s (SeatContacts::world_vertices).
   void set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
                           std::array<double, kGuards>& out);
-  // The active contacts at s (the first count_ set), as SeatContacts::pose gives them.
+  // The active contacts at s (the first count_ set), as SeatContacts::pose gives them: a block
+  // vertex's is its world vertex less the centre of mass on its segment's fixed normal, found
+  // without pose()'s gap and place (every right-hand side of a slipping or sliding block).
   using Contacts = std::array<PlanarContact, kMaxSeatContacts>;
   Contacts active_contacts(const BlockState& s) const;
-  // The same with the block's vertices at s given: a block vertex's contact is its world vertex
-  // less the centre of mass, on its segment's fixed normal, as pose() finds it, without turning
-  // the vertex again (a rocking block's guards, at every step).
+  // The same with the block's vertices at s given, without turning a vertex again (a rocking
+  // block's guards, at every step).
   Contacts active_contacts(const BlockState& s, std::span<const Vec2> world) const;
+  // Active contact `at`, a block vertex's, with that vertex at p in the world frame.
+  PlanarContact vertex_contact(std::size_t at, Vec2 p, const BlockState& s) const {
+    return {{p.x - s.x, p.y - s.y}, normals_[at], ContactKind::block_vertex};
+  }
   // Whether the last forces solved are at this time and state.
   bool solved_at(double t, const BlockState& s) const;
   // The forces with the active contacts at s given; solve_anew does not look at the last.

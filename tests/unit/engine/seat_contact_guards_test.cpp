@@ -1,6 +1,6 @@
-// The guards of a block's active contacts on its seat (SeatSystem::guards) take a block vertex's
-// contact from the world vertices the other guards turn, not from SeatContacts::pose: the forces
-// they solve, which the system keeps for the next asks at that time and state, and the guards made
+// A block's seat system takes a block vertex's contact from that vertex alone, and its guards from
+// the world vertices the other guards turn, not from SeatContacts::pose: the forces it solves
+// (those the guards solve are kept for the next asks at that time and state) and the guards made
 // of them and of the contacts' velocities are those of the contacts pose() gives, to the bit, over
 // random states of the paper's type B block with one or two contacts, sticking or slipping.
 #include <bit>
@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/seat/seat_system.hpp"
+#include "engine/seat/seated_load.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/type_b_block.hpp"
 
@@ -33,6 +34,26 @@ void expect_same_kept_forces(const FixedStateForces& kept, const FixedStateForce
     EXPECT_TRUE(same_guard_bits(kept.normal[i], posed.normal[i])) << n << " " << i;
     EXPECT_TRUE(same_guard_bits(kept.tangent[i], posed.tangent[i])) << n << " " << i;
   }
+}
+
+// The forces of the active contacts at s as pose() gives them, solved as the system solves them
+// without vertical motion.
+FixedStateForces posed_forces(const SeatContacts& contacts,
+                              const std::vector<ActiveContact>& active, const BlockState& s,
+                              double k2, double lambda, double g, double mu) {
+  std::vector<PlanarContact> posed;
+  std::vector<ContactState> states;
+  for (const ActiveContact& a : active) {
+    posed.push_back(contacts.pose(a.pair, s).contact);
+    states.push_back(a.state);
+  }
+  if (active.size() >= 2) {
+    const BodyLoad load = seated_load({k2, lambda, 0.0, g, mu, nullptr}, s, posed, states);
+    return fixed_state_forces(posed, states, s, load, mu);
+  }
+  const BodyLoad load = body_load(k2, lambda, 0.0, g, nullptr, s, Footing::lifted);
+  const auto one = one_contact_forces(posed[0], states[0], s, load, mu);
+  return one ? *one : fixed_state_forces(posed, states, s, load, mu);
 }
 
 TEST(SeatContactGuards, AreThoseOfTheContactsPoseGivesToTheBit) {
@@ -61,10 +82,11 @@ TEST(SeatContactGuards, AreThoseOfTheContactsPoseGivesToTheBit) {
     const BlockState s{u(4.0, 8.0), u(9.5, 11.5), u(-0.3, 0.3), u(-1, 1), u(-1, 1), u(-1, 1)};
     const double t = u(0.0, 5.0);
     const auto guards = system.guards(t, s);
-    // A system that has solved nothing yet solves the forces with pose()'s contacts.
-    SeatSystem posed(context, active, {}, {});
-    const FixedStateForces& f = posed.solve(t, s);
+    const FixedStateForces f =
+        posed_forces(contacts, active, s, geometry.inertia_per_mass(), ground.lambda(t), g, mu);
     expect_same_kept_forces(system.solve(t, s), f, active.size(), n);
+    // A system that has solved nothing yet.
+    expect_same_kept_forces(SeatSystem(context, active, {}, {}).solve(t, s), f, active.size(), n);
     for (std::size_t i = 0; i < active.size(); ++i) {
       const std::size_t base = 2 + kSeatContactGuards * i;
       EXPECT_TRUE(same_guard_bits(guards[base], f.normal[i] / g)) << n << " " << i;
