@@ -9,35 +9,6 @@ namespace blockfrag {
 
 namespace {
 
-// The velocity-product terms of the contact's accelerations: the material point's centripetal
-// acceleration -omega^2 r, and for a seat point on a block edge the turning of the edge's normal,
-// -2 omega u_t (the gap n . (p - s) with n turning at omega: 2 n' . p' = -2 omega t . u).
-ContactAcceleration velocity_terms(const PlanarContact& c, const RigidVelocity& v) {
-  const Vec2 t = contact_tangent(c);
-  const double w2 = v.omega * v.omega;
-  double normal = -w2 * (c.normal.x * c.r.x + c.normal.y * c.r.y);
-  if (c.kind == ContactKind::seat_point) normal -= 2.0 * v.omega * contact_velocity(c, v).tangent;
-  return {-w2 * (t.x * c.r.x + t.y * c.r.y), normal};
-}
-
-}  // namespace
-
-ContactVelocity contact_velocity(const PlanarContact& c, const RigidVelocity& v) {
-  const CornerVelocity u = corner_velocity(v, c.r.x, c.r.y);
-  const Vec2 t = contact_tangent(c);
-  return {t.x * u.u_x + t.y * u.u_y, c.normal.x * u.u_x + c.normal.y * u.u_y};
-}
-
-ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelocity& v,
-                                         const BodyAcceleration& a) {
-  const Eigen::Vector3d q_dd(a.x_dd, a.y_dd, a.theta_dd);
-  const ContactAcceleration terms = velocity_terms(c, v);
-  return {contact_row(c, contact_tangent(c)).dot(q_dd) + terms.tangent,
-          contact_row(c, c.normal).dot(q_dd) + terms.normal};
-}
-
-namespace {
-
 BodyAcceleration free_acceleration(const PlanarForcesInput& in) {
   const Eigen::Vector3d free_q =
       BodyLoad{in.applied, in.applied_moment, in.inertia}.free_acceleration();

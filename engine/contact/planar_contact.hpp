@@ -34,7 +34,11 @@ inline Vec2 contact_tangent(const PlanarContact& c) { return {c.normal.y, -c.nor
 struct ContactVelocity {
   double tangent, normal;
 };
-ContactVelocity contact_velocity(const PlanarContact& c, const RigidVelocity& v);
+inline ContactVelocity contact_velocity(const PlanarContact& c, const RigidVelocity& v) {
+  const CornerVelocity u = corner_velocity(v, c.r.x, c.r.y);
+  const Vec2 t = contact_tangent(c);
+  return {t.x * u.u_x + t.y * u.u_y, c.normal.x * u.u_x + c.normal.y * u.u_y};
+}
 
 // The block's accelerations: centre of mass (x'', y'') and theta''.
 struct BodyAcceleration {
@@ -46,8 +50,22 @@ struct BodyAcceleration {
 struct ContactAcceleration {
   double tangent, normal;
 };
-ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelocity& v,
-                                         const BodyAcceleration& a);
+// Inline: the contact forces on a seat ask for it at every right-hand side and guard.
+inline ContactAcceleration contact_acceleration(const PlanarContact& c, const RigidVelocity& v,
+                                                const BodyAcceleration& a) {
+  // The row d . u of engine/contact/contact_lcp.hpp's contact_row times q'', in Eigen's order for
+  // a product of three; then the velocity-product terms: the material point's centripetal
+  // acceleration -omega^2 r, and for a seat point on a block edge the turning of the edge's
+  // normal, -2 omega u_t (the gap n . (p - s) with n turning at omega: 2 n' . p' = -2 omega t . u).
+  const auto row_times = [&](Vec2 d) {
+    return (d.x * a.x_dd + d.y * a.y_dd) + (c.r.x * d.y - c.r.y * d.x) * a.theta_dd;
+  };
+  const Vec2 t = contact_tangent(c);
+  const double w2 = v.omega * v.omega;
+  double normal = -w2 * (c.normal.x * c.r.x + c.normal.y * c.r.y);
+  if (c.kind == ContactKind::seat_point) normal -= 2.0 * v.omega * contact_velocity(c, v).tangent;
+  return {row_times(t) + -w2 * (t.x * c.r.x + t.y * c.r.y), row_times(c.normal) + normal};
+}
 
 // What a contact does: sticks, slips along +t or -t (friction -s mu V), or carries no force.
 enum class ContactState { stick, slip_positive, slip_negative, off };

@@ -51,5 +51,10 @@ std::optional<FixedStateForces> two_slipping_contacts_forces(
 std::optional<FixedStateForces> one_contact_forces(const PlanarContact& c, ContactState state,
                                                    const BlockState& s, const BodyLoad& load,
                                                    double mu);
+// The same into `out` (its contact 0's entries, total and acceleration; the others are left as
+// they are), without the copies of a returned one: false where the above gives nothing (`out`
+// then unspecified).
+bool one_contact_forces(const PlanarContact& c, ContactState state, const BlockState& s,
+                        const BodyLoad& load, double mu, FixedStateForces& out);
 
 }  // namespace blockfrag

@@ -11,31 +11,37 @@ namespace blockfrag {
 
 namespace {
 
-// The dry block's load lifted from its seat: cheaper to find again than to look up.
-BodyLoad dry_lifted_load(const SeatSystemContext& c, double t, const BlockState& s) {
-  return body_load(c.geometry->inertia_per_mass(), c.piece->lambda(t), c.vertical->lambda(t), c.g,
-                   nullptr, s, Footing::lifted);
-}
-
-// Every guard at 1, an unused slot's value: copied whole, it costs half of filling the 64 slots
-// one by one (a rocking block's guards, at every step).
-constexpr std::array<double, SeatSystem::kGuards> kUnusedGuardValues = [] {
-  std::array<double, SeatSystem::kGuards> ones{};
-  ones.fill(1.0);
+// Every guard at 1, an unused slot's value. Unrolled, the fill is one store per two slots: a
+// loop's, or a copy of a constant array (a string copy, one instruction per slot), cost twice
+// that or more (a rocking block's guards, at every step).
+std::array<double, SeatSystem::kGuards> unused_guard_values() {
+  std::array<double, SeatSystem::kGuards> ones;
+#pragma GCC unroll 64
+  for (double& one : ones) one = 1.0;
   return ones;
-}();
+}
 
 }  // namespace
 
 SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
                        const WatchedList& watched_vertices, const WatchedList& watched_points)
-    : c_(c), watched_vertices_(watched_vertices), watched_points_(watched_points) {
+    : c_(c),
+      vertical_still_(c.vertical->is_zero()),
+      watched_vertices_(watched_vertices),
+      watched_points_(watched_points) {
   count_ = static_cast<int>(active.size());
   std::copy(active.begin(), active.end(), active_.begin());
   events_.fill(SeatEvent::none);
   events_[0] = SeatEvent::overturns;
   events_[1] = SeatEvent::falls;
   for (int i = 0; i < count_; ++i) {
+    const ActiveContact& a = active_[static_cast<std::size_t>(i)];
+    states_[static_cast<std::size_t>(i)] = a.state;
+    // A block vertex's contact normal is its segment's at any pose.
+    if (a.pair.kind == ContactKind::block_vertex) {
+      normals_[static_cast<std::size_t>(i)] =
+          c_.contacts->pose(a.pair, BlockState{}).contact.normal;
+    }
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
     events_[base] = SeatEvent::lift_off;
     events_[base + 1] = active_[static_cast<std::size_t>(i)].state == ContactState::stick
@@ -61,15 +67,36 @@ GuardClaims SeatSystem::live_guards() const {
   return live;
 }
 
-SeatSystem::Poses SeatSystem::active_poses(const BlockState& s) const {
+SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {
   // Only the active contacts' entries are set and read: zeroing all six was a tenth of a
   // right-hand side's instructions on one contact.
-  Poses poses;
+  Contacts contacts;
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
-    poses[at] = c_.contacts->pose(active_[at].pair, s);
+    const SeatPair& pair = active_[at].pair;
+    if (pair.kind == ContactKind::block_vertex) {
+      contacts[at] = vertex_contact(at, c_.contacts->vertex_at(pair.block, s), s);
+    } else {
+      contacts[at] = c_.contacts->pose(pair, s).contact;
+    }
   }
-  return poses;
+  return contacts;
+}
+
+// Inlined into the guards, its one caller: a call returned the six contacts through memory.
+[[gnu::always_inline]] inline SeatSystem::Contacts SeatSystem::active_contacts(
+    const BlockState& s, std::span<const Vec2> world) const {
+  Contacts contacts;
+  for (int i = 0; i < count_; ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    const SeatPair& pair = active_[at].pair;
+    if (pair.kind == ContactKind::block_vertex) {
+      contacts[at] = vertex_contact(at, world[static_cast<std::size_t>(pair.block)], s);
+    } else {
+      contacts[at] = c_.contacts->pose(pair, s).contact;
+    }
+  }
+  return contacts;
 }
 
 bool SeatSystem::solved_at(double t, const BlockState& s) const {
@@ -77,37 +104,36 @@ bool SeatSystem::solved_at(double t, const BlockState& s) const {
 }
 
 const FixedStateForces& SeatSystem::solve(double t, const BlockState& s) {
-  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, active_poses(s));
+  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, active_contacts(s));
 }
 
-const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const Poses& poses) {
-  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, poses);
+const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const Contacts& contacts) {
+  return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, contacts);
 }
 
-const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, const Poses& poses) {
-  std::array<PlanarContact, kMaxSeatContacts> contacts;  // the first count_ set and read
-  std::array<ContactState, kMaxSeatContacts> states;
-  for (int i = 0; i < count_; ++i) {
-    const auto at = static_cast<std::size_t>(i);
-    contacts[at] = poses[at].contact;
-    states[at] = active_[at].state;
-  }
+const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
+                                               const Contacts& contacts) {
   const auto n = static_cast<std::size_t>(count_);
-  const SeatedLoadInput in{c_.geometry->inertia_per_mass(),
-                           c_.piece->lambda(t),
-                           c_.vertical->lambda(t),
-                           c_.g,
-                           c_.mu,
-                           c_.external};
-  const BodyLoad load =
-      count_ >= 2 ? seated_load(in, s, std::span(contacts).first(n), std::span(states).first(n))
-      : c_.external == nullptr ? dry_lifted_load(c_, t, s)
-                               : wet_lifted_load(t, s);
-  const std::optional<FixedStateForces> one =
-      count_ == 1 ? one_contact_forces(contacts[0], states[0], s, load, c_.mu) : std::nullopt;
-  last_solve_.forces = one ? *one
-                           : fixed_state_forces(std::span(contacts).first(n),
-                                                std::span(states).first(n), s, load, c_.mu);
+  const std::span<const PlanarContact> active = std::span(contacts).first(n);
+  const std::span<const ContactState> states = std::span(states_).first(n);
+  if (count_ >= 2) {
+    const SeatedLoadInput in{c_.geometry->inertia_per_mass(),
+                             c_.piece->lambda(t),
+                             lambda_v(t),
+                             c_.g,
+                             c_.mu,
+                             c_.external};
+    last_solve_.forces =
+        fixed_state_forces(active, states, s, seated_load(in, s, active, states), c_.mu);
+  } else {
+    const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
+    // One contact's forces go straight into the kept ones; where its fixed-size solve gives
+    // none, the general solve overwrites them whole.
+    if (!(count_ == 1 &&
+          one_contact_forces(contacts[0], states_[0], s, load, c_.mu, last_solve_.forces))) {
+      last_solve_.forces = fixed_state_forces(active, states, s, load, c_.mu);
+    }
+  }
   last_solve_.t = t;
   last_solve_.s = s;
   return last_solve_.forces;
@@ -115,8 +141,8 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s, co
 
 const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
   if (!(t == last_lifted_.t && std::memcmp(&s, &last_lifted_.s, sizeof s) == 0)) {
-    last_lifted_.load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t),
-                                  c_.vertical->lambda(t), c_.g, c_.external, s, Footing::lifted);
+    last_lifted_.load = body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t), lambda_v(t),
+                                  c_.g, c_.external, s, Footing::lifted);
     last_lifted_.t = t;
     last_lifted_.s = s;
   }
@@ -125,7 +151,7 @@ const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
 
 std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) {
   if (count_ != 1) return std::nullopt;
-  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(c_, t, s) : wet_lifted_load(t, s);
+  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
   const BodyInertia& m = load.inertia;
   const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
   const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta
@@ -145,7 +171,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s,
                                                            const GuardClaims& wanted) {
-  std::array<double, kGuards> out = kUnusedGuardValues;
+  std::array<double, kGuards> out = unused_guard_values();
   const double R = c_.geometry->size();
   // A sample inside a step mostly follows one clearance (a vertex just over the seat in flight):
   // the overturning margin and the fall's height are found only where followed.
@@ -160,7 +186,8 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   if (wanted[1]) out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
   const auto contact_guards = std::span(wanted).subspan(2, kSeatContactGuards * count_);
   if (std::find(contact_guards.begin(), contact_guards.end(), true) != contact_guards.end()) {
-    set_contact_guards(t, s, out);
+    set_contact_guards(
+        t, s, std::span(world).first(static_cast<std::size_t>(c_.contacts->vertex_count())), out);
   }
   std::size_t g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const int i : watched_vertices_) {
@@ -174,27 +201,28 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   return out;
 }
 
-void SeatSystem::set_contact_guards(double t, const BlockState& s,
+void SeatSystem::set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
                                     std::array<double, kGuards>& out) {
   const double R = c_.geometry->size();
-  const Poses poses = active_poses(s);
-  const FixedStateForces& f = solve(t, s, poses);
+  const Contacts contacts = active_contacts(s, world);
+  const FixedStateForces& f = solve(t, s, contacts);
   const RigidVelocity v{s.vx, s.vy, s.omega};
   const double velocity_scale = std::sqrt(c_.g * R);
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
-    const PairPose& p = poses[at];
+    const PlanarContact& c = contacts[at];
     out[base] = lift_off_guard(f, at);
     const int slip = slip_sign(active_[at].state);
-    out[base + 1] = slip == 0 ? friction_guard(f, at)
-                              : slip * contact_velocity(p.contact, v).tangent / velocity_scale;
+    out[base + 1] =
+        slip == 0 ? friction_guard(f, at) : slip * contact_velocity(c, v).tangent / velocity_scale;
     if (slip != 0 && active_[at].pair.kind == ContactKind::block_vertex) {
-      const SeatContacts::RunPlace run = c_.contacts->place_on_run(
-          active_[at].pair.seat, {s.x + p.contact.r.x, s.y + p.contact.r.y});
+      const SeatContacts::RunPlace run =
+          c_.contacts->place_on_run(active_[at].pair.seat, {s.x + c.r.x, s.y + c.r.y});
       out[base + 2] = run.along / R;
       out[base + 3] = (run.length - run.along) / R;
     } else if (slip != 0) {
+      const PairPose p = c_.contacts->pose(active_[at].pair, s);
       out[base + 2] = p.along / R;
       out[base + 3] = (p.length - p.along) / R;
     }
@@ -222,7 +250,7 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
 
 bool SeatSystem::contacts_hold(double t, const BlockState& s) {
   if (count_ == 0) return true;
-  const FixedStateForces& f = solve(t, s, active_poses(s));
+  const FixedStateForces& f = solve(t, s, active_contacts(s));
   for (std::size_t at = 0; at < static_cast<std::size_t>(count_); ++at) {
     if (!(lift_off_guard(f, at) > 0)) return false;
     if (active_[at].state == ContactState::stick && !(friction_guard(f, at) > 0)) return false;

@@ -179,21 +179,46 @@ class SeatSystem {
   double friction_guard(const FixedStateForces& f, std::size_t at) const {
     return (c_.mu * f.normal[at] - std::abs(f.tangent[at])) / c_.g;
   }
-  // The active contacts' guards (four each from slot 2) into `out`.
-  void set_contact_guards(double t, const BlockState& s, std::array<double, kGuards>& out);
-  using Poses = std::array<PairPose, kMaxSeatContacts>;
-  Poses active_poses(const BlockState& s) const;
+  // The active contacts' guards (four each from slot 2) into `out`; `world`: the block's vertices
+  // at s (SeatContacts::world_vertices).
+  void set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
+                          std::array<double, kGuards>& out);
+  // The active contacts at s (the first count_ set), as SeatContacts::pose gives them: a block
+  // vertex's is its world vertex less the centre of mass on its segment's fixed normal, found
+  // without pose()'s gap and place (every right-hand side of a slipping or sliding block).
+  using Contacts = std::array<PlanarContact, kMaxSeatContacts>;
+  Contacts active_contacts(const BlockState& s) const;
+  // The same with the block's vertices at s given, without turning a vertex again (a rocking
+  // block's guards, at every step).
+  Contacts active_contacts(const BlockState& s, std::span<const Vec2> world) const;
+  // Active contact `at`, a block vertex's, with that vertex at p in the world frame.
+  PlanarContact vertex_contact(std::size_t at, Vec2 p, const BlockState& s) const {
+    return {{p.x - s.x, p.y - s.y}, normals_[at], ContactKind::block_vertex};
+  }
   // Whether the last forces solved are at this time and state.
   bool solved_at(double t, const BlockState& s) const;
-  // The forces with the active contacts' poses at s given; solve_anew does not look at the last.
-  const FixedStateForces& solve(double t, const BlockState& s, const Poses& poses);
-  const FixedStateForces& solve_anew(double t, const BlockState& s, const Poses& poses);
+  // The forces with the active contacts at s given; solve_anew does not look at the last.
+  const FixedStateForces& solve(double t, const BlockState& s, const Contacts& contacts);
+  const FixedStateForces& solve_anew(double t, const BlockState& s, const Contacts& contacts);
   // The load on the block lifted from its seat (one contact or none) under the external load at
   // time t in the state s, kept for the next call at the same time and state.
   const BodyLoad& wet_lifted_load(double t, const BlockState& s);
+  // The same for the dry block: cheaper to find again than to look up.
+  BodyLoad dry_lifted_load(double t, const BlockState& s) const {
+    return body_load(c_.geometry->inertia_per_mass(), c_.piece->lambda(t), lambda_v(t), c_.g,
+                     nullptr, s, Footing::lifted);
+  }
+  // lambda_v at t. The loads take it only as 1 + lambda_v, which a zero of either sign leaves 1:
+  // without vertical motion (most scenes) the piece's formula is not asked at each new time (a
+  // rocking block's right-hand sides, at two new times a step).
+  double lambda_v(double t) const { return vertical_still_ ? 0.0 : c_.vertical->lambda(t); }
 
   SeatSystemContext c_;
+  bool vertical_still_;  // c_.vertical is zero throughout
   std::array<ActiveContact, kMaxSeatContacts> active_{};
+  std::array<ContactState, kMaxSeatContacts>
+      states_{};                                  // active_'s states, as the solves take them
+  std::array<Vec2, kMaxSeatContacts> normals_{};  // a block vertex's contact normal: its segment's
   int count_ = 0;
   WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
