@@ -14,35 +14,17 @@
 #include "engine/seat/sinusoid.hpp"
 #include "engine/sine_cosine.hpp"
 #include "tests/support/fixed_uniforms.hpp"
-#include "tests/support/type_b_block.hpp"
+#include "tests/support/type_b_seat_system.hpp"
 
 namespace blockfrag {
 namespace {
 
-using testing::kTypeB;
-using testing::kTypeBSeat;
+using testing::kEveryGuard;
+using testing::TypeBSeat;
 
 using testing::FixedUniforms;
 
 constexpr int kSamples = 400;
-
-// Every guard is asked about.
-const GuardClaims kEveryGuard = [] {
-  GuardClaims every;
-  every.fill(true);
-  return every;
-}();
-
-struct TypeBSeat {
-  SeatContacts contacts{kTypeB, kTypeBSeat};
-  BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
-  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
-  SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
-  SeatSystem system(const std::vector<ActiveContact>& active, const WatchedList& vertices,
-                    const WatchedList& points) const {
-    return SeatSystem(context, active, vertices, points);
-  }
-};
 
 // For each guard claimed, its samples along state_at(f), f in [0, 1], are no lower than the lower
 // of its ends (but for rounding). Returns how many guards watching a clearance were claimed.

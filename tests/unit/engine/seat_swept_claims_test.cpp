@@ -15,14 +15,14 @@
 #include "engine/seat/closed_form_flight.hpp"
 #include "engine/seat/seat_system.hpp"
 #include "tests/support/fixed_uniforms.hpp"
-#include "tests/support/type_b_block.hpp"
+#include "tests/support/type_b_seat_system.hpp"
 
 namespace blockfrag {
 namespace {
 
 using testing::FixedUniforms;
-using testing::kTypeB;
-using testing::kTypeBSeat;
+using testing::kEveryGuard;
+using testing::TypeBSeat;
 
 constexpr int kDensePoints = 200;
 
@@ -30,18 +30,10 @@ constexpr int kDensePoints = 200;
 // it by up to a radian otherwise.
 double spin(FixedUniforms& u) { return u(0, 1) < 0.7 ? u(-0.5, 0.5) : u(-20, 20); }
 
-const GuardClaims kEverySweptGuard = [] {
-  GuardClaims every;
-  every.fill(true);
-  return every;
-}();
-
+// The block flying over its seat, every vertex and seat point watched.
 struct FlyingTypeB {
-  SeatContacts contacts{kTypeB, kTypeBSeat};
-  BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
-  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
-  SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
-  SeatSystem system{context, {}, {0, 1, 2, 3, 4, 5}, {0, 1, 2}};
+  TypeBSeat seat;
+  SeatSystem system = seat.system({}, {0, 1, 2, 3, 4, 5}, {0, 1, 2});
 };
 
 // Steps from a random pose within `lift` of resting on the seat; returns how many clearances near
@@ -50,7 +42,7 @@ template <class Chart, class Start>
 int check_random_flights(const FlyingTypeB& flying, SeatSystem& system, int seed,
                          const Start& start, int& near) {
   FixedUniforms u(static_cast<std::uint64_t>(seed));
-  const double R = flying.geometry.size();
+  const double R = flying.seat.geometry.size();
   int claimed = 0;
   for (int n = 0; n < 400; ++n) {
     const auto [chart, q0, t0] = start(u);
@@ -62,7 +54,7 @@ int check_random_flights(const FlyingTypeB& flying, SeatSystem& system, int seed
     const auto at_start = ode.guards(t0, q0), at_end = ode.guards(t, q);
     GuardClaims claims = system.unused_guards();
     ode.claim_swept_clear(
-        t0, t, q0, q, [&](int i) { return stepper.dense_spread(i); }, at_start, kEverySweptGuard,
+        t0, t, q0, q, [&](int i) { return stepper.dense_spread(i); }, at_start, kEveryGuard,
         claims);
     for (int i = kFirstClearanceGuard; i < kSeatGuards; ++i) {
       const auto g = static_cast<std::size_t>(i);
@@ -86,7 +78,7 @@ int check_random_flights(const FlyingTypeB& flying, SeatSystem& system, int seed
 // FreeChart: x, y and theta integrated, their dense output a cubic.
 TEST(SeatSweptClaims, FreeFlightClaimsStayPositiveOnTheDenseOutput) {
   FlyingTypeB flying;
-  const Vec2 rest = flying.contacts.rest_centre();
+  const Vec2 rest = flying.seat.contacts.rest_centre();
   int near = 0;
   const int claimed = check_random_flights<FreeChart>(
       flying, flying.system, 41,
@@ -103,7 +95,7 @@ TEST(SeatSweptClaims, FreeFlightClaimsStayPositiveOnTheDenseOutput) {
 // FlightChart: theta linear in time.
 TEST(SeatSweptClaims, FlightChartClaimsStayPositiveOnTheDenseOutput) {
   FlyingTypeB flying;
-  const Vec2 rest = flying.contacts.rest_centre();
+  const Vec2 rest = flying.seat.contacts.rest_centre();
   int near = 0;
   const int claimed = check_random_flights<FlightChart>(
       flying, flying.system, 42,
@@ -121,8 +113,8 @@ TEST(SeatSweptClaims, FlightChartClaimsStayPositiveOnTheDenseOutput) {
 // of it at both ends: the tilt's range takes it lower than either end, and it is not claimed.
 TEST(SeatSweptClaims, AVertexTurningThroughItsLowestInsideTheStepIsNotClaimed) {
   FlyingTypeB flying;
-  const Vec2 b = flying.contacts.body_vertex(0);
-  const double r = std::sqrt(b.x * b.x + b.y * b.y), g = flying.context.g;
+  const Vec2 b = flying.seat.contacts.body_vertex(0);
+  const double r = std::sqrt(b.x * b.x + b.y * b.y), g = flying.seat.context.g;
   const double omega = 10.0, h = 0.04;
   const double theta_mid =
       -0.5 * std::numbers::pi - std::atan2(b.y, b.x);  // the heel straight down
@@ -137,13 +129,12 @@ TEST(SeatSweptClaims, AVertexTurningThroughItsLowestInsideTheStepIsNotClaimed) {
   stepper.step(ode, t, q, h);
   const int heel = kFirstClearanceGuard;
   const auto at_start = ode.guards(0.0, q0);
-  EXPECT_GT(at_start[heel], 0.1 / flying.geometry.size());
-  EXPECT_GT(ode.guard(heel, t, q), 0.1 / flying.geometry.size());
+  EXPECT_GT(at_start[heel], 0.1 / flying.seat.geometry.size());
+  EXPECT_GT(ode.guard(heel, t, q), 0.1 / flying.seat.geometry.size());
   EXPECT_LT(ode.guard(heel, 0.5 * h, stepper.dense(0.5 * h)), 0.0);
   GuardClaims claims = flying.system.unused_guards();
   ode.claim_swept_clear(
-      0.0, t, q0, q, [&](int i) { return stepper.dense_spread(i); }, at_start, kEverySweptGuard,
-      claims);
+      0.0, t, q0, q, [&](int i) { return stepper.dense_spread(i); }, at_start, kEveryGuard, claims);
   EXPECT_FALSE(claims[heel]);
 }
 

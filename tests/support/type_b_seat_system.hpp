@@ -1,0 +1,39 @@
+// The paper's type B block on its seat as the seat's guards see it, on still ground: the fixture of
+// the tests of which guards a step claims (seat_ends_test, seat_swept_claims_test).
+#pragma once
+
+#include <vector>
+
+#include "engine/motion/ground_motion.hpp"
+#include "engine/scene/block_geometry.hpp"
+#include "engine/seat/seat_contacts.hpp"
+#include "engine/seat/seat_system.hpp"
+#include "tests/support/type_b_block.hpp"
+
+namespace blockfrag::testing {
+
+// Every guard is asked about.
+inline const GuardClaims kEveryGuard = [] {
+  GuardClaims every;
+  every.fill(true);
+  return every;
+}();
+
+// Not to be copied: its context points into it.
+struct TypeBSeat {
+  SeatContacts contacts{kTypeB, kTypeBSeat};
+  BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
+
+  TypeBSeat() = default;
+  TypeBSeat(const TypeBSeat&) = delete;
+  TypeBSeat& operator=(const TypeBSeat&) = delete;
+
+  SeatSystem system(const std::vector<ActiveContact>& active, const WatchedList& vertices,
+                    const WatchedList& points) const {
+    return SeatSystem(context, active, vertices, points);
+  }
+};
+
+}  // namespace blockfrag::testing
