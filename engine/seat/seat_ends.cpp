@@ -4,6 +4,7 @@
 // guard is sampled. Only the guards asked about are looked at.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -11,6 +12,7 @@
 #include <utility>
 
 #include "engine/seat/seat_system.hpp"
+#include "engine/seat/turn_cache.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
@@ -147,13 +149,23 @@ bool PivotSweep::serves(const SeatSystem& system, const PivotChart& chart) const
          system.watched_points_ == watched_points_;
 }
 
+SineCosine PivotSweep::turn_at(double theta) const {
+  return std::bit_cast<std::uint64_t>(theta) == last_end_ ? last_end_turn_ : sine_cosine(theta);
+}
+
 GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) const {
   GuardClaims claims = system_->unused_guards();
-  const double lo = std::min(theta0, theta1), hi = std::max(theta0, theta1);
-  const ThetaStep step(lo, hi);
+  // The end's turn is the one the guards there just asked the turn cache for.
+  const SineCosine turn0 = turn_at(theta0), turn1 = cached_turn(theta1);
+  last_end_ = std::bit_cast<std::uint64_t>(theta1);
+  last_end_turn_ = turn1;
+  // The ends as std::min and std::max pick them.
+  const bool lo_is_end = theta1 < theta0, hi_is_end = theta0 < theta1;
+  const double lo = lo_is_end ? theta1 : theta0, hi = hi_is_end ? theta1 : theta0;
+  const ThetaStep step(lo, hi, lo_is_end ? turn1 : turn0, hi_is_end ? turn1 : turn0);
   if (asked[0] || asked[1]) {
-    system_->claim_overturn_and_fall(step.least(centre_x_), step.largest(centre_x_), true, false,
-                                     claims);
+    const ThetaStep::Extent x = step.extent(centre_x_);
+    system_->claim_overturn_and_fall(x.least, x.largest, true, false, claims);
   }
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const Vertex& v : vertices_) {
@@ -179,7 +191,7 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
 // SeatContacts::under_end_segment).
 bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const {
   const SeatContacts& seat = *system_->c_.contacts;
-  const double x_lo = step.least(vertex.x), x_hi = step.largest(vertex.x);
+  const auto [x_lo, x_hi] = step.extent(vertex.x);
   const double margin = kSeatEndMargin * system_->length_scale();
   const int last = seat.point_count() - 1;
   const auto above_end_segment = [&](int k, bool leans) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <span>
@@ -243,6 +244,8 @@ class PivotSweep {
   };
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
   bool point_claim(const ThetaStep& step, const Point& point) const;
+  // sine_cosine(theta): the last step's end is the next one's start.
+  SineCosine turn_at(double theta) const;
 
   const SeatSystem* system_;  // rebound to each piece's system; the rest serves them all
   const SeatContacts* contacts_;
@@ -251,6 +254,9 @@ class PivotSweep {
   Sinusoid centre_x_;
   std::vector<Vertex> vertices_;
   std::vector<Point> points_;
+  // The tilt (its bits) at the end of the last step claims() was asked about, and its turn.
+  mutable std::uint64_t last_end_ = 0;
+  mutable SineCosine last_end_turn_{0.0, 1.0};
 };
 
 // The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp). It holds

@@ -1,5 +1,7 @@
-// What the seat's guards reuse instead of finding it again (engine/seat/seat_contacts.hpp): each
-// is checked to the bit against the general path on random and edge inputs.
+// What the seat's guards reuse instead of finding it again (engine/seat/seat_contacts.hpp,
+// engine/seat/sinusoid.hpp, engine/seat/seat_ends.cpp): each is checked to the bit against the
+// general path on random and edge inputs.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -8,7 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/seat/seat_contacts.hpp"
+#include "engine/seat/seat_system.hpp"
+#include "engine/seat/sinusoid.hpp"
 #include "engine/sine_cosine.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/type_b_block.hpp"
@@ -18,6 +21,7 @@ namespace {
 
 using testing::FixedUniforms;
 using testing::kTypeB;
+using testing::kTypeBSeat;
 
 const std::vector<std::array<double, 2>> kReuseTypeA = {
     {0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}};
@@ -120,6 +124,94 @@ TEST(SeatReuse, AOneSegmentSeatsClearanceIsTheGeneralOnesToTheBit) {
       EXPECT_EQ(reuse_bits(contacts.clearance_at(p)), reuse_bits(expected)) << p.x << " " << p.y;
     }
   }
+}
+
+TEST(SeatReuse, AStepsExtentIsItsLeastAndLargestToTheBit) {
+  FixedUniforms u(63);
+  std::vector<Sinusoid> fs{{1.0, 0.0, 0.0}, {-0.0, 0.0, -0.0}, {2.0, -0.0, 0.0}};
+  for (int n = 0; n < 3000; ++n) fs.push_back({u(-3, 3), u(-5, 5), u(-5, 5)});
+  int n = 0;
+  for (const Sinusoid& f : fs) {
+    const double lo = u(-4, 4);
+    // Short and long steps, empty ones, and ones wider than half a turn.
+    const double width = n % 4 == 0   ? 0.0
+                         : n % 4 == 1 ? u(0, 1e-3)
+                         : n % 4 == 2 ? u(0, 2)
+                                      : u(2, 4);
+    const ThetaStep step(lo, lo + width);
+    const ThetaStep::Extent extent = step.extent(f);
+    EXPECT_EQ(reuse_bits(extent.least), reuse_bits(step.least(f))) << n;
+    EXPECT_EQ(reuse_bits(extent.largest), reuse_bits(step.largest(f))) << n;
+    ++n;
+  }
+}
+
+struct ReuseTypeBSeat {
+  SeatContacts contacts{kTypeB, kTypeBSeat};
+  BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
+};
+
+// A sweep asked about steps in a chain (each starting where the last ended, as a pivot's steps do)
+// reuses the last end's turn; it claims what a sweep asked about each step alone claims, on chains
+// that turn back, stand still, cross zero's signs and break off, turning about the heel, the toe
+// and the seat's fold; and the same step turned the other way claims the same.
+TEST(SeatReuse, ASweepAskedAboutAChainOfStepsClaimsWhatOneAskedAboutEachAloneClaims) {
+  const ReuseTypeBSeat seat;
+  const SeatContacts& c = seat.contacts;
+  struct Pivot {
+    SeatPair pair;
+    Vec2 point, body;
+    WatchedList vertices, points;
+  };
+  const std::vector<Pivot> pivots = {{{ContactKind::block_vertex, 0, 0},
+                                      c.seat_point(0),
+                                      c.body_vertex(0),
+                                      {1, 2, 3, 4, 5},
+                                      {1, 2}},
+                                     {{ContactKind::block_vertex, 2, 1},
+                                      c.seat_point(2),
+                                      c.body_vertex(2),
+                                      {0, 1, 3, 4, 5},
+                                      {0, 1}},
+                                     {{ContactKind::seat_point, 0, 1},
+                                      c.seat_point(1),
+                                      {c.body_vertex(1).x - 1.0, c.body_vertex(1).y},
+                                      {0, 1, 2, 3, 4, 5},
+                                      {0, 2}}};
+  GuardClaims every;
+  every.fill(true);
+  FixedUniforms u(64);
+  int differing_ends = 0, claimed = 0;
+  for (const Pivot& pivot : pivots) {
+    const SeatSystem system(seat.context, {{pivot.pair, ContactState::stick}}, pivot.vertices,
+                            pivot.points);
+    const PivotChart chart{pivot.point, pivot.body};
+    const PivotSweep chained(system, chart);
+    double theta = 0.0;
+    for (int n = 0; n < 3000; ++n) {
+      double next = std::clamp(theta + (n % 3 == 0 ? u(-0.3, 0.3) : u(-0.01, 0.01)), -1.2, 1.2);
+      if (n % 50 == 7) next = theta;
+      if (n % 50 == 9) next = -0.0;
+      if (n % 50 == 10) next = 0.0;
+      // A step that does not start where the last ended.
+      const double start = n % 13 == 5 ? theta + u(-0.05, 0.05) : theta;
+      differing_ends += start != theta;
+      const PivotSweep alone(system, chart);
+      const GuardClaims claims = chained.claims(start, next, every);
+      EXPECT_EQ(claims, alone.claims(start, next, every)) << n << " " << start << " " << next;
+      // A step's claims do not depend on the way it turns.
+      if (start != next) {
+        const PivotSweep reversed(system, chart);
+        EXPECT_EQ(claims, reversed.claims(next, start, every)) << n;
+      }
+      claimed += static_cast<int>(std::count(claims.begin(), claims.end(), true));
+      theta = next;
+    }
+  }
+  EXPECT_GT(differing_ends, 300);
+  EXPECT_GT(claimed, 3 * 3000 * kSeatGuards / 2);
 }
 
 }  // namespace
