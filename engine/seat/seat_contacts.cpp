@@ -57,6 +57,12 @@ bool crossed_right_of(Vec2 p, Vec2 a, Vec2 b) {
   return p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
 }
 
+// A pose's place and tilt, bit for bit.
+std::array<std::uint64_t, 3> pose_bits(const BlockState& s) {
+  return {std::bit_cast<std::uint64_t>(s.x), std::bit_cast<std::uint64_t>(s.y),
+          std::bit_cast<std::uint64_t>(s.theta)};
+}
+
 }  // namespace
 
 SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<Vertex>& seat) {
@@ -134,6 +140,9 @@ SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
+  // At world_at's pose (a step's end, where its guards find the active contacts' poses after the
+  // clearances), the vertex turned there.
+  if (pose_bits(s) == turned_.pose) return turned_.world[static_cast<std::size_t>(i)];
   const SineCosine turn = cached_turn(s.theta);
   const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
   return {s.x + r.x, s.y + r.y};
@@ -272,15 +281,6 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
   }
   return found;
 }
-
-namespace {
-
-std::array<std::uint64_t, 3> pose_bits(const BlockState& s) {
-  return {std::bit_cast<std::uint64_t>(s.x), std::bit_cast<std::uint64_t>(s.y),
-          std::bit_cast<std::uint64_t>(s.theta)};
-}
-
-}  // namespace
 
 void SeatContacts::turn_to(const BlockState& s) const {
   const SineCosine turn = cached_turn(s.theta);

@@ -67,7 +67,11 @@ TEST(SeatReuse, TheVerticesKeptForAPoseAreTheOnesTurnedAnewThere) {
     const SeatContacts contacts(block, {{-100, 0}, {100, 0}});
     for (const BlockState& s : reuse_poses_in_turn()) {
       const std::vector<Vec2> expected = reuse_turned_anew(contacts, s);
-      // Alternating the two askers: the copy out and the kept vertices read in place.
+      // A vertex at a pose not kept yet, then alternating the askers: the copy out, the kept
+      // vertices read in place and one vertex read from them.
+      const std::size_t last = expected.size() - 1;
+      EXPECT_EQ(reuse_bits(contacts.vertex_at(static_cast<int>(last), s).y),
+                reuse_bits(expected[last].y));
       std::array<Vec2, kMaxSeatClearances> out{};
       contacts.world_vertices(s, out);
       const std::span<const Vec2> kept = contacts.world_at(s);
@@ -81,6 +85,11 @@ TEST(SeatReuse, TheVerticesKeptForAPoseAreTheOnesTurnedAnewThere) {
       }
       contacts.world_vertices(s, out);
       EXPECT_EQ(reuse_bits(out[1].x), reuse_bits(expected[1].x));
+      for (std::size_t i = 0; i < expected.size(); ++i) {
+        const Vec2 v = contacts.vertex_at(static_cast<int>(i), s);
+        EXPECT_EQ(reuse_bits(v.x), reuse_bits(expected[i].x));
+        EXPECT_EQ(reuse_bits(v.y), reuse_bits(expected[i].y));
+      }
     }
   }
 }
