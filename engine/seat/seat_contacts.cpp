@@ -101,9 +101,9 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
     run_start_.push_back(static_cast<int>(start));
     run_end_.push_back(static_cast<int>(end));
   }
-  if (seat_.size() == 2) {
+  if (seat_.size() == 2 && seat_[1].x > seat_[0].x) {
     const Vec2 a = seat_[0], b = seat_[1];
-    single_ = {a, b.x, b.y - a.y, b.x - a.x};
+    single_ = {a.x, a.y, b.x, b.y - a.y, b.x - a.x};
   }
   // The pose world_at keeps is at first the zero pose, its vertices turned there.
   turn_to(BlockState{});
@@ -292,11 +292,8 @@ void SeatContacts::turn_to(const BlockState& s) const {
 }
 
 void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
-  if (pose_bits(s) == turned_.pose) {
-    std::copy_n(turned_.world.begin(), body_.size(), out.begin());
-    return;
-  }
-  // Turned into `out` and world_at's copy in one pass: a guard evaluation's pose is mostly new.
+  // Turned into `out` and world_at's copy in one pass, without looking for the pose first: a
+  // guard evaluation's pose is mostly new.
   const SineCosine turn = cached_turn(s.theta);
   for (std::size_t i = 0; i < body_.size(); ++i) {
     const Vec2 r = rotate(body_[i], turn.cos, turn.sin);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -131,8 +132,8 @@ class SeatContacts {
   double clearance_at(Vec2 p) const {
     // Over a one-segment seat, its height there without looking for the segment: a rocking
     // block's watched vertices at every guard evaluation.
-    if (single_.run > 0.0 && p.x >= single_.start.x && p.x <= single_.end_x) {
-      return p.y - (single_.start.y + single_.rise * ((p.x - single_.start.x) / single_.run));
+    if (p.x >= single_.start_x && p.x <= single_.end_x) {
+      return p.y - (single_.start_y + single_.rise * ((p.x - single_.start_x) / single_.run));
     }
     return clearance_at_any(p);
   }
@@ -196,10 +197,10 @@ class SeatContacts {
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
   // A one-segment seat's first point, its last point's x and the segment's rise and run, as
-  // clearance_at_any finds them (run 0: the seat has other segments).
+  // clearance_at_any finds them; on any other seat an empty range of x, taking no point.
   struct SingleSegment {
-    Vec2 start;
-    double end_x = 0.0, rise = 0.0, run = 0.0;
+    double start_x = std::numeric_limits<double>::infinity(), start_y = 0.0;
+    double end_x = -std::numeric_limits<double>::infinity(), rise = 0.0, run = 1.0;
   };
   SingleSegment single_;
   // world_at's last pose (x, y and theta's bits) and the vertices there.

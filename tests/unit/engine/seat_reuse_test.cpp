@@ -110,12 +110,15 @@ double reuse_clearance_over_any_seat(const std::vector<Vec2>& seat, const SeatCo
   return p.y - (a.y + (b.y - a.y) * ((p.x - a.x) / (b.x - a.x)));
 }
 
-TEST(SeatReuse, AOneSegmentSeatsClearanceIsTheGeneralOnesToTheBit) {
+TEST(SeatReuse, AOneSegmentSeatsClearanceIsTheGeneralOnesToTheBitAndOtherSeatsKeepIt) {
   FixedUniforms u(62);
   const std::vector<std::vector<Vec2>> seats = {{{-100, 0}, {100, 0}},
                                                 {{-3.1, 1.7}, {7.3, 2.9}},
                                                 {{0.3, 4.1}, {6.7, -2.3}},
-                                                {{-1, 0}, {1, 3}}};
+                                                {{-1, 0}, {1, 3}},
+                                                // Seats of more segments take the general path.
+                                                {{-2.3, 0.13}, {0.7, 0.71}, {3.1, 0.57}},
+                                                {{-5, 0}, {-1, 0}, {2, 0}, {6, 4}}};
   for (const auto& seat : seats) {
     std::vector<std::array<double, 2>> points;
     for (const Vec2& p : seat) points.push_back({p.x, p.y});
@@ -124,6 +127,13 @@ TEST(SeatReuse, AOneSegmentSeatsClearanceIsTheGeneralOnesToTheBit) {
     std::vector<Vec2> probes{
         {x0, 0.0},  {x1, -1.0},  {std::nextafter(x0, -1e9), 1.0}, {std::nextafter(x1, 1e9), -1.0},
         {0.0, 0.0}, {-0.0, -0.0}};
+    // Each joint, and either side of it.
+    for (const Vec2& joint : seat) {
+      for (const double x :
+           {std::nextafter(joint.x, -1e9), joint.x, std::nextafter(joint.x, 1e9)}) {
+        probes.push_back({x, u(-1, 1)});
+      }
+    }
     for (int n = 0; n < 3000; ++n) {
       const double reach = (x1 - x0) * 0.6;
       probes.push_back({u(x0 - reach, x1 + reach), u(-5, 5)});
