@@ -283,11 +283,7 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
 }
 
 void SeatContacts::turn_to(const BlockState& s) const {
-  const SineCosine turn = cached_turn(s.theta);
-  for (std::size_t i = 0; i < body_.size(); ++i) {
-    const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
-    turned_.world[i] = {s.x + r.x, s.y + r.y};
-  }
+  world_vertices_elsewhere(s, turned_.world);
   turned_.pose = pose_bits(s);
 }
 
@@ -300,6 +296,14 @@ void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) cons
     out[i] = turned_.world[i] = {s.x + r.x, s.y + r.y};
   }
   turned_.pose = pose_bits(s);
+}
+
+void SeatContacts::world_vertices_elsewhere(const BlockState& s, std::span<Vec2> out) const {
+  const SineCosine turn = cached_turn(s.theta);
+  for (std::size_t i = 0; i < body_.size(); ++i) {
+    const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
+    out[i] = {s.x + r.x, s.y + r.y};
+  }
 }
 
 std::span<const Vec2> SeatContacts::world_at(const BlockState& s) const {

@@ -128,6 +128,9 @@ class SeatContacts {
   // The same vertices, kept until a pose with other bits is asked for: a step's guards at its end
   // and the penetration after it turn the block at one pose.
   std::span<const Vec2> world_at(const BlockState& s) const;
+  // world_vertices, keeping the pose kept: a step's claims look at its start between the guards
+  // at its end and the penetration there.
+  void world_vertices_elsewhere(const BlockState& s, std::span<Vec2> out) const;
   // vertex_clearance and point_clearance for the vertices given in the world frame.
   double clearance_at(Vec2 p) const {
     // Over a one-segment seat, its height there without looking for the segment: a rocking

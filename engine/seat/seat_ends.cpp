@@ -176,7 +176,9 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
   bool world_set = false;
   for (const Point& point : points_) {
     if (asked[g] && point_claim(step, point)) {
-      if (!world_set) system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
+      if (!world_set) {
+        system_->c_.contacts->world_vertices_elsewhere(chart_.full(0.0, {lo, 0.0}), world);
+      }
       world_set = true;
       claims[g] = !system_->c_.contacts->inside_block(point.k, world);
     }

@@ -73,6 +73,9 @@ TEST(SeatReuse, TheVerticesKeptForAPoseAreTheOnesTurnedAnewThere) {
       EXPECT_EQ(reuse_bits(contacts.vertex_at(static_cast<int>(last), s).y),
                 reuse_bits(expected[last].y));
       std::array<Vec2, kMaxSeatClearances> out{};
+      contacts.world_vertices_elsewhere(s, out);
+      EXPECT_EQ(reuse_bits(out[0].x), reuse_bits(expected[0].x));
+      EXPECT_EQ(reuse_bits(out[last].y), reuse_bits(expected[last].y));
       contacts.world_vertices(s, out);
       const std::span<const Vec2> kept = contacts.world_at(s);
       ASSERT_EQ(kept.size(), expected.size());
