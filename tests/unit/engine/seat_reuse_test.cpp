@@ -236,5 +236,72 @@ TEST(SeatReuse, ASweepAskedAboutAChainOfStepsClaimsWhatOneAskedAboutEachAloneCla
   EXPECT_GT(claimed, 3 * 3000 * kSeatGuards / 2);
 }
 
+// A seat point's claim as the sweep makes it (engine/seat/seat_ends.cpp), from sinusoids built
+// here: none of its squared distances from the block's vertices holds a minimum in the step, it
+// stays off each edge's line by the margin at both ends with no minimum of its distance between,
+// and it is outside the block at the step's start.
+bool reuse_point_claim(const SeatContacts& c, const PivotChart& chart, int k, double lo, double hi,
+                       double off) {
+  const ThetaStep step(lo, hi);
+  const Vec2 s = c.seat_point(k);
+  const Vec2 u{s.x - chart.point.x, s.y - chart.point.y};
+  const int n = c.vertex_count();
+  for (int j = 0; j < n; ++j) {
+    const Vec2 a = c.body_vertex(j);
+    const Vec2 e{chart.body.x - a.x, chart.body.y - a.y};
+    const Sinusoid corner{e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
+                          2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)};
+    if (step.holds_minimum(corner)) return false;
+  }
+  for (int j = 0; j < n; ++j) {
+    const Vec2 a = c.body_vertex(j), b = c.body_vertex((j + 1) % n);
+    const Vec2 e{chart.body.x - a.x, chart.body.y - a.y};
+    const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+    const Vec2 normal{-(b.y - a.y) / length, (b.x - a.x) / length};
+    const Sinusoid line{normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
+                        normal.x * u.y - normal.y * u.x};
+    const double at_lo = line.at(step.lo()), at_hi = line.at(step.hi());
+    const bool above = at_lo > off && at_hi > off, below = at_lo < -off && at_hi < -off;
+    if (!(above || below) || step.holds_minimum(above ? line : -line)) return false;
+  }
+  std::array<Vec2, kMaxSeatClearances> world{};
+  c.world_vertices_elsewhere(chart.full(0.0, {lo, 0.0}), world);
+  return !c.inside_block(k, world);
+}
+
+// The sweep keeps every vertex's and point's sinusoids in one block: each point's claims are the
+// ones its own sinusoids make, on the type B block turning about its heel and about the fold.
+TEST(SeatReuse, ASweepsPointClaimsAreTheOnesItsOwnSinusoidsMake) {
+  const ReuseTypeBSeat seat;
+  const SeatContacts& c = seat.contacts;
+  const double off = kSeatLineMargin * seat.geometry.size();
+  GuardClaims every;
+  every.fill(true);
+  FixedUniforms u(65);
+  int claimed = 0, asked = 0;
+  for (const Vec2 body : {c.body_vertex(0), Vec2{c.body_vertex(1).x - 1.0, c.body_vertex(1).y}}) {
+    const Vec2 point = body.x == c.body_vertex(0).x ? c.seat_point(0) : c.seat_point(1);
+    const WatchedList points = point.x == c.seat_point(0).x ? WatchedList{1, 2} : WatchedList{0, 2};
+    const SeatSystem system(seat.context,
+                            {{{ContactKind::block_vertex, 0, 0}, ContactState::stick}},
+                            {1, 2, 3, 4, 5}, points);
+    const PivotChart chart{point, body};
+    const PivotSweep sweep(system, chart);
+    for (int n = 0; n < 2000; ++n) {
+      const double lo = u(-1.2, 1.2), hi = lo + (n % 2 == 0 ? u(0, 0.3) : u(0, 1e-3));
+      const GuardClaims claims = sweep.claims(lo, hi, every);
+      for (std::size_t at = 0; at < points.size(); ++at) {
+        const std::size_t g = kFirstClearanceGuard + 5 + at;
+        const bool expected = reuse_point_claim(c, chart, points[at], lo, hi, off);
+        EXPECT_EQ(claims[g], expected) << n << " point " << points[at];
+        claimed += expected;
+        ++asked;
+      }
+    }
+  }
+  EXPECT_GT(claimed, asked / 10);
+  EXPECT_LT(claimed, asked * 9 / 10);
+}
+
 }  // namespace
 }  // namespace blockfrag
