@@ -303,5 +303,43 @@ TEST(SeatReuse, ASweepsPointClaimsAreTheOnesItsOwnSinusoidsMake) {
   EXPECT_LT(claimed, asked * 9 / 10);
 }
 
+// On a long sloping one-segment seat, far inside its ends, each watched vertex's claim is that its
+// own height over the segment's line holds no minimum in the step.
+TEST(SeatReuse, ASweepsVertexClaimsAreTheOnesTheirOwnHeightsMake) {
+  const std::vector<std::array<double, 2>> line = {{-100, -7}, {100, 9}};
+  const SeatContacts c(kReuseTypeA, line);
+  const BlockGeometry geometry{PolygonBlock{kReuseTypeA, 1.0}};
+  const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  const SeatSystemContext context{&c, &geometry, &still, &still, 9.81, 1.0, geometry.size()};
+  const WatchedList vertices{0, 2, 3, 4};
+  const SeatSystem system(context, {{{ContactKind::block_vertex, 1, 0}, ContactState::stick}},
+                          vertices, {});
+  const double m = (9.0 - -7.0) / (100.0 - -100.0);
+  const Vec2 pivot{3.0, -7.0 + m * 103.0};
+  const PivotChart chart{pivot, c.body_vertex(1)};
+  const PivotSweep sweep(system, chart);
+  GuardClaims every;
+  every.fill(true);
+  FixedUniforms u(66);
+  int claimed = 0, asked = 0;
+  for (int n = 0; n < 2000; ++n) {
+    // Tilts all round, for steps that hold each height's minimum.
+    const double lo = u(-3, 3), hi = lo + (n % 2 == 0 ? u(0, 1.2) : u(0, 1e-3));
+    const ThetaStep step(lo, hi);
+    const GuardClaims claims = sweep.claims(lo, hi, every);
+    for (std::size_t at = 0; at < vertices.size(); ++at) {
+      const Vec2 v = c.body_vertex(vertices[at]);
+      const Vec2 w{v.x - chart.body.x, v.y - chart.body.y};
+      const Sinusoid height{pivot.y - -7.0 - m * (pivot.x - -100.0), w.y - m * w.x, w.x + m * w.y};
+      const bool expected = !step.holds_minimum(height);
+      EXPECT_EQ(claims[kFirstClearanceGuard + at], expected) << n << " vertex " << vertices[at];
+      claimed += expected;
+      ++asked;
+    }
+  }
+  EXPECT_GT(claimed, asked / 2);
+  EXPECT_GT(asked - claimed, asked / 40);
+}
+
 }  // namespace
 }  // namespace blockfrag
