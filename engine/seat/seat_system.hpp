@@ -245,13 +245,13 @@ class PivotSweep {
                         // from each block edge's line
   };
   std::span<const Sinusoid> heights(const Vertex& v) const {
-    return std::span(sinusoids_).subspan(v.first, segment_count_);
+    return {sinusoids_.data() + v.first, segment_count_};
   }
   std::span<const Sinusoid> corners(const Point& p) const {
-    return std::span(sinusoids_).subspan(p.first, block_vertex_count_);
+    return {sinusoids_.data() + p.first, block_vertex_count_};
   }
   std::span<const Sinusoid> lines(const Point& p) const {
-    return std::span(sinusoids_).subspan(p.first + block_vertex_count_, block_vertex_count_);
+    return {sinusoids_.data() + p.first + block_vertex_count_, block_vertex_count_};
   }
   void add_point(int k);
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
