@@ -4,8 +4,11 @@
 // vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -122,8 +125,21 @@ class SeatContacts {
   // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
   // rotation for all, for the guards that look at every vertex.
   void world_vertices(const BlockState& s, std::span<Vec2> out) const;
+  // The same vertices, kept until a pose with other bits is asked for: a step's guards at its end
+  // and the penetration after it turn the block at one pose.
+  std::span<const Vec2> world_at(const BlockState& s) const;
+  // world_vertices, keeping the pose kept: a step's claims look at its start between the guards
+  // at its end and the penetration there.
+  void world_vertices_elsewhere(const BlockState& s, std::span<Vec2> out) const;
   // vertex_clearance and point_clearance for the vertices given in the world frame.
-  double clearance_at(Vec2 p) const;
+  double clearance_at(Vec2 p) const {
+    // Over a one-segment seat, its height there without looking for the segment: a rocking
+    // block's watched vertices at every guard evaluation.
+    if (p.x >= single_.start_x && p.x <= single_.end_x) {
+      return p.y - (single_.start_y + single_.rise * ((p.x - single_.start_x) / single_.run));
+    }
+    return clearance_at_any(p);
+  }
   double point_clearance(int k, std::span<const Vec2> world) const;
   // point_clearance where seat point k may lie within `far` of the block; farther, a lower bound
   // on it above `far`, from one distance instead of a pass over the block's edges (a flat seat's
@@ -157,6 +173,10 @@ class SeatContacts {
                             const std::optional<SeatPair>& left, std::vector<SeatPair>& found,
                             std::vector<bool>& vertex_on_seat) const;
   Vec2 upward_at_point(int k) const;
+  // world_at's vertices turned anew to the pose s.
+  void turn_to(const BlockState& s) const;
+  // clearance_at on any seat, past its ends or over any of its segments.
+  double clearance_at_any(Vec2 p) const;
   bool takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k, bool at_start,
                              Vec2 up, int arrived, const std::vector<bool>& vertex_on_seat) const;
 
@@ -179,6 +199,19 @@ class SeatContacts {
   double over_top_ = 0.0;
   std::vector<bool> point_touches_edges_;
   std::vector<int> run_start_, run_end_;  // per segment: its straight run's first and last point
+  // A one-segment seat's first point, its last point's x and the segment's rise and run, as
+  // clearance_at_any finds them; on any other seat an empty range of x, taking no point.
+  struct SingleSegment {
+    double start_x = std::numeric_limits<double>::infinity(), start_y = 0.0;
+    double end_x = -std::numeric_limits<double>::infinity(), rise = 0.0, run = 1.0;
+  };
+  SingleSegment single_;
+  // world_at's last pose (x, y and theta's bits) and the vertices there.
+  struct TurnedBlock {
+    std::array<std::uint64_t, 3> pose{};
+    std::array<Vec2, kMaxSeatClearances> world{};
+  };
+  mutable TurnedBlock turned_;
 };
 
 }  // namespace blockfrag

@@ -4,6 +4,7 @@
 // guard is sampled. Only the guards asked about are looked at.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -11,6 +12,7 @@
 #include <utility>
 
 #include "engine/seat/seat_system.hpp"
+#include "engine/seat/turn_cache.hpp"
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
@@ -97,14 +99,16 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
       centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
   const SeatContacts& seat = *system.c_.contacts;
   const Vec2 p = chart.point, body = chart.body;
-  const int n = seat.vertex_count();
+  segment_count_ = static_cast<std::size_t>(seat.point_count() - 1);
+  block_vertex_count_ = static_cast<std::size_t>(seat.vertex_count());
   vertices_.reserve(system.watched_vertices_.size());
   points_.reserve(system.watched_points_.size());
+  sinusoids_.reserve(system.watched_vertices_.size() * segment_count_ +
+                     system.watched_points_.size() * 2 * block_vertex_count_);
   for (const int i : system.watched_vertices_) {
     const Vec2 v = seat.body_vertex(i);
     const Vec2 w{v.x - body.x, v.y - body.y};
-    Vertex vertex{{p.x, w.x, -w.y}, {}, {}};
-    vertex.heights.reserve(static_cast<std::size_t>(seat.point_count()));
+    Vertex vertex{{p.x, w.x, -w.y}, sinusoids_.size(), {}};
     for (const int end : {0, 1}) {
       const Vec2 e = seat.seat_point(end == 0 ? 0 : seat.point_count() - 1);
       const Vec2 f{p.x - e.x, p.y - e.y};
@@ -116,28 +120,32 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
       const Vec2 a = seat.seat_point(k), b = seat.seat_point(k + 1);
       // A segment that does not run left to right is never asked (clearance_least_at_ends).
       const double m = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
-      vertex.heights.push_back({p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y});
+      sinusoids_.push_back({p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y});
     }
-    vertices_.push_back(std::move(vertex));
+    vertices_.push_back(vertex);
   }
-  for (const int k : system.watched_points_) {
-    const Vec2 s = seat.seat_point(k);
-    const Vec2 u{s.x - p.x, s.y - p.y};
-    Point point{k, {}, {}};
-    point.corners.reserve(static_cast<std::size_t>(n));
-    point.lines.reserve(static_cast<std::size_t>(n));
-    for (int j = 0; j < n; ++j) {
-      const Vec2 a = seat.body_vertex(j), b = seat.body_vertex((j + 1) % n);
-      const Vec2 e{body.x - a.x, body.y - a.y};
-      point.corners.push_back({e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
-                               2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)});
-      const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
-      const Vec2 normal{-(b.y - a.y) / length, (b.x - a.x) / length};
-      point.lines.push_back({normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
-                             normal.x * u.y - normal.y * u.x});
-    }
-    points_.push_back(std::move(point));
+  for (const int k : system.watched_points_) add_point(k);
+}
+
+// Seen from the block, seat point k moves on a circle about the pivot.
+void PivotSweep::add_point(int k) {
+  const SeatContacts& seat = *contacts_;
+  const Vec2 body = chart_.body, s = seat.seat_point(k);
+  const Vec2 u{s.x - chart_.point.x, s.y - chart_.point.y};
+  const std::size_t first = sinusoids_.size(), n = block_vertex_count_;
+  sinusoids_.resize(first + 2 * n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const Vec2 a = seat.body_vertex(static_cast<int>(j));
+    const Vec2 b = seat.body_vertex(static_cast<int>((j + 1) % n));
+    const Vec2 e{body.x - a.x, body.y - a.y};
+    sinusoids_[first + j] = {e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
+                             2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)};
+    const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+    const Vec2 normal{-(b.y - a.y) / length, (b.x - a.x) / length};
+    sinusoids_[first + n + j] = {normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
+                                 normal.x * u.y - normal.y * u.x};
   }
+  points_.push_back({k, first});
 }
 
 bool PivotSweep::serves(const SeatSystem& system, const PivotChart& chart) const {
@@ -147,13 +155,23 @@ bool PivotSweep::serves(const SeatSystem& system, const PivotChart& chart) const
          system.watched_points_ == watched_points_;
 }
 
+SineCosine PivotSweep::turn_at(double theta) const {
+  return std::bit_cast<std::uint64_t>(theta) == last_end_ ? last_end_turn_ : sine_cosine(theta);
+}
+
 GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) const {
   GuardClaims claims = system_->unused_guards();
-  const double lo = std::min(theta0, theta1), hi = std::max(theta0, theta1);
-  const ThetaStep step(lo, hi);
+  // The end's turn is the one the guards there just asked the turn cache for.
+  const SineCosine turn0 = turn_at(theta0), turn1 = cached_turn(theta1);
+  last_end_ = std::bit_cast<std::uint64_t>(theta1);
+  last_end_turn_ = turn1;
+  // The ends as std::min and std::max pick them.
+  const bool lo_is_end = theta1 < theta0, hi_is_end = theta0 < theta1;
+  const double lo = lo_is_end ? theta1 : theta0, hi = hi_is_end ? theta1 : theta0;
+  const ThetaStep step(lo, hi, lo_is_end ? turn1 : turn0, hi_is_end ? turn1 : turn0);
   if (asked[0] || asked[1]) {
-    system_->claim_overturn_and_fall(step.least(centre_x_), step.largest(centre_x_), true, false,
-                                     claims);
+    const ThetaStep::Extent x = step.extent(centre_x_);
+    system_->claim_overturn_and_fall(x.least, x.largest, true, false, claims);
   }
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const Vertex& v : vertices_) {
@@ -164,7 +182,9 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
   bool world_set = false;
   for (const Point& point : points_) {
     if (asked[g] && point_claim(step, point)) {
-      if (!world_set) system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
+      if (!world_set) {
+        system_->c_.contacts->world_vertices_elsewhere(chart_.full(0.0, {lo, 0.0}), world);
+      }
       world_set = true;
       claims[g] = !system_->c_.contacts->inside_block(point.k, world);
     }
@@ -179,11 +199,11 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
 // SeatContacts::under_end_segment).
 bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const {
   const SeatContacts& seat = *system_->c_.contacts;
-  const double x_lo = step.least(vertex.x), x_hi = step.largest(vertex.x);
+  const auto [x_lo, x_hi] = step.extent(vertex.x);
   const double margin = kSeatEndMargin * system_->length_scale();
   const int last = seat.point_count() - 1;
   const auto above_end_segment = [&](int k, bool leans) {
-    return !leans || step.least(vertex.heights[static_cast<std::size_t>(k)]) > margin;
+    return !leans || step.least(heights(vertex)[static_cast<std::size_t>(k)]) > margin;
   };
   if (x_hi <= seat.seat_point(0).x - margin) {
     return above_end_segment(0, seat.seat_point(1).y < seat.seat_point(0).y) &&
@@ -194,7 +214,7 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
            !step.holds_minimum(vertex.ends[1]);
   }
   return system_->clearance_least_at_ends(x_lo, x_hi, [&](int k) {
-    return !step.holds_minimum(vertex.heights[static_cast<std::size_t>(k)]);
+    return !step.holds_minimum(heights(vertex)[static_cast<std::size_t>(k)]);
   });
 }
 
@@ -206,11 +226,11 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
 // has, so it never reaches the boundary: outside at the step's start (which claims() asks last,
 // the dearest to ask), the clearance is least at an end.
 bool PivotSweep::point_claim(const ThetaStep& step, const Point& point) const {
-  for (const Sinusoid& corner : point.corners) {
+  for (const Sinusoid& corner : corners(point)) {
     if (step.holds_minimum(corner)) return false;
   }
   const double off = kSeatLineMargin * system_->length_scale();
-  for (const Sinusoid& line : point.lines) {
+  for (const Sinusoid& line : lines(point)) {
     const double at_lo = line.at(step.lo()), at_hi = line.at(step.hi());
     const bool above = at_lo > off && at_hi > off, below = at_lo < -off && at_hi < -off;
     if (!(above || below) || step.holds_minimum(above ? line : -line)) return false;

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <span>
@@ -256,18 +257,32 @@ class PivotSweep {
   void rebind(const SeatSystem& system) { system_ = &system; }
 
  private:
+  // The sinusoids of a vertex or point lie in sinusoids_ from `first` on: one block for all, built
+  // at every pivot a record's piece turns on.
   struct Vertex {
     Sinusoid x;
-    std::vector<Sinusoid> heights;  // over each seat segment's line
-    std::array<Sinusoid, 2> ends;   // squared distance from the seat's first and last points
+    std::size_t first;             // its height over each seat segment's line
+    std::array<Sinusoid, 2> ends;  // squared distance from the seat's first and last points
   };
   struct Point {
-    int k;                          // the seat point
-    std::vector<Sinusoid> corners;  // squared distance from each block vertex
-    std::vector<Sinusoid> lines;    // signed distance from each block edge's line
+    int k;              // the seat point
+    std::size_t first;  // its squared distance from each block vertex, then its signed distance
+                        // from each block edge's line
   };
+  std::span<const Sinusoid> heights(const Vertex& v) const {
+    return {sinusoids_.data() + v.first, segment_count_};
+  }
+  std::span<const Sinusoid> corners(const Point& p) const {
+    return {sinusoids_.data() + p.first, block_vertex_count_};
+  }
+  std::span<const Sinusoid> lines(const Point& p) const {
+    return {sinusoids_.data() + p.first + block_vertex_count_, block_vertex_count_};
+  }
+  void add_point(int k);
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
   bool point_claim(const ThetaStep& step, const Point& point) const;
+  // sine_cosine(theta): the last step's end is the next one's start.
+  SineCosine turn_at(double theta) const;
 
   const SeatSystem* system_;  // rebound to each piece's system; the rest serves them all
   const SeatContacts* contacts_;
@@ -276,6 +291,11 @@ class PivotSweep {
   Sinusoid centre_x_;
   std::vector<Vertex> vertices_;
   std::vector<Point> points_;
+  std::size_t segment_count_ = 0, block_vertex_count_ = 0;
+  std::vector<Sinusoid> sinusoids_;
+  // The tilt (its bits) at the end of the last step claims() was asked about, and its turn.
+  mutable std::uint64_t last_end_ = 0;
+  mutable SineCosine last_end_turn_{0.0, 1.0};
 };
 
 // The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp). It holds

@@ -25,9 +25,11 @@ struct Sinusoid {
 // whether a sinusoid's minimum lies in it.
 class ThetaStep {
  public:
-  ThetaStep(double lo, double hi)
-      : lo_(sine_cosine(lo)),
-        hi_(sine_cosine(hi)),
+  ThetaStep(double lo, double hi) : ThetaStep(lo, hi, sine_cosine(lo), sine_cosine(hi)) {}
+  // lo_turn and hi_turn: sine_cosine(lo) and sine_cosine(hi), known to the caller.
+  ThetaStep(double lo, double hi, SineCosine lo_turn, SineCosine hi_turn)
+      : lo_(lo_turn),
+        hi_(hi_turn),
         // sin and cos the margin further out: cos(margin) is 1 and sin(margin) the margin in
         // doubles.
         lo_wide_{lo_.sin - kThetaStepMarginRad * lo_.cos, lo_.cos + kThetaStepMarginRad * lo_.sin},
@@ -47,6 +49,28 @@ class ThetaStep {
     return holds_minimum(f) ? f.c - std::hypot(f.a, f.b) : std::min(f.at(lo_), f.at(hi_));
   }
   double largest(const Sinusoid& f) const { return -least(-f); }
+  // least(f) and largest(f) to the bit, each slope and value found once: -f's are f's negated
+  // exactly, so -f holds a minimum where f's slopes say it holds a maximum.
+  struct Extent {
+    double least, largest;
+  };
+  Extent extent(const Sinusoid& f) const {
+    bool holds_min = wide_, holds_max = wide_;
+    if (f.a == 0.0 && f.b == 0.0) {
+      holds_min = holds_max = false;
+    } else if (!wide_) {
+      const double slope_lo = f.slope_at(lo_wide_), slope_hi = f.slope_at(hi_wide_);
+      holds_min = slope_lo <= 0 && slope_hi >= 0;
+      holds_max = slope_lo >= 0 && slope_hi <= 0;
+    }
+    if (holds_min && holds_max) {
+      const double swing = std::hypot(f.a, f.b);
+      return {f.c - swing, f.c + swing};
+    }
+    const double at_lo = f.at(lo_), at_hi = f.at(hi_);
+    return {holds_min ? f.c - std::hypot(f.a, f.b) : std::min(at_lo, at_hi),
+            holds_max ? f.c + std::hypot(f.a, f.b) : std::max(at_lo, at_hi)};
+  }
 
  private:
   SineCosine lo_, hi_, lo_wide_, hi_wide_;
