@@ -395,7 +395,7 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
     const double kept = which < 0 ? t : t_event;
     ground.note_contact_violation(ode, crossing.before, state_at, forces_at);
     observer_.observe_step(t0, kept, state_at, forces_at, kind);
-    ground.stepped(state_at, kept);
+    ground.stepped(ode, state_at, kept);
     if (which < 0) continue;
     return ground.on_event(ode, which, t_event, state_at(t_event));
   }

@@ -98,8 +98,8 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
         {summary_.max_contact_violation, -contact.normal / scene_.g,
          (std::abs(contact.friction) - scene_.contact.friction * contact.normal) / scene_.g});
   }
-  template <class StateAt>
-  void stepped(const StateAt&, double) {}
+  template <class System, class StateAt>
+  void stepped(const System&, const StateAt&, double) {}
   template <class System>
   EventReport on_event(const System&, int which, double t_event, const BlockState& at_event);
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -57,12 +56,6 @@ bool crossed_right_of(Vec2 p, Vec2 a, Vec2 b) {
   return p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
 }
 
-// A pose's place and tilt, bit for bit.
-std::array<std::uint64_t, 3> pose_bits(const BlockState& s) {
-  return {std::bit_cast<std::uint64_t>(s.x), std::bit_cast<std::uint64_t>(s.y),
-          std::bit_cast<std::uint64_t>(s.theta)};
-}
-
 }  // namespace
 
 SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<Vertex>& seat) {
@@ -105,8 +98,6 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
     const Vec2 a = seat_[0], b = seat_[1];
     single_ = {a.x, a.y, b.x, b.y - a.y, b.x - a.x};
   }
-  // The pose world_at keeps is at first the zero pose, its vertices turned there.
-  turn_to(BlockState{});
 }
 
 bool SeatContacts::straight(double tolerance) const {
@@ -140,9 +131,6 @@ SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {
 }
 
 Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
-  // At world_at's pose (a step's end, where its guards find the active contacts' poses after the
-  // clearances), the vertex turned there.
-  if (pose_bits(s) == turned_.pose) return turned_.world[static_cast<std::size_t>(i)];
   const SineCosine turn = cached_turn(s.theta);
   const Vec2 r = rotate(body_[static_cast<std::size_t>(i)], turn.cos, turn.sin);
   return {s.x + r.x, s.y + r.y};
@@ -282,33 +270,12 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
   return found;
 }
 
-void SeatContacts::turn_to(const BlockState& s) const {
-  world_vertices_elsewhere(s, turned_.world);
-  turned_.pose = pose_bits(s);
-}
-
 void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
-  // Turned into `out` and world_at's copy in one pass, without looking for the pose first: a
-  // guard evaluation's pose is mostly new.
-  const SineCosine turn = cached_turn(s.theta);
-  for (std::size_t i = 0; i < body_.size(); ++i) {
-    const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
-    out[i] = turned_.world[i] = {s.x + r.x, s.y + r.y};
-  }
-  turned_.pose = pose_bits(s);
-}
-
-void SeatContacts::world_vertices_elsewhere(const BlockState& s, std::span<Vec2> out) const {
   const SineCosine turn = cached_turn(s.theta);
   for (std::size_t i = 0; i < body_.size(); ++i) {
     const Vec2 r = rotate(body_[i], turn.cos, turn.sin);
     out[i] = {s.x + r.x, s.y + r.y};
   }
-}
-
-std::span<const Vec2> SeatContacts::world_at(const BlockState& s) const {
-  if (pose_bits(s) != turned_.pose) turn_to(s);
-  return std::span(turned_.world).first(body_.size());
 }
 
 bool SeatContacts::under_end_segment(Vec2 p, bool last_end) const {
@@ -385,8 +352,12 @@ double SeatContacts::point_clearance(int k, const BlockState& s) const {
 }
 
 double SeatContacts::penetration(const BlockState& s) const {
-  // Mostly at the pose the step's guards at its end turned the block to.
-  const std::span<const Vec2> world = world_at(s);
+  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set and read
+  world_vertices(s, world);
+  return penetration(std::span<const Vec2>(world).first(body_.size()));
+}
+
+double SeatContacts::penetration(std::span<const Vec2> world) const {
   double deepest = 0.0;
   const double first = seat_.front().x, last = seat_.back().x;
   for (const Vec2& p : world) {

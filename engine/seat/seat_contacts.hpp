@@ -7,7 +7,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <optional>
 #include <span>
@@ -125,12 +124,6 @@ class SeatContacts {
   // The block's vertices in the world frame at the pose, into `out` (vertex_count() of them): one
   // rotation for all, for the guards that look at every vertex.
   void world_vertices(const BlockState& s, std::span<Vec2> out) const;
-  // The same vertices, kept until a pose with other bits is asked for: a step's guards at its end
-  // and the penetration after it turn the block at one pose.
-  std::span<const Vec2> world_at(const BlockState& s) const;
-  // world_vertices, keeping the pose kept: a step's claims look at its start between the guards
-  // at its end and the penetration there.
-  void world_vertices_elsewhere(const BlockState& s, std::span<Vec2> out) const;
   // vertex_clearance and point_clearance for the vertices given in the world frame.
   double clearance_at(Vec2 p) const {
     // Over a one-segment seat, its height there without looking for the segment: a rocking
@@ -160,6 +153,8 @@ class SeatContacts {
   double point_clearance(int k, const BlockState& s) const;
   // How deep the block is in the seat: the largest of -clearance over vertices and points (>= 0).
   double penetration(const BlockState& s) const;
+  // The same with the block's vertices at the pose given (world_vertices).
+  double penetration(std::span<const Vec2> world) const;
   // How far the lowest block vertex is above the level `depth` below the end of the seat the
   // centre of mass has passed (> 0 while it has not fallen there); `depth` where it has passed
   // neither end. `world`: the block's vertices at the pose (world_vertices).
@@ -173,8 +168,6 @@ class SeatContacts {
                             const std::optional<SeatPair>& left, std::vector<SeatPair>& found,
                             std::vector<bool>& vertex_on_seat) const;
   Vec2 upward_at_point(int k) const;
-  // world_at's vertices turned anew to the pose s.
-  void turn_to(const BlockState& s) const;
   // clearance_at on any seat, past its ends or over any of its segments.
   double clearance_at_any(Vec2 p) const;
   bool takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k, bool at_start,
@@ -206,12 +199,6 @@ class SeatContacts {
     double end_x = -std::numeric_limits<double>::infinity(), rise = 0.0, run = 1.0;
   };
   SingleSegment single_;
-  // world_at's last pose (x, y and theta's bits) and the vertices there.
-  struct TurnedBlock {
-    std::array<std::uint64_t, 3> pose{};
-    std::array<Vec2, kMaxSeatClearances> world{};
-  };
-  mutable TurnedBlock turned_;
 };
 
 }  // namespace blockfrag

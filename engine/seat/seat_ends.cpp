@@ -159,7 +159,7 @@ SineCosine PivotSweep::turn_at(double theta) const {
   return std::bit_cast<std::uint64_t>(theta) == last_end_ ? last_end_turn_ : sine_cosine(theta);
 }
 
-GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) const {
+GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) {
   GuardClaims claims = system_->unused_guards();
   // The end's turn is the one the guards there just asked the turn cache for.
   const SineCosine turn0 = turn_at(theta0), turn1 = cached_turn(theta1);
@@ -183,7 +183,7 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
   for (const Point& point : points_) {
     if (asked[g] && point_claim(step, point)) {
       if (!world_set) {
-        system_->c_.contacts->world_vertices_elsewhere(chart_.full(0.0, {lo, 0.0}), world);
+        system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
       }
       world_set = true;
       claims[g] = !system_->c_.contacts->inside_block(point.k, world);

@@ -105,9 +105,9 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
                            Crossing found, ModeKind kind) const;
   template <class Ode, class StateAt, class ForcesAt>
   void note_contact_violation(const Ode& ode, double t, const StateAt& state_at, const ForcesAt&);
-  template <class StateAt>
-  void stepped(const StateAt& state_at, double t) {
-    deepest_ = std::max(deepest_, contacts_.penetration(state_at(t)));
+  template <class Ode, class StateAt>
+  void stepped(const Ode& ode, const StateAt& state_at, double t) {
+    deepest_ = std::max(deepest_, ode.penetration(state_at(t)));
   }
   template <class Ode>
   EventReport on_event(const Ode& ode, int which, double t_event, const BlockState& at_event);
@@ -136,7 +136,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     return SeatSystem(system_context(piece), mode_.active, {}, {});
   }
   // The sweep of `system` turning on `chart`: the last one built where it serves them, rebound.
-  const PivotSweep& sweep_for(const SeatSystem& system, const PivotChart& chart);
+  PivotSweep& sweep_for(const SeatSystem& system, const PivotChart& chart);
   PlanarContact contact_of(const SeatPair& pair, const BlockState& s) const {
     return contacts_.pose(pair, s).contact;
   }

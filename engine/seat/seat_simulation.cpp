@@ -365,7 +365,7 @@ SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, do
   return report;
 }
 
-const PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart& chart) {
+PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart& chart) {
   if (sweep_ && sweep_->serves(system, chart)) {
     sweep_->rebind(system);
   } else {

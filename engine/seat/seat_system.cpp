@@ -1,6 +1,7 @@
 #include "engine/seat/seat_system.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <span>
@@ -10,6 +11,12 @@
 namespace blockfrag {
 
 namespace {
+
+// A pose's place and tilt, bit for bit.
+std::array<std::uint64_t, 3> pose_bits(const BlockState& s) {
+  return {std::bit_cast<std::uint64_t>(s.x), std::bit_cast<std::uint64_t>(s.y),
+          std::bit_cast<std::uint64_t>(s.theta)};
+}
 
 // Every guard at 1, an unused slot's value. Unrolled, the fill is one store per two slots: a
 // loop's, or a copy of a constant array (a string copy, one instruction per slot), cost twice
@@ -181,8 +188,10 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
                            s.x <= c_.contacts->seat_point(c_.contacts->point_count() - 1).x;
     out[0] = over_seat ? c_.contacts->overturn_margin(*c_.geometry, s.theta) : 1.0;
   }
-  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count() set here
+  std::array<Vec2, kMaxSeatClearances>& world = turned_.world;
   c_.contacts->world_vertices(s, world);
+  turned_.pose = pose_bits(s);
+  turned_.set = true;
   if (wanted[1]) out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
   const auto contact_guards = std::span(wanted).subspan(2, kSeatContactGuards * count_);
   if (std::find(contact_guards.begin(), contact_guards.end(), true) != contact_guards.end()) {
@@ -246,6 +255,12 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
     return c_.contacts->point_clearance_within(point, world, R) / R;
   }
   return guards(t, s)[static_cast<std::size_t>(i)];
+}
+
+double SeatSystem::penetration(const BlockState& s) const {
+  if (!turned_.set || turned_.pose != pose_bits(s)) return c_.contacts->penetration(s);
+  const auto n = static_cast<std::size_t>(c_.contacts->vertex_count());
+  return c_.contacts->penetration(std::span<const Vec2>(turned_.world).first(n));
 }
 
 bool SeatSystem::contacts_hold(double t, const BlockState& s) {

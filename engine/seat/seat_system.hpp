@@ -95,6 +95,9 @@ class SeatSystem {
   // Whether every active contact's lift-off and friction guards are positive at (t, s), as
   // guards() finds them, without the clearances: what a piece boundary asks of the mode.
   bool contacts_hold(double t, const BlockState& s);
+  // How deep the block is in the seat at s (SeatContacts::penetration), from the vertices guards()
+  // turned where it last turned them at s: a step's end, whose penetration follows its guards.
+  double penetration(const BlockState& s) const;
   const FixedStateForces& solve(double t, const BlockState& s);
   // theta'' of the block turning about the fixed point at r from its centre of mass, where one
   // sticking contact holds it there (a PivotChart's); none with two contacts or more. The contact
@@ -231,6 +234,14 @@ class SeatSystem {
     FixedStateForces forces;
   };
   Solved last_solve_;
+  // The block's vertices where guards() last turned it (the first vertex_count()), and that pose's
+  // x, y and theta, bit for bit.
+  struct TurnedBlock {
+    std::array<std::uint64_t, 3> pose{};
+    bool set = false;
+    std::array<Vec2, kMaxSeatClearances> world;
+  };
+  TurnedBlock turned_;
   // The last wet lifted load found, and the time and state it was found at.
   struct Loaded {
     double t = std::numeric_limits<double>::quiet_NaN();
@@ -248,7 +259,8 @@ class SeatSystem {
 class PivotSweep {
  public:
   PivotSweep(const SeatSystem& system, const PivotChart& chart);
-  GuardClaims claims(double theta0, double theta1, const GuardClaims& asked) const;
+  // Not const: the turn at a step's end is kept for the next step's start.
+  GuardClaims claims(double theta0, double theta1, const GuardClaims& asked);
   // Whether the sweep serves `system` turning on `chart`: the same pivot, the same watched
   // vertices and points. A record starts a motion piece at each of its samples, and each piece a
   // system; building its sweep anew was 6 % of the type B block's run under a record.
@@ -294,8 +306,8 @@ class PivotSweep {
   std::size_t segment_count_ = 0, block_vertex_count_ = 0;
   std::vector<Sinusoid> sinusoids_;
   // The tilt (its bits) at the end of the last step claims() was asked about, and its turn.
-  mutable std::uint64_t last_end_ = 0;
-  mutable SineCosine last_end_turn_{0.0, 1.0};
+  std::uint64_t last_end_ = 0;
+  SineCosine last_end_turn_{0.0, 1.0};
 };
 
 // The ODE of a block on its seat in a chart's coordinates (engine/seat/seat_chart.hpp). It holds
@@ -310,7 +322,7 @@ class SeatOde {
   SeatOde(SeatSystem& system, const Chart& chart) requires(!std::is_same_v<Chart, PivotChart>)
       : system_(&system), chart_(chart) {}
   SeatOde(SeatSystem& system, const PivotChart& chart,
-          const PivotSweep& sweep) requires std::is_same_v<Chart, PivotChart>
+          PivotSweep& sweep) requires std::is_same_v<Chart, PivotChart>
       : system_(&system), chart_(chart), sweep_(&sweep) {}
 
   SeatSystem& system() const { return *system_; }
@@ -347,6 +359,7 @@ class SeatOde {
     return system_->forces(t, chart_.full(t, q));
   }
   OdeState<N> coordinates(const BlockState& b) const { return chart_.coordinates(b); }
+  double penetration(const BlockState& s) const { return system_->penetration(s); }
   // The claims of the guards `asked` names over a step from q0 at t0 to q1 at t1 (a guard claimed
   // is least at one of its ends, so no sample inside can find it lower): one_way(i) says whether
   // coordinate i of the dense output moves one way.
@@ -398,14 +411,13 @@ class SeatOde {
   }
 
  private:
-  using Sweep =
-      std::conditional_t<std::is_same_v<Chart, PivotChart>, const PivotSweep*, std::monostate>;
+  using Sweep = std::conditional_t<std::is_same_v<Chart, PivotChart>, PivotSweep*, std::monostate>;
 
   SeatSystem* system_;
   Chart chart_;
   Sweep sweep_{};
 };
 
-SeatOde(SeatSystem&, const PivotChart&, const PivotSweep&)->SeatOde<PivotChart>;
+SeatOde(SeatSystem&, const PivotChart&, PivotSweep&)->SeatOde<PivotChart>;
 
 }  // namespace blockfrag

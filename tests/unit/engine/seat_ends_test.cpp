@@ -106,7 +106,7 @@ TEST(SeatEnds, PivotClaimsHoldOverRandomSteps) {
   for (const PivotCase& p : cases) {
     SeatSystem system = seat.system({p.contact}, p.vertices, p.points);
     const PivotChart chart{p.point, p.body};
-    const PivotSweep sweep(system, chart);
+    PivotSweep sweep(system, chart);
     const SeatOde ode(system, chart, sweep);
     int claimed = 0;
     for (int n = 0; n < 300; ++n) {
@@ -132,7 +132,7 @@ TEST(SeatEnds, RockingOnTheHeelTheFoldsClearancesAreLeastAtAnEnd) {
   SeatSystem system = seat.system({{{ContactKind::block_vertex, 0, 0}, ContactState::stick}},
                                   {1, 2, 3, 4, 5}, {1, 2});
   const PivotChart chart{c.seat_point(0), c.body_vertex(0)};
-  const PivotSweep sweep(system, chart);
+  PivotSweep sweep(system, chart);
   const SeatOde ode(system, chart, sweep);
   for (const double theta : {1e-6, 1e-3, 0.1}) {
     const auto claims = ode.guard_claims(

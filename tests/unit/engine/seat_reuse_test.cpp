@@ -1,4 +1,4 @@
-// What the seat's guards reuse instead of finding it again (engine/seat/seat_contacts.hpp,
+// What the seat's guards reuse instead of finding it again (engine/seat/seat_system.hpp,
 // engine/seat/sinusoid.hpp, engine/seat/seat_ends.cpp): each is checked to the bit against the
 // general path on random and edge inputs.
 #include <algorithm>
@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/scene/block_geometry.hpp"
 #include "engine/seat/seat_system.hpp"
 #include "engine/seat/sinusoid.hpp"
-#include "engine/sine_cosine.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/type_b_block.hpp"
 
@@ -28,17 +28,6 @@ const std::vector<std::array<double, 2>> kReuseTypeA = {
 
 std::uint64_t reuse_bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 double reuse_norm(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
-
-// The block's vertices at s, each turned on its own.
-std::vector<Vec2> reuse_turned_anew(const SeatContacts& contacts, const BlockState& s) {
-  const SineCosine turn = sine_cosine(s.theta);
-  std::vector<Vec2> out;
-  for (int i = 0; i < contacts.vertex_count(); ++i) {
-    const Vec2 r = rotate(contacts.body_vertex(i), turn.cos, turn.sin);
-    out.push_back({s.x + r.x, s.y + r.y});
-  }
-  return out;
-}
 
 // Poses asked in turn as a step's guards and its penetration ask them: new ones, the same one
 // again, ones differing from the last in one coordinate only (or in the sign of a zero), and the
@@ -62,37 +51,34 @@ std::vector<BlockState> reuse_poses_in_turn() {
   return poses;
 }
 
-TEST(SeatReuse, TheVerticesKeptForAPoseAreTheOnesTurnedAnewThere) {
+TEST(SeatReuse, ThePenetrationAtTheGuardsPoseIsTheOneFoundAnew) {
+  const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  const std::vector<std::array<double, 2>> flat = {{-100, 0}, {100, 0}};
   for (const auto& block : {kReuseTypeA, kTypeB}) {
-    const SeatContacts contacts(block, {{-100, 0}, {100, 0}});
-    for (const BlockState& s : reuse_poses_in_turn()) {
-      const std::vector<Vec2> expected = reuse_turned_anew(contacts, s);
-      // A vertex at a pose not kept yet, then alternating the askers: the copy out, the kept
-      // vertices read in place and one vertex read from them.
-      const std::size_t last = expected.size() - 1;
-      EXPECT_EQ(reuse_bits(contacts.vertex_at(static_cast<int>(last), s).y),
-                reuse_bits(expected[last].y));
-      std::array<Vec2, kMaxSeatClearances> out{};
-      contacts.world_vertices_elsewhere(s, out);
-      EXPECT_EQ(reuse_bits(out[0].x), reuse_bits(expected[0].x));
-      EXPECT_EQ(reuse_bits(out[last].y), reuse_bits(expected[last].y));
-      contacts.world_vertices(s, out);
-      const std::span<const Vec2> kept = contacts.world_at(s);
-      ASSERT_EQ(kept.size(), expected.size());
-      for (std::size_t i = 0; i < expected.size(); ++i) {
-        EXPECT_EQ(reuse_bits(out[i].x), reuse_bits(expected[i].x))
-            << s.x << " " << s.y << " " << s.theta;
-        EXPECT_EQ(reuse_bits(out[i].y), reuse_bits(expected[i].y));
-        EXPECT_EQ(reuse_bits(kept[i].x), reuse_bits(expected[i].x));
-        EXPECT_EQ(reuse_bits(kept[i].y), reuse_bits(expected[i].y));
+    for (const auto& seat : {flat, kTypeBSeat}) {
+      const SeatContacts contacts(block, seat);
+      const BlockGeometry geometry{PolygonBlock{block, 1.0}};
+      const SeatSystemContext context{
+          &contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
+      WatchedList vertices;
+      for (int i = 0; i < contacts.vertex_count(); ++i) vertices.push_back(i);
+      SeatSystem system(context, {}, vertices, {});
+      // Before any guards, then after the guards at each pose: at that pose and at the next asked
+      // (the same again, or another differing in one coordinate, one bit or a zero's sign).
+      const std::vector<BlockState> poses = reuse_poses_in_turn();
+      EXPECT_EQ(reuse_bits(system.penetration(poses[0])),
+                reuse_bits(contacts.penetration(poses[0])));
+      int deep = 0;
+      for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
+        system.guards(0.0, poses[k]);
+        for (const BlockState& s : {poses[k], poses[k + 1]}) {
+          const double anew = contacts.penetration(s);
+          EXPECT_EQ(reuse_bits(system.penetration(s)), reuse_bits(anew))
+              << s.x << " " << s.y << " " << s.theta;
+          deep += anew > 0.0;
+        }
       }
-      contacts.world_vertices(s, out);
-      EXPECT_EQ(reuse_bits(out[1].x), reuse_bits(expected[1].x));
-      for (std::size_t i = 0; i < expected.size(); ++i) {
-        const Vec2 v = contacts.vertex_at(static_cast<int>(i), s);
-        EXPECT_EQ(reuse_bits(v.x), reuse_bits(expected[i].x));
-        EXPECT_EQ(reuse_bits(v.y), reuse_bits(expected[i].y));
-      }
+      EXPECT_GT(deep, 100);
     }
   }
 }
@@ -210,7 +196,7 @@ TEST(SeatReuse, ASweepAskedAboutAChainOfStepsClaimsWhatOneAskedAboutEachAloneCla
     const SeatSystem system(seat.context, {{pivot.pair, ContactState::stick}}, pivot.vertices,
                             pivot.points);
     const PivotChart chart{pivot.point, pivot.body};
-    const PivotSweep chained(system, chart);
+    PivotSweep chained(system, chart);
     double theta = 0.0;
     for (int n = 0; n < 3000; ++n) {
       double next = std::clamp(theta + (n % 3 == 0 ? u(-0.3, 0.3) : u(-0.01, 0.01)), -1.2, 1.2);
@@ -220,12 +206,12 @@ TEST(SeatReuse, ASweepAskedAboutAChainOfStepsClaimsWhatOneAskedAboutEachAloneCla
       // A step that does not start where the last ended.
       const double start = n % 13 == 5 ? theta + u(-0.05, 0.05) : theta;
       differing_ends += start != theta;
-      const PivotSweep alone(system, chart);
+      PivotSweep alone(system, chart);
       const GuardClaims claims = chained.claims(start, next, every);
       EXPECT_EQ(claims, alone.claims(start, next, every)) << n << " " << start << " " << next;
       // A step's claims do not depend on the way it turns.
       if (start != next) {
-        const PivotSweep reversed(system, chart);
+        PivotSweep reversed(system, chart);
         EXPECT_EQ(claims, reversed.claims(next, start, every)) << n;
       }
       claimed += static_cast<int>(std::count(claims.begin(), claims.end(), true));
@@ -265,7 +251,7 @@ bool reuse_point_claim(const SeatContacts& c, const PivotChart& chart, int k, do
     if (!(above || below) || step.holds_minimum(above ? line : -line)) return false;
   }
   std::array<Vec2, kMaxSeatClearances> world{};
-  c.world_vertices_elsewhere(chart.full(0.0, {lo, 0.0}), world);
+  c.world_vertices(chart.full(0.0, {lo, 0.0}), world);
   return !c.inside_block(k, world);
 }
 
@@ -286,7 +272,7 @@ TEST(SeatReuse, ASweepsPointClaimsAreTheOnesItsOwnSinusoidsMake) {
                             {{{ContactKind::block_vertex, 0, 0}, ContactState::stick}},
                             {1, 2, 3, 4, 5}, points);
     const PivotChart chart{point, body};
-    const PivotSweep sweep(system, chart);
+    PivotSweep sweep(system, chart);
     for (int n = 0; n < 2000; ++n) {
       const double lo = u(-1.2, 1.2), hi = lo + (n % 2 == 0 ? u(0, 0.3) : u(0, 1e-3));
       const GuardClaims claims = sweep.claims(lo, hi, every);
@@ -317,7 +303,7 @@ TEST(SeatReuse, ASweepsVertexClaimsAreTheOnesTheirOwnHeightsMake) {
   const double m = (9.0 - -7.0) / (100.0 - -100.0);
   const Vec2 pivot{3.0, -7.0 + m * 103.0};
   const PivotChart chart{pivot, c.body_vertex(1)};
-  const PivotSweep sweep(system, chart);
+  PivotSweep sweep(system, chart);
   GuardClaims every;
   every.fill(true);
   FixedUniforms u(66);
