@@ -2,9 +2,7 @@
 // the seat's forces, which ask for them at every right-hand side and guard: they are the rows of
 // engine/contact/contact_lcp.hpp's contact_row times q'' as Eigen multiplies them, plus the
 // velocity-product terms, to the bit, over random contacts of both kinds.
-#include <bit>
 #include <cmath>
-#include <cstdint>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -12,13 +10,12 @@
 #include "engine/contact/contact_lcp.hpp"
 #include "engine/contact/planar_contact.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace blockfrag {
 namespace {
 
-bool same_acceleration_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
+using testing::same_bits;
 
 TEST(ContactAcceleration, IsTheContactRowsTimesTheAccelerationsAsEigenGivesThem) {
   testing::FixedUniforms u(4603);
@@ -39,8 +36,8 @@ TEST(ContactAcceleration, IsTheContactRowsTimesTheAccelerationsAsEigenGivesThem)
     const double tangent = contact_row(c, t).dot(q_dd) + -w2 * (t.x * c.r.x + t.y * c.r.y);
     const double normal = contact_row(c, c.normal).dot(q_dd) + normal_terms;
     const ContactAcceleration got = contact_acceleration(c, v, a);
-    ASSERT_TRUE(same_acceleration_bits(got.tangent, tangent)) << n;
-    ASSERT_TRUE(same_acceleration_bits(got.normal, normal)) << n;
+    ASSERT_TRUE(same_bits(got.tangent, tangent)) << n;
+    ASSERT_TRUE(same_bits(got.normal, normal)) << n;
   }
 }
 

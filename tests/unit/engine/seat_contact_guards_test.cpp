@@ -3,10 +3,8 @@
 // (those the guards solve are kept for the next asks at that time and state) and the guards made
 // of them and of the contacts' velocities are those of the contacts pose() gives, to the bit, over
 // random states of the paper's type B block with one or two contacts, sticking or slipping.
-#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -14,25 +12,24 @@
 #include "engine/seat/seat_system.hpp"
 #include "engine/seat/seated_load.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-bool same_guard_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
+using testing::same_bits;
 
 void expect_same_kept_forces(const FixedStateForces& kept, const FixedStateForces& posed,
                              std::size_t count, int n) {
-  EXPECT_TRUE(same_guard_bits(kept.acceleration.x_dd, posed.acceleration.x_dd)) << n;
-  EXPECT_TRUE(same_guard_bits(kept.acceleration.y_dd, posed.acceleration.y_dd)) << n;
-  EXPECT_TRUE(same_guard_bits(kept.acceleration.theta_dd, posed.acceleration.theta_dd)) << n;
-  EXPECT_TRUE(same_guard_bits(kept.total.x, posed.total.x)) << n;
-  EXPECT_TRUE(same_guard_bits(kept.total.y, posed.total.y)) << n;
+  EXPECT_TRUE(same_bits(kept.acceleration.x_dd, posed.acceleration.x_dd)) << n;
+  EXPECT_TRUE(same_bits(kept.acceleration.y_dd, posed.acceleration.y_dd)) << n;
+  EXPECT_TRUE(same_bits(kept.acceleration.theta_dd, posed.acceleration.theta_dd)) << n;
+  EXPECT_TRUE(same_bits(kept.total.x, posed.total.x)) << n;
+  EXPECT_TRUE(same_bits(kept.total.y, posed.total.y)) << n;
   for (std::size_t i = 0; i < count; ++i) {
-    EXPECT_TRUE(same_guard_bits(kept.normal[i], posed.normal[i])) << n << " " << i;
-    EXPECT_TRUE(same_guard_bits(kept.tangent[i], posed.tangent[i])) << n << " " << i;
+    EXPECT_TRUE(same_bits(kept.normal[i], posed.normal[i])) << n << " " << i;
+    EXPECT_TRUE(same_bits(kept.tangent[i], posed.tangent[i])) << n << " " << i;
   }
 }
 
@@ -89,13 +86,13 @@ TEST(SeatContactGuards, AreThoseOfTheContactsPoseGivesToTheBit) {
     expect_same_kept_forces(SeatSystem(context, active, {}, {}).solve(t, s), f, active.size(), n);
     for (std::size_t i = 0; i < active.size(); ++i) {
       const std::size_t base = 2 + kSeatContactGuards * i;
-      EXPECT_TRUE(same_guard_bits(guards[base], f.normal[i] / g)) << n << " " << i;
+      EXPECT_TRUE(same_bits(guards[base], f.normal[i] / g)) << n << " " << i;
       const int slip = slip_sign(active[i].state);
       const PlanarContact c = contacts.pose(active[i].pair, s).contact;
       const double second =
           slip == 0 ? (mu * f.normal[i] - std::abs(f.tangent[i])) / g
                     : slip * contact_velocity(c, {s.vx, s.vy, s.omega}).tangent / velocity_scale;
-      EXPECT_TRUE(same_guard_bits(guards[base + 1], second)) << n << " " << i;
+      EXPECT_TRUE(same_bits(guards[base + 1], second)) << n << " " << i;
       ++compared;
     }
   }

@@ -2,8 +2,6 @@
 // is the one the system's solve there takes next (SeatSystem keeps it), so the forces solved
 // after a turning at the same state, at another state, or without one are the same to the bit, and
 // so is the turning itself.
-#include <bit>
-#include <cstdint>
 
 #include <gtest/gtest.h>
 
@@ -14,25 +12,24 @@
 #include "engine/water/block_outline.hpp"
 #include "engine/water/reservoir_load.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
 namespace {
 
+using testing::same_bits;
+
 using testing::FixedUniforms;
 
-bool same_lifted_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
 void expect_same_forces(const FixedStateForces& a, const FixedStateForces& b) {
-  EXPECT_TRUE(same_lifted_bits(a.acceleration.x_dd, b.acceleration.x_dd));
-  EXPECT_TRUE(same_lifted_bits(a.acceleration.y_dd, b.acceleration.y_dd));
-  EXPECT_TRUE(same_lifted_bits(a.acceleration.theta_dd, b.acceleration.theta_dd));
-  EXPECT_TRUE(same_lifted_bits(a.normal[0], b.normal[0]));
-  EXPECT_TRUE(same_lifted_bits(a.tangent[0], b.tangent[0]));
-  EXPECT_TRUE(same_lifted_bits(a.total.x, b.total.x));
-  EXPECT_TRUE(same_lifted_bits(a.total.y, b.total.y));
+  EXPECT_TRUE(same_bits(a.acceleration.x_dd, b.acceleration.x_dd));
+  EXPECT_TRUE(same_bits(a.acceleration.y_dd, b.acceleration.y_dd));
+  EXPECT_TRUE(same_bits(a.acceleration.theta_dd, b.acceleration.theta_dd));
+  EXPECT_TRUE(same_bits(a.normal[0], b.normal[0]));
+  EXPECT_TRUE(same_bits(a.tangent[0], b.tangent[0]));
+  EXPECT_TRUE(same_bits(a.total.x, b.total.x));
+  EXPECT_TRUE(same_bits(a.total.y, b.total.y));
 }
 
 struct WetTypeB {
@@ -72,7 +69,7 @@ TEST(SeatLiftedLoad, ForcesAndTurningAreTheSameWhateverWasFoundBefore) {
     const double turning_alone = *wet.on_toe().pivot_turning(t, s, arm);
     // A turning at the state, then the forces there; a turning elsewhere, then the forces here.
     const double turning = *reused.pivot_turning(t, s, arm);
-    EXPECT_TRUE(same_lifted_bits(turning, turning_alone)) << i;
+    EXPECT_TRUE(same_bits(turning, turning_alone)) << i;
     expect_same_forces(reused.solve(t, s), alone);
     reused.pivot_turning(t, other, arm);
     expect_same_forces(wet.on_toe().solve(t, s), alone);

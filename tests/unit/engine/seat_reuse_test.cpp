@@ -3,9 +3,7 @@
 // general path on random and edge inputs.
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -14,10 +12,13 @@
 #include "engine/seat/seat_system.hpp"
 #include "engine/seat/sinusoid.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
 namespace {
+
+using testing::bits_of;
 
 using testing::FixedUniforms;
 using testing::kTypeB;
@@ -26,7 +27,6 @@ using testing::kTypeBSeat;
 const std::vector<std::array<double, 2>> kReuseTypeA = {
     {0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}};
 
-std::uint64_t reuse_bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 double reuse_norm(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 
 // Poses asked in turn as a step's guards and its penetration ask them: new ones, the same one
@@ -66,14 +66,13 @@ TEST(SeatReuse, ThePenetrationAtTheGuardsPoseIsTheOneFoundAnew) {
       // Before any guards, then after the guards at each pose: at that pose and at the next asked
       // (the same again, or another differing in one coordinate, one bit or a zero's sign).
       const std::vector<BlockState> poses = reuse_poses_in_turn();
-      EXPECT_EQ(reuse_bits(system.penetration(poses[0])),
-                reuse_bits(contacts.penetration(poses[0])));
+      EXPECT_EQ(bits_of(system.penetration(poses[0])), bits_of(contacts.penetration(poses[0])));
       int deep = 0;
       for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
         system.guards(0.0, poses[k]);
         for (const BlockState& s : {poses[k], poses[k + 1]}) {
           const double anew = contacts.penetration(s);
-          EXPECT_EQ(reuse_bits(system.penetration(s)), reuse_bits(anew))
+          EXPECT_EQ(bits_of(system.penetration(s)), bits_of(anew))
               << s.x << " " << s.y << " " << s.theta;
           deep += anew > 0.0;
         }
@@ -129,7 +128,7 @@ TEST(SeatReuse, AOneSegmentSeatsClearanceIsTheGeneralOnesToTheBitAndOtherSeatsKe
     }
     for (const Vec2& p : probes) {
       const double expected = reuse_clearance_over_any_seat(seat, contacts, p);
-      EXPECT_EQ(reuse_bits(contacts.clearance_at(p)), reuse_bits(expected)) << p.x << " " << p.y;
+      EXPECT_EQ(bits_of(contacts.clearance_at(p)), bits_of(expected)) << p.x << " " << p.y;
     }
   }
 }
@@ -148,8 +147,8 @@ TEST(SeatReuse, AStepsExtentIsItsLeastAndLargestToTheBit) {
                                       : u(2, 4);
     const ThetaStep step(lo, lo + width);
     const ThetaStep::Extent extent = step.extent(f);
-    EXPECT_EQ(reuse_bits(extent.least), reuse_bits(step.least(f))) << n;
-    EXPECT_EQ(reuse_bits(extent.largest), reuse_bits(step.largest(f))) << n;
+    EXPECT_EQ(bits_of(extent.least), bits_of(step.least(f))) << n;
+    EXPECT_EQ(bits_of(extent.largest), bits_of(step.largest(f))) << n;
     ++n;
   }
 }

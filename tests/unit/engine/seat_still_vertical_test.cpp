@@ -2,22 +2,19 @@
 // vertical piece's formula (SeatSystem::lambda_v): its forces and its turning about a pivot are
 // those of the loads made with the formula's value, to the bit, whether the piece has no shape or
 // a zero amplitude (whose zeros have either sign); with vertical motion they follow the formula.
-#include <bit>
-#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "engine/seat/seat_system.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
 namespace {
 
-bool same_vertical_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
+using testing::same_bits;
 
 struct VerticalCase {
   MotionPiece vertical;
@@ -52,13 +49,13 @@ TEST(SeatStillVertical, ForcesAndTurningAreThoseOfTheFormulasLoad) {
     ASSERT_TRUE(expected.has_value());
     SeatSystem system(context, on_toe, {}, {});
     const FixedStateForces& f = system.solve(t, s);
-    EXPECT_TRUE(same_vertical_bits(f.normal[0], expected->normal[0])) << n;
-    EXPECT_TRUE(same_vertical_bits(f.tangent[0], expected->tangent[0])) << n;
-    EXPECT_TRUE(same_vertical_bits(f.acceleration.theta_dd, expected->acceleration.theta_dd)) << n;
-    EXPECT_TRUE(same_vertical_bits(f.total.y, expected->total.y)) << n;
+    EXPECT_TRUE(same_bits(f.normal[0], expected->normal[0])) << n;
+    EXPECT_TRUE(same_bits(f.tangent[0], expected->tangent[0])) << n;
+    EXPECT_TRUE(same_bits(f.acceleration.theta_dd, expected->acceleration.theta_dd)) << n;
+    EXPECT_TRUE(same_bits(f.total.y, expected->total.y)) << n;
     // In flight the forces are none and the acceleration is the load's.
     SeatSystem flying(context, {}, {}, {});
-    EXPECT_TRUE(same_vertical_bits(flying.solve(t, s).acceleration.y_dd, load.force.y)) << n;
+    EXPECT_TRUE(same_bits(flying.solve(t, s).acceleration.y_dd, load.force.y)) << n;
     // Turning about the toe: against a vertical piece that is zero at t but not throughout (a
     // line through zero there), whose formula the system asks.
     const MotionPiece through_zero{{MotionPiece::Shape::linear, 0.0, 0.0, 0.0, t, 1.0}, 0.0, 1e3};
@@ -67,7 +64,7 @@ TEST(SeatStillVertical, ForcesAndTurningAreThoseOfTheFormulasLoad) {
     const Vec2 arm = contacts.pose(toe, s).contact.r;
     const double turning = *system.pivot_turning(t, s, arm);
     const double asked_turning = *SeatSystem(asked, on_toe, {}, {}).pivot_turning(t, s, arm);
-    EXPECT_EQ(same_vertical_bits(turning, asked_turning), vertical.still) << n;
+    EXPECT_EQ(same_bits(turning, asked_turning), vertical.still) << n;
     ++compared;
   }
   EXPECT_EQ(compared, 900);

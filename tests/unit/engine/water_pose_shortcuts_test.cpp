@@ -4,8 +4,6 @@
 // (add_added_mass_piece). Random poses over every tilt, tilts on either side of the rising test's
 // slack, and levels below, at and above the crest; cut and uncut pieces from sums that started at
 // zero.
-#include <bit>
-#include <cstdint>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,22 +14,20 @@
 #include "engine/water/reservoir_loads.hpp"
 #include "engine/water/westergaard.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
 namespace {
 
+using testing::same_bits;
+
 using testing::FixedUniforms;
 
-bool same_water_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
 void expect_same_added_mass(const AddedMass& a, const AddedMass& b) {
-  EXPECT_TRUE(same_water_bits(a.mass, b.mass)) << a.mass << " " << b.mass;
-  EXPECT_TRUE(same_water_bits(a.first_moment, b.first_moment))
-      << a.first_moment << " " << b.first_moment;
-  EXPECT_TRUE(same_water_bits(a.second_moment, b.second_moment))
+  EXPECT_TRUE(same_bits(a.mass, b.mass)) << a.mass << " " << b.mass;
+  EXPECT_TRUE(same_bits(a.first_moment, b.first_moment)) << a.first_moment << " " << b.first_moment;
+  EXPECT_TRUE(same_bits(a.second_moment, b.second_moment))
       << a.second_moment << " " << b.second_moment;
 }
 
@@ -84,9 +80,9 @@ void expect_pose_is_the_plain_pass(Scene scene, double level) {
     s.y += u(-1.0, 3.0);
     s.theta = i == 0 ? 0.0 : random_tilt(u, i);
     const ReservoirPose pose = loads.pose(s), plain = plain_pose(scene, loads, s);
-    EXPECT_TRUE(same_water_bits(pose.hydrostatic.fx, plain.hydrostatic.fx));
-    EXPECT_TRUE(same_water_bits(pose.hydrostatic.fy, plain.hydrostatic.fy));
-    EXPECT_TRUE(same_water_bits(pose.hydrostatic.moment, plain.hydrostatic.moment));
+    EXPECT_TRUE(same_bits(pose.hydrostatic.fx, plain.hydrostatic.fx));
+    EXPECT_TRUE(same_bits(pose.hydrostatic.fy, plain.hydrostatic.fy));
+    EXPECT_TRUE(same_bits(pose.hydrostatic.moment, plain.hydrostatic.moment));
     expect_same_rates(pose.added, plain.added);
   }
 }

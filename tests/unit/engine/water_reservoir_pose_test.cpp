@@ -5,9 +5,7 @@
 // the bit; the closed and the whole open crack's uplift, found once on the unturned block and
 // turned with it, is the crack's pressure integrated at the pose to 1e-12.
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -18,18 +16,17 @@
 #include "engine/water/reservoir_load.hpp"
 #include "engine/water/reservoir_loads.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
 namespace {
 
+using testing::same_bits;
+
 using testing::FixedUniforms;
 
 constexpr int kWetPoses = 300;
-
-bool same_pose_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
 
 BlockState random_wet_state(FixedUniforms& u, const BlockState& rest) {
   BlockState s = rest;
@@ -71,9 +68,9 @@ void expect_mouth_head_of_placed_crack(const Scene& scene) {
     const BlockState s = random_wet_state(u, rest);
     const ReservoirPose pose = loads.pose(s);
     const SineCosine turn = sine_cosine(s.theta);
-    ASSERT_TRUE(same_pose_bits(pose.turn.sin, turn.sin) && same_pose_bits(pose.turn.cos, turn.cos));
+    ASSERT_TRUE(same_bits(pose.turn.sin, turn.sin) && same_bits(pose.turn.cos, turn.cos));
     const double head = std::max(0.0, water.level - placed_crack(loads, pose).front()[1]);
-    EXPECT_TRUE(same_pose_bits(pose.full_head, water.density * scene.g * head)) << i;
+    EXPECT_TRUE(same_bits(pose.full_head, water.density * scene.g * head)) << i;
   }
 }
 
@@ -140,12 +137,12 @@ class RecordingSearch final : public CrackOpeningSearch {
 };
 
 void expect_same_addition(const LoadAddition& a, const LoadAddition& b) {
-  EXPECT_TRUE(same_pose_bits(a.force.x, b.force.x));
-  EXPECT_TRUE(same_pose_bits(a.force.y, b.force.y));
-  EXPECT_TRUE(same_pose_bits(a.moment, b.moment));
-  EXPECT_TRUE(same_pose_bits(a.xx, b.xx));
-  EXPECT_TRUE(same_pose_bits(a.xtheta, b.xtheta));
-  EXPECT_TRUE(same_pose_bits(a.thetatheta, b.thetatheta));
+  EXPECT_TRUE(same_bits(a.force.x, b.force.x));
+  EXPECT_TRUE(same_bits(a.force.y, b.force.y));
+  EXPECT_TRUE(same_bits(a.moment, b.moment));
+  EXPECT_TRUE(same_bits(a.xx, b.xx));
+  EXPECT_TRUE(same_bits(a.xtheta, b.xtheta));
+  EXPECT_TRUE(same_bits(a.thetatheta, b.thetatheta));
 }
 
 void expect_openings_are_seated_opened(const Scene& scene) {
