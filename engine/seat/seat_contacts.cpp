@@ -56,6 +56,9 @@ bool crossed_right_of(Vec2 p, Vec2 a, Vec2 b) {
   return p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
 }
 
+// Seats with at most this many points between their ends find a place's segment by a scan.
+constexpr std::ptrdiff_t kScannedSeatPoints = 4;
+
 }  // namespace
 
 SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<Vertex>& seat) {
@@ -292,8 +295,17 @@ double SeatContacts::clearance_at_any(Vec2 p) const {
   const Vec2 first = seat_.front(), last = seat_.back();
   if (p.x < first.x && !under_end_segment(p, false)) return norm(minus(p, first));
   if (p.x > last.x && !under_end_segment(p, true)) return norm(minus(p, last));
-  const auto right = std::upper_bound(seat_.begin() + 1, seat_.end() - 1, p.x,
-                                      [](double x, const Vec2& v) { return x < v.x; });
+  // The first point right of p past the first, or the last point. A scan finds it faster than a
+  // binary search among a few points (the type B seat's one inner point, at every guard
+  // evaluation); the points' x increase, so both find the same one.
+  const auto last_point = seat_.end() - 1;
+  auto right = seat_.begin() + 1;
+  if (last_point - right > kScannedSeatPoints) {
+    right =
+        std::upper_bound(right, last_point, p.x, [](double x, const Vec2& v) { return x < v.x; });
+  } else {
+    while (right != last_point && !(p.x < right->x)) ++right;
+  }
   const Vec2 a = *(right - 1), b = *right;
   return p.y - (a.y + (b.y - a.y) * ((p.x - a.x) / (b.x - a.x)));
 }
