@@ -43,10 +43,10 @@ double squared_distance_to_edge(Vec2 p, Vec2 a, Vec2 b) {
   return dot(off, off);
 }
 
-// Whether the edge from a to b crosses the ray from p to +x (one end above p's level, the other
-// not, and the crossing right of p): the even-odd rule's count of p inside a polygon.
+// Whether the edge from a to b, one end above p's level and the other not, crosses that level right
+// of p: the even-odd rule's count of p inside a polygon. Which ends are above is found once a
+// vertex by the passes over the block's edges (each vertex ends two edges).
 bool crossed_right_of(Vec2 p, Vec2 a, Vec2 b) {
-  if ((a.y > p.y) == (b.y > p.y)) return false;
   // The edge's x at the point's level lies between a.x and b.x but for a few ulps of them: a
   // point beside both by more is left or right of it without the division (a seat's far ends at
   // every guard evaluation).
@@ -320,9 +320,12 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   double squared = std::numeric_limits<double>::infinity();
   bool inside = false;
   const std::size_t n = body_.size();
+  bool end_above = world[n - 1].y > p.y;
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     squared = std::min(squared, squared_distance_to_edge(p, world[i], world[j]));
-    inside = inside != crossed_right_of(p, world[i], world[j]);
+    const bool start_above = world[i].y > p.y;
+    if (start_above != end_above) inside = inside != crossed_right_of(p, world[i], world[j]);
+    end_above = start_above;
   }
   const double distance = std::sqrt(squared);
   return inside ? -distance : distance;
@@ -351,8 +354,11 @@ bool SeatContacts::inside_block(int k, std::span<const Vec2> world) const {
   const Vec2 p = seat_[static_cast<std::size_t>(k)];
   bool inside = false;
   const std::size_t n = body_.size();
+  bool end_above = world[n - 1].y > p.y;
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    inside = inside != crossed_right_of(p, world[i], world[j]);
+    const bool start_above = world[i].y > p.y;
+    if (start_above != end_above) inside = inside != crossed_right_of(p, world[i], world[j]);
+    end_above = start_above;
   }
   return inside;
 }
