@@ -101,6 +101,12 @@ SeatContacts::SeatContacts(const std::vector<Vertex>& block, const std::vector<V
     const Vec2 a = seat_[0], b = seat_[1];
     single_ = {a.x, a.y, b.x, b.y - a.y, b.x - a.x};
   }
+  if (seat_.size() == 3 && seat_[1].x > seat_[0].x && seat_[2].x > seat_[1].x) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      const Vec2 a = seat_[k], b = seat_[k + 1];
+      folded_[k] = {a.x, a.y, b.x, b.y - a.y, b.x - a.x};
+    }
+  }
 }
 
 bool SeatContacts::straight(double tolerance) const {
@@ -292,6 +298,12 @@ bool SeatContacts::under_end_segment(Vec2 p, bool last_end) const {
 }
 
 double SeatContacts::clearance_at_any(Vec2 p) const {
+  // Over a two-segment seat (the type B block's notch), its height on the segment under p
+  // without looking for its ends' cases or its segment: every guard evaluation's vertices.
+  if (p.x >= folded_[0].start_x && p.x <= folded_[1].end_x) {
+    const SingleSegment& f = folded_[p.x < folded_[1].start_x ? 0 : 1];
+    return p.y - (f.start_y + f.rise * ((p.x - f.start_x) / f.run));
+  }
   const Vec2 first = seat_.front(), last = seat_.back();
   if (p.x < first.x && !under_end_segment(p, false)) return norm(minus(p, first));
   if (p.x > last.x && !under_end_segment(p, true)) return norm(minus(p, last));

@@ -199,6 +199,8 @@ class SeatContacts {
     double end_x = -std::numeric_limits<double>::infinity(), rise = 0.0, run = 1.0;
   };
   SingleSegment single_;
+  // A two-segment seat's segments, each as single_ holds one; on any other seat empty ranges.
+  std::array<SingleSegment, 2> folded_;
 };
 
 }  // namespace blockfrag
