@@ -11,7 +11,7 @@
 //   void place_at_start();                 // state_ at t = 0
 //   void resolve_and_enter(const EventReport&);  // resolves the contact at t_, enters its mode
 //   EventReport advance(const MotionPiece&, double t_stop);  // the mode to an event or t_stop
-//   bool holds_under(const MotionPiece&) const;  // the mode goes on under the next piece
+//   bool holds_under(const MotionPiece&);  // the mode goes on under the next piece
 //   bool at_rest() const;                  // the block rests
 //   void observe(const BlockState&);       // a state the run passed through
 //   ContactForces forces_now() const;      // the contact forces at t_ (per unit mass)

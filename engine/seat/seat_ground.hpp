@@ -92,7 +92,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   void place_at_start();
   void resolve_and_enter(const EventReport& report) { enter(resolve(report), report); }
   EventReport advance(const MotionPiece& piece, double t_stop);
-  bool holds_under(const MotionPiece& piece) const;
+  bool holds_under(const MotionPiece& piece);
   bool at_rest() const { return mode_.rest; }
   void observe(const BlockState& s);
   ContactForces forces_now() const;
@@ -129,7 +129,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     return 0.5 * load_at(t_, s).inertia.twice_kinetic(velocity_of(s));
   }
   SeatSystemContext system_context(const MotionPiece& piece) const;
-  SeatSystem system(const MotionPiece& piece) const;
+  // The system of the current mode under `piece` at t_ and state_, built into system_.
+  SeatSystem& build_system(const MotionPiece& piece);
   // The system of the current mode for its contact forces alone, watching no vertex or point: what
   // a piece boundary asks of the mode, at each sample of a record.
   SeatSystem forces_system(const MotionPiece& piece) const {
@@ -215,8 +216,11 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     return it == anchors_.end() ? std::nullopt : std::optional<double>(it->second);
   }
   std::optional<PivotSweep> sweep_;  // the last built (sweep_for)
-  Vec2 origin_{0.0, 0.0};            // the charts' (engine/seat/seat_chart.hpp)
-  double deepest_ = 0.0;             // m: the block's largest penetration of the seat seen
+  // The last system built; ready: built by holds_under for the advance that follows it.
+  std::optional<SeatSystem> system_;
+  bool system_ready_ = false;
+  Vec2 origin_{0.0, 0.0};  // the charts' (engine/seat/seat_chart.hpp)
+  double deepest_ = 0.0;   // m: the block's largest penetration of the seat seen
 };
 
 }  // namespace blockfrag

@@ -27,8 +27,7 @@ SeatSystemContext SeatSimulation::system_context(const MotionPiece& piece) const
           kFallDepth * R_, external_};
 }
 
-SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
-  const SeatSystemContext context = system_context(piece);
+SeatSystem& SeatSimulation::build_system(const MotionPiece& piece) {
   // Vertices and points in an active contact are not watched for touching: they touch.
   WatchedList vertices, points;
   const double near = kSeatContactDrift * R_;
@@ -52,7 +51,7 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
     });
     if (!active) points.push_back(k);
   }
-  return SeatSystem(context, mode_.active, vertices, points);
+  return system_.emplace(system_context(piece), mode_.active, vertices, points);
 }
 
 // The chart of the active contacts (engine/seat/seat_chart.hpp). Contacts of block vertices on
@@ -308,9 +307,12 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
   return report;
 }
 
-bool SeatSimulation::holds_under(const MotionPiece& piece) const {
+bool SeatSimulation::holds_under(const MotionPiece& piece) {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
-  return forces_system(piece).contacts_hold(t_, state_);
+  // Where the mode holds, the next piece's advance starts here, in this mode, under this piece:
+  // the system that found it holding is that advance's.
+  system_ready_ = build_system(piece).contacts_hold(t_, state_);
+  return system_ready_;
 }
 
 void SeatSimulation::place_at_start() {
@@ -336,7 +338,8 @@ void SeatSimulation::place_at_start() {
 
 SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
   if (mode_.rest) return advance_rest(t_stop);
-  SeatSystem moving = system(piece);
+  SeatSystem& moving = system_ready_ ? *system_ : build_system(piece);
+  system_ready_ = false;
   const ModeKind kind = kind_of(mode_);
   EventReport report;
   const auto integrate = [&](const auto& ode) {
