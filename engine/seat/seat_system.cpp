@@ -18,6 +18,14 @@ std::array<std::uint64_t, 3> pose_bits(const BlockState& s) {
           std::bit_cast<std::uint64_t>(s.theta)};
 }
 
+// Whether s's place and tilt are `bits`, compared word by word: array's != calls memcmp, whose
+// cost for 24 bytes depends on where they lie (a step's end, at every step).
+bool has_pose_bits(const BlockState& s, const std::array<std::uint64_t, 3>& bits) {
+  return std::bit_cast<std::uint64_t>(s.x) == bits[0] &&
+         std::bit_cast<std::uint64_t>(s.y) == bits[1] &&
+         std::bit_cast<std::uint64_t>(s.theta) == bits[2];
+}
+
 // Every guard at 1, an unused slot's value. Unrolled, the fill is one store per two slots: a
 // loop's, or a copy of a constant array (a string copy, one instruction per slot), cost twice
 // that or more (a rocking block's guards, at every step).
@@ -258,7 +266,7 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
 }
 
 double SeatSystem::penetration(const BlockState& s) const {
-  if (!turned_.set || turned_.pose != pose_bits(s)) return c_.contacts->penetration(s);
+  if (!turned_.set || !has_pose_bits(s, turned_.pose)) return c_.contacts->penetration(s);
   const auto n = static_cast<std::size_t>(c_.contacts->vertex_count());
   return c_.contacts->penetration(std::span<const Vec2>(turned_.world).first(n));
 }
