@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <type_traits>
@@ -307,6 +309,41 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
   return report;
 }
 
+template <class Ode>
+void SeatSimulation::ended_piece(const Ode& ode,
+                                 const std::array<double, SeatSystem::kGuards>& guards) {
+  piece_end_ = {state_, guards, ode.system().watched_vertices(), ode.system().watched_points()};
+  piece_end_ready_ = true;
+}
+
+template <class Ode>
+GuardWatch<SeatSystem::kGuards> SeatSimulation::watch_at_piece_start(const Ode& ode, double t,
+                                                                     const OdeState<Ode::N>& q) {
+  const bool from_end = from_piece_end_;
+  from_piece_end_ = false;
+  if (!from_end) return watch_guards(ode, t, q);
+  SeatSystem& system = ode.system();
+  const BlockState s = ode.full(t, q);
+  const bool same_pose =
+      std::bit_cast<std::uint64_t>(s.x) == std::bit_cast<std::uint64_t>(piece_end_.s.x) &&
+      std::bit_cast<std::uint64_t>(s.y) == std::bit_cast<std::uint64_t>(piece_end_.s.y) &&
+      std::bit_cast<std::uint64_t>(s.theta) == std::bit_cast<std::uint64_t>(piece_end_.s.theta);
+  if (!same_pose || !(system.watched_vertices() == piece_end_.vertices) ||
+      !(system.watched_points() == piece_end_.points)) {
+    return watch_guards(ode, t, q);
+  }
+  GuardClaims contacts{};
+  const auto first_clearance = static_cast<std::size_t>(kFirstClearanceGuard);
+  std::fill_n(contacts.begin() + 2, kSeatContactGuards * system.active_count(), true);
+  std::array<double, SeatSystem::kGuards> at_start = system.guards(t, s, contacts);
+  at_start[0] = piece_end_.guards[0];
+  at_start[1] = piece_end_.guards[1];
+  const std::size_t watched = piece_end_.vertices.size() + piece_end_.points.size();
+  std::copy_n(piece_end_.guards.begin() + first_clearance, watched,
+              at_start.begin() + first_clearance);
+  return GuardWatch<SeatSystem::kGuards>(at_start, ode.live_guards());
+}
+
 bool SeatSimulation::holds_under(const MotionPiece& piece) {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
   // Where the mode holds, the next piece's advance starts here, in this mode, under this piece:
@@ -338,6 +375,8 @@ void SeatSimulation::place_at_start() {
 
 SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
   if (mode_.rest) return advance_rest(t_stop);
+  from_piece_end_ = system_ready_ && piece_end_ready_;
+  piece_end_ready_ = false;
   SeatSystem& moving = system_ready_ ? *system_ : build_system(piece);
   system_ready_ = false;
   const ModeKind kind = kind_of(mode_);

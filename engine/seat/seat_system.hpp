@@ -122,6 +122,8 @@ class SeatSystem {
   // The block vertices whose clearance is watched; vertex k of them has guard
   // kFirstClearanceGuard + k.
   const WatchedList& watched_vertices() const { return watched_vertices_; }
+  // The seat points whose clearance is watched, after the vertices.
+  const WatchedList& watched_points() const { return watched_points_; }
   double length_scale() const { return c_.geometry->size(); }
   double g() const { return c_.g; }
 
