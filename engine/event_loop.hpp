@@ -11,14 +11,16 @@
 //   void place_at_start();                 // state_ at t = 0
 //   void resolve_and_enter(const EventReport&);  // resolves the contact at t_, enters its mode
 //   EventReport advance(const MotionPiece&, double t_stop);  // the mode to an event or t_stop
-//   bool holds_under(const MotionPiece&) const;  // the mode goes on under the next piece
+//   bool holds_under(const MotionPiece&);  // the mode goes on under the next piece
 //   bool at_rest() const;                  // the block rests
 //   void observe(const BlockState&);       // a state the run passed through
 //   ContactForces forces_now() const;      // the contact forces at t_ (per unit mass)
 //   ModeKind mode_kind_now() const;
 //   void finish_summary();                 // the ground's own summary fields
 //   and, for integrate_with: refine_crossing, note_contact_violation, stepped and on_event (which
-//   returns the EventReport of a guard's crossing).
+//   returns the EventReport of a guard's crossing); optionally watch_at_piece_start (the guard
+//   watch at a stretch's start) and ended_piece (the guards at the end of a stretch that reached
+//   its piece's end, at state_).
 #pragma once
 
 #include <algorithm>
@@ -88,6 +90,9 @@ class EventLoop {
                       ModeKind kind);
   // integrate_with's steps: the stepper's work since it last counted, into the summary; the
   // first guard crossing in the step from (t0, q0) to (t, q), placed by the ground.
+  // The guard watch at a stretch's start: the ground's where it gives one (watch_at_piece_start).
+  template <class Ode>
+  GuardWatch<Ode::kGuards> watch_at_start(const Ode& ode, double t, const OdeState<Ode::N>& q);
   template <class Stepper>
   void count_stepper_work(Stepper& stepper, long& steps_counted, long& rhs_counted);
   template <class Ode, class Stepper, class StateAt, class Q, class Guards>
@@ -307,6 +312,17 @@ GuardWatch<Ode::kGuards> watch_guards(const Ode& ode, double t, const OdeState<O
 }
 
 template <class Ground>
+template <class Ode>
+GuardWatch<Ode::kGuards> EventLoop<Ground>::watch_at_start(const Ode& ode, double t,
+                                                           const OdeState<Ode::N>& q) {
+  if constexpr (requires { self().watch_at_piece_start(ode, t, q); }) {
+    return self().watch_at_piece_start(ode, t, q);
+  } else {
+    return watch_guards(ode, t, q);
+  }
+}
+
+template <class Ground>
 template <class Stepper>
 void EventLoop<Ground>::count_stepper_work(Stepper& stepper, long& steps_counted,
                                            long& rhs_counted) {
@@ -358,7 +374,7 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
   Ground& ground = self();
   auto q = ode.coordinates(state_);
   double t = t_;
-  GuardWatch<Ode::kGuards> watch = watch_guards(ode, t, q);
+  GuardWatch<Ode::kGuards> watch = watch_at_start(ode, t, q);
   const double cap = step_cap(piece);
   const auto forces_at = [&](double x) { return ode.forces(x, stepper.dense(x)); };
   const auto state_at = [&](double x) { return ode.full(x, stepper.dense(x)); };
@@ -401,6 +417,9 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const M
   }
   t_ = t_stop;
   state_ = ode.full(t, q);
+  if constexpr (requires { ground.ended_piece(ode, watch.values()); }) {
+    ground.ended_piece(ode, watch.values());
+  }
   return EventReport{};
 }
 

@@ -90,9 +90,12 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
 
   // The ground's part of the event loop (engine/event_loop.hpp).
   void place_at_start();
-  void resolve_and_enter(const EventReport& report) { enter(resolve(report), report); }
+  void resolve_and_enter(const EventReport& report) {
+    piece_end_ready_ = false;
+    enter(resolve(report), report);
+  }
   EventReport advance(const MotionPiece& piece, double t_stop);
-  bool holds_under(const MotionPiece& piece) const;
+  bool holds_under(const MotionPiece& piece);
   bool at_rest() const { return mode_.rest; }
   void observe(const BlockState& s);
   ContactForces forces_now() const;
@@ -111,6 +114,16 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   }
   template <class Ode>
   EventReport on_event(const Ode& ode, int which, double t_event, const BlockState& at_event);
+  // The guards at the end of a stretch that reached its piece's end, at state_, kept for the next
+  // piece's start where the mode holds.
+  template <class Ode>
+  void ended_piece(const Ode& ode, const std::array<double, SeatSystem::kGuards>& guards);
+  // The guard watch at an advance's start: where the mode held at the last piece's end and the
+  // block's pose there is the same, bit for bit, the guards of its pose alone (overturning,
+  // falling, the clearances) are the last piece's end values, and only the contacts' are found.
+  template <class Ode>
+  GuardWatch<SeatSystem::kGuards> watch_at_piece_start(const Ode& ode, double t,
+                                                       const OdeState<Ode::N>& q);
 
   double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
   // The settling speed now, in the gravity the block feels.
@@ -129,7 +142,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     return 0.5 * load_at(t_, s).inertia.twice_kinetic(velocity_of(s));
   }
   SeatSystemContext system_context(const MotionPiece& piece) const;
-  SeatSystem system(const MotionPiece& piece) const;
+  // The system of the current mode under `piece` at t_ and state_, built into system_.
+  SeatSystem& build_system(const MotionPiece& piece);
   // The system of the current mode for its contact forces alone, watching no vertex or point: what
   // a piece boundary asks of the mode, at each sample of a record.
   SeatSystem forces_system(const MotionPiece& piece) const {
@@ -215,8 +229,21 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     return it == anchors_.end() ? std::nullopt : std::optional<double>(it->second);
   }
   std::optional<PivotSweep> sweep_;  // the last built (sweep_for)
-  Vec2 origin_{0.0, 0.0};            // the charts' (engine/seat/seat_chart.hpp)
-  double deepest_ = 0.0;             // m: the block's largest penetration of the seat seen
+  // The last system built; ready: built by holds_under for the advance that follows it.
+  std::optional<SeatSystem> system_;
+  bool system_ready_ = false;
+  // The guards ended_piece kept, the pose they were found at and the watched vertices and points
+  // they were found for; ready: since the last advance's end, and read only by the advance after
+  // holds_under (from_piece_end_).
+  struct PieceEnd {
+    BlockState s;
+    std::array<double, SeatSystem::kGuards> guards;
+    WatchedList vertices, points;
+  };
+  PieceEnd piece_end_{};
+  bool piece_end_ready_ = false, from_piece_end_ = false;
+  Vec2 origin_{0.0, 0.0};  // the charts' (engine/seat/seat_chart.hpp)
+  double deepest_ = 0.0;   // m: the block's largest penetration of the seat seen
 };
 
 }  // namespace blockfrag

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <type_traits>
@@ -27,8 +29,7 @@ SeatSystemContext SeatSimulation::system_context(const MotionPiece& piece) const
           kFallDepth * R_, external_};
 }
 
-SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
-  const SeatSystemContext context = system_context(piece);
+SeatSystem& SeatSimulation::build_system(const MotionPiece& piece) {
   // Vertices and points in an active contact are not watched for touching: they touch.
   WatchedList vertices, points;
   const double near = kSeatContactDrift * R_;
@@ -52,7 +53,7 @@ SeatSystem SeatSimulation::system(const MotionPiece& piece) const {
     });
     if (!active) points.push_back(k);
   }
-  return SeatSystem(context, mode_.active, vertices, points);
+  return system_.emplace(system_context(piece), mode_.active, vertices, points);
 }
 
 // The chart of the active contacts (engine/seat/seat_chart.hpp). Contacts of block vertices on
@@ -308,9 +309,47 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
   return report;
 }
 
-bool SeatSimulation::holds_under(const MotionPiece& piece) const {
+template <class Ode>
+void SeatSimulation::ended_piece(const Ode& ode,
+                                 const std::array<double, SeatSystem::kGuards>& guards) {
+  piece_end_ = {state_, guards, ode.system().watched_vertices(), ode.system().watched_points()};
+  piece_end_ready_ = true;
+}
+
+template <class Ode>
+GuardWatch<SeatSystem::kGuards> SeatSimulation::watch_at_piece_start(const Ode& ode, double t,
+                                                                     const OdeState<Ode::N>& q) {
+  const bool from_end = from_piece_end_;
+  from_piece_end_ = false;
+  if (!from_end) return watch_guards(ode, t, q);
+  SeatSystem& system = ode.system();
+  const BlockState s = ode.full(t, q);
+  const bool same_pose =
+      std::bit_cast<std::uint64_t>(s.x) == std::bit_cast<std::uint64_t>(piece_end_.s.x) &&
+      std::bit_cast<std::uint64_t>(s.y) == std::bit_cast<std::uint64_t>(piece_end_.s.y) &&
+      std::bit_cast<std::uint64_t>(s.theta) == std::bit_cast<std::uint64_t>(piece_end_.s.theta);
+  if (!same_pose || !(system.watched_vertices() == piece_end_.vertices) ||
+      !(system.watched_points() == piece_end_.points)) {
+    return watch_guards(ode, t, q);
+  }
+  GuardClaims contacts{};
+  const auto first_clearance = static_cast<std::size_t>(kFirstClearanceGuard);
+  std::fill_n(contacts.begin() + 2, kSeatContactGuards * system.active_count(), true);
+  std::array<double, SeatSystem::kGuards> at_start = system.guards(t, s, contacts);
+  at_start[0] = piece_end_.guards[0];
+  at_start[1] = piece_end_.guards[1];
+  const std::size_t watched = piece_end_.vertices.size() + piece_end_.points.size();
+  std::copy_n(piece_end_.guards.begin() + first_clearance, watched,
+              at_start.begin() + first_clearance);
+  return GuardWatch<SeatSystem::kGuards>(at_start, ode.live_guards());
+}
+
+bool SeatSimulation::holds_under(const MotionPiece& piece) {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
-  return forces_system(piece).contacts_hold(t_, state_);
+  // Where the mode holds, the next piece's advance starts here, in this mode, under this piece:
+  // the system that found it holding is that advance's.
+  system_ready_ = build_system(piece).contacts_hold(t_, state_);
+  return system_ready_;
 }
 
 void SeatSimulation::place_at_start() {
@@ -336,7 +375,10 @@ void SeatSimulation::place_at_start() {
 
 SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
   if (mode_.rest) return advance_rest(t_stop);
-  SeatSystem moving = system(piece);
+  from_piece_end_ = system_ready_ && piece_end_ready_;
+  piece_end_ready_ = false;
+  SeatSystem& moving = system_ready_ ? *system_ : build_system(piece);
+  system_ready_ = false;
   const ModeKind kind = kind_of(mode_);
   EventReport report;
   const auto integrate = [&](const auto& ode) {

@@ -18,6 +18,14 @@ std::array<std::uint64_t, 3> pose_bits(const BlockState& s) {
           std::bit_cast<std::uint64_t>(s.theta)};
 }
 
+// Whether s's place and tilt are `bits`, compared word by word: array's != calls memcmp, whose
+// cost for 24 bytes depends on where they lie (a step's end, at every step).
+bool has_pose_bits(const BlockState& s, const std::array<std::uint64_t, 3>& bits) {
+  return std::bit_cast<std::uint64_t>(s.x) == bits[0] &&
+         std::bit_cast<std::uint64_t>(s.y) == bits[1] &&
+         std::bit_cast<std::uint64_t>(s.theta) == bits[2];
+}
+
 // Every guard at 1, an unused slot's value. Unrolled, the fill is one store per two slots: a
 // loop's, or a copy of a constant array (a string copy, one instruction per slot), cost twice
 // that or more (a rocking block's guards, at every step).
@@ -38,9 +46,17 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
       watched_points_(watched_points) {
   count_ = static_cast<int>(active.size());
   std::copy(active.begin(), active.end(), active_.begin());
-  events_.fill(SeatEvent::none);
-  events_[0] = SeatEvent::overturns;
-  events_[1] = SeatEvent::falls;
+  // Only the used slots are set (events_ starts at none): a record builds a system at each of its
+  // samples, and passes over all 64 slots were a third of a construction.
+  unused_.fill(true);
+  live_.fill(false);
+  const auto use = [&](std::size_t slot, SeatEvent event) {
+    events_[slot] = event;
+    unused_[slot] = false;
+    live_[slot] = true;
+  };
+  use(0, SeatEvent::overturns);
+  use(1, SeatEvent::falls);
   for (int i = 0; i < count_; ++i) {
     const ActiveContact& a = active_[static_cast<std::size_t>(i)];
     states_[static_cast<std::size_t>(i)] = a.state;
@@ -50,28 +66,20 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
           c_.contacts->pose(a.pair, BlockState{}).contact.normal;
     }
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
-    events_[base] = SeatEvent::lift_off;
-    events_[base + 1] = active_[static_cast<std::size_t>(i)].state == ContactState::stick
-                            ? SeatEvent::friction_limit
-                            : SeatEvent::slip_stops;
+    use(base, SeatEvent::lift_off);
+    use(base + 1,
+        a.state == ContactState::stick ? SeatEvent::friction_limit : SeatEvent::slip_stops);
     // A sticking contact's point does not move along its segment or edge (the type B block
     // rocking on its toe sticks at the seat's end): only slipping ones can leave it.
-    if (active_[static_cast<std::size_t>(i)].state != ContactState::stick) {
-      events_[base + 2] = SeatEvent::leaves_end;
-      events_[base + 3] = SeatEvent::leaves_end;
+    if (a.state != ContactState::stick) {
+      use(base + 2, SeatEvent::leaves_end);
+      use(base + 3, SeatEvent::leaves_end);
     }
   }
   const std::size_t watched = watched_vertices_.size() + watched_points_.size();
   for (std::size_t i = 0; i < watched; ++i) {
-    events_[static_cast<std::size_t>(kFirstClearanceGuard) + i] = SeatEvent::touches;
+    use(static_cast<std::size_t>(kFirstClearanceGuard) + i, SeatEvent::touches);
   }
-  for (std::size_t i = 0; i < unused_.size(); ++i) unused_[i] = events_[i] == SeatEvent::none;
-}
-
-GuardClaims SeatSystem::live_guards() const {
-  GuardClaims live{};
-  for (std::size_t i = 0; i < live.size(); ++i) live[i] = !unused_[i];
-  return live;
 }
 
 SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {
@@ -258,7 +266,7 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
 }
 
 double SeatSystem::penetration(const BlockState& s) const {
-  if (!turned_.set || turned_.pose != pose_bits(s)) return c_.contacts->penetration(s);
+  if (!turned_.set || !has_pose_bits(s, turned_.pose)) return c_.contacts->penetration(s);
   const auto n = static_cast<std::size_t>(c_.contacts->vertex_count());
   return c_.contacts->penetration(std::span<const Vec2>(turned_.world).first(n));
 }

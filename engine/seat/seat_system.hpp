@@ -110,7 +110,7 @@ class SeatSystem {
   std::optional<double> pivot_turning(double t, const BlockState& s, Vec2 r);
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
   // The guards whose slot is used (the others are 1 throughout).
-  GuardClaims live_guards() const;
+  GuardClaims live_guards() const { return live_; }
   // The seat point a touching guard watches, or -1 (a block vertex's guard, or another guard).
   int watched_point(int guard) const {
     const int k = guard - kFirstClearanceGuard - static_cast<int>(watched_vertices_.size());
@@ -122,6 +122,8 @@ class SeatSystem {
   // The block vertices whose clearance is watched; vertex k of them has guard
   // kFirstClearanceGuard + k.
   const WatchedList& watched_vertices() const { return watched_vertices_; }
+  // The seat points whose clearance is watched, after the vertices.
+  const WatchedList& watched_points() const { return watched_points_; }
   double length_scale() const { return c_.geometry->size(); }
   double g() const { return c_.g; }
 
@@ -226,7 +228,7 @@ class SeatSystem {
   int count_ = 0;
   WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
-  GuardClaims unused_{};
+  GuardClaims unused_, live_;  // live_: the used slots, each unused_'s negation
   // The last forces solved, and the time and state they were solved at.
   struct Solved {
     double t = std::numeric_limits<double>::quiet_NaN();
