@@ -19,6 +19,20 @@ inline const GuardClaims kEveryGuard = [] {
   return every;
 }();
 
+// The contact sets the seat system's tests go through on the type B seat: one contact sticking,
+// slipping either way (a block vertex and a seat point), two sticking, two slipping, and one
+// sticking with a seat point slipping.
+inline std::vector<std::vector<ActiveContact>> type_b_contact_sets() {
+  const SeatPair heel{ContactKind::block_vertex, 0, 0}, fold{ContactKind::block_vertex, 1, 0};
+  const SeatPair toe{ContactKind::block_vertex, 2, 1}, point{ContactKind::seat_point, 1, 0};
+  return {{{toe, ContactState::stick}},
+          {{heel, ContactState::slip_negative}},
+          {{point, ContactState::slip_positive}},
+          {{heel, ContactState::stick}, {fold, ContactState::stick}},
+          {{heel, ContactState::slip_positive}, {fold, ContactState::slip_positive}},
+          {{heel, ContactState::stick}, {point, ContactState::slip_negative}}};
+}
+
 // Not to be copied: its context points into it.
 struct TypeBSeat {
   SeatContacts contacts{kTypeB, kTypeBSeat};

@@ -13,7 +13,7 @@
 #include "engine/seat/seated_load.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/same_bits.hpp"
-#include "tests/support/type_b_block.hpp"
+#include "tests/support/type_b_seat_system.hpp"
 
 namespace blockfrag {
 namespace {
@@ -61,15 +61,7 @@ TEST(SeatContactGuards, AreThoseOfTheContactsPoseGivesToTheBit) {
   const double g = 9.81, mu = 0.7;
   const SeatSystemContext context{
       &contacts, &geometry, &ground, &still, g, mu, 0.5 * geometry.size()};
-  const SeatPair heel{ContactKind::block_vertex, 0, 0}, fold{ContactKind::block_vertex, 1, 0};
-  const SeatPair toe{ContactKind::block_vertex, 2, 1}, point{ContactKind::seat_point, 1, 0};
-  const std::vector<std::vector<ActiveContact>> sets = {
-      {{toe, ContactState::stick}},
-      {{heel, ContactState::slip_negative}},
-      {{point, ContactState::slip_positive}},
-      {{heel, ContactState::stick}, {fold, ContactState::stick}},
-      {{heel, ContactState::slip_positive}, {fold, ContactState::slip_positive}},
-      {{heel, ContactState::stick}, {point, ContactState::slip_negative}}};
+  const std::vector<std::vector<ActiveContact>> sets = testing::type_b_contact_sets();
   const double velocity_scale = std::sqrt(g * geometry.size());
   testing::FixedUniforms u(4601);
   int compared = 0;

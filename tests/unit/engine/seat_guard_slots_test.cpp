@@ -37,16 +37,8 @@ std::array<SeatEvent, kSeatGuards> layout_events(const std::vector<ActiveContact
 
 TEST(SeatGuardSlots, EventsLiveAndUnusedGuardsFollowTheLayout) {
   const testing::TypeBSeat seat;
-  const SeatPair heel{ContactKind::block_vertex, 0, 0}, fold{ContactKind::block_vertex, 1, 0};
-  const SeatPair toe{ContactKind::block_vertex, 2, 1}, point{ContactKind::seat_point, 1, 0};
-  const std::vector<std::vector<ActiveContact>> sets = {
-      {},
-      {{toe, ContactState::stick}},
-      {{heel, ContactState::slip_negative}},
-      {{point, ContactState::slip_positive}},
-      {{heel, ContactState::stick}, {fold, ContactState::stick}},
-      {{heel, ContactState::slip_positive}, {fold, ContactState::slip_positive}},
-      {{heel, ContactState::stick}, {point, ContactState::slip_negative}}};
+  std::vector<std::vector<ActiveContact>> sets = testing::type_b_contact_sets();
+  sets.insert(sets.begin(), std::vector<ActiveContact>{});
   const std::vector<std::pair<WatchedList, WatchedList>> watched = {
       {{}, {}}, {{0, 3, 4, 5}, {}}, {{}, {1}}, {{2, 3, 4, 5}, {0, 1, 2}}};
   int slots = 0;

@@ -13,7 +13,7 @@
 #include "engine/seat/seat_system.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/same_bits.hpp"
-#include "tests/support/type_b_block.hpp"
+#include "tests/support/type_b_seat_system.hpp"
 
 namespace blockfrag {
 namespace {
@@ -27,15 +27,7 @@ TEST(SeatHeldSystem, GivesAfterItsContactCheckWhatAFreshSystemGives) {
   const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
   const SeatSystemContext context{
       &contacts, &geometry, &ground, &still, 9.81, 0.7, 0.5 * geometry.size()};
-  const SeatPair heel{ContactKind::block_vertex, 0, 0}, fold{ContactKind::block_vertex, 1, 0};
-  const SeatPair toe{ContactKind::block_vertex, 2, 1}, point{ContactKind::seat_point, 1, 0};
-  const std::vector<std::vector<ActiveContact>> sets = {
-      {{toe, ContactState::stick}},
-      {{heel, ContactState::slip_negative}},
-      {{point, ContactState::slip_positive}},
-      {{heel, ContactState::stick}, {fold, ContactState::stick}},
-      {{heel, ContactState::slip_positive}, {fold, ContactState::slip_positive}},
-      {{heel, ContactState::stick}, {point, ContactState::slip_negative}}};
+  const std::vector<std::vector<ActiveContact>> sets = testing::type_b_contact_sets();
   const WatchedList vertices{3, 4, 5}, points{0};
   testing::FixedUniforms u(4721);
   int compared = 0;
