@@ -27,6 +27,8 @@ namespace blockfrag {
 
 class HullWatch {
  public:
+  // Without a block: watches every vertex (a seat of more segments, which never asks).
+  HullWatch() = default;
   // `body`: the block's vertices, counter-clockwise, in any frame.
   explicit HullWatch(std::span<const Vec2> body)
       : body_(body.begin(), body.end()), hull_(hull_indices(body_)), place_(body_.size(), -1) {
@@ -92,7 +94,7 @@ inline bool HullWatch::near_line(int v, int from, int to) const {
 }
 
 inline std::optional<WatchedList> HullWatch::watched(std::span<const int> carrying) const {
-  if (carrying.empty() || carrying.size() > 2) return std::nullopt;
+  if (hull_.empty() || carrying.empty() || carrying.size() > 2) return std::nullopt;
   const auto n = static_cast<int>(hull_.size());
   const auto place = [&](int i) { return place_[static_cast<std::size_t>(i)]; };
   const auto hull_at = [&](int k) { return hull_[static_cast<std::size_t>((k + n) % n)]; };

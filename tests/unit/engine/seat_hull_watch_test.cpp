@@ -105,6 +105,7 @@ TEST(HullWatch, WatchesOnlyTheHullNeighboursOfTheChain) {
   EXPECT_FALSE(watch.watched(std::vector<int>{2}).has_value());
   EXPECT_FALSE(watch.watched(std::vector<int>{0, 3}).has_value());
   EXPECT_FALSE(watch.watched(std::vector<int>{}).has_value());
+  EXPECT_FALSE(HullWatch().watched(std::vector<int>{1}).has_value());
 }
 
 TEST(HullWatch, WatchesTheVerticesOnTheHullEdgesAtThePivot) {
