@@ -98,6 +98,12 @@ inline constexpr double kCollinearSine = 1e-12;
 // less than this (times that direction's length) are equally near it: a tilt of the block by about
 // this much (rad) would swap them.
 inline constexpr double kEdgeNormalTie = 1e-6;
+// A block vertex whose direction from a vertex carrying the block on a line is within this sine of
+// a hull edge's there (or of the carrying chain's) is watched for touching although that edge's far
+// end is (engine/seat/hull_watch.hpp): on that edge (a non-convex block's vertex there) or nearly,
+// it touches at the instant the far end does, or within the carrying contacts' drift
+// (kSeatContactDrift) of it, and rounding would choose which of the two a step finds first.
+inline constexpr double kHullEdgeSine = 1e-3;
 // A seat point's rates along the two block edges at a vertex, below this fraction of the sum of the
 // contact velocities there, are the velocities' rounding: they say nothing about where it goes.
 inline constexpr double kSeatPointRateRounding = 1e-9;

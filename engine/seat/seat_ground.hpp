@@ -21,6 +21,7 @@
 #include "engine/contact/settling.hpp"
 #include "engine/event_loop.hpp"
 #include "engine/scene/seat.hpp"
+#include "engine/seat/hull_watch.hpp"
 #include "engine/seat/seat_chart.hpp"
 #include "engine/seat/seat_system.hpp"
 
@@ -63,6 +64,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
       : EventLoop(scene, output_interval),
         external_(external),
         contacts_(scene_block_vertices(scene), scene.seat->points),
+        hull_watch_(contacts_.point_count() == 2 ? HullWatch(body_vertices(contacts_))
+                                                 : HullWatch()),
         R_(geometry_.size()),
         velocity_tol_(resting_speed(scene.g, R_)) {
     summary_.model = std::holds_alternative<NoMotion>(scene.vertical_motion) ? Model::full
@@ -218,6 +221,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
 
   const ExternalLoad* external_;
   SeatContacts contacts_;
+  HullWatch hull_watch_;  // the block's hull on a one-segment seat, which alone asks for it
   double R_, velocity_tol_;
   SeatMode mode_;
   // Where each block vertex that sticks on a seat segment stuck (its place along the segment, m),

@@ -16,6 +16,7 @@
 #include "engine/integrate/with_stepper.hpp"
 #include "engine/scene/seat.hpp"
 #include "engine/seat/closed_form_flight.hpp"
+#include "engine/seat/hull_watch.hpp"
 #include "engine/seat/seat_ground.hpp"
 #include "engine/sine_cosine.hpp"
 #include "engine/tolerances.hpp"
@@ -31,14 +32,9 @@ SeatSystemContext SeatSimulation::system_context(const MotionPiece& piece) const
 
 SeatSystem& SeatSimulation::build_system(const MotionPiece& piece) {
   // Vertices and points in an active contact are not watched for touching: they touch.
-  WatchedList vertices, points;
+  const WatchedList vertices = watched_block_vertices(contacts_, hull_watch_, mode_.active);
+  WatchedList points;
   const double near = kSeatContactDrift * R_;
-  for (int i = 0; i < contacts_.vertex_count(); ++i) {
-    const bool active = std::any_of(mode_.active.begin(), mode_.active.end(), [&](const auto& a) {
-      return a.pair.kind == ContactKind::block_vertex && a.pair.block == i;
-    });
-    if (!active) vertices.push_back(i);
-  }
   for (int k = 0; k < contacts_.point_count(); ++k) {
     if (!contacts_.touches_edges(k)) continue;
     const Vec2 p = contacts_.seat_point(k);
