@@ -60,10 +60,10 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   for (int i = 0; i < count_; ++i) {
     const ActiveContact& a = active_[static_cast<std::size_t>(i)];
     states_[static_cast<std::size_t>(i)] = a.state;
-    // A block vertex's contact normal is its segment's at any pose.
+    // A block vertex's contact normal is its segment's at any pose: a record builds a system at
+    // each of its samples, and posing the vertex for it was a fifth of a construction.
     if (a.pair.kind == ContactKind::block_vertex) {
-      normals_[static_cast<std::size_t>(i)] =
-          c_.contacts->pose(a.pair, BlockState{}).contact.normal;
+      normals_[static_cast<std::size_t>(i)] = c_.contacts->segment_normal(a.pair.seat);
     }
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
     use(base, SeatEvent::lift_off);
