@@ -237,7 +237,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   // holds_under (from_piece_end_).
   struct PieceEnd {
     BlockState s;
-    std::array<double, SeatSystem::kGuards> guards;
+    std::array<double, SeatSystem::kGuards> guards;  // the pose's alone: 0, 1, the clearances
     WatchedList vertices, points;
   };
   PieceEnd piece_end_{};

@@ -312,7 +312,18 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
 template <class Ode>
 void SeatSimulation::ended_piece(const Ode& ode,
                                  const std::array<double, SeatSystem::kGuards>& guards) {
-  piece_end_ = {state_, guards, ode.system().watched_vertices(), ode.system().watched_points()};
+  // Only the guards watch_at_piece_start takes are kept: copying all 64 slots at each piece was
+  // most of keeping them.
+  const SeatSystem& system = ode.system();
+  piece_end_.s = state_;
+  piece_end_.vertices = system.watched_vertices();
+  piece_end_.points = system.watched_points();
+  piece_end_.guards[0] = guards[0];
+  piece_end_.guards[1] = guards[1];
+  const auto first_clearance = static_cast<std::size_t>(kFirstClearanceGuard);
+  std::copy_n(guards.begin() + first_clearance,
+              piece_end_.vertices.size() + piece_end_.points.size(),
+              piece_end_.guards.begin() + first_clearance);
   piece_end_ready_ = true;
 }
 
