@@ -90,13 +90,24 @@ bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
 // The block turns about the chart's point p: a vertex w from the pivot (body frame) is at
 // p + Rot(theta) w, and its height over a line of slope m through a is a sinusoid of theta. Seen
 // from the block, a seat point s moves on a circle about the pivot, at body + Rot(-theta) (s - p).
-PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
-    : system_(&system),
-      contacts_(system.c_.contacts),
-      chart_(chart),
-      watched_vertices_(system.watched_vertices_),
-      watched_points_(system.watched_points_),
-      centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
+PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart) : chart_(chart) {
+  reset(system, chart);
+}
+
+// Its storage is kept: a record's pieces turn on a new pivot often (its place found anew from the
+// state at each), and allocating the sweep's blocks anew was a sixth of setting it up.
+void PivotSweep::reset(const SeatSystem& system, const PivotChart& chart) {
+  system_ = &system;
+  contacts_ = system.c_.contacts;
+  chart_ = chart;
+  watched_vertices_ = system.watched_vertices_;
+  watched_points_ = system.watched_points_;
+  centre_x_ = {chart.point.x, -chart.body.x, chart.body.y};
+  last_end_ = 0;
+  last_end_turn_ = {0.0, 1.0};
+  vertices_.clear();
+  points_.clear();
+  sinusoids_.clear();
   const SeatContacts& seat = *system.c_.contacts;
   const Vec2 p = chart.point, body = chart.body;
   segment_count_ = static_cast<std::size_t>(seat.point_count() - 1);

@@ -419,10 +419,12 @@ SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, do
 }
 
 PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart& chart) {
-  if (sweep_ && sweep_->serves(system, chart)) {
+  if (!sweep_) {
+    sweep_.emplace(system, chart);
+  } else if (sweep_->serves(system, chart)) {
     sweep_->rebind(system);
   } else {
-    sweep_.emplace(system, chart);
+    sweep_->reset(system, chart);
   }
   return *sweep_;
 }

@@ -269,6 +269,8 @@ class PivotSweep {
   bool serves(const SeatSystem& system, const PivotChart& chart) const;
   // The claims then read `system` (its active contacts, the guards it uses).
   void rebind(const SeatSystem& system) { system_ = &system; }
+  // The sweep of `system` turning on `chart`, as PivotSweep(system, chart) sets it up.
+  void reset(const SeatSystem& system, const PivotChart& chart);
 
  private:
   // The sinusoids of a vertex or point lie in sinusoids_ from `first` on: one block for all, built
@@ -298,8 +300,8 @@ class PivotSweep {
   // sine_cosine(theta): the last step's end is the next one's start.
   SineCosine turn_at(double theta) const;
 
-  const SeatSystem* system_;  // rebound to each piece's system; the rest serves them all
-  const SeatContacts* contacts_;
+  const SeatSystem* system_ = nullptr;  // rebound to each piece's system; the rest serves them all
+  const SeatContacts* contacts_ = nullptr;
   PivotChart chart_;
   WatchedList watched_vertices_, watched_points_;
   Sinusoid centre_x_;
