@@ -301,10 +301,13 @@ struct Overloads : Calls... {
 template <class... Calls>
 Overloads(Calls...) -> Overloads<Calls...>;
 
-// A system that leaves some of its guard slots unused names the others (live_guards()).
+// A system that leaves some of its guard slots unused names the others (live_slots(), in order,
+// or live_guards()).
 template <class Ode>
 GuardWatch<Ode::kGuards> watch_guards(const Ode& ode, double t, const OdeState<Ode::N>& q) {
-  if constexpr (requires { ode.live_guards(); }) {
+  if constexpr (requires { ode.live_slots(); }) {
+    return GuardWatch<Ode::kGuards>(ode.guards(t, q), ode.live_slots());
+  } else if constexpr (requires { ode.live_guards(); }) {
     return GuardWatch<Ode::kGuards>(ode.guards(t, q), ode.live_guards());
   } else {
     return GuardWatch<Ode::kGuards>(ode.guards(t, q));

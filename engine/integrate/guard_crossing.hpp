@@ -75,16 +75,14 @@ class GuardWatch {
   // positive throughout and never cross.
   GuardWatch(const std::array<double, G>& at_start, const std::array<bool, G>& live)
       : value_(at_start), live_count_(set_indices(live, live_)) {
-    // Only the live guards' entries are set, and only theirs are read: a watch is set up at every
-    // motion piece (a record's every sample), most of a seat's 64 guard slots unused.
-    for (const int i : this->live()) {
-      armed_[i] = at_start[i] > kArmingMargin;
-      // A start below -kArmingMargin (an unarmed guard's event leaves it there) must go lower
-      // still to fire: fired at once (its value at the start already past the margin), a corner
-      // rising at 3e-7 m/s that gravity brings back within 6e-8 s started flight after flight
-      // 1e-15 s apart.
-      unarmed_offset_[i] = std::max(kArmingMargin, -at_start[i] * (1 + kUnarmedFurtherDrop));
-    }
+    arm_live();
+  }
+  // The same with the live guards named by their indices, in increasing order (a seat's system
+  // lists them as it lays its slots out).
+  GuardWatch(const std::array<double, G>& at_start, std::span<const int> live)
+      : value_(at_start), live_count_(static_cast<int>(live.size())) {
+    std::copy(live.begin(), live.end(), live_.begin());
+    arm_live();
   }
 
   struct Crossing {
@@ -148,6 +146,18 @@ class GuardWatch {
   }
   std::span<const int> live() const {
     return std::span(live_).first(static_cast<std::size_t>(live_count_));
+  }
+  // Only the live guards' entries are set, and only theirs are read: a watch is set up at every
+  // motion piece (a record's every sample), most of a seat's 64 guard slots unused.
+  void arm_live() {
+    for (const int i : live()) {
+      armed_[i] = value_[i] > kArmingMargin;
+      // A start below -kArmingMargin (an unarmed guard's event leaves it there) must go lower
+      // still to fire: fired at once (its value at the start already past the margin), a corner
+      // rising at 3e-7 m/s that gravity brings back within 6e-8 s started flight after flight
+      // 1e-15 s apart.
+      unarmed_offset_[i] = std::max(kArmingMargin, -value_[i] * (1 + kUnarmedFurtherDrop));
+    }
   }
 
   // A step's look at its live guards: each one's bracket [a, b] of its last sample above zero and

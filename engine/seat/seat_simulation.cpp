@@ -352,7 +352,7 @@ GuardWatch<SeatSystem::kGuards> SeatSimulation::watch_at_piece_start(const Ode& 
   const std::size_t watched = piece_end_.vertices.size() + piece_end_.points.size();
   std::copy_n(piece_end_.guards.begin() + first_clearance, watched,
               at_start.begin() + first_clearance);
-  return GuardWatch<SeatSystem::kGuards>(at_start, ode.live_guards());
+  return GuardWatch<SeatSystem::kGuards>(at_start, ode.live_slots());
 }
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) {

@@ -50,10 +50,12 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   // samples, and passes over all 64 slots were a third of a construction.
   unused_.fill(true);
   live_.fill(false);
+  // The slots are used in increasing order.
   const auto use = [&](std::size_t slot, SeatEvent event) {
     events_[slot] = event;
     unused_[slot] = false;
     live_[slot] = true;
+    live_slots_[static_cast<std::size_t>(live_count_++)] = static_cast<int>(slot);
   };
   use(0, SeatEvent::overturns);
   use(1, SeatEvent::falls);

@@ -111,6 +111,10 @@ class SeatSystem {
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
   // The guards whose slot is used (the others are 1 throughout).
   GuardClaims live_guards() const { return live_; }
+  // The same as their slots, in order: a guard watch takes them at each motion piece.
+  std::span<const int> live_slots() const {
+    return std::span(live_slots_).first(static_cast<std::size_t>(live_count_));
+  }
   // The seat point a touching guard watches, or -1 (a block vertex's guard, or another guard).
   int watched_point(int guard) const {
     const int k = guard - kFirstClearanceGuard - static_cast<int>(watched_vertices_.size());
@@ -228,7 +232,9 @@ class SeatSystem {
   int count_ = 0;
   WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
-  GuardClaims unused_, live_;  // live_: the used slots, each unused_'s negation
+  GuardClaims unused_, live_;            // live_: the used slots, each unused_'s negation
+  std::array<int, kGuards> live_slots_;  // the used slots in order, the first live_count_
+  int live_count_ = 0;
   // The last forces solved, and the time and state they were solved at.
   struct Solved {
     double t = std::numeric_limits<double>::quiet_NaN();
@@ -357,6 +363,7 @@ class SeatOde {
     return system_->guards(t, chart_.full(t, q), wanted);
   }
   GuardClaims live_guards() const { return system_->live_guards(); }
+  std::span<const int> live_slots() const { return system_->live_slots(); }
   SeatEvent event(int guard) const { return system_->event(guard); }
   BlockState full(double t, const OdeState<N>& q) const { return chart_.full(t, q); }
   ContactForces forces(double t, const OdeState<N>& q) const {
