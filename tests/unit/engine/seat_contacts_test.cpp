@@ -123,5 +123,27 @@ TEST(SeatContacts, ASegmentsNormalIsItsBlockVertexContactsNormalAtAnyPose) {
   }
 }
 
+// A segment's line is its unit direction from its first point to its next, the normal to its left
+// and the normal's offset, as found from its points, to the bit.
+TEST(SeatContacts, ASegmentsLineIsTheOneItsPointsMake) {
+  const std::vector<std::array<double, 2>> valley = {{-3.0, 1.2}, {-1.1, 0.3}, {0.0, 0.0},
+                                                     {2.7, 0.4},  {4.4, 2.9},  {6.0, 2.95}};
+  for (const auto& seat : {kTypeBSeat, valley}) {
+    const SeatContacts contacts(kTypeB, seat);
+    for (int k = 0; k + 1 < contacts.point_count(); ++k) {
+      const Vec2 a = contacts.seat_point(k), b = contacts.seat_point(k + 1);
+      const Vec2 d{b.x - a.x, b.y - a.y};
+      const double length = std::sqrt(d.x * d.x + d.y * d.y);
+      const Vec2 u{d.x / length, d.y / length};
+      const SeatLine line = contacts.segment_line(k);
+      EXPECT_EQ(line.direction.x, u.x) << k;
+      EXPECT_EQ(line.direction.y, u.y) << k;
+      EXPECT_EQ(line.normal.x, -u.y) << k;
+      EXPECT_EQ(line.normal.y, u.x) << k;
+      EXPECT_EQ(line.offset, -u.y * a.x + u.x * a.y) << k;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace blockfrag
