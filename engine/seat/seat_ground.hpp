@@ -144,6 +144,10 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   SeatSystemContext system_context(const MotionPiece& piece) const;
   // The system of the current mode under `piece` at t_ and state_, built into system_.
   SeatSystem& build_system(const MotionPiece& piece);
+  // SeatSystem(context, mode_.active, vertices, points) in system_: the last system started on the
+  // piece where it lays its guards out so.
+  SeatSystem& system_for(const SeatSystemContext& context, const WatchedList& vertices,
+                         const WatchedList& points);
   // The system of the current mode for its contact forces alone, watching no vertex or point: what
   // a piece boundary asks of the mode, at each sample of a record.
   SeatSystem forces_system(const MotionPiece& piece) const {

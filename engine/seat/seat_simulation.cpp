@@ -53,7 +53,16 @@ SeatSystem& SeatSimulation::build_system(const MotionPiece& piece) {
     });
     if (!active) points.push_back(k);
   }
-  return system_.emplace(system_context(piece), mode_.active, vertices, points);
+  return system_for(system_context(piece), vertices, points);
+}
+
+SeatSystem& SeatSimulation::system_for(const SeatSystemContext& context,
+                                       const WatchedList& vertices, const WatchedList& points) {
+  if (system_ && system_->lays_out(context, mode_.active, vertices, points)) {
+    system_->start_piece(context);
+    return *system_;
+  }
+  return system_.emplace(context, mode_.active, vertices, points);
 }
 
 // The chart of the active contacts (engine/seat/seat_chart.hpp). Contacts of block vertices on

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <span>
 
 #include "engine/seat/seated_load.hpp"
@@ -82,6 +83,24 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   for (std::size_t i = 0; i < watched; ++i) {
     use(static_cast<std::size_t>(kFirstClearanceGuard) + i, SeatEvent::touches);
   }
+}
+
+bool SeatSystem::lays_out(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
+                          const WatchedList& watched_vertices,
+                          const WatchedList& watched_points) const {
+  if (c.contacts != c_.contacts || active.size() != static_cast<std::size_t>(count_)) return false;
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    if (!(active[i].pair == active_[i].pair) || active[i].state != active_[i].state) return false;
+  }
+  return watched_vertices == watched_vertices_ && watched_points == watched_points_;
+}
+
+void SeatSystem::start_piece(const SeatSystemContext& c) {
+  c_ = c;
+  vertical_still_ = c.vertical->is_zero();
+  last_solve_.t = std::numeric_limits<double>::quiet_NaN();
+  last_lifted_.t = std::numeric_limits<double>::quiet_NaN();
+  turned_.set = false;
 }
 
 SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {

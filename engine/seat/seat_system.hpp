@@ -83,6 +83,16 @@ class SeatSystem {
   SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
              const WatchedList& watched_vertices, const WatchedList& watched_points);
 
+  // Whether a system built from these would lay its guards out as this one does: the same seat,
+  // active contacts (in order, in the same states) and watched vertices and points.
+  bool lays_out(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
+                const WatchedList& watched_vertices, const WatchedList& watched_points) const;
+  // This system under the context c (another motion piece), as a system built anew there: whatever
+  // it remembered of the last forces solved or loads found is forgotten. Where lays_out(c, ...)
+  // holds, it is then SeatSystem(c, ...): a record builds a system at each of its samples, most
+  // of them laid out as the last.
+  void start_piece(const SeatSystemContext& c);
+
   // Not const: each remembers the last forces solved (a step's end is asked for by its guards, by
   // the next step's first stage and by the checks of its forces).
   std::array<double, kGuards> guards(double t, const BlockState& s);

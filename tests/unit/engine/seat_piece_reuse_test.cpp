@@ -1,5 +1,6 @@
 // What a record's motion pieces reuse from the piece before (engine/seat/watched_list.hpp,
-// engine/seat/seat_ends.cpp): each is checked against what building it anew gives.
+// engine/seat/seat_ends.cpp, SeatSystem::start_piece): each is checked against what building it
+// anew gives.
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "engine/seat/seat_system.hpp"
 #include "engine/seat/watched_list.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/type_b_seat_system.hpp"
 
 namespace blockfrag {
@@ -91,6 +93,72 @@ TEST(SeatPieceReuse, ASweepSetUpAgainClaimsWhatANewOneClaims) {
     }
   }
   EXPECT_GT(claimed, 400 * 6 * kSeatGuards / 2);
+}
+
+// The guards, the forces, whether the contacts hold, a pivot's turning and the penetration of a
+// system started on a new piece are a new system's there, to the bit: at the time and state the
+// last piece's system was last asked about too, where the pieces' ground motions differ.
+TEST(SeatPieceReuse, ASystemStartedOnANewPieceIsTheOneBuiltThere) {
+  const testing::TypeBSeat seat;
+  const MotionPiece ending{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
+  const MotionPiece starting{{MotionPiece::Shape::cosine, -0.3, 0.9}, 0.0, 1e3};
+  SeatSystemContext before = seat.context, after = seat.context;
+  before.piece = &ending;
+  after.piece = &starting;
+  std::vector<std::vector<ActiveContact>> sets = testing::type_b_contact_sets();
+  sets.push_back({});
+  const WatchedList vertices{3, 4, 5}, points{0, 2};
+  FixedUniforms u(4734);
+  int compared = 0;
+  for (int n = 0; n < 300; ++n) {
+    const std::vector<ActiveContact>& active = sets[static_cast<std::size_t>(n) % sets.size()];
+    const BlockState s{u(-2.0, 14.0), u(7.0, 13.0), u(-0.8, 0.8), u(-1, 1), u(-1, 1), u(-1, 1)};
+    const double t = u(0.0, 5.0);
+    const Vec2 arm{u(-5, 5), u(-10, 10)};
+    SeatSystem reused(before, active, vertices, points);
+    reused.guards(t, s);
+    reused.pivot_turning(t, s, arm);
+    ASSERT_TRUE(reused.lays_out(after, active, vertices, points));
+    reused.start_piece(after);
+    SeatSystem fresh(after, active, vertices, points);
+    const auto guards = reused.guards(t, s), fresh_guards = fresh.guards(t, s);
+    for (std::size_t i = 0; i < guards.size(); ++i) {
+      if (fresh.live_guards()[i]) {
+        EXPECT_TRUE(testing::same_bits(guards[i], fresh_guards[i])) << n << " " << i;
+      }
+    }
+    EXPECT_TRUE(testing::same_bits(reused.forces(t, s).friction, fresh.forces(t, s).friction)) << n;
+    EXPECT_TRUE(testing::same_bits(reused.forces(t, s).normal, fresh.forces(t, s).normal)) << n;
+    EXPECT_EQ(reused.contacts_hold(t, s), fresh.contacts_hold(t, s)) << n;
+    EXPECT_EQ(reused.pivot_turning(t, s, arm).has_value(),
+              fresh.pivot_turning(t, s, arm).has_value());
+    if (fresh.pivot_turning(t, s, arm)) {
+      EXPECT_TRUE(
+          testing::same_bits(*reused.pivot_turning(t, s, arm), *fresh.pivot_turning(t, s, arm)))
+          << n;
+    }
+    EXPECT_TRUE(testing::same_bits(reused.penetration(s), fresh.penetration(s))) << n;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 300);
+}
+
+// A system lays its guards out as another only with the same active contacts, in the same states
+// and order, and the same watched vertices and points.
+TEST(SeatPieceReuse, ASystemLaysItsGuardsOutAsAnotherOnlyWithTheSameContactsAndWatches) {
+  const testing::TypeBSeat seat;
+  const std::vector<std::vector<ActiveContact>> sets = testing::type_b_contact_sets();
+  const WatchedList vertices{3, 4, 5}, points{0, 2};
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const SeatSystem system = seat.system(sets[i], vertices, points);
+    EXPECT_FALSE(system.lays_out(seat.context, sets[i], vertices, WatchedList{0})) << i;
+    EXPECT_FALSE(system.lays_out(seat.context, sets[i], WatchedList{3, 4}, points)) << i;
+    for (std::size_t j = 0; j < sets.size(); ++j) {
+      EXPECT_EQ(system.lays_out(seat.context, sets[j], vertices, points), i == j) << i << " " << j;
+    }
+    std::vector<ActiveContact> reversed(sets[i].rbegin(), sets[i].rend());
+    EXPECT_EQ(system.lays_out(seat.context, reversed, vertices, points), sets[i].size() < 2) << i;
+  }
 }
 
 }  // namespace
