@@ -310,6 +310,7 @@ class PivotSweep {
   std::span<const Sinusoid> lines(const Point& p) const {
     return {sinusoids_.data() + p.first + block_vertex_count_, block_vertex_count_};
   }
+  void set_edge_normals();
   void add_point(int k);
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
   bool point_claim(const ThetaStep& step, const Point& point) const;
@@ -325,6 +326,10 @@ class PivotSweep {
   std::vector<Point> points_;
   std::size_t segment_count_ = 0, block_vertex_count_ = 0;
   std::vector<Sinusoid> sinusoids_;
+  // The block's edges' unit inward normals (edge j from vertex j to the next), found for the seat
+  // contacts edge_normals_of_.
+  std::vector<Vec2> edge_normals_;
+  const SeatContacts* edge_normals_of_ = nullptr;
   // The tilt (its bits) at the end of the last step claims() was asked about, and its turn.
   std::uint64_t last_end_ = 0;
   SineCosine last_end_turn_{0.0, 1.0};

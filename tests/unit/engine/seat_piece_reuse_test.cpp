@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/scene/block_geometry.hpp"
 #include "engine/seat/seat_system.hpp"
 #include "engine/seat/watched_list.hpp"
 #include "tests/support/fixed_uniforms.hpp"
@@ -17,6 +18,9 @@ namespace blockfrag {
 namespace {
 
 using testing::FixedUniforms;
+
+const std::vector<std::array<double, 2>> kPieceTypeA = {
+    {0, 0}, {12.55, 0}, {10, 3.4}, {10, 16.7}, {0, 16.7}};
 
 WatchedList piece_list_of(int size, int first) {
   WatchedList list;
@@ -48,7 +52,8 @@ TEST(SeatPieceReuse, AWatchedListCopiedOrAssignedHoldsItsSourcesIndices) {
 }
 
 // A sweep set up again for another system and pivot claims what a sweep built for them claims, on
-// chains of steps, whichever pivots, watched lists (longer or shorter) and steps came before.
+// chains of steps, whichever pivots, watched lists (longer or shorter), blocks and steps came
+// before.
 TEST(SeatPieceReuse, ASweepSetUpAgainClaimsWhatANewOneClaims) {
   const testing::TypeBSeat seat;
   const SeatContacts& c = seat.contacts;
@@ -76,13 +81,24 @@ TEST(SeatPieceReuse, ASweepSetUpAgainClaimsWhatANewOneClaims) {
     systems.push_back(
         seat.system({{pivot.pair, ContactState::stick}}, pivot.vertices, pivot.points));
   }
+  // Another block, of five vertices, on the same seat: its own edges.
+  const SeatContacts other{kPieceTypeA, testing::kTypeBSeat};
+  const BlockGeometry other_geometry{PolygonBlock{kPieceTypeA, 1.0}};
+  SeatSystemContext other_context = seat.context;
+  other_context.contacts = &other;
+  other_context.geometry = &other_geometry;
+  const SeatPair other_heel{ContactKind::block_vertex, 0, 0};
+  systems.emplace_back(other_context, std::vector<ActiveContact>{{other_heel, ContactState::stick}},
+                       WatchedList{1, 2, 3, 4}, WatchedList{1, 2});
+  const PivotChart other_chart{other.seat_point(0), other.body_vertex(0)};
   FixedUniforms u(66);
   PivotSweep reused(systems[0], pivots[0].chart);
   int claimed = 0;
   for (int n = 0; n < 400; ++n) {
-    const auto at = static_cast<std::size_t>(u(0.0, 4.0));
-    reused.reset(systems[at], pivots[at].chart);
-    PivotSweep fresh(systems[at], pivots[at].chart);
+    const auto at = static_cast<std::size_t>(u(0.0, 5.0));
+    const PivotChart& chart = at < pivots.size() ? pivots[at].chart : other_chart;
+    reused.reset(systems[at], chart);
+    PivotSweep fresh(systems[at], chart);
     double theta = u(-1.0, 1.0);
     for (int step = 0; step < 6; ++step) {
       const double next = theta + u(-0.05, 0.05);
