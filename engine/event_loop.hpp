@@ -246,10 +246,10 @@ bool EventLoop<Ground>::advance_rest(const MotionPiece& piece, double t_stop, bo
     }
     std::sort(checks.begin(), checks.end());
   }
-  checks.push_back(t_stop);
   double previous = t_;
   double previous_margin = margin(t_);
-  for (const double t : checks) {
+  // Whether rest ends by t, the checks asked in increasing order; where it does, t_ is its end.
+  const auto ends_by = [&](double t) {
     const double m = margin(t);
     if (m < 0) {
       const double t_event =
@@ -265,7 +265,14 @@ bool EventLoop<Ground>::advance_rest(const MotionPiece& piece, double t_stop, bo
     }
     previous = t;
     previous_margin = m;
+    return false;
+  };
+  for (const double t : checks) {
+    if (ends_by(t)) return true;
   }
+  // The stop time last, not added to the checks: that was an allocation at each of a record's
+  // samples the block rests through.
+  if (ends_by(t_stop)) return true;
   observer_.observe_step(t_, t_stop, state_at, forces_at, ModeKind::rest);
   t_ = t_stop;
   return false;
@@ -301,10 +308,13 @@ struct Overloads : Calls... {
 template <class... Calls>
 Overloads(Calls...) -> Overloads<Calls...>;
 
-// A system that leaves some of its guard slots unused names the others (live_guards()).
+// A system that leaves some of its guard slots unused names the others (live_slots(), in order,
+// or live_guards()).
 template <class Ode>
 GuardWatch<Ode::kGuards> watch_guards(const Ode& ode, double t, const OdeState<Ode::N>& q) {
-  if constexpr (requires { ode.live_guards(); }) {
+  if constexpr (requires { ode.live_slots(); }) {
+    return GuardWatch<Ode::kGuards>(ode.guards(t, q), ode.live_slots());
+  } else if constexpr (requires { ode.live_guards(); }) {
     return GuardWatch<Ode::kGuards>(ode.guards(t, q), ode.live_guards());
   } else {
     return GuardWatch<Ode::kGuards>(ode.guards(t, q));

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <span>
 
@@ -36,6 +39,28 @@ std::array<double, G> guards_from(const GuardsAt& guards_at, double x,
   }
 }
 
+// The indices of the true entries of `flags`, in order, into `out` (the first of it); returns how
+// many. Read eight flags a word, a bool's byte being 0 or 1, so that a word's true flags are its
+// set bits: a watch is set up at every motion piece (a record's every sample) over a seat's 64
+// guard slots, most of them unused, and a pass over each flag was most of setting it up.
+template <std::size_t G>
+int set_indices(const std::array<bool, G>& flags, std::array<int, G>& out) {
+  static_assert(sizeof(bool) == 1);
+  int count = 0;
+  std::size_t at = 0;
+  for (; at + 8 <= G; at += 8) {
+    std::uint64_t word;
+    std::memcpy(&word, flags.data() + at, sizeof word);
+    for (; word != 0; word &= word - 1) {
+      out[static_cast<std::size_t>(count++)] = static_cast<int>(at) + std::countr_zero(word) / 8;
+    }
+  }
+  for (; at < G; ++at) {
+    if (flags[at]) out[static_cast<std::size_t>(count++)] = static_cast<int>(at);
+  }
+  return count;
+}
+
 // How each guard is watched. Armed: clearly positive, fires at zero. Unarmed: not clearly positive,
 // fires once clearly below both zero and its start, whether or not it rose clearly above zero first
 // (a corner that lifts by less than the margin and comes back must still land), and fires at zero
@@ -49,20 +74,15 @@ class GuardWatch {
   // Only the guards `live` names are watched: the others (unused slots of a system's guards) are
   // positive throughout and never cross.
   GuardWatch(const std::array<double, G>& at_start, const std::array<bool, G>& live)
-      : value_(at_start) {
-    for (int i = 0; i < G; ++i) {
-      if (live[i]) live_[live_count_++] = i;
-    }
-    // Only the live guards' entries are set, and only theirs are read: a watch is set up at every
-    // motion piece (a record's every sample), most of a seat's 64 guard slots unused.
-    for (const int i : this->live()) {
-      armed_[i] = at_start[i] > kArmingMargin;
-      // A start below -kArmingMargin (an unarmed guard's event leaves it there) must go lower
-      // still to fire: fired at once (its value at the start already past the margin), a corner
-      // rising at 3e-7 m/s that gravity brings back within 6e-8 s started flight after flight
-      // 1e-15 s apart.
-      unarmed_offset_[i] = std::max(kArmingMargin, -at_start[i] * (1 + kUnarmedFurtherDrop));
-    }
+      : value_(at_start), live_count_(set_indices(live, live_)) {
+    arm_live();
+  }
+  // The same with the live guards named by their indices, in increasing order (a seat's system
+  // lists them as it lays its slots out).
+  GuardWatch(const std::array<double, G>& at_start, std::span<const int> live)
+      : value_(at_start), live_count_(static_cast<int>(live.size())) {
+    std::copy(live.begin(), live.end(), live_.begin());
+    arm_live();
   }
 
   struct Crossing {
@@ -126,6 +146,18 @@ class GuardWatch {
   }
   std::span<const int> live() const {
     return std::span(live_).first(static_cast<std::size_t>(live_count_));
+  }
+  // Only the live guards' entries are set, and only theirs are read: a watch is set up at every
+  // motion piece (a record's every sample), most of a seat's 64 guard slots unused.
+  void arm_live() {
+    for (const int i : live()) {
+      armed_[i] = value_[i] > kArmingMargin;
+      // A start below -kArmingMargin (an unarmed guard's event leaves it there) must go lower
+      // still to fire: fired at once (its value at the start already past the margin), a corner
+      // rising at 3e-7 m/s that gravity brings back within 6e-8 s started flight after flight
+      // 1e-15 s apart.
+      unarmed_offset_[i] = std::max(kArmingMargin, -value_[i] * (1 + kUnarmedFurtherDrop));
+    }
   }
 
   // A step's look at its live guards: each one's bracket [a, b] of its last sample above zero and

@@ -126,10 +126,12 @@ double SeatContacts::overturn_theta(const BlockGeometry& geometry, double direct
   return direction > 0 ? std::numbers::pi / 2 : -std::numbers::pi / 2;
 }
 
+// The segment's frame as the constructor found it (segment_frame): a chart is asked for at each
+// motion piece, and finding the frame anew, a square root and two quotients, was most of a line.
 SeatLine SeatContacts::segment_line(int k) const {
   const Vec2 a = seat_[static_cast<std::size_t>(k)];
-  const SegmentFrame frame = segment_frame(a, seat_[static_cast<std::size_t>(k) + 1]);
-  return {frame.direction, frame.normal, dot(frame.normal, a)};
+  const Segment& segment = segments_[static_cast<std::size_t>(k)];
+  return {segment.direction, segment.normal, dot(segment.normal, a)};
 }
 
 SeatContacts::RunPlace SeatContacts::place_on_run(int k, Vec2 p) const {

@@ -57,6 +57,8 @@ class SeatContacts {
   // Block vertex i from the centre of mass, body frame.
   Vec2 body_vertex(int i) const { return body_[static_cast<std::size_t>(i)]; }
   SeatLine segment_line(int k) const;
+  // Seat segment k's upward unit normal: a block vertex's contact normal on it at any pose.
+  Vec2 segment_normal(int k) const { return segments_[static_cast<std::size_t>(k)].normal; }
   // Block vertex i in the world frame at the pose.
   Vec2 vertex_at(int i, const BlockState& s) const;
 

@@ -90,17 +90,29 @@ bool SeatSystem::clearance_least_at_ends(double x_lo, double x_hi,
 // The block turns about the chart's point p: a vertex w from the pivot (body frame) is at
 // p + Rot(theta) w, and its height over a line of slope m through a is a sinusoid of theta. Seen
 // from the block, a seat point s moves on a circle about the pivot, at body + Rot(-theta) (s - p).
-PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
-    : system_(&system),
-      contacts_(system.c_.contacts),
-      chart_(chart),
-      watched_vertices_(system.watched_vertices_),
-      watched_points_(system.watched_points_),
-      centre_x_{chart.point.x, -chart.body.x, chart.body.y} {
+PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart) : chart_(chart) {
+  reset(system, chart);
+}
+
+// Its storage is kept: a record's pieces turn on a new pivot often (its place found anew from the
+// state at each), and allocating the sweep's blocks anew was a sixth of setting it up.
+void PivotSweep::reset(const SeatSystem& system, const PivotChart& chart) {
+  system_ = &system;
+  contacts_ = system.c_.contacts;
+  chart_ = chart;
+  watched_vertices_ = system.watched_vertices_;
+  watched_points_ = system.watched_points_;
+  centre_x_ = {chart.point.x, -chart.body.x, chart.body.y};
+  last_end_ = 0;
+  last_end_turn_ = {0.0, 1.0};
+  vertices_.clear();
+  points_.clear();
+  sinusoids_.clear();
   const SeatContacts& seat = *system.c_.contacts;
   const Vec2 p = chart.point, body = chart.body;
   segment_count_ = static_cast<std::size_t>(seat.point_count() - 1);
   block_vertex_count_ = static_cast<std::size_t>(seat.vertex_count());
+  if (edge_normals_of_ != contacts_) set_edge_normals();
   vertices_.reserve(system.watched_vertices_.size());
   points_.reserve(system.watched_points_.size());
   sinusoids_.reserve(system.watched_vertices_.size() * segment_count_ +
@@ -127,6 +139,21 @@ PivotSweep::PivotSweep(const SeatSystem& system, const PivotChart& chart)
   for (const int k : system.watched_points_) add_point(k);
 }
 
+// The block's edges do not change from pivot to pivot: their normals are found once, not at each
+// point of each pivot a record's pieces turn on.
+void PivotSweep::set_edge_normals() {
+  const SeatContacts& seat = *contacts_;
+  const std::size_t n = block_vertex_count_;
+  edge_normals_.clear();
+  for (std::size_t j = 0; j < n; ++j) {
+    const Vec2 a = seat.body_vertex(static_cast<int>(j));
+    const Vec2 b = seat.body_vertex(static_cast<int>((j + 1) % n));
+    const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+    edge_normals_.push_back({-(b.y - a.y) / length, (b.x - a.x) / length});
+  }
+  edge_normals_of_ = contacts_;
+}
+
 // Seen from the block, seat point k moves on a circle about the pivot.
 void PivotSweep::add_point(int k) {
   const SeatContacts& seat = *contacts_;
@@ -136,12 +163,10 @@ void PivotSweep::add_point(int k) {
   sinusoids_.resize(first + 2 * n);
   for (std::size_t j = 0; j < n; ++j) {
     const Vec2 a = seat.body_vertex(static_cast<int>(j));
-    const Vec2 b = seat.body_vertex(static_cast<int>((j + 1) % n));
     const Vec2 e{body.x - a.x, body.y - a.y};
     sinusoids_[first + j] = {e.x * e.x + e.y * e.y + u.x * u.x + u.y * u.y,
                              2 * (e.x * u.x + e.y * u.y), 2 * (e.x * u.y - e.y * u.x)};
-    const double length = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
-    const Vec2 normal{-(b.y - a.y) / length, (b.x - a.x) / length};
+    const Vec2 normal = edge_normals_[j];
     sinusoids_[first + n + j] = {normal.x * e.x + normal.y * e.y, normal.x * u.x + normal.y * u.y,
                                  normal.x * u.y - normal.y * u.x};
   }

@@ -147,6 +147,10 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   SeatSystemContext system_context(const MotionPiece& piece) const;
   // The system of the current mode under `piece` at t_ and state_, built into system_.
   SeatSystem& build_system(const MotionPiece& piece);
+  // SeatSystem(context, mode_.active, vertices, points) in system_: the last system started on the
+  // piece where it lays its guards out so.
+  SeatSystem& system_for(const SeatSystemContext& context, const WatchedList& vertices,
+                         const WatchedList& points);
   // The system of the current mode for its contact forces alone, watching no vertex or point: what
   // a piece boundary asks of the mode, at each sample of a record.
   SeatSystem forces_system(const MotionPiece& piece) const {
@@ -241,7 +245,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   // holds_under (from_piece_end_).
   struct PieceEnd {
     BlockState s;
-    std::array<double, SeatSystem::kGuards> guards;
+    std::array<double, SeatSystem::kGuards> guards;  // the pose's alone: 0, 1, the clearances
     WatchedList vertices, points;
   };
   PieceEnd piece_end_{};

@@ -49,7 +49,16 @@ SeatSystem& SeatSimulation::build_system(const MotionPiece& piece) {
     });
     if (!active) points.push_back(k);
   }
-  return system_.emplace(system_context(piece), mode_.active, vertices, points);
+  return system_for(system_context(piece), vertices, points);
+}
+
+SeatSystem& SeatSimulation::system_for(const SeatSystemContext& context,
+                                       const WatchedList& vertices, const WatchedList& points) {
+  if (system_ && system_->lays_out(context, mode_.active, vertices, points)) {
+    system_->start_piece(context);
+    return *system_;
+  }
+  return system_.emplace(context, mode_.active, vertices, points);
 }
 
 // The chart of the active contacts (engine/seat/seat_chart.hpp). Contacts of block vertices on
@@ -308,7 +317,18 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
 template <class Ode>
 void SeatSimulation::ended_piece(const Ode& ode,
                                  const std::array<double, SeatSystem::kGuards>& guards) {
-  piece_end_ = {state_, guards, ode.system().watched_vertices(), ode.system().watched_points()};
+  // Only the guards watch_at_piece_start takes are kept: copying all 64 slots at each piece was
+  // most of keeping them.
+  const SeatSystem& system = ode.system();
+  piece_end_.s = state_;
+  piece_end_.vertices = system.watched_vertices();
+  piece_end_.points = system.watched_points();
+  piece_end_.guards[0] = guards[0];
+  piece_end_.guards[1] = guards[1];
+  const auto first_clearance = static_cast<std::size_t>(kFirstClearanceGuard);
+  std::copy_n(guards.begin() + first_clearance,
+              piece_end_.vertices.size() + piece_end_.points.size(),
+              piece_end_.guards.begin() + first_clearance);
   piece_end_ready_ = true;
 }
 
@@ -337,7 +357,7 @@ GuardWatch<SeatSystem::kGuards> SeatSimulation::watch_at_piece_start(const Ode& 
   const std::size_t watched = piece_end_.vertices.size() + piece_end_.points.size();
   std::copy_n(piece_end_.guards.begin() + first_clearance, watched,
               at_start.begin() + first_clearance);
-  return GuardWatch<SeatSystem::kGuards>(at_start, ode.live_guards());
+  return GuardWatch<SeatSystem::kGuards>(at_start, ode.live_slots());
 }
 
 bool SeatSimulation::holds_under(const MotionPiece& piece) {
@@ -404,10 +424,12 @@ SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, do
 }
 
 PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart& chart) {
-  if (sweep_ && sweep_->serves(system, chart)) {
+  if (!sweep_) {
+    sweep_.emplace(system, chart);
+  } else if (sweep_->serves(system, chart)) {
     sweep_->rebind(system);
   } else {
-    sweep_.emplace(system, chart);
+    sweep_->reset(system, chart);
   }
   return *sweep_;
 }

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <span>
 
 #include "engine/seat/seated_load.hpp"
@@ -50,20 +51,22 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   // samples, and passes over all 64 slots were a third of a construction.
   unused_.fill(true);
   live_.fill(false);
+  // The slots are used in increasing order.
   const auto use = [&](std::size_t slot, SeatEvent event) {
     events_[slot] = event;
     unused_[slot] = false;
     live_[slot] = true;
+    live_slots_[static_cast<std::size_t>(live_count_++)] = static_cast<int>(slot);
   };
   use(0, SeatEvent::overturns);
   use(1, SeatEvent::falls);
   for (int i = 0; i < count_; ++i) {
     const ActiveContact& a = active_[static_cast<std::size_t>(i)];
     states_[static_cast<std::size_t>(i)] = a.state;
-    // A block vertex's contact normal is its segment's at any pose.
+    // A block vertex's contact normal is its segment's at any pose: a record builds a system at
+    // each of its samples, and posing the vertex for it was a fifth of a construction.
     if (a.pair.kind == ContactKind::block_vertex) {
-      normals_[static_cast<std::size_t>(i)] =
-          c_.contacts->pose(a.pair, BlockState{}).contact.normal;
+      normals_[static_cast<std::size_t>(i)] = c_.contacts->segment_normal(a.pair.seat);
     }
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
     use(base, SeatEvent::lift_off);
@@ -80,6 +83,24 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   for (std::size_t i = 0; i < watched; ++i) {
     use(static_cast<std::size_t>(kFirstClearanceGuard) + i, SeatEvent::touches);
   }
+}
+
+bool SeatSystem::lays_out(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
+                          const WatchedList& watched_vertices,
+                          const WatchedList& watched_points) const {
+  if (c.contacts != c_.contacts || active.size() != static_cast<std::size_t>(count_)) return false;
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    if (!(active[i].pair == active_[i].pair) || active[i].state != active_[i].state) return false;
+  }
+  return watched_vertices == watched_vertices_ && watched_points == watched_points_;
+}
+
+void SeatSystem::start_piece(const SeatSystemContext& c) {
+  c_ = c;
+  vertical_still_ = c.vertical->is_zero();
+  last_solve_.t = std::numeric_limits<double>::quiet_NaN();
+  last_lifted_.t = std::numeric_limits<double>::quiet_NaN();
+  turned_.set = false;
 }
 
 SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {

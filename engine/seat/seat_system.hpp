@@ -83,6 +83,16 @@ class SeatSystem {
   SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
              const WatchedList& watched_vertices, const WatchedList& watched_points);
 
+  // Whether a system built from these would lay its guards out as this one does: the same seat,
+  // active contacts (in order, in the same states) and watched vertices and points.
+  bool lays_out(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
+                const WatchedList& watched_vertices, const WatchedList& watched_points) const;
+  // This system under the context c (another motion piece), as a system built anew there: whatever
+  // it remembered of the last forces solved or loads found is forgotten. Where lays_out(c, ...)
+  // holds, it is then SeatSystem(c, ...): a record builds a system at each of its samples, most
+  // of them laid out as the last.
+  void start_piece(const SeatSystemContext& c);
+
   // Not const: each remembers the last forces solved (a step's end is asked for by its guards, by
   // the next step's first stage and by the checks of its forces).
   std::array<double, kGuards> guards(double t, const BlockState& s);
@@ -111,6 +121,10 @@ class SeatSystem {
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
   // The guards whose slot is used (the others are 1 throughout).
   GuardClaims live_guards() const { return live_; }
+  // The same as their slots, in order: a guard watch takes them at each motion piece.
+  std::span<const int> live_slots() const {
+    return std::span(live_slots_).first(static_cast<std::size_t>(live_count_));
+  }
   // The seat point a touching guard watches, or -1 (a block vertex's guard, or another guard).
   int watched_point(int guard) const {
     const int k = guard - kFirstClearanceGuard - static_cast<int>(watched_vertices_.size());
@@ -228,7 +242,9 @@ class SeatSystem {
   int count_ = 0;
   WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
-  GuardClaims unused_, live_;  // live_: the used slots, each unused_'s negation
+  GuardClaims unused_, live_;            // live_: the used slots, each unused_'s negation
+  std::array<int, kGuards> live_slots_;  // the used slots in order, the first live_count_
+  int live_count_ = 0;
   // The last forces solved, and the time and state they were solved at.
   struct Solved {
     double t = std::numeric_limits<double>::quiet_NaN();
@@ -269,6 +285,8 @@ class PivotSweep {
   bool serves(const SeatSystem& system, const PivotChart& chart) const;
   // The claims then read `system` (its active contacts, the guards it uses).
   void rebind(const SeatSystem& system) { system_ = &system; }
+  // The sweep of `system` turning on `chart`, as PivotSweep(system, chart) sets it up.
+  void reset(const SeatSystem& system, const PivotChart& chart);
 
  private:
   // The sinusoids of a vertex or point lie in sinusoids_ from `first` on: one block for all, built
@@ -292,14 +310,15 @@ class PivotSweep {
   std::span<const Sinusoid> lines(const Point& p) const {
     return {sinusoids_.data() + p.first + block_vertex_count_, block_vertex_count_};
   }
+  void set_edge_normals();
   void add_point(int k);
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
   bool point_claim(const ThetaStep& step, const Point& point) const;
   // sine_cosine(theta): the last step's end is the next one's start.
   SineCosine turn_at(double theta) const;
 
-  const SeatSystem* system_;  // rebound to each piece's system; the rest serves them all
-  const SeatContacts* contacts_;
+  const SeatSystem* system_ = nullptr;  // rebound to each piece's system; the rest serves them all
+  const SeatContacts* contacts_ = nullptr;
   PivotChart chart_;
   WatchedList watched_vertices_, watched_points_;
   Sinusoid centre_x_;
@@ -307,6 +326,10 @@ class PivotSweep {
   std::vector<Point> points_;
   std::size_t segment_count_ = 0, block_vertex_count_ = 0;
   std::vector<Sinusoid> sinusoids_;
+  // The block's edges' unit inward normals (edge j from vertex j to the next), found for the seat
+  // contacts edge_normals_of_.
+  std::vector<Vec2> edge_normals_;
+  const SeatContacts* edge_normals_of_ = nullptr;
   // The tilt (its bits) at the end of the last step claims() was asked about, and its turn.
   std::uint64_t last_end_ = 0;
   SineCosine last_end_turn_{0.0, 1.0};
@@ -355,6 +378,7 @@ class SeatOde {
     return system_->guards(t, chart_.full(t, q), wanted);
   }
   GuardClaims live_guards() const { return system_->live_guards(); }
+  std::span<const int> live_slots() const { return system_->live_slots(); }
   SeatEvent event(int guard) const { return system_->event(guard); }
   BlockState full(double t, const OdeState<N>& q) const { return chart_.full(t, q); }
   ContactForces forces(double t, const OdeState<N>& q) const {

@@ -19,6 +19,16 @@ class WatchedList {
   WatchedList(std::initializer_list<int> items) {
     for (const int i : items) push_back(i);
   }
+  // Only the indices held are copied (and only they were set): a list is built, copied into its
+  // system and kept at each motion piece, and copying or zeroing all it can hold was most of that.
+  WatchedList(const WatchedList& other) : size_(other.size_) {
+    std::copy_n(other.items_.begin(), size_, items_.begin());
+  }
+  WatchedList& operator=(const WatchedList& other) {
+    size_ = other.size_;
+    std::copy_n(other.items_.begin(), size_, items_.begin());
+    return *this;
+  }
 
   void push_back(int i) {
     if (size_ == items_.size()) throw ContractViolation("WatchedList: more than it can hold");
@@ -34,7 +44,7 @@ class WatchedList {
   }
 
  private:
-  std::array<int, kMaxSeatClearances> items_{};
+  std::array<int, kMaxSeatClearances> items_;  // the first size_ set
   std::size_t size_ = 0;
 };
 

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
@@ -96,6 +97,52 @@ TEST(SeatContacts, AToePastTheInclinesTopButUnderItIsInTheSeat) {
   ASSERT_GT(off_incline.along, off_incline.length);
   EXPECT_DOUBLE_EQ(contacts.vertex_clearance(kToe, beyond),
                    std::hypot(past.x - kTypeBSeat.back()[0], past.y - kTypeBSeat.back()[1]));
+}
+
+// A system takes a block vertex's contact normal from its segment without posing the vertex: the
+// same to the bit as pose() gives, for every vertex and segment, at any pose.
+TEST(SeatContacts, ASegmentsNormalIsItsBlockVertexContactsNormalAtAnyPose) {
+  const std::vector<std::array<double, 2>> valley = {{-3.0, 1.2}, {-1.1, 0.3}, {0.0, 0.0},
+                                                     {2.7, 0.4},  {4.4, 2.9},  {6.0, 2.95}};
+  testing::FixedUniforms u(7);
+  for (const auto& seat : {kTypeBSeat, valley}) {
+    const SeatContacts contacts(kTypeB, seat);
+    for (int trial = 0; trial < 50; ++trial) {
+      BlockState s;
+      s.x = u(-5.0, 5.0);
+      s.y = u(-5.0, 5.0);
+      s.theta = u(-1.6, 1.6);
+      for (int i = 0; i < contacts.vertex_count(); ++i) {
+        for (int k = 0; k + 1 < contacts.point_count(); ++k) {
+          const Vec2 posed = contacts.pose({ContactKind::block_vertex, i, k}, s).contact.normal;
+          EXPECT_EQ(contacts.segment_normal(k).x, posed.x) << i << " " << k;
+          EXPECT_EQ(contacts.segment_normal(k).y, posed.y) << i << " " << k;
+        }
+      }
+    }
+  }
+}
+
+// A segment's line is its unit direction from its first point to its next, the normal to its left
+// and the normal's offset, as found from its points, to the bit.
+TEST(SeatContacts, ASegmentsLineIsTheOneItsPointsMake) {
+  const std::vector<std::array<double, 2>> valley = {{-3.0, 1.2}, {-1.1, 0.3}, {0.0, 0.0},
+                                                     {2.7, 0.4},  {4.4, 2.9},  {6.0, 2.95}};
+  for (const auto& seat : {kTypeBSeat, valley}) {
+    const SeatContacts contacts(kTypeB, seat);
+    for (int k = 0; k + 1 < contacts.point_count(); ++k) {
+      const Vec2 a = contacts.seat_point(k), b = contacts.seat_point(k + 1);
+      const Vec2 d{b.x - a.x, b.y - a.y};
+      const double length = std::sqrt(d.x * d.x + d.y * d.y);
+      const Vec2 u{d.x / length, d.y / length};
+      const SeatLine line = contacts.segment_line(k);
+      EXPECT_EQ(line.direction.x, u.x) << k;
+      EXPECT_EQ(line.direction.y, u.y) << k;
+      EXPECT_EQ(line.normal.x, -u.y) << k;
+      EXPECT_EQ(line.normal.y, u.x) << k;
+      EXPECT_EQ(line.offset, -u.y * a.x + u.x * a.y) << k;
+    }
+  }
 }
 
 }  // namespace

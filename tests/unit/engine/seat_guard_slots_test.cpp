@@ -4,6 +4,7 @@
 // slot over every mix of contacts and watched lists of the paper's type B block.
 #include <array>
 #include <cstddef>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -47,13 +48,18 @@ TEST(SeatGuardSlots, EventsLiveAndUnusedGuardsFollowTheLayout) {
       const SeatSystem system = seat.system(active, vertices, points);
       const auto expected = layout_events(active, vertices.size() + points.size());
       const GuardClaims live = system.live_guards(), unused = system.unused_guards();
+      std::vector<int> live_in_order;
       for (int i = 0; i < kSeatGuards; ++i) {
         const auto at = static_cast<std::size_t>(i);
         EXPECT_EQ(system.event(i), expected[at]) << i;
         EXPECT_EQ(live[at], expected[at] != SeatEvent::none) << i;
         EXPECT_EQ(unused[at], expected[at] == SeatEvent::none) << i;
+        if (expected[at] != SeatEvent::none) live_in_order.push_back(i);
         ++slots;
       }
+      // The watch takes the live slots as the system lists them.
+      const std::span<const int> listed = system.live_slots();
+      EXPECT_EQ(std::vector<int>(listed.begin(), listed.end()), live_in_order);
     }
   }
   EXPECT_EQ(slots, 7 * 4 * kSeatGuards);
