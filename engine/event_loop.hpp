@@ -10,8 +10,8 @@
 //                                          // resolution at the event needs to know of it
 //   void place_at_start();                 // state_ at t = 0
 //   void resolve_and_enter(const EventReport&);  // resolves the contact at t_, enters its mode
-//   EventReport advance(const MotionPiece&, double t_stop);  // the mode to an event or t_stop
-//   bool holds_under(const MotionPiece&);  // the mode goes on under the next piece
+//   EventReport advance(MotionPiece&, double t_stop);  // the mode to an event or t_stop
+//   bool holds_under(MotionPiece&);  // the mode goes on under the next piece
 //   bool at_rest() const;                  // the block rests
 //   void observe(const BlockState&);       // a state the run passed through
 //   ContactForces forces_now() const;      // the contact forces at t_ (per unit mass)
@@ -71,7 +71,7 @@ class EventLoop {
   // At rest with every excitation over: nothing can move the block again.
   bool at_rest_for_good() const { return self().at_rest() && t_ >= excitation_end_; }
   void check_budget() const;
-  double step_cap(const MotionPiece& piece) const;
+  double step_cap(MotionPiece& piece);
   // A mode of kind `now` entered at t_ from one of kind `before` (`first`: the run's first):
   // counts the event, logs the mode (again, where `restarts` though its kind is unchanged) and
   // the onsets, observes the state and checks the budgets.
@@ -80,13 +80,13 @@ class EventLoop {
   // lambda's extremes and, with vertical motion, at samples (unless it holds throughout the
   // piece). Returns whether rest ended before t_stop; t_ is left where it ended.
   template <class Margin, class ForcesAt>
-  bool advance_rest(const MotionPiece& piece, double t_stop, bool holds_throughout,
-                    const Margin& margin, const ForcesAt& forces_at);
+  bool advance_rest(MotionPiece& piece, double t_stop, bool holds_throughout, const Margin& margin,
+                    const ForcesAt& forces_at);
   // Steps until a guard crosses zero or t_stop; a crossing is located on the dense output and the
   // state is left just after it, where the next mode's conditions hold (the ground's on_event).
   // Returns the Ground::EventReport of what ended the stretch (none at t_stop).
   template <class Ode, class Stepper>
-  auto integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece, double t_stop,
+  auto integrate_with(const Ode& ode, Stepper& stepper, MotionPiece& piece, double t_stop,
                       ModeKind kind);
   // integrate_with's steps: the stepper's work since it last counted, into the summary; the
   // first guard crossing in the step from (t0, q0) to (t, q), placed by the ground.
@@ -144,7 +144,7 @@ void EventLoop<Ground>::run() {
   while (!stopped_ && t_ < t_end) {
     // Settling: once every excitation is over, a block at rest stays at rest.
     if (!scene_.duration && at_rest_for_good()) break;
-    const MotionPiece& piece = motion_.piece_at(t_);
+    MotionPiece& piece = motion_.piece_at(t_);
     const double t_stop = std::min({t_end, piece.end(), vertical_.piece_at(t_).end()});
     const auto report = ground.advance(piece, t_stop);
     if (stopped_ || t_ >= t_end) break;
@@ -197,7 +197,7 @@ void EventLoop<Ground>::check_budget() const {
 }
 
 template <class Ground>
-double EventLoop<Ground>::step_cap(const MotionPiece& piece) const {
+double EventLoop<Ground>::step_cap(MotionPiece& piece) {
   return std::min({kMaxStepOverBlockTime * block_time_,
                    piece.time_scale() / kStepsPerPieceTimeScale,
                    vertical_.piece_at(t_).time_scale() / kStepsPerPieceTimeScale});
@@ -222,7 +222,7 @@ void EventLoop<Ground>::entered(ModeKind before, ModeKind now, bool first, bool 
 // see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
 template <class Ground>
 template <class Margin, class ForcesAt>
-bool EventLoop<Ground>::advance_rest(const MotionPiece& piece, double t_stop, bool holds_throughout,
+bool EventLoop<Ground>::advance_rest(MotionPiece& piece, double t_stop, bool holds_throughout,
                                      const Margin& margin, const ForcesAt& forces_at) {
   const BlockState s = state_;
   const auto state_at = [&](double) { return s; };
@@ -234,7 +234,7 @@ bool EventLoop<Ground>::advance_rest(const MotionPiece& piece, double t_stop, bo
   // Without vertical motion rest's margin depends on lambda alone, so its extremes and the stop
   // time are the only places to look; with it, the sum of the two is also sampled at 1/64 of the
   // faster one's time scale.
-  const MotionPiece& vertical = vertical_.piece_at(t_);
+  MotionPiece& vertical = vertical_.piece_at(t_);
   std::vector<double> checks = piece.extrema_between(t_, t_stop);
   if (!vertical.is_zero()) {
     const std::vector<double> more = vertical.extrema_between(t_, t_stop);
@@ -378,7 +378,7 @@ auto EventLoop<Ground>::crossing_in_step(const Ode& ode, Stepper& stepper,
 
 template <class Ground>
 template <class Ode, class Stepper>
-auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, const MotionPiece& piece,
+auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, MotionPiece& piece,
                                        double t_stop, ModeKind kind) {
   using EventReport = typename Ground::EventReport;
   Ground& ground = self();

@@ -17,7 +17,7 @@ namespace blockfrag {
 
 class SegmentObserver {
  public:
-  SegmentObserver(Summary& summary, const BlockGeometry& geometry, double output_interval, double g)
+  SegmentObserver(Summary& summary, BlockGeometry& geometry, double output_interval, double g)
       : summary_(summary), geometry_(geometry), interval_(output_interval), g_(g) {}
 
   void start(const BlockState& s) {
@@ -85,7 +85,7 @@ class SegmentObserver {
   }
 
   Summary& summary_;
-  const BlockGeometry& geometry_;
+  BlockGeometry& geometry_;
   double interval_, g_;
   double x0_ = 0.0;
   // The pose last looked at (NaN: none yet).

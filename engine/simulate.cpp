@@ -39,14 +39,14 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
  private:
   friend class EventLoop<FlatGroundSimulation>;
 
-  SystemContext context(const MotionPiece& piece) const {
+  SystemContext context(MotionPiece& piece) {
     return {&geometry_, &piece, &vertical_.piece_at(t_), scene_.g, scene_.contact.friction};
   }
   // The one place that says which ODE system integrates the current mode under `piece`: fn gets
   // that system, or the mode itself for rest and for flight without vertical motion (both closed
   // form). Housner's model rocks without the contact-force guards.
   template <class Fn>
-  decltype(auto) with_system(const MotionPiece& piece, Fn&& fn) const {
+  decltype(auto) with_system(MotionPiece& piece, Fn&& fn) {
     return std::visit(
         [&](const auto& mode) -> decltype(auto) {
           using M = std::decay_t<decltype(mode)>;
@@ -76,13 +76,13 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   };
   void place_at_start() { state_ = initial_state(); }
   void resolve_and_enter(const EventReport& report) { enter(resolve_contact(report)); }
-  EventReport advance(const MotionPiece& piece, double t_stop) {
+  EventReport advance(MotionPiece& piece, double t_stop) {
     return with_system(piece, [&](const auto& system) { return advance(system, piece, t_stop); });
   }
-  bool holds_under(const MotionPiece& piece) const;
+  bool holds_under(MotionPiece& piece);
   bool at_rest() const { return std::holds_alternative<RestMode>(mode_); }
   void observe(const BlockState& s) { observer_.observe_state(s); }
-  ContactForces forces_now() const;
+  ContactForces forces_now();
   ModeKind mode_kind_now() const { return mode_kind(mode_); }
   void finish_summary() {}
   // The flat ground's guards find its crossings as they are.
@@ -103,33 +103,33 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   template <class System>
   EventReport on_event(const System&, int which, double t_event, const BlockState& at_event);
 
-  BlockState initial_state() const;
-  ContactOutcome resolve_contact(const EventReport& report) const;
+  BlockState initial_state();
+  ContactOutcome resolve_contact(const EventReport& report);
   void enter(const ContactOutcome& outcome);
   // How far rest is inside its limits at t (friction and both tipping moments against gravity
   // g (1 + lambda_v), and that gravity positive), in units of g, less kOnsetMargin: rest holds
   // while it is positive.
-  double rest_margin(const MotionPiece& piece, const MotionPiece& vertical, double t) const;
+  double rest_margin(MotionPiece& piece, MotionPiece& vertical, double t) const;
   // The |lambda| below which the resting block neither slides nor tips about a corner (at
   // gravity g): Housner's block never slides and Newmark's never tips.
   double rest_friction_limit() const;
   double rest_tip_limit(Corner c) const;
-  ContactForces resting_forces(const MotionPiece& piece, double t) const {
+  ContactForces resting_forces(MotionPiece& piece, double t) {
     return {-piece.lambda(t) * scene_.g, scene_.g * (1.0 + vertical_.lambda(t))};
   }
   void overturn_at(double t, const BlockState& s);
 
-  EventReport advance(const RestMode&, const MotionPiece& piece, double t_stop);
+  EventReport advance(const RestMode&, MotionPiece& piece, double t_stop);
   // Flight without vertical motion: theta, y and x in closed form.
-  EventReport advance(const FlightMode&, const MotionPiece& piece, double t_stop);
+  EventReport advance(const FlightMode&, MotionPiece& piece, double t_stop);
   // Where a flight from `start` at t_ ends (by t_stop), and whether it ends overturned there.
   struct FlightEnd {
     double t;
     bool overturns;
   };
-  FlightEnd flight_end_of(const FlightStart& start, double t_stop) const;
+  FlightEnd flight_end_of(const FlightStart& start, double t_stop);
   template <class System>
-  EventReport advance(const System& system, const MotionPiece& piece, double t_stop);
+  EventReport advance(const System& system, MotionPiece& piece, double t_stop);
 
   Model model_;
   ContactResolver resolver_;
@@ -138,7 +138,7 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   Mode mode_ = RestMode{};
 };
 
-BlockState FlatGroundSimulation::initial_state() const {
+BlockState FlatGroundSimulation::initial_state() {
   BlockState s;
   s.theta = scene_.initial.theta;
   const double omega = scene_.initial.omega;
@@ -157,7 +157,7 @@ BlockState FlatGroundSimulation::initial_state() const {
   return s;
 }
 
-ContactOutcome FlatGroundSimulation::resolve_contact(const EventReport& report) const {
+ContactOutcome FlatGroundSimulation::resolve_contact(const EventReport& report) {
   const double lambda = motion_.lambda(t_);
   switch (model_) {
     case Model::newmark_sliding: return newmark_.resolve(state_, lambda);
@@ -223,7 +223,7 @@ double FlatGroundSimulation::rest_tip_limit(Corner c) const {
 
 // The exit is placed where lambda is past a threshold by kOnsetMargin, so the modes it leads to
 // see an unambiguous sign; a pulse that only grazes a threshold leaves the block at rest.
-double FlatGroundSimulation::rest_margin(const MotionPiece& piece, const MotionPiece& vertical,
+double FlatGroundSimulation::rest_margin(MotionPiece& piece, MotionPiece& vertical,
                                          double t) const {
   const double lambda = piece.lambda(t), factor = 1.0 + vertical.lambda(t);
   return kOnsetMargin + std::min({rest_friction_limit() * factor - std::abs(lambda),
@@ -231,10 +231,9 @@ double FlatGroundSimulation::rest_margin(const MotionPiece& piece, const MotionP
                                   rest_tip_limit(Corner::left) * factor + lambda, factor});
 }
 
-FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const RestMode&,
-                                                                const MotionPiece& piece,
+FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const RestMode&, MotionPiece& piece,
                                                                 double t_stop) {
-  const MotionPiece& vertical = vertical_.piece_at(t_);
+  MotionPiece& vertical = vertical_.piece_at(t_);
   const bool holds_throughout =
       vertical.is_zero() &&
       (piece.is_zero() ||
@@ -248,7 +247,7 @@ FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const RestMode&,
 }
 
 FlatGroundSimulation::FlightEnd FlatGroundSimulation::flight_end_of(const FlightStart& start,
-                                                                    double t_stop) const {
+                                                                    double t_stop) {
   const double g = scene_.g;
   const double t0 = t_;
   const double min_step = kFlightMinStep * block_time_;
@@ -281,8 +280,7 @@ FlatGroundSimulation::FlightEnd FlatGroundSimulation::flight_end_of(const Flight
 }
 
 FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode&,
-                                                                const MotionPiece& piece,
-                                                                double t_stop) {
+                                                                MotionPiece& piece, double t_stop) {
   const double g = scene_.g;
   const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
   const double t0 = t_;
@@ -326,8 +324,7 @@ FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode
 
 template <class System>
 FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const System& system,
-                                                                const MotionPiece& piece,
-                                                                double t_stop) {
+                                                                MotionPiece& piece, double t_stop) {
   EventReport report;
   with_scene_stepper<System::N>(scene_.solver, system.scale(), [&](auto& stepper) {
     report = integrate_with(system, stepper, piece, t_stop, mode_kind(mode_));
@@ -349,7 +346,7 @@ FlatGroundSimulation::EventReport FlatGroundSimulation::on_event(const System&, 
   return {event};
 }
 
-bool FlatGroundSimulation::holds_under(const MotionPiece& piece) const {
+bool FlatGroundSimulation::holds_under(MotionPiece& piece) {
   return with_system(piece, [&](const auto& system) {
     using S = std::decay_t<decltype(system)>;
     if constexpr (std::is_same_v<S, RestMode>) {
@@ -368,9 +365,9 @@ bool FlatGroundSimulation::holds_under(const MotionPiece& piece) const {
   });
 }
 
-ContactForces FlatGroundSimulation::forces_now() const {
+ContactForces FlatGroundSimulation::forces_now() {
   if (stopped_) return {0.0, 0.0};
-  const MotionPiece& piece = motion_.piece_at(t_);
+  MotionPiece& piece = motion_.piece_at(t_);
   return with_system(piece, [&](const auto& system) -> ContactForces {
     using S = std::decay_t<decltype(system)>;
     if constexpr (std::is_same_v<S, RestMode>) {

@@ -80,7 +80,7 @@ std::array<std::array<double, 4>, 3> flat_impact_system(const std::array<bool, 2
 
 }  // namespace
 
-ContactResolver::ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g)
+ContactResolver::ContactResolver(BlockGeometry& geometry, const Contact& contact, double g)
     : geometry_(geometry),
       mu_(contact.friction),
       e_(contact.restitution),

@@ -25,7 +25,7 @@ class ContactResolver {
  public:
   // The contact tolerances (engine/tolerances.hpp) are scaled by the block's size R and sqrt(g R),
   // the settling speed by sqrt(g (1 + lambda_v) R).
-  ContactResolver(const BlockGeometry& geometry, const Contact& contact, double g);
+  ContactResolver(BlockGeometry& geometry, const Contact& contact, double g);
 
   // gravity_factor: 1 + lambda_v, gravity in the ground's frame over g. Throws SimulationFailure
   // when the impacts do not end (no consistent outcome: reported, never hidden).
@@ -47,7 +47,7 @@ class ContactResolver {
   bool can_slide_rock(const BlockState& s, Corner pivot, int slip, double lambda, double gravity,
                       bool from_flat) const;
 
-  const BlockGeometry& geometry_;
+  BlockGeometry& geometry_;
   double mu_, e_;
   std::optional<RockingRestitution> rocking_;  // engine/contact/rocking_restitution.hpp
   double g_;

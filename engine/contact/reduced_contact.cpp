@@ -14,7 +14,7 @@ double housner_impact_ratio(const BlockGeometry& geometry, Corner old_pivot) {
                                 geometry.inertia_per_mass());
 }
 
-HousnerRules::HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
+HousnerRules::HousnerRules(BlockGeometry& geometry, bool impacts_lose_energy, double g,
                            std::optional<RockingRestitution> rocking)
     : geometry_(geometry),
       impacts_lose_energy_(impacts_lose_energy),

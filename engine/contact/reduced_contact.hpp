@@ -17,7 +17,7 @@ class HousnerRules {
  public:
   // rocking: the scene's rocking restitution; a given r sets omega+ = r omega- at each impact
   // (engine/contact/rocking_restitution.hpp), Housner's or none keeps housner_impact_ratio.
-  HousnerRules(const BlockGeometry& geometry, bool impacts_lose_energy, double g,
+  HousnerRules(BlockGeometry& geometry, bool impacts_lose_energy, double g,
                std::optional<RockingRestitution> rocking = std::nullopt);
 
   // From rest (or a release from a tilt): rocks once lambda exceeds a tipping threshold.
@@ -31,7 +31,7 @@ class HousnerRules {
   // omega after an impact on the other corner of `pivot`.
   double omega_after_impact(double omega, Corner pivot) const;
 
-  const BlockGeometry& geometry_;
+  BlockGeometry& geometry_;
   bool impacts_lose_energy_;
   double settle_velocity_;
   std::optional<RockingRestitution> rocking_;

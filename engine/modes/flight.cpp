@@ -14,7 +14,7 @@ namespace {
 // A corner's height above the ground, its rate and its arm's height above the centre of mass
 // (which gives the height's acceleration), from one sine and cosine.
 struct CornerHeight {
-  const BlockGeometry& geometry;
+  BlockGeometry& geometry;
   const FlightStart& f;
   double g;
   int corner;
@@ -132,7 +132,7 @@ double corner_landing(const CornerHeight& h, CornerHeight::Sample now, double bo
 
 }  // namespace
 
-std::optional<double> first_landing(const BlockGeometry& geometry, const FlightStart& f, double g,
+std::optional<double> first_landing(BlockGeometry& geometry, const FlightStart& f, double g,
                                     double tau_max, double min_step) {
   // A corner's height is y + r_y, and r_y turns at omega: its second derivative -g - omega^2 r_y
   // lies within omega^2 R of -g.

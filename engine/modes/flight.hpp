@@ -27,7 +27,7 @@ inline BlockState flight_pose(const FlightStart& f, double g, double tau) {
 // min_step, so a graze shallower than K min_step^2 / 8 may go unseen. A block turning slower than
 // sqrt(g / R) has every corner's height concave (h'' <= -(g - omega^2 R) < 0), which brackets a
 // corner's landing from any sample above the ground: no advancement, and no graze missed.
-std::optional<double> first_landing(const BlockGeometry& geometry, const FlightStart& f, double g,
+std::optional<double> first_landing(BlockGeometry& geometry, const FlightStart& f, double g,
                                     double tau_max, double min_step);
 
 }  // namespace blockfrag

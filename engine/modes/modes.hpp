@@ -64,10 +64,12 @@ constexpr bool depends_on_ground_motion(GuardEvent event) {
 }
 
 // What every system shares: the block, the contact, the ground motion pieces being integrated.
+// The geometry and the pieces remember their last rotation and lambda, so a system (const while
+// it integrates) reaches them through non-const pointers; the simulation owns them.
 struct SystemContext {
-  const BlockGeometry* geometry;
-  const MotionPiece* piece;     // horizontal: lambda
-  const MotionPiece* vertical;  // lambda_v
+  BlockGeometry* geometry;
+  MotionPiece* piece;     // horizontal: lambda
+  MotionPiece* vertical;  // lambda_v
   double g, mu;
   // Gravity in the ground's frame over g: 1 + lambda_v. With it, each contact mode's equations are
   // the horizontal-only ones with g_v = g (1 + lambda_v) for g and lambda g / g_v for lambda (an

@@ -174,7 +174,7 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
   for (const PieceGrid& grid : grids) {
     const MotionPiece& piece = *grid.piece;
     const bool ringing = until_quiet && grid.start >= foundation_end;
-    const double a_start = -piece.lambda(grid.start) * g;
+    const double a_start = -piece.formula_value(grid.start) * g;
     if (h.times.empty() || a_start != h.foundation_acceleration.back()) {
       record(grid.start, a_start, state);
     }
@@ -183,7 +183,7 @@ CrestHistory dam_crest_history(const GroundMotionPieces& foundation, const DamCr
     double a0 = a_start;
     for (long j = 1; j <= grid.steps; ++j) {
       const double t = j == grid.steps ? grid.end : grid.start + static_cast<double>(j) * step;
-      const double a1 = -piece.lambda(t) * g;  // at the piece's end: its left limit
+      const double a1 = -piece.formula_value(t) * g;  // at the piece's end: its left limit
       state = advance(state, a0, a1);
       record(t, a1, state);
       a0 = a1;

@@ -43,7 +43,8 @@ std::vector<double> mavroeidis_papageorgiou_extrema(const MotionPiece::Formula& 
 
 double MotionPiece::max_abs_lambda() const {
   if (is_zero()) return 0.0;
-  if (f_.shape == Shape::linear) return std::max(std::abs(lambda(start_)), std::abs(lambda(end_)));
+  if (f_.shape == Shape::linear)
+    return std::max(std::abs(formula_value(start_)), std::abs(formula_value(end_)));
   // Mavroeidis-Papageorgiou: three sines of amplitudes 1, (1 + k)/2, (1 - k)/2 add to at most 2.
   if (f_.shape == Shape::mavroeidis_papageorgiou) return 2.0 * std::abs(f_.amplitude);
   return std::abs(f_.amplitude);  // the Ricker wavelet's peak is at its centre
@@ -153,12 +154,12 @@ double GroundMotionPieces::peak_abs_lambda() const {
     std::vector<double> times = piece.extrema_between(piece.start(), piece.end());
     times.push_back(piece.start());
     times.push_back(piece.end());
-    for (const double t : times) peak = std::max(peak, std::abs(piece.lambda(t)));
+    for (const double t : times) peak = std::max(peak, std::abs(piece.formula_value(t)));
   }
   return peak;
 }
 
-const MotionPiece& GroundMotionPieces::search(double t) const {
+MotionPiece& GroundMotionPieces::search(double t) {
   // Next after the last piece, the one a simulation moves on to; then a search (a record has tens
   // of thousands of pieces).
   const auto holds = [&](std::size_t k) {

@@ -58,7 +58,7 @@ double lambda_integral(const MotionPiece& piece, double t) {
     case Shape::constant: return f.amplitude * (t - start);
     case Shape::linear: {
       const double tau = t - start;
-      return tau * (piece.lambda(start) + 0.5 * f.slope * tau);
+      return tau * (piece.formula_value(start) + 0.5 * f.slope * tau);
     }
     case Shape::cosine:
       return f.amplitude / w * (std::sin(w * t + f.phase) - std::sin(w * start + f.phase));
@@ -93,7 +93,7 @@ double lambda_square_integral(const MotionPiece& piece, double t) {
     case Shape::constant: return a2 * (t - start);
     case Shape::linear: {
       // (l0 + s tau)^2 integrates to l0^2 tau + l0 s tau^2 + s^2 tau^3 / 3.
-      const double tau = t - start, l0 = piece.lambda(start), s = f.slope;
+      const double tau = t - start, l0 = piece.formula_value(start), s = f.slope;
       return tau * (l0 * l0 + tau * s * (l0 + s * tau / 3.0));
     }
     case Shape::cosine:
@@ -129,7 +129,7 @@ std::vector<double> lambda_sign_changes(const MotionPiece& piece) {
     case Shape::zero:
     case Shape::constant: break;
     case Shape::linear:
-      if (f.slope != 0.0) keep(t0 - piece.lambda(t0) / f.slope);
+      if (f.slope != 0.0) keep(t0 - piece.formula_value(t0) / f.slope);
       break;
     case Shape::cosine:
     case Shape::sine: {
@@ -321,10 +321,10 @@ double spectral_acceleration_g(const GroundMotionPieces& motion, double period, 
     const MotionPiece& piece = *grid.piece;
     const double h = (grid.end - grid.start) / static_cast<double>(grid.steps);
     const NigamJenningsStep advance(omega, damping, h);
-    double a0 = -piece.lambda(grid.start);
+    double a0 = -piece.formula_value(grid.start);
     for (long j = 1; j <= grid.steps; ++j) {
       const double t = j == grid.steps ? grid.end : grid.start + static_cast<double>(j) * h;
-      const double a1 = -piece.lambda(t);  // at the piece's end: its left limit
+      const double a1 = -piece.formula_value(t);  // at the piece's end: its left limit
       const OscillatorState next = advance(state, a0, a1);
       peak = std::max(peak, std::abs(next.q));
       for (const double tau : step_extrema(omega, damping, h, a0, a1, state, next)) {

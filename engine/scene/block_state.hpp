@@ -20,13 +20,13 @@ struct CornerKinematics {
 };
 
 // Corner i of the block's hull (BlockGeometry::corner).
-inline CornerKinematics corner_kinematics(const BlockGeometry& geometry, const BlockState& s,
+inline CornerKinematics corner_kinematics(BlockGeometry& geometry, const BlockState& s,
                                           int corner) {
   const Vec2 r = geometry.corner_at(corner, s.theta);
   return {r, s.y + r.y, s.vx - s.omega * r.y, s.vy + s.omega * r.x};
 }
 
-inline CornerKinematics corner_kinematics(const BlockGeometry& geometry, const BlockState& s,
+inline CornerKinematics corner_kinematics(BlockGeometry& geometry, const BlockState& s,
                                           Corner corner) {
   return corner_kinematics(geometry, s, static_cast<int>(corner));
 }

@@ -97,11 +97,11 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     piece_end_ready_ = false;
     enter(resolve(report), report);
   }
-  EventReport advance(const MotionPiece& piece, double t_stop);
-  bool holds_under(const MotionPiece& piece);
+  EventReport advance(MotionPiece& piece, double t_stop);
+  bool holds_under(MotionPiece& piece);
   bool at_rest() const { return mode_.rest; }
   void observe(const BlockState& s);
-  ContactForces forces_now() const;
+  ContactForces forces_now();
   ModeKind mode_kind_now() const { return kind_of(mode_); }
   // The observer measures depth below a flat ground at y = 0; on a seat it is the seat's.
   void finish_summary() { summary_.max_penetration = deepest_ / R_; }
@@ -128,12 +128,12 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   GuardWatch<SeatSystem::kGuards> watch_at_piece_start(const Ode& ode, double t,
                                                        const OdeState<Ode::N>& q);
 
-  double gravity_factor(double t) const { return 1.0 + vertical_.lambda(t); }
+  double gravity_factor(double t) { return 1.0 + vertical_.lambda(t); }
   // The settling speed now, in the gravity the block feels.
-  double settle_velocity() const { return settling_speed(scene_.g * gravity_factor(t_), R_); }
+  double settle_velocity() { return settling_speed(scene_.g * gravity_factor(t_), R_); }
   // The load on the block at time t in the state s (engine/contact/body_load.hpp), standing as
   // the current mode has it.
-  BodyLoad load_at(double t, const BlockState& s) const {
+  BodyLoad load_at(double t, const BlockState& s) {
     return body_load(geometry_.inertia_per_mass(), motion_.lambda(t), vertical_.lambda(t), scene_.g,
                      external_, s, footing_of(mode_));
   }
@@ -141,19 +141,19 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     return mode.rest || mode.active.size() >= 2 ? Footing::seated : Footing::lifted;
   }
   // The kinetic energy per unit mass, the added mass's included.
-  double kinetic_energy(const BlockState& s) const {
+  double kinetic_energy(const BlockState& s) {
     return 0.5 * load_at(t_, s).inertia.twice_kinetic(velocity_of(s));
   }
-  SeatSystemContext system_context(const MotionPiece& piece) const;
+  SeatSystemContext system_context(MotionPiece& piece);
   // The system of the current mode under `piece` at t_ and state_, built into system_.
-  SeatSystem& build_system(const MotionPiece& piece);
+  SeatSystem& build_system(MotionPiece& piece);
   // SeatSystem(context, mode_.active, vertices, points) in system_: the last system started on the
   // piece where it lays its guards out so.
   SeatSystem& system_for(const SeatSystemContext& context, const WatchedList& vertices,
                          const WatchedList& points);
   // The system of the current mode for its contact forces alone, watching no vertex or point: what
   // a piece boundary asks of the mode, at each sample of a record.
-  SeatSystem forces_system(const MotionPiece& piece) const {
+  SeatSystem forces_system(MotionPiece& piece) {
     return SeatSystem(system_context(piece), mode_.active, {}, {});
   }
   // The sweep of `system` turning on `chart`: the last one built where it serves them, rebound.
@@ -176,7 +176,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   Approach fastest_approach(const std::vector<SeatPair>& pairs, const BlockState& s) const;
   void landing_impact(BlockState& s, const Approach& approach, const BlockState& start,
                       const BodyInertia& inertia);
-  bool plastic_landing(const std::vector<SeatPair>& pairs) const;
+  bool plastic_landing(const std::vector<SeatPair>& pairs);
   SeatMode resolve(const EventReport& report);
   // The named steps of resolve (engine/seat/seat_resolution.cpp).
   struct CarryingContacts {
@@ -185,7 +185,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   };
   void put_back_on_held_contacts(const std::vector<SeatPair>& pairs);
   void settle_or_lay(BlockState& s, const std::vector<SeatPair>& pairs, bool impacted);
-  CarryingContacts carrying_contacts(const std::vector<SeatPair>& pairs) const;
+  CarryingContacts carrying_contacts(const std::vector<SeatPair>& pairs);
   SeatMode rest_on(const std::vector<SeatPair>& carrying);
   PlanarForces choice_that_moves(PlanarForcesInput problem, const EventReport& report,
                                  const PlanarForces& pinned) const;
@@ -199,14 +199,14 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   bool holds_at_rest(const PlanarForces& f, double relative_tolerance) const;
   Eigen::Vector3d least_kinetic_change(const Eigen::MatrixXd& j, const Eigen::VectorXd& b,
                                        const BodyInertia& inertia) const;
-  void lay_on(const std::vector<SeatPair>& pairs, BlockState& s) const;
+  void lay_on(const std::vector<SeatPair>& pairs, BlockState& s);
   void project_positions(const std::vector<ActiveContact>& active, BlockState& s) const;
   void project(const SeatMode& mode);
   // `decompositions`: the contact problem's, kept over the rest range's search.
   bool rest_holds(double lambda, LcpDecompositions& decompositions) const;
-  void set_rest_thresholds(SeatMode& mode) const;
+  void set_rest_thresholds(SeatMode& mode);
   // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
-  double rest_margin(double t, const MotionPiece& piece, const MotionPiece& vertical) const;
+  double rest_margin(double t, MotionPiece& piece, MotionPiece& vertical) const;
   void enter(const SeatMode& mode, const EventReport& report);
   void stop_at(double t, const BlockState& s, SeatEvent why);
   EventReport advance_rest(double t_stop);

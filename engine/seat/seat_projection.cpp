@@ -43,7 +43,7 @@ Eigen::Vector3d SeatSimulation::least_kinetic_change(const Eigen::MatrixXd& j,
 // the base's slip velocity. With the kinetic metric alone (the centre's velocity kept) a block
 // rocking as it slid went on at its slip plus omega times its height, 6e-5 R further than on the
 // flat ground (SlidingBlockRockingAtZeroRestitutionIsLaidOnTheSeat).
-void SeatSimulation::lay_on(const std::vector<SeatPair>& pairs, BlockState& s) const {
+void SeatSimulation::lay_on(const std::vector<SeatPair>& pairs, BlockState& s) {
   const auto k = static_cast<Eigen::Index>(pairs.size());
   Eigen::MatrixXd normal(k, 3), tangent(k, 3);
   Eigen::VectorXd u(k);
@@ -172,7 +172,7 @@ bool SeatSimulation::rest_holds(double lambda, LcpDecompositions& decompositions
 // the load, affine in lambda, form a convex cone), found by doubling then halving each way from
 // lambda = 0, or, where a load pushes the block (the reservoir's) so that it rests only under the
 // ground's help, from the lambda it came to rest under.
-void SeatSimulation::set_rest_thresholds(SeatMode& mode) const {
+void SeatSimulation::set_rest_thresholds(SeatMode& mode) {
   LcpDecompositions decompositions;
   const auto holds = [&](double lambda) { return rest_holds(lambda, decompositions); };
   const double start =
@@ -197,8 +197,7 @@ void SeatSimulation::set_rest_thresholds(SeatMode& mode) const {
   mode.rest_low = edge(-1.0);
 }
 
-double SeatSimulation::rest_margin(double t, const MotionPiece& piece,
-                                   const MotionPiece& vertical) const {
+double SeatSimulation::rest_margin(double t, MotionPiece& piece, MotionPiece& vertical) const {
   const double lambda = piece.lambda(t), factor = 1.0 + vertical.lambda(t);
   return kOnsetMargin +
          std::min({mode_.rest_high * factor - lambda, lambda - mode_.rest_low * factor, factor});

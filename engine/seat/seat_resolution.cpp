@@ -139,7 +139,7 @@ bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>&
 // 2e-6 s, was found 1e-11 m inside the seat after each and landed again as fast as before, without
 // end (record suite sample 116). A rocking impact under the scene's rocking restitution also
 // leaves its landing point still, whatever e is.
-bool SeatSimulation::plastic_landing(const std::vector<SeatPair>& pairs) const {
+bool SeatSimulation::plastic_landing(const std::vector<SeatPair>& pairs) {
   double fastest = 0.0;
   std::vector<PlanarContact> contacts;
   std::size_t landing = 0;
@@ -253,7 +253,7 @@ void SeatSimulation::settle_or_lay(BlockState& s, const std::vector<SeatPair>& p
 
 // The touching contacts that can carry force (not leaving), and their contact problem at state_.
 SeatSimulation::CarryingContacts SeatSimulation::carrying_contacts(
-    const std::vector<SeatPair>& pairs) const {
+    const std::vector<SeatPair>& pairs) {
   std::vector<SeatPair> carrying_pairs;
   std::vector<PlanarContact> contacts;
   for (const SeatPair& pair : pairs) {

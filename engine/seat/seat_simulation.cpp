@@ -23,14 +23,14 @@
 
 namespace blockfrag {
 
-SeatSystemContext SeatSimulation::system_context(const MotionPiece& piece) const {
+SeatSystemContext SeatSimulation::system_context(MotionPiece& piece) {
   return {&contacts_,      &geometry_,
           &piece,          &vertical_.piece_at(t_),
           scene_.g,        scene_.contact.friction,
           kFallDepth * R_, external_};
 }
 
-SeatSystem& SeatSimulation::build_system(const MotionPiece& piece) {
+SeatSystem& SeatSimulation::build_system(MotionPiece& piece) {
   // Vertices and points in an active contact are not watched for touching: they touch.
   const WatchedList vertices = watched_block_vertices(contacts_, hull_watch_, mode_.active);
   WatchedList points;
@@ -144,8 +144,8 @@ void SeatSimulation::stop_at(double t, const BlockState& s, SeatEvent why) {
 // At rest the block does not move; rest ends where lambda leaves the rest range (by the onset
 // margin).
 SeatSimulation::EventReport SeatSimulation::advance_rest(double t_stop) {
-  const MotionPiece& piece = motion_.piece_at(t_);
-  const MotionPiece& vertical = vertical_.piece_at(t_);
+  MotionPiece& piece = motion_.piece_at(t_);
+  MotionPiece& vertical = vertical_.piece_at(t_);
   const auto forces_at = [&](double t) {
     const Vec2 f = load_at(t, state_).force;
     return ContactForces{-f.x, -f.y};
@@ -360,7 +360,7 @@ GuardWatch<SeatSystem::kGuards> SeatSimulation::watch_at_piece_start(const Ode& 
   return GuardWatch<SeatSystem::kGuards>(at_start, ode.live_slots());
 }
 
-bool SeatSimulation::holds_under(const MotionPiece& piece) {
+bool SeatSimulation::holds_under(MotionPiece& piece) {
   if (mode_.rest) return rest_margin(t_, piece, vertical_.piece_at(t_)) > 0;
   // Where the mode holds, the next piece's advance starts here, in this mode, under this piece:
   // the system that found it holding is that advance's.
@@ -389,7 +389,7 @@ void SeatSimulation::place_at_start() {
   origin_ = {state_.x, centre.y - geometry_.rest_height()};
 }
 
-SeatSimulation::EventReport SeatSimulation::advance(const MotionPiece& piece, double t_stop) {
+SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t_stop) {
   if (mode_.rest) return advance_rest(t_stop);
   from_piece_end_ = system_ready_ && piece_end_ready_;
   piece_end_ready_ = false;
@@ -434,7 +434,7 @@ PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart
   return *sweep_;
 }
 
-ContactForces SeatSimulation::forces_now() const {
+ContactForces SeatSimulation::forces_now() {
   if (!stopped_ && mode_.rest) {
     const Vec2 f = load_at(t_, state_).force;
     return {-f.x, -f.y};

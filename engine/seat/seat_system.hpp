@@ -65,11 +65,13 @@ enum class SeatEvent {
   touches,         // a block vertex reaches the seat or a seat point reaches the block
 };
 
+// The pieces remember their last lambda, so a system (const while it integrates) reaches them
+// through non-const pointers; the simulation owns them.
 struct SeatSystemContext {
   const SeatContacts* contacts;
   const BlockGeometry* geometry;
-  const MotionPiece* piece;                // lambda
-  const MotionPiece* vertical;             // lambda_v
+  MotionPiece* piece;                      // lambda
+  MotionPiece* vertical;                   // lambda_v
   double g, mu, fall_depth;                // fall_depth in m
   const ExternalLoad* external = nullptr;  // none: the dry block
 };

@@ -13,6 +13,10 @@ inline constexpr double kGravity = 9.81;
 inline constexpr double kPaperHalfWidth = 0.5;
 inline constexpr double kPaperHalfHeight = 1.0;
 inline constexpr double pi = std::numbers::pi;
-inline const BlockGeometry paper_block(RectangularBlock{kPaperHalfWidth, kPaperHalfHeight, 1.0});
+// A fresh geometry per call: a geometry remembers the last angle it turned the block by, so each
+// test holds its own.
+inline BlockGeometry paper_block() {
+  return BlockGeometry(RectangularBlock{kPaperHalfWidth, kPaperHalfHeight, 1.0});
+}
 
 }  // namespace blockfrag::testing

@@ -166,7 +166,7 @@ TEST(DamCrestResponse, AResonantDamRocksABlockTheFoundationLeavesStanding) {
       dam_crest_motion(GroundMotionPieces(sine), *on_dam.dam, 4.0, kGravity);
   double onset = -1;
   for (const MotionPiece& piece : crest.pieces()) {
-    const double l0 = piece.lambda(piece.start()), l1 = piece.lambda(piece.end());
+    const double l0 = piece.formula_value(piece.start()), l1 = piece.formula_value(piece.end());
     if (std::max(std::abs(l0), std::abs(l1)) < tan_alpha) continue;
     const double target = std::copysign(tan_alpha, std::abs(l1) >= tan_alpha ? l1 : l0);
     onset = piece.start() + (target - l0) / (l1 - l0) * (piece.end() - piece.start());

@@ -16,7 +16,7 @@ namespace blockfrag {
 namespace {
 
 // max |lambda| on a grid of 1e5 points: an estimate independent of the engine's extrema.
-double scanned_peak(const GroundMotionPieces& motion, double end) {
+double scanned_peak(GroundMotionPieces& motion, double end) {
   double peak = 0.0;
   for (int i = 0; i <= 100000; ++i)
     peak = std::max(peak, std::abs(motion.lambda(end * i / 100000.0)));
@@ -57,7 +57,7 @@ TEST(PulseStudy, MavroeidisPapageorgiouIsScaledToItsPeakAcceleration) {
       EXPECT_EQ(pulse.velocity_amplitude > 0,
                 direction > 0);  // the direction's sign, not the base's
       EXPECT_EQ(pulse.gamma, 2.5);
-      const GroundMotionPieces motion(sample.scene.ground_motion, sample.scene.g);
+      GroundMotionPieces motion(sample.scene.ground_motion, sample.scene.g);
       EXPECT_NEAR(scanned_peak(motion, 2.0), level, 1e-7 * level);
       EXPECT_NEAR(motion.peak_abs_lambda(), level, 1e-14);
     }

@@ -73,7 +73,7 @@ TEST(Accelerogram, ResampleOntoAFinerGridKeepsALinearRecordExactly) {
 TEST(RecordedMotion, LambdaIsMinusTheScaledRecordLinearBetweenSamplesAndZeroAfter) {
   const auto record =
       std::make_shared<const Accelerogram>(Accelerogram{{0.5, 1.0, 2.0}, {0.2, -0.4, 0.6}});
-  const GroundMotionPieces motion(RecordedMotion{"r.txt", 2.5, record});
+  GroundMotionPieces motion(RecordedMotion{"r.txt", 2.5, record});
   EXPECT_EQ(motion.lambda(0.25), 0.0);                         // before the first sample
   EXPECT_NEAR(motion.lambda(0.5), -0.5, 1e-15);                // -2.5 x 0.2
   EXPECT_NEAR(motion.lambda(0.75), -2.5 * -0.1, 1e-15);        // halfway from 0.2 to -0.4
@@ -105,7 +105,7 @@ TEST(RecordedMotion, Rk4RunsAnOffGridRecordOnItsStepGridAndAdaptiveMethodsAsItIs
   for (std::size_t k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(ends[k], 0.02 * static_cast<double>(k + 1));
   // lambda = -a: at 0.02 a = 0.2, at 0.04 a = 0.3 - 0.4 x 0.25 = 0.2, at 0.06 a = 0.3 - 0.4 x 0.75
   // = 0.
-  const GroundMotionPieces motion = scene_motion(scene);
+  GroundMotionPieces motion = scene_motion(scene);
   EXPECT_NEAR(motion.lambda(0.02), -0.2, 1e-12);
   EXPECT_NEAR(motion.lambda(0.04), -0.2, 1e-12);
   EXPECT_NEAR(motion.piece_at(0.05).lambda(0.06), 0.0, 1e-12);

@@ -32,7 +32,7 @@ TEST(ContactResolverImpact, ALandingCornerThatSticksWithoutBounceKeepsHousnersRa
   for (const auto& c : cases) {
     SCOPED_TRACE(c.a);
     const double a = c.a, b = 1.0, omega = 1.0, x = 3.0;
-    const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+    BlockGeometry geometry(RectangularBlock{a, b, 1.0});
     const ContactResolver resolver(geometry, Contact{2.0, 0.0}, kGravity);
     const BlockState before = turning_about(a, b, 0.0, omega, x + a);
     const ContactOutcome out = resolver.resolve(before, 0.0);
@@ -62,7 +62,7 @@ TEST(ContactResolverImpact, AFlatBlockDroppedOnItsBaseBouncesStraightUpByNewtons
   // corner at u_y = 1.5 e - 0.45 (1 + e), which is >= 0 from e = 3/7 on: there the block leaves
   // spinning and drifting to +x instead of straight up.
   const double a = 0.5, b = 1.0, vy = -1.5;
-  const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+  BlockGeometry geometry(RectangularBlock{a, b, 1.0});
   for (const double e : {0.0, 0.3, 0.4}) {
     SCOPED_TRACE(e);
     const ContactResolver resolver(geometry, Contact{0.6, e}, kGravity);
@@ -84,7 +84,7 @@ TEST(ContactResolverImpact, ALandingWhoseReboundWouldBeSlowerThanTheSettlingSpee
   // the model ends anyway: the landing is plastic and the block rocks on about its left corner,
   // at Housner's ratio (as with e = 0). With e = 0.5 it leaves at 1.5 times that speed: it bounces.
   const double a = 0.5, b = 1.0, x = 3.0;
-  const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+  BlockGeometry geometry(RectangularBlock{a, b, 1.0});
   const double settle = kSettleVelocity * std::sqrt(kGravity * geometry.size());
   const double omega = 3.0 * settle / (2.0 * a);
   const BlockState before = turning_about(a, b, 0.0, omega, x + a);
@@ -113,7 +113,7 @@ TEST(ContactResolverImpact, AFlatLandingSlowerThanTheSettlingSpeedEndsASlipSlowe
   // half that speed too, it is laid at rest, as a seat lays a block none of whose contacts moves
   // faster than the settling speed; slipping at twice that speed, it goes on sliding.
   const double a = 0.5, b = 1.0;
-  const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+  BlockGeometry geometry(RectangularBlock{a, b, 1.0});
   const ContactResolver resolver(geometry, Contact{0.4, 0.7}, kGravity);  // mu < a/b: slides flat
   const double settle = kSettleVelocity * std::sqrt(kGravity * geometry.size());
   for (const double slip : {0.5, 2.0}) {
@@ -149,7 +149,7 @@ TEST(ContactResolverImpact, NoImpactGainsKineticEnergy) {
     BlockState s = turning_about(corner_x, b, theta, u(-3.0, 3.0) * v / b, u(-1.0, 1.0));
     s.vx += u(-1.0, 1.0) * v;
     s.vy -= u(0.01, 1.0) * v;  // the corner moves into the ground
-    const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+    BlockGeometry geometry(RectangularBlock{a, b, 1.0});
     const ContactResolver resolver(geometry, Contact{mu, e}, kGravity);
     const ContactOutcome out = resolver.resolve(s, lambda);
     const double before = rectangle_kinetic_energy(a, b, s);

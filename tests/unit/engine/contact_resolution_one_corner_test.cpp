@@ -24,7 +24,7 @@ using testing::kPaperHalfWidth;
 // The paper's block turning at omega about its right (corner_x = a) or left (-a) corner at x = 0.
 ContactOutcome resolve_turning(double corner_x, double theta, double omega, double lambda,
                                double mu, double extra_vx = 0.0) {
-  const BlockGeometry geometry(RectangularBlock{kPaperHalfWidth, kPaperHalfHeight, 1.0});
+  BlockGeometry geometry(RectangularBlock{kPaperHalfWidth, kPaperHalfHeight, 1.0});
   const ContactResolver resolver(geometry, Contact{mu, 0.5}, kGravity);
   BlockState s = turning_about(corner_x, kPaperHalfHeight, theta, omega, 0.0);
   s.vx += extra_vx;

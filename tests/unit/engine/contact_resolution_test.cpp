@@ -19,7 +19,7 @@ using testing::kGravity;
 // The paper's block, resting flat with its centre of mass at x.
 ContactOutcome resolve_from_rest(double mu, double lambda, double gravity_factor = 1.0,
                                  double x = 0.0) {
-  const BlockGeometry geometry(RectangularBlock{0.5, 1.0, 1.0});
+  BlockGeometry geometry(RectangularBlock{0.5, 1.0, 1.0});
   const ContactResolver resolver(geometry, Contact{mu, 0.6}, kGravity);
   return resolver.resolve(flat_state(1.0, x), lambda, gravity_factor);
 }

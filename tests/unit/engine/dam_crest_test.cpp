@@ -128,7 +128,7 @@ TEST(DamCrestMotion, JumpsWhereTheFoundationJumpsUnlessTheParticipationIsOne) {
   const double lambda = 0.3, pulse_end = 0.7;
   const GroundMotionPieces foundation(RectangularPulse{lambda, pulse_end});
   for (const double gamma_phi : {1.0, 1.6}) {
-    const GroundMotionPieces crest =
+    GroundMotionPieces crest =
         dam_crest_motion(foundation, dam_with(0.25, 0.05, gamma_phi), 2.0, kGravity);
     EXPECT_NEAR(crest.lambda(0.0), (1 - gamma_phi) * lambda, 1e-15);
     const double before = crest.lambda(std::nextafter(pulse_end, 0.0));

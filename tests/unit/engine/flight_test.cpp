@@ -15,7 +15,7 @@ namespace {
 using testing::kGravity;
 
 TEST(Flight, FlatBlockThrownUpLandsAfterTwiceTheRiseTime) {
-  const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
+  BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
   const FlightStart start{1.0, 0.0, 2.0, 0.0};  // on its base, rising at 2 m/s, not spinning
   const auto landing = first_landing(block, start, kGravity, 10.0, 1e-5);
   ASSERT_TRUE(landing.has_value());
@@ -27,7 +27,7 @@ TEST(Flight, SpinningBlockLandsOnTheCornerItTurnsDown) {
   // height is y(t) - a sin(w t) - b cos(w t); the landing is its first root, found here by
   // bisection.
   const double a = 0.5, b = 1.0, w = 1.5, vy = 1.0;
-  const BlockGeometry block(RectangularBlock{a, b, 1.0});
+  BlockGeometry block(RectangularBlock{a, b, 1.0});
   const auto height = [&](double t) {
     return b + vy * t - 0.5 * kGravity * t * t - a * std::sin(w * t) - b * std::cos(w * t);
   };
@@ -46,7 +46,7 @@ TEST(Flight, ACornerThatBarelyLeavesAndTurnsDownIsNotLost) {
   // theta = w t, y = b + vy t - g t^2 / 2: the rotation brings it back down at once. It used to be
   // ignored for the flight ("it does not leave"), and the block sank through the ground.
   const double a = 0.17, b = 2.19, w = -0.743;
-  const BlockGeometry block(RectangularBlock{a, b, 1.0});
+  BlockGeometry block(RectangularBlock{a, b, 1.0});
   const double vy = 1e-8 - a * w;  // the right corner's u_y = vy + w r_x = 1e-8
   const auto landing = first_landing(block, FlightStart{b, 0.0, vy, w}, kGravity, 10.0, 1e-5);
   ASSERT_TRUE(landing.has_value());
@@ -59,7 +59,7 @@ TEST(Flight, ACornerStartingAtTheGroundMovingDownLandsBeforeItSinks) {
   // looked at again only after min_step, 5e-9 R under the ground. Bound: its base sinks by at
   // most the landing allowance, 1e-12 R (with the start's depth, 1e-13 R).
   const double a = 4.9, b = 25.7, min_step = 1.8e-4;
-  const BlockGeometry block(RectangularBlock{a, b, 1.0});
+  BlockGeometry block(RectangularBlock{a, b, 1.0});
   const double R = block.size(), y0 = b - 1e-13 * R, vy = -4.5e-5;
   const auto landing =
       first_landing(block, FlightStart{y0, 0.0, vy, 0.0}, kGravity, 10.0, min_step);
@@ -81,7 +81,7 @@ TEST(Flight, BouncesLandWhereAFineScanOfBothCornersFindsTheGround) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 300; ++trial) {
     const double a = 0.2 + 0.8 * unit(rng), b = 0.5 + 1.5 * unit(rng);
-    const BlockGeometry block(RectangularBlock{a, b, 1.0});
+    BlockGeometry block(RectangularBlock{a, b, 1.0});
     const double R = block.size();
     const double theta0 = (unit(rng) - 0.5) * 0.2 * std::atan(a / b);
     const double w = (2 * unit(rng) - 1) * 0.95 * std::sqrt(kGravity / R);
@@ -120,7 +120,7 @@ TEST(Flight, BouncesLandWhereAFineScanOfBothCornersFindsTheGround) {
 }
 
 TEST(Flight, NoLandingWithinTheWindow) {
-  const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
+  BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
   EXPECT_FALSE(
       first_landing(block, FlightStart{1.0, 0.0, 2.0, 0.0}, kGravity, 0.3, 1e-5).has_value());
 }

@@ -9,18 +9,18 @@ namespace blockfrag {
 namespace {
 
 TEST(GroundMotion, PulsesFollowTheirFormulasAndStopAfterTheirWindow) {
-  const GroundMotionPieces cosine(CosinePulse{0.8, 2.0, 1.5});
+  GroundMotionPieces cosine(CosinePulse{0.8, 2.0, 1.5});
   EXPECT_DOUBLE_EQ(cosine.lambda(0.0), 0.8);
   EXPECT_NEAR(cosine.lambda(0.5), 0.0, 1e-15);
   EXPECT_DOUBLE_EQ(cosine.lambda(1.0), -0.8);
   EXPECT_EQ(cosine.lambda(3.0), 0.0);  // 1.5 cycles of 2 s end at 3 s
   EXPECT_EQ(cosine.lambda(10.0), 0.0);
 
-  const GroundMotionPieces sine(SinePulse{-0.5, 1.0, 1.0});
+  GroundMotionPieces sine(SinePulse{-0.5, 1.0, 1.0});
   EXPECT_NEAR(sine.lambda(0.25), -0.5, 1e-15);
   EXPECT_EQ(sine.lambda(1.0), 0.0);
 
-  const GroundMotionPieces step(RectangularPulse{1.2, 0.3});
+  GroundMotionPieces step(RectangularPulse{1.2, 0.3});
   EXPECT_EQ(step.lambda(0.0), 1.2);
   EXPECT_EQ(step.lambda(0.2999), 1.2);
   EXPECT_EQ(step.lambda(0.3), 0.0);
@@ -30,20 +30,20 @@ TEST(GroundMotion, PulsesFollowTheirFormulasAndStopAfterTheirWindow) {
 
 TEST(GroundMotion, APieceEvaluatesItsOwnFormulaAtItsEnd) {
   // The integrator's last stage in a piece lands on the piece's end: it must see the left limit.
-  const GroundMotionPieces step(RectangularPulse{1.2, 0.3});
-  const MotionPiece& pulse = step.piece_at(0.1);
+  GroundMotionPieces step(RectangularPulse{1.2, 0.3});
+  MotionPiece& pulse = step.piece_at(0.1);
   EXPECT_EQ(pulse.end(), 0.3);
   EXPECT_EQ(pulse.lambda(0.3), 1.2);
   EXPECT_EQ(step.piece_at(0.3).lambda(0.3), 0.0);
 }
 
 TEST(GroundMotion, ExtremaAreWhereTheDerivativeVanishes) {
-  const GroundMotionPieces cosine(CosinePulse{1.0, 2.0, 2.0});
+  GroundMotionPieces cosine(CosinePulse{1.0, 2.0, 2.0});
   const auto cos_extrema = cosine.piece_at(0.0).extrema_between(0.0, 4.0);
   ASSERT_EQ(cos_extrema.size(), 3u);  // t = 1, 2, 3 (0 and 4 are the ends)
   for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(cos_extrema[i], 1.0 + i, 1e-15);
 
-  const GroundMotionPieces sine(SinePulse{1.0, 1.0, 1.0});
+  GroundMotionPieces sine(SinePulse{1.0, 1.0, 1.0});
   const auto sin_extrema = sine.piece_at(0.0).extrema_between(0.1, 0.9);
   ASSERT_EQ(sin_extrema.size(), 2u);
   EXPECT_NEAR(sin_extrema[0], 0.25, 1e-15);

@@ -42,8 +42,8 @@ double interpolate(const std::vector<double>& times, const std::vector<double>& 
 
 // lambda(t) up to the end of the motion, where it takes the last piece's left limit: a pulse that
 // ends with a jump would otherwise lose half a step of its value at the end.
-std::function<double(double)> left_limits(const GroundMotionPieces& motion) {
-  const MotionPiece& last = motion.piece_at(std::nextafter(motion.end_of_motion(), 0.0));
+std::function<double(double)> left_limits(GroundMotionPieces& motion) {
+  MotionPiece& last = motion.piece_at(std::nextafter(motion.end_of_motion(), 0.0));
   return [&motion, &last](double t) { return t < last.end() ? motion.lambda(t) : last.lambda(t); };
 }
 
@@ -197,7 +197,7 @@ TEST(PeakGroundVelocity, OfEveryPulseShapeMatchesAFineTrapezoidRule) {
   const std::vector<GroundMotion> motions{SinePulse{0.3, 0.7, 2.5}, CosinePulse{-0.2, 0.4, 3.25},
                                           MakrisPulseC{0.35, 0.9, 2}, ricker, phased};
   for (std::size_t i = 0; i < motions.size(); ++i) {
-    const GroundMotionPieces motion(motions[i], kGravity);
+    GroundMotionPieces motion(motions[i], kGravity);
     const double pgv = peak_ground_velocity(motion, kGravity);
     const auto lambda = left_limits(motion);
     EXPECT_NEAR(pgv, trapezoid_pgv(lambda, motion.end_of_motion(), 2'000'000), 1e-9 * pgv)
@@ -243,7 +243,7 @@ TEST(SignificantDuration, OfEveryPulseShapeMatchesAFineTrapezoidRule) {
   const std::vector<GroundMotion> motions{SinePulse{0.3, 0.7, 2.5}, CosinePulse{-0.2, 0.4, 3.25},
                                           MakrisPulseC{0.35, 0.9, 2}, ricker, phased};
   for (std::size_t i = 0; i < motions.size(); ++i) {
-    const GroundMotionPieces motion(motions[i], kGravity);
+    GroundMotionPieces motion(motions[i], kGravity);
     const auto lambda = left_limits(motion);
     EXPECT_NEAR(significant_duration(motion),
                 trapezoid_d5_95(lambda, motion.end_of_motion(), 2'000'000),
@@ -420,7 +420,7 @@ TEST(SpectralAcceleration, OfSmoothPulsesMatchesRk4OfTheirFormulaToTheDrawingErr
   ricker.period = 0.5;
   const std::vector<GroundMotion> motions{SinePulse{0.3, 0.7, 2.0}, ricker, mp};
   for (std::size_t i = 0; i < motions.size(); ++i) {
-    const GroundMotionPieces motion(motions[i], kGravity);
+    GroundMotionPieces motion(motions[i], kGravity);
     const auto a_of_t = [&](double t) { return -motion.lambda(t); };
     for (const double T : {0.2, 0.7, 2.0}) {
       const double sa = spectral_acceleration_g(motion, T, 0.05);

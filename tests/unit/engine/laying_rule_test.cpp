@@ -18,7 +18,7 @@ constexpr double kLayingG = 9.81, kLayingA = 0.2, kLayingB = 2.0;
 
 // mu = 0.05, below a / b: sliding flat, the block stays flat.
 ContactOutcome lay_flat_block(double vx, double omega) {
-  const BlockGeometry geometry(RectangularBlock{kLayingA, kLayingB, 1.0});
+  BlockGeometry geometry(RectangularBlock{kLayingA, kLayingB, 1.0});
   const ContactResolver resolver(geometry, Contact{0.05, 0.5}, kLayingG);
   BlockState s = testing::flat_state(kLayingB);
   s.vx = vx;
@@ -55,7 +55,7 @@ TEST(FlatGroundLaying, KeepsTheCentresVelocityWhereTheSlipWouldAddEnergy) {
 }
 
 TEST(FlatGroundLaying, NeverAddsEnergyToASlowFlatLanding) {
-  const BlockGeometry geometry(RectangularBlock{kLayingA, kLayingB, 1.0});
+  BlockGeometry geometry(RectangularBlock{kLayingA, kLayingB, 1.0});
   const double settle = settling_speed(kLayingG, geometry.size());
   // Corners landing or leaving slower than the settling speed, the centre sliding either way.
   for (int trial = 0; trial < 2000; ++trial) {

@@ -18,11 +18,15 @@ namespace {
 using testing::kGravity;
 using testing::paper_block;
 const double R = std::sqrt(1.25);
-const MotionPiece lambda_one({MotionPiece::Shape::constant, 1.0}, 0.0, 10.0);
-const MotionPiece lambda_zero({}, 0.0, 10.0);
+// The systems' block and ground motions, shared by this file's tests (gtest runs them one at a
+// time): each remembers the last angle or time it was asked for, so the systems hold them
+// non-const.
+BlockGeometry paper_geometry = paper_block();
+MotionPiece lambda_one({MotionPiece::Shape::constant, 1.0}, 0.0, 10.0);
+MotionPiece lambda_zero({}, 0.0, 10.0);
 
-SystemContext context(const MotionPiece& horizontal, double mu) {
-  return {&paper_block, &horizontal, &lambda_zero, kGravity, mu};
+SystemContext context(MotionPiece& horizontal, double mu) {
+  return {&paper_geometry, &horizontal, &lambda_zero, kGravity, mu};
 }
 
 // Rock (eqs. 2.6, 2.7), D = I/M + r^2 = 5/3: theta'' = g (r_x + lambda r_y) / D = g (0.5 - 1) 3/5

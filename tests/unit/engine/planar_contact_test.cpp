@@ -47,7 +47,7 @@ TEST(PlanarContactForces, OneCornerAgreesWithTodaysResolver) {
     const double theta = pivot == Corner::right ? -tilt : tilt;
     const double omega = 12 * unit(random) - 6;
     const double slip_speed = unit(random) < 0.5 ? 0.0 : 2 * unit(random) - 1;
-    const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+    BlockGeometry geometry(RectangularBlock{a, b, 1.0});
     const Vec2 r = rotate(geometry.base_corner(pivot), std::cos(theta), std::sin(theta));
     BlockState s{0.0, -r.y, theta, omega * r.y + slip_speed, -omega * r.x, omega};
 
@@ -114,7 +114,7 @@ TEST(PlanarContactForces, FlatBlockAgreesWithTodaysResolver) {
     const double a = 0.1 + unit(random), b = 0.1 + 2 * unit(random);
     const double mu = 1.5 * unit(random), lambda = 4 * unit(random) - 2;
     const double vx = unit(random) < 0.5 ? 0.0 : 2 * unit(random) - 1;
-    const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+    BlockGeometry geometry(RectangularBlock{a, b, 1.0});
     BlockState s{0.0, b, 0.0, vx, 0.0, 0.0};
     const ContactOutcome today =
         ContactResolver(geometry, Contact{mu, 0.5}, kGravity).resolve(s, lambda);

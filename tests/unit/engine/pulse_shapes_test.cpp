@@ -41,7 +41,7 @@ double integrate(const std::function<double(double)>& f, double a, double b) {
 
 TEST(PulseShapes, MakrisTypesAAndBAreOneSineAndOneCosineOfAcceleration) {
   const double A = 0.7, Tp = 0.8, w = 2 * pi / Tp;
-  const GroundMotionPieces a(MakrisPulseA{A, Tp}, kGravity), b(MakrisPulseB{-A, Tp}, kGravity);
+  GroundMotionPieces a(MakrisPulseA{A, Tp}, kGravity), b(MakrisPulseB{-A, Tp}, kGravity);
   for (const double t : {0.0, 0.1, 0.2, 0.37, 0.6, 0.79}) {
     EXPECT_NEAR(a.lambda(t), A * std::sin(w * t), 1e-15) << t;
     EXPECT_NEAR(b.lambda(t), -A * std::cos(w * t), 1e-15) << t;
@@ -67,7 +67,7 @@ TEST(PulseShapes, MakrisPhaseSolvesTheZeroDisplacementEquation) {
 TEST(PulseShapes, MakrisTypeCReturnsTheGroundToRest) {
   const double A = 1.3, Tp = 0.6, w = 2 * pi / Tp;
   for (const int n : {1, 2, 4}) {
-    const GroundMotionPieces c(MakrisPulseC{A, Tp, n}, kGravity);
+    GroundMotionPieces c(MakrisPulseC{A, Tp, n}, kGravity);
     const double phi = pulse::makris_c_phase(n);
     const double end = c.pieces().front().end();
     EXPECT_NEAR(end, (n + 0.5 - phi / pi) * Tp, 1e-14);
@@ -78,7 +78,7 @@ TEST(PulseShapes, MakrisTypeCReturnsTheGroundToRest) {
     EXPECT_EQ(c.lambda(end + 1.0), 0.0);
     // Ground velocity -g integral lambda and displacement -g integral (end - s) lambda(s) ds (the
     // twice-repeated integral), in m/s and m; the pulse's own scale is A g Tp / (2 pi) ~ 1.2 m/s.
-    const auto lambda = [&](double s) { return c.pieces().front().lambda(s); };
+    const auto lambda = [&](double s) { return c.pieces().front().formula_value(s); };
     const double velocity = -kGravity * integrate(lambda, 0.0, end);
     const double displacement =
         -kGravity * integrate([&](double s) { return (end - s) * lambda(s); }, 0.0, end);
@@ -92,7 +92,7 @@ TEST(PulseShapes, MakrisTypeCReturnsTheGroundToRest) {
 TEST(PulseShapes, RickerWaveletFollowsItsFormulaInsideItsWindow) {
   const double A = -0.9, Tp = 0.5;
   const RickerWavelet wavelet{A, Tp, {}};
-  const GroundMotionPieces r(wavelet, kGravity);
+  GroundMotionPieces r(wavelet, kGravity);
   const double t0 = 1.5 * Tp;  // the documented default
   EXPECT_EQ(wavelet.center(), t0);
   const auto formula = [&](double t) {
@@ -104,11 +104,11 @@ TEST(PulseShapes, RickerWaveletFollowsItsFormulaInsideItsWindow) {
   EXPECT_DOUBLE_EQ(r.lambda(t0), A);
   // The default centre cuts tails below 1e-6 A (the brief) at both ends of [0, 2 t0].
   EXPECT_LT(std::abs(r.lambda(0.0)), 1e-6 * std::abs(A));
-  EXPECT_LT(std::abs(r.pieces().front().lambda(2 * t0)), 1e-6 * std::abs(A));
+  EXPECT_LT(std::abs(r.pieces().front().formula_value(2 * t0)), 1e-6 * std::abs(A));
   EXPECT_EQ(r.lambda(2 * t0), 0.0);
   EXPECT_EQ(r.lambda(3.0), 0.0);
   // A centre given explicitly moves the window with it.
-  const GroundMotionPieces late(RickerWavelet{A, Tp, 2.0}, kGravity);
+  GroundMotionPieces late(RickerWavelet{A, Tp, 2.0}, kGravity);
   EXPECT_DOUBLE_EQ(late.lambda(2.0), A);
   EXPECT_EQ(late.lambda(4.0), 0.0);
 }
@@ -122,8 +122,9 @@ TEST(PulseShapes, RickerExtremaAreAtTheCentreAndItsSideLobes) {
   EXPECT_NEAR(extrema[0], t0 - side, 1e-15);
   EXPECT_NEAR(extrema[1], t0, 1e-15);
   EXPECT_NEAR(extrema[2], t0 + side, 1e-15);
-  EXPECT_NEAR(piece.lambda(extrema[0]), -2 * std::exp(-1.5), 1e-15);  // the side lobes' depth
-  const auto right = piece.extrema_between(t0, 1.5);                  // an end is not interior
+  EXPECT_NEAR(piece.formula_value(extrema[0]), -2 * std::exp(-1.5),
+              1e-15);                                 // the side lobes' depth
+  const auto right = piece.extrema_between(t0, 1.5);  // an end is not interior
   ASSERT_EQ(right.size(), 1u);
   EXPECT_NEAR(right[0], t0 + side, 1e-15);
   EXPECT_EQ(piece.max_abs_lambda(), 1.0);
@@ -142,8 +143,7 @@ struct MpVelocity {
 
 TEST(PulseShapes, MavroeidisPapageorgiouAccelerationIsTheVelocitysDerivative) {
   const MpVelocity v{0.8, 0.9, 2.3, 0.7, 1.5};
-  const GroundMotionPieces mp(MavroeidisPapageorgiouPulse{v.vp, v.tp, v.gamma, v.nu, v.t0},
-                              kGravity);
+  GroundMotionPieces mp(MavroeidisPapageorgiouPulse{v.vp, v.tp, v.gamma, v.nu, v.t0}, kGravity);
   const double start = v.t0 - v.gamma * v.tp / 2, end = v.t0 + v.gamma * v.tp / 2;
   ASSERT_EQ(mp.pieces().size(), 3u);  // rest, the pulse, rest forever
   EXPECT_NEAR(mp.pieces()[0].end(), start, 1e-15);
@@ -158,19 +158,19 @@ TEST(PulseShapes, MavroeidisPapageorgiouAccelerationIsTheVelocitysDerivative) {
   EXPECT_GT(peak, 0.1);  // the comparison is not between zeros
   for (const double t : {0.0, start - 1e-9, end, end + 0.5}) EXPECT_EQ(mp.lambda(t), 0.0) << t;
   // Its acceleration integrates back to v(t) (-g lambda from the start).
-  const auto lambda = [&](double s) { return mp.pieces()[1].lambda(s); };
+  const auto lambda = [&](double s) { return mp.pieces()[1].formula_value(s); };
   for (const double t : {start + 0.2, v.t0, v.t0 + 0.33, end}) {
     EXPECT_NEAR(-kGravity * integrate(lambda, start, t), v(t), 1e-12) << t;
   }
 }
 
 TEST(PulseShapes, MavroeidisPapageorgiouStartsAtZeroByDefault) {
-  const GroundMotionPieces mp(MavroeidisPapageorgiouPulse{1.0, 1.0, 3.0, 0.0, {}}, kGravity);
+  GroundMotionPieces mp(MavroeidisPapageorgiouPulse{1.0, 1.0, 3.0, 0.0, {}}, kGravity);
   ASSERT_EQ(mp.pieces().size(), 2u);  // no rest before the pulse
   EXPECT_NEAR(mp.pieces()[0].end(), 3.0, 1e-15);
   // Both ends are smooth: the envelope and its slope vanish there.
   EXPECT_NEAR(mp.lambda(0.0), 0.0, 1e-15);
-  EXPECT_NEAR(mp.pieces()[0].lambda(3.0), 0.0, 1e-15);
+  EXPECT_NEAR(mp.pieces()[0].formula_value(3.0), 0.0, 1e-15);
 }
 
 // Every extremum of lambda on a fine grid (a sign change of its finite-difference slope) must be
@@ -180,10 +180,10 @@ void expect_extrema_found(const MotionPiece& piece, double t0, double t1, std::s
   const double step = (t1 - t0) / 200000;
   std::size_t grid_extrema = 0;
   double peak = 0.0;
-  double previous = piece.lambda(t0 + step) - piece.lambda(t0);
+  double previous = piece.formula_value(t0 + step) - piece.formula_value(t0);
   for (double t = t0 + step; t + step < t1; t += step) {
-    peak = std::max(peak, std::abs(piece.lambda(t)));
-    const double slope = piece.lambda(t + step) - piece.lambda(t);
+    peak = std::max(peak, std::abs(piece.formula_value(t)));
+    const double slope = piece.formula_value(t + step) - piece.formula_value(t);
     if ((slope > 0) != (previous > 0)) {
       ++grid_extrema;
       const bool near = std::any_of(found.begin(), found.end(),
@@ -197,7 +197,9 @@ void expect_extrema_found(const MotionPiece& piece, double t0, double t1, std::s
   const double scale = piece.max_abs_lambda() / piece.time_scale();
   for (const double x : found) {
     const double h = 1e-6 * piece.time_scale();
-    EXPECT_NEAR((piece.lambda(x + h) - piece.lambda(x - h)) / (2 * h), 0.0, 1e-6 * scale) << x;
+    EXPECT_NEAR((piece.formula_value(x + h) - piece.formula_value(x - h)) / (2 * h), 0.0,
+                1e-6 * scale)
+        << x;
   }
   EXPECT_GE(piece.max_abs_lambda(), peak);
 }

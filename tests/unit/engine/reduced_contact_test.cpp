@@ -28,7 +28,8 @@ using testing::paper_block;
 const double sqrt_gR = std::sqrt(kGravity * std::hypot(kPaperHalfWidth, kPaperHalfHeight));
 
 TEST(HousnerRules, StartsToRockOnlyPastTheTipThresholdAboutThePushedCorner) {
-  const HousnerRules rules(paper_block, true, kGravity);
+  BlockGeometry block = paper_block();
+  const HousnerRules rules(block, true, kGravity);
   for (const double lambda : {0.0, 0.49, -0.49, 0.5, -0.5}) {  // |lambda| <= a/b = 0.5
     const ContactOutcome out = rules.start(flat_state(kPaperHalfHeight, 2.0), lambda);
     EXPECT_EQ(mode_kind(out.mode), ModeKind::rest) << "lambda = " << lambda;
@@ -52,9 +53,10 @@ TEST(HousnerRules, StartsToRockOnlyPastTheTipThresholdAboutThePushedCorner) {
 
 TEST(HousnerRules, ABlockReleasedTiltedRocksOnItsLowerCorner) {
   // Tilted clockwise (theta < 0) the right corner is the lower one, whatever lambda says.
+  BlockGeometry block = paper_block();
   for (const double lambda : {0.0, -2.0}) {
     const ContactOutcome out =
-        HousnerRules(paper_block, true, kGravity)
+        HousnerRules(block, true, kGravity)
             .start(turning_about(kPaperHalfWidth, kPaperHalfHeight, -0.1, 0.0, 4.0), lambda);
     const auto* rock = std::get_if<RockMode>(&out.mode);
     ASSERT_NE(rock, nullptr) << "lambda = " << lambda;
@@ -67,10 +69,11 @@ TEST(HousnerRules, ALandingHandsOverToTheOtherCornerWithHousnersRatio) {
   // a/b = 0.5: sin^2(alpha) = 0.2, omega+ = 0.7 omega-. Coming back about the right corner
   // (omega > 0) to theta = 0, it goes on about the left one at x - a = -0.5, the centre moving
   // at omega+ x (centre - corner) = (-omega+ b, omega+ a) = (-0.7, 0.35).
-  EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::right), 0.7, 1e-15);
-  EXPECT_NEAR(housner_impact_ratio(paper_block, Corner::left), 0.7, 1e-15);
+  BlockGeometry block = paper_block();
+  EXPECT_NEAR(housner_impact_ratio(block, Corner::right), 0.7, 1e-15);
+  EXPECT_NEAR(housner_impact_ratio(block, Corner::left), 0.7, 1e-15);
   const ContactOutcome out =
-      HousnerRules(paper_block, true, kGravity)
+      HousnerRules(block, true, kGravity)
           .impact(turning_about(kPaperHalfWidth, kPaperHalfHeight, 0.0, 1.0, kPaperHalfWidth),
                   Corner::right, 0.0);
   EXPECT_TRUE(out.impact);
@@ -86,8 +89,9 @@ TEST(HousnerRules, ALandingHandsOverToTheOtherCornerWithHousnersRatio) {
 
 TEST(HousnerRules, WithoutImpactLossesTheHandOverKeepsOmega) {
   // effects ["rocking"]: the pivot changes, omega and the energy do not; no impact is counted.
+  BlockGeometry block = paper_block();
   const ContactOutcome out =
-      HousnerRules(paper_block, false, kGravity)
+      HousnerRules(block, false, kGravity)
           .impact(turning_about(-kPaperHalfWidth, kPaperHalfHeight, 0.0, -2.0, -kPaperHalfWidth),
                   Corner::left, 0.0);
   EXPECT_FALSE(out.impact);
@@ -104,7 +108,8 @@ TEST(HousnerRules, ALandingSlowerThanTheSettleVelocityLaysTheBlockFlat) {
   // 1.4e-4 m/s (flat, at rest under lambda = 0), 2.2e-4 leaves 1.54e-4 (rocks on). Without losses
   // 2e-4 stays 2e-4: it rocks on. Flat under lambda = 0.6 > a/b it starts to rock again at once.
   ASSERT_NEAR(kSettleVelocity * sqrt_gR, 1.4803675e-4, 5e-12);
-  const HousnerRules lossy(paper_block, true, kGravity), lossless(paper_block, false, kGravity);
+  BlockGeometry block = paper_block();
+  const HousnerRules lossy(block, true, kGravity), lossless(block, false, kGravity);
   const auto after = [&](const HousnerRules& rules, double omega, double lambda) {
     return rules.impact(
         turning_about(kPaperHalfWidth, kPaperHalfHeight, 0.0, omega, kPaperHalfWidth),
@@ -124,7 +129,7 @@ TEST(HousnerRules, ALandingSlowerThanTheSettleVelocityLaysTheBlockFlat) {
 }
 
 TEST(NewmarkRules, SlidesFromRestOnlyPastFriction) {
-  const NewmarkRules rules(paper_block, 0.3, kGravity);
+  const NewmarkRules rules(paper_block(), 0.3, kGravity);
   for (const double lambda : {0.0, 0.29, -0.3}) {
     EXPECT_EQ(mode_kind(rules.resolve(flat_state(kPaperHalfHeight), lambda).mode), ModeKind::rest)
         << "lambda = " << lambda;
@@ -140,7 +145,7 @@ TEST(NewmarkRules, SlidesFromRestOnlyPastFriction) {
 
 TEST(NewmarkRules, KeepsSlidingWhileTheBaseMovesAndRestsOnceItStops) {
   // The resting velocity is kRestingVelocity sqrt(g R) = 3.311784e-9 m/s.
-  const NewmarkRules rules(paper_block, 0.3, kGravity);
+  const NewmarkRules rules(paper_block(), 0.3, kGravity);
   const auto moving = [&](double vx) {
     BlockState s = flat_state(kPaperHalfHeight);
     s.vx = vx;

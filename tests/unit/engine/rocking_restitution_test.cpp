@@ -235,7 +235,7 @@ TEST(RockingRestitution, TurnsWithTheGround) {
 // where without the key e = 0.3 throws the block off the ground.
 TEST(RockingRestitution, TheFlatGroundsResolverRocksOnAboutTheLandingCorner) {
   const double a = 0.3, b = 1.0, omega = 1.0, g = 9.81;
-  const BlockGeometry geometry(RectangularBlock{a, b, 1.0});
+  BlockGeometry geometry(RectangularBlock{a, b, 1.0});
   const BlockState before = testing::turning_about(a, b, 0.0, omega, a);
   const ContactOutcome ruled =
       ContactResolver(geometry, Contact{2.0, 0.3, given_ratio(0.6)}, g).resolve(before, 0.0);

@@ -56,8 +56,8 @@ FixedStateForces posed_forces(const SeatContacts& contacts,
 TEST(SeatContactGuards, AreThoseOfTheContactsPoseGivesToTheBit) {
   const SeatContacts contacts{testing::kTypeB, testing::kTypeBSeat};
   const BlockGeometry geometry{PolygonBlock{testing::kTypeB, 1.0}};
-  const MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
-  const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
   const double g = 9.81, mu = 0.7;
   const SeatSystemContext context{
       &contacts, &geometry, &ground, &still, g, mu, 0.5 * geometry.size()};

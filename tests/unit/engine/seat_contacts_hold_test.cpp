@@ -40,7 +40,7 @@ TEST(SeatContactsHold, AgreesWithTheGuardsOfEveryActiveContact) {
   testing::FixedUniforms u(41);
   int held = 0, failed = 0;
   for (int n = 0; n < 4000; ++n) {
-    const MotionPiece push{{MotionPiece::Shape::constant, u(-1.5, 1.5)}, 0.0, 1e3};
+    MotionPiece push{{MotionPiece::Shape::constant, u(-1.5, 1.5)}, 0.0, 1e3};
     const SeatSystemContext context{
         &contacts, &geometry, &push, &push, 9.81, u(0.2, 1.2), 0.5 * geometry.size()};
     const ActiveContact& active = cases[static_cast<std::size_t>(n) % cases.size()];

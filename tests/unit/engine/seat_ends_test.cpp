@@ -194,11 +194,11 @@ TEST(SeatEnds, SlideAndSlipClaimsHoldOverRandomSteps) {
 TEST(SeatEnds, ASlidesLiftOffsAreClaimedWhereLambdaMovesOneWay) {
   const TypeBSeat seat;
   const SeatContacts& c = seat.contacts;
-  const MotionPiece shaking{{.shape = MotionPiece::Shape::sine,
-                             .amplitude = 0.4,
-                             .angular_frequency = 2.0 * std::numbers::pi},
-                            0.0,
-                            1e3};
+  MotionPiece shaking{{.shape = MotionPiece::Shape::sine,
+                       .amplitude = 0.4,
+                       .angular_frequency = 2.0 * std::numbers::pi},
+                      0.0,
+                      1e3};
   SeatSystemContext context = seat.context;
   context.piece = &shaking;
   SeatSystem sliding(context,

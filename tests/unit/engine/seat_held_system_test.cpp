@@ -23,8 +23,8 @@ using testing::same_bits;
 TEST(SeatHeldSystem, GivesAfterItsContactCheckWhatAFreshSystemGives) {
   const SeatContacts contacts{testing::kTypeB, testing::kTypeBSeat};
   const BlockGeometry geometry{PolygonBlock{testing::kTypeB, 1.0}};
-  const MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
-  const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
   const SeatSystemContext context{
       &contacts, &geometry, &ground, &still, 9.81, 0.7, 0.5 * geometry.size()};
   const std::vector<std::vector<ActiveContact>> sets = testing::type_b_contact_sets();

@@ -23,7 +23,7 @@ struct ContactSet {
 TEST(SeatOneGuard, IsTheGuardComputedWithTheOthersToTheBit) {
   const SeatContacts contacts{testing::kTypeB, testing::kTypeBSeat};
   const BlockGeometry geometry{PolygonBlock{testing::kTypeB, 1.0}};
-  const MotionPiece push{{MotionPiece::Shape::constant, 0.3}, 0.0, 1e3};
+  MotionPiece push{{MotionPiece::Shape::constant, 0.3}, 0.0, 1e3};
   const SeatSystemContext context{
       &contacts, &geometry, &push, &push, 9.81, 0.8, 0.5 * geometry.size()};
   const std::vector<ContactSet> sets = {
@@ -51,7 +51,7 @@ TEST(SeatOneGuard, IsTheGuardComputedWithTheOthersToTheBit) {
 TEST(SeatOneGuard, TheGuardsWantedAreThoseComputedWithTheOthersToTheBit) {
   const SeatContacts contacts{testing::kTypeB, testing::kTypeBSeat};
   const BlockGeometry geometry{PolygonBlock{testing::kTypeB, 1.0}};
-  const MotionPiece push{{MotionPiece::Shape::constant, -0.4}, 0.0, 1e3};
+  MotionPiece push{{MotionPiece::Shape::constant, -0.4}, 0.0, 1e3};
   const SeatSystemContext context{
       &contacts, &geometry, &push, &push, 9.81, 0.6, 0.5 * geometry.size()};
   const std::vector<ContactSet> sets = {

@@ -116,8 +116,8 @@ TEST(SeatPieceReuse, ASweepSetUpAgainClaimsWhatANewOneClaims) {
 // last piece's system was last asked about too, where the pieces' ground motions differ.
 TEST(SeatPieceReuse, ASystemStartedOnANewPieceIsTheOneBuiltThere) {
   const testing::TypeBSeat seat;
-  const MotionPiece ending{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
-  const MotionPiece starting{{MotionPiece::Shape::cosine, -0.3, 0.9}, 0.0, 1e3};
+  MotionPiece ending{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
+  MotionPiece starting{{MotionPiece::Shape::cosine, -0.3, 0.9}, 0.0, 1e3};
   SeatSystemContext before = seat.context, after = seat.context;
   before.piece = &ending;
   after.piece = &starting;

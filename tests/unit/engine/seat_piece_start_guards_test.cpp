@@ -23,9 +23,9 @@ using testing::same_bits;
 TEST(SeatPieceStartGuards, PoseGuardsAreTheLastPiecesEndAndContactGuardsAloneAreTheFullOnes) {
   const SeatContacts contacts{testing::kTypeB, testing::kTypeBSeat};
   const BlockGeometry geometry{PolygonBlock{testing::kTypeB, 1.0}};
-  const MotionPiece ending{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
-  const MotionPiece starting{{MotionPiece::Shape::cosine, -0.3, 0.9}, 0.0, 1e3};
-  const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  MotionPiece ending{{MotionPiece::Shape::cosine, 0.4, 1.7}, 0.0, 1e3};
+  MotionPiece starting{{MotionPiece::Shape::cosine, -0.3, 0.9}, 0.0, 1e3};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
   const double g = 9.81, mu = 0.7, fall_depth = 0.5 * geometry.size();
   const SeatSystemContext before{&contacts, &geometry, &ending, &still, g, mu, fall_depth};
   const SeatSystemContext after{&contacts, &geometry, &starting, &still, g, mu, fall_depth};

@@ -52,7 +52,7 @@ std::vector<BlockState> reuse_poses_in_turn() {
 }
 
 TEST(SeatReuse, ThePenetrationAtTheGuardsPoseIsTheOneFoundAnew) {
-  const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
   const std::vector<std::array<double, 2>> flat = {{-100, 0}, {100, 0}};
   for (const auto& block : {kReuseTypeA, kTypeB}) {
     for (const auto& seat : {flat, kTypeBSeat}) {
@@ -294,7 +294,7 @@ TEST(SeatReuse, ASweepsVertexClaimsAreTheOnesTheirOwnHeightsMake) {
   const std::vector<std::array<double, 2>> line = {{-100, -7}, {100, 9}};
   const SeatContacts c(kReuseTypeA, line);
   const BlockGeometry geometry{PolygonBlock{kReuseTypeA, 1.0}};
-  const MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
+  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
   const SeatSystemContext context{&c, &geometry, &still, &still, 9.81, 1.0, geometry.size()};
   const WatchedList vertices{0, 2, 3, 4};
   const SeatSystem system(context, {{{ContactKind::block_vertex, 1, 0}, ContactState::stick}},

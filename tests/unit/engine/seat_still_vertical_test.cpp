@@ -24,9 +24,9 @@ struct VerticalCase {
 TEST(SeatStillVertical, ForcesAndTurningAreThoseOfTheFormulasLoad) {
   const SeatContacts contacts{testing::kTypeB, testing::kTypeBSeat};
   const BlockGeometry geometry{PolygonBlock{testing::kTypeB, 1.0}};
-  const MotionPiece ground{{MotionPiece::Shape::cosine, 0.5, 2.3}, 0.0, 1e3};
+  MotionPiece ground{{MotionPiece::Shape::cosine, 0.5, 2.3}, 0.0, 1e3};
   // A cosine of zero amplitude is -0 where the cosine is negative.
-  const std::vector<VerticalCase> cases = {
+  std::vector<VerticalCase> cases = {
       {MotionPiece{MotionPiece::Formula{}, 0.0, 1e3}, true},
       {MotionPiece{{MotionPiece::Shape::cosine, 0.0, 1.9}, 0.0, 1e3}, true},
       {MotionPiece{{MotionPiece::Shape::cosine, 0.3, 1.9}, 0.0, 1e3}, false}};
@@ -36,7 +36,7 @@ TEST(SeatStillVertical, ForcesAndTurningAreThoseOfTheFormulasLoad) {
   testing::FixedUniforms u(4602);
   int compared = 0;
   for (int n = 0; n < 900; ++n) {
-    const VerticalCase& vertical = cases[static_cast<std::size_t>(n) % cases.size()];
+    VerticalCase& vertical = cases[static_cast<std::size_t>(n) % cases.size()];
     EXPECT_EQ(vertical.vertical.is_zero(), vertical.still);
     const SeatSystemContext context{
         &contacts, &geometry, &ground, &vertical.vertical, g, mu, 0.5 * geometry.size()};
@@ -58,7 +58,7 @@ TEST(SeatStillVertical, ForcesAndTurningAreThoseOfTheFormulasLoad) {
     EXPECT_TRUE(same_bits(flying.solve(t, s).acceleration.y_dd, load.force.y)) << n;
     // Turning about the toe: against a vertical piece that is zero at t but not throughout (a
     // line through zero there), whose formula the system asks.
-    const MotionPiece through_zero{{MotionPiece::Shape::linear, 0.0, 0.0, 0.0, t, 1.0}, 0.0, 1e3};
+    MotionPiece through_zero{{MotionPiece::Shape::linear, 0.0, 0.0, 0.0, t, 1.0}, 0.0, 1e3};
     const SeatSystemContext asked{
         &contacts, &geometry, &ground, &through_zero, g, mu, 0.5 * geometry.size()};
     const Vec2 arm = contacts.pose(toe, s).contact.r;

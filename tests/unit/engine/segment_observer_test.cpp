@@ -9,7 +9,7 @@ namespace blockfrag {
 namespace {
 
 TEST(SegmentObserver, PenetrationIsTheDeepestCornerBelowTheGroundOverR) {
-  const BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
+  BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
   Summary summary;
   SegmentObserver observer(summary, block, 0.0, 9.81);
   BlockState resting;
