@@ -36,23 +36,10 @@ std::size_t base_left(const std::vector<Vertex>& v) {
   return v[before][1] == v[lowest][1] ? before : lowest;
 }
 
-// Andrew's monotone chain, without points on the hull's edges: counter-clockwise, from the
-// lowest-then-leftmost point.
-std::vector<Vertex> convex_hull(std::vector<Vertex> points) {
-  std::sort(points.begin(), points.end(), [](const Vertex& a, const Vertex& b) {
-    return a[1] < b[1] || (a[1] == b[1] && a[0] < b[0]);
-  });
+std::vector<Vertex> convex_hull(const std::vector<Vertex>& points) {
   std::vector<Vertex> hull;
-  const auto add = [&](const Vertex& p, std::size_t floor) {
-    while (hull.size() >= floor + 2 && orientation(hull[hull.size() - 2], hull.back(), p) <= 0) {
-      hull.pop_back();
-    }
-    hull.push_back(p);
-  };
-  for (const Vertex& p : points) add(p, 0);  // right side, going up
-  const std::size_t right_chain = hull.size() - 1;
-  for (auto it = points.rbegin() + 1; it != points.rend(); ++it) add(*it, right_chain);
-  hull.pop_back();  // the first point again
+  for (const int i : convex_hull_indices(points))
+    hull.push_back(points[static_cast<std::size_t>(i)]);
   return hull;
 }
 
@@ -63,6 +50,28 @@ std::string number(double x) {
 }
 
 }  // namespace
+
+std::vector<int> convex_hull_indices(const std::vector<Vertex>& points) {
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto at = [&](int i) -> const Vertex& { return points[static_cast<std::size_t>(i)]; };
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return at(a)[1] < at(b)[1] || (at(a)[1] == at(b)[1] && at(a)[0] < at(b)[0]);
+  });
+  std::vector<int> hull;
+  const auto add = [&](int p, std::size_t floor) {
+    while (hull.size() >= floor + 2 &&
+           orientation(at(hull[hull.size() - 2]), at(hull.back()), at(p)) <= 0) {
+      hull.pop_back();
+    }
+    hull.push_back(p);
+  };
+  for (const int p : order) add(p, 0);  // right side, going up
+  const std::size_t right_chain = hull.size() - 1;
+  for (auto it = order.rbegin() + 1; it != order.rend(); ++it) add(*it, right_chain);
+  hull.pop_back();  // the first point again
+  return hull;
+}
 
 std::optional<PolygonDefect> polygon_defect(const std::vector<Vertex>& v) {
   const std::size_t n = v.size();

@@ -44,6 +44,10 @@ struct PolygonProperties {
   std::vector<Vertex> hull;
 };
 
+// The indices of the convex hull's vertices (Andrew's monotone chain), without points on its
+// edges: counter-clockwise, from the lowest-then-leftmost point.
+std::vector<int> convex_hull_indices(const std::vector<Vertex>& points);
+
 // For a polygon without defects; the vertex list may start at any vertex.
 PolygonProperties polygon_properties(const std::vector<Vertex>& vertices);
 

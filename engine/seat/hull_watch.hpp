@@ -47,8 +47,7 @@ class HullWatch {
   const std::vector<int>& hull() const { return hull_; }
 
  private:
-  // Andrew's monotone chain over the vertices' indices, without points on the hull's edges:
-  // counter-clockwise, from the lowest-then-leftmost vertex.
+  // convex_hull_indices of the vertices.
   static std::vector<int> hull_indices(const std::vector<Vec2>& v);
   // Whether vertex v lies within kHullEdgeSine of the line from vertex `from` through `to`.
   bool near_line(int v, int from, int to) const;
@@ -59,28 +58,9 @@ class HullWatch {
 };
 
 inline std::vector<int> HullWatch::hull_indices(const std::vector<Vec2>& v) {
-  std::vector<int> order(v.size());
-  std::iota(order.begin(), order.end(), 0);
-  const auto at = [&](int i) { return v[static_cast<std::size_t>(i)]; };
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return at(a).y < at(b).y || (at(a).y == at(b).y && at(a).x < at(b).x);
-  });
-  std::vector<int> hull;
-  // > 0 where p lies left of the line from a to b.
-  const auto turn = [&](int a, int b, int p) {
-    return cross(at(b).x - at(a).x, at(b).y - at(a).y, at(p).x - at(a).x, at(p).y - at(a).y);
-  };
-  const auto add = [&](int p, std::size_t floor) {
-    while (hull.size() >= floor + 2 && turn(hull[hull.size() - 2], hull.back(), p) <= 0) {
-      hull.pop_back();
-    }
-    hull.push_back(p);
-  };
-  for (const int p : order) add(p, 0);
-  const std::size_t right_chain = hull.size() - 1;
-  for (auto it = order.rbegin() + 1; it != order.rend(); ++it) add(*it, right_chain);
-  hull.pop_back();
-  return hull;
+  std::vector<Vertex> points;
+  for (const Vec2& p : v) points.push_back({p.x, p.y});
+  return convex_hull_indices(points);
 }
 
 inline bool HullWatch::near_line(int v, int from, int to) const {
