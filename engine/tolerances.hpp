@@ -220,6 +220,11 @@ inline constexpr double kGridRounding = 1e-12;
 // multiple of a fixed step is on that step's grid: the times' decimal digits carry rounding, and
 // RK4 steps the record without resampling it.
 inline constexpr double kStepGridRounding = 1e-9;
+// The reservoir's pass at a pose skips an edge whose rise (its turned y, before the block's
+// height is added) is above this fraction of the centre of mass's height plus the outline's
+// reach: placing a vertex errs by a few units in the last place of those (~1e-16 of them), so
+// such an edge's placed ends rise too and it is dry where the full pass would find it dry.
+inline constexpr double kSurelyRisingEdge = 1e-12;
 
 // --- Settling: the run without a duration -------------------------------------------------------
 // A run that has not settled stops this long after the last excitation ends (unless the scene

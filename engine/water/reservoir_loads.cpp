@@ -21,11 +21,6 @@ bool same_double_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
-// An edge's rise (the turned edge's y) above which its ends placed at any pose rise too, as a
-// fraction of the centre of mass's height and the outline's reach: placing a vertex errs by a few
-// units in the last place of those, ~1e-16 of them.
-constexpr double kSurelyRisingEdge = 1e-12;
-
 }  // namespace
 
 CrackPath rest_crack(const Scene& scene, const BlockOutline& outline) {
