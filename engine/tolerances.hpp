@@ -49,6 +49,13 @@ inline constexpr double kImpactVelocityTolerance = 1e-9;
 // Halvings of the restitution coefficient that find the largest one whose simultaneous impact adds
 // no kinetic energy: 2^-30 of e, below 1e-9.
 inline constexpr int kRestitutionHalvings = 30;
+// A pivot of the flat ground's two-contact impact (a 3 x 3 elimination) this small: the system has
+// no unique solution.
+inline constexpr double kSingularPivot = 1e-300;
+// Gravity in the ground's frame (over g, 1 + lambda_v) where it is exactly zero: the contact has
+// lost its load there, and any tiny value of the right sign gives the same guard outcome without
+// dividing by zero.
+inline constexpr double kLostLoadGravityFactor = 1e-300;
 
 // --- A seat: contacts that drift, blocks that fall ----------------------------------------------
 // An active contact on a seat whose gap has drifted this far (over R) while its mode was
@@ -197,6 +204,12 @@ inline constexpr double kSlopeBoundFactor = 1.001;
 // apart errs by at most (omega h)^2 / 8 of its amplitude, 5e-4 at 100 nodes per period. The same
 // bound covers sampling a smooth foundation piece as linear segments for the filter.
 inline constexpr double kCrestNodesPerPeriod = 100.0;
+
+// The dam's modal oscillator steps by a third-order Taylor series below this omega h: there the
+// closed-form coefficients lose more digits to cancellation (terms of size 1 / (omega^2 h) cancel
+// down to h) than the Taylor step loses to truncation ((omega h)^3): about 2e-12 against 2e-13 of
+// the state's scale.
+inline constexpr double kTaylorBelow = 1e-4;
 
 // --- Intensity measures (engine/motion/intensity_measures.hpp) -----------------------------------
 // The D5-95 crossings are located to this fraction of their piece's length (a cubic or a closed

@@ -16,9 +16,6 @@ namespace blockfrag {
 
 namespace {
 
-// A pivot this small: the 3 x 3 system has no unique solution.
-constexpr double kSingularPivot = 1e-300;
-
 int sign_of(double v) { return v > 0 ? 1 : -1; }
 
 // Solves the 3x3 system A z = b by Gaussian elimination with partial pivoting.

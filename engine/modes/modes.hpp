@@ -73,11 +73,10 @@ struct SystemContext {
   double g, mu;
   // Gravity in the ground's frame over g: 1 + lambda_v. With it, each contact mode's equations are
   // the horizontal-only ones with g_v = g (1 + lambda_v) for g and lambda g / g_v for lambda (an
-  // exact identity when lambda_v = 0). Exactly zero it would divide by zero: the contact has
-  // lost its load there, so any sign-preserving tiny value gives the same guard outcome.
+  // exact identity when lambda_v = 0).
   double gravity_factor(double t) const {
     const double factor = 1.0 + vertical->lambda(t);
-    return factor == 0.0 ? 1e-300 : factor;
+    return factor == 0.0 ? kLostLoadGravityFactor : factor;
   }
   double length_scale() const { return geometry->size(); }
   // A base corner relative to the centre of mass, in the world frame.

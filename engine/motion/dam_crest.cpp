@@ -17,11 +17,6 @@ namespace {
 constexpr double kMetresPerFoot = 0.3048;
 constexpr double kPascalsPerPsi = 6894.757293168361;  // 1 lbf / in^2
 
-// Below this omega h the closed-form coefficients lose more digits to cancellation (terms of size
-// 1 / (omega^2 h) cancel down to h) than a third-order Taylor step loses to truncation
-// ((omega h)^3): about 2e-12 against 2e-13 of the state's scale here.
-constexpr double kTaylorBelow = 1e-4;
-
 }  // namespace
 
 PieceGrid piece_grid(const MotionPiece& piece, double duration, double period) {
