@@ -365,6 +365,10 @@ class SeatOde {
         return;
       }
       dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
+    } else if constexpr (std::is_same_v<Chart, SlipChart>) {
+      const Vec2 r = chart_.fresh_arm(q[0]);
+      const BlockState s = chart_.full_at_arm(q, r);
+      dq = chart_.rates_at_arm(q, r, system_->solve(t, s).acceleration);
     } else {
       const BlockState s = chart_.full(t, q);
       dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
