@@ -153,8 +153,9 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
     const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
     // One contact's forces go straight into the kept ones; where its fixed-size solve gives
     // none, the general solve overwrites them whole.
-    if (!(count_ == 1 &&
-          one_contact_forces(contacts[0], states_[0], s, load, c_.mu, last_solve_.forces))) {
+    if (count_ == 0) {
+      last_solve_.forces = no_contact_forces(load);
+    } else if (!one_contact_forces(contacts[0], states_[0], s, load, c_.mu, last_solve_.forces)) {
       last_solve_.forces = fixed_state_forces(active, states, s, load, c_.mu);
     }
   }
