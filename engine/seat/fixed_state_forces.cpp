@@ -113,15 +113,17 @@ FixedStateForces forces_of_amounts(std::span<const PlanarContact> contacts,
 
 }  // namespace
 
+FixedStateForces no_contact_forces(const BodyLoad& load) {
+  FixedStateForces out;
+  out.acceleration = free_acceleration_of(load);
+  return out;
+}
+
 FixedStateForces general_fixed_state_forces(std::span<const PlanarContact> contacts,
                                             std::span<const ContactState> states,
                                             const BlockState& s, const BodyLoad& load, double mu) {
+  if (contacts.empty()) return no_contact_forces(load);
   const BodyAcceleration free = free_acceleration_of(load);
-  if (contacts.empty()) {
-    FixedStateForces out;
-    out.acceleration = free;
-    return out;
-  }
   const RigidVelocity v{s.vx, s.vy, s.omega};
   // Rows: each contact's normal acceleration, and a sticking one's tangential. Unknowns: each
   // contact's normal force, and a sticking one's friction (a slipping one's follows the normal).

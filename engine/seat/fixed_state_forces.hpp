@@ -28,6 +28,9 @@ struct FixedStateForces {
 FixedStateForces fixed_state_forces(std::span<const PlanarContact> contacts,
                                     std::span<const ContactState> states, const BlockState& s,
                                     const BodyLoad& load, double mu);
+// No contact (flight): no forces, and the load's own accelerations, M^-1 Q; what the general solve
+// gives for no contacts, without its passes (a wet block's flight, at every stage).
+FixedStateForces no_contact_forces(const BodyLoad& load);
 // The same always by the LU.
 FixedStateForces general_fixed_state_forces(std::span<const PlanarContact> contacts,
                                             std::span<const ContactState> states,

@@ -98,8 +98,17 @@ struct SlipChart {
   OdeState<N> scale(double R, double g) const {
     return {1.0, std::sqrt(g / R), R, std::sqrt(g * R)};
   }
-  BlockState full(double, const OdeState<N>& q) const {
-    const Vec2 r = seat_chart_detail::turned(body, q[0]);
+  // The vertex less the centre of mass at theta.
+  Vec2 arm(double theta) const { return seat_chart_detail::turned(body, theta); }
+  // arm(theta) at a tilt not asked for before (a right-hand side's stage: fresh_turn).
+  Vec2 fresh_arm(double theta) const {
+    const SineCosine turn = fresh_turn(theta);
+    return rotate(body, turn.cos, turn.sin);
+  }
+  BlockState full(double, const OdeState<N>& q) const { return full_at_arm(q, arm(q[0])); }
+  // full() with the arm at q's tilt given: a right-hand side turns it once for the state and the
+  // rates.
+  BlockState full_at_arm(const OdeState<N>& q, Vec2 r) const {
     const Vec2 d = line.direction, n = line.normal;
     const Vec2 p{origin.x + q[2] * d.x + line.offset * n.x,
                  origin.y + q[2] * d.y + line.offset * n.y};
@@ -112,8 +121,8 @@ struct SlipChart {
     return {b.theta, b.omega, seat_chart_detail::along(p, d),
             seat_chart_detail::along({b.vx - b.omega * r.y, b.vy + b.omega * r.x}, d)};
   }
-  OdeState<N> rates(const OdeState<N>& q, const BlockState& s, const BodyAcceleration& a) const {
-    const Vec2 r = seat_chart_detail::turned(body, s.theta);
+  // The rates at q, the arm at q's tilt r.
+  OdeState<N> rates_at_arm(const OdeState<N>& q, Vec2 r, const BodyAcceleration& a) const {
     const double w2 = q[1] * q[1];
     const Vec2 vertex{a.x_dd - a.theta_dd * r.y - w2 * r.x, a.y_dd + a.theta_dd * r.x - w2 * r.y};
     return {q[1], a.theta_dd, q[3], seat_chart_detail::along(vertex, line.direction)};

@@ -148,22 +148,32 @@ Vec2 SeatContacts::vertex_at(int i, const BlockState& s) const {
 }
 
 PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s) const {
-  const Vec2 centre{s.x, s.y};
-  if (pair.kind == ContactKind::block_vertex) {
-    const Vec2 a = seat_[static_cast<std::size_t>(pair.seat)];
-    const Segment& seg = segments_[static_cast<std::size_t>(pair.seat)];
-    const Vec2 p = vertex_at(pair.block, s);
-    const Vec2 ap = minus(p, a);
-    return {dot(seg.normal, ap), dot(seg.direction, ap), seg.length,
-            PlanarContact{minus(p, centre), seg.normal, ContactKind::block_vertex}};
-  }
-  const Vec2 a = vertex_at(pair.block, s);
-  const Vec2 b = vertex_at((pair.block + 1) % vertex_count(), s);
+  if (pair.kind == ContactKind::block_vertex) return vertex_pose(pair, s, vertex_at(pair.block, s));
+  return point_pose(pair, s, vertex_at(pair.block, s),
+                    vertex_at((pair.block + 1) % vertex_count(), s));
+}
+
+PairPose SeatContacts::pose(const SeatPair& pair, const BlockState& s,
+                            std::span<const Vec2> world) const {
+  const auto block = static_cast<std::size_t>(pair.block);
+  if (pair.kind == ContactKind::block_vertex) return vertex_pose(pair, s, world[block]);
+  return point_pose(pair, s, world[block], world[(block + 1) % body_.size()]);
+}
+
+PairPose SeatContacts::vertex_pose(const SeatPair& pair, const BlockState& s, Vec2 p) const {
+  const Vec2 a = seat_[static_cast<std::size_t>(pair.seat)];
+  const Segment& seg = segments_[static_cast<std::size_t>(pair.seat)];
+  const Vec2 ap = minus(p, a);
+  return {dot(seg.normal, ap), dot(seg.direction, ap), seg.length,
+          PlanarContact{minus(p, Vec2{s.x, s.y}), seg.normal, ContactKind::block_vertex}};
+}
+
+PairPose SeatContacts::point_pose(const SeatPair& pair, const BlockState& s, Vec2 a, Vec2 b) const {
   const SegmentFrame edge = segment_frame(a, b);
   const Vec2 p = seat_[static_cast<std::size_t>(pair.seat)];
   const Vec2 ap = minus(p, a);
   return {-dot(edge.normal, ap), dot(edge.direction, ap), edge.length,
-          PlanarContact{minus(p, centre), edge.normal, ContactKind::seat_point}};
+          PlanarContact{minus(p, Vec2{s.x, s.y}), edge.normal, ContactKind::seat_point}};
 }
 
 void SeatContacts::vertices_on_segments(const BlockState& s, double tolerance,

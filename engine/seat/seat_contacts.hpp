@@ -63,6 +63,9 @@ class SeatContacts {
   Vec2 vertex_at(int i, const BlockState& s) const;
 
   PairPose pose(const SeatPair& pair, const BlockState& s) const;
+  // The same with the block's vertices at s given (world_vertices): the guards, which have turned
+  // them all, pose a seat point's contact without turning its edge's ends again.
+  PairPose pose(const SeatPair& pair, const BlockState& s, std::span<const Vec2> world) const;
 
   // Every pair whose gap is within `tolerance` of zero and whose point lies on its segment or
   // edge (within `tolerance`), but `left` (a contact that has just left its segment's end). A
@@ -170,6 +173,9 @@ class SeatContacts {
                             const std::optional<SeatPair>& left, std::vector<SeatPair>& found,
                             std::vector<bool>& vertex_on_seat) const;
   Vec2 upward_at_point(int k) const;
+  // pose() of a block vertex at p, and of a seat point on the block's edge from a to b.
+  PairPose vertex_pose(const SeatPair& pair, const BlockState& s, Vec2 p) const;
+  PairPose point_pose(const SeatPair& pair, const BlockState& s, Vec2 a, Vec2 b) const;
   // clearance_at on any seat, past its ends or over any of its segments.
   double clearance_at_any(Vec2 p) const;
   bool takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k, bool at_start,

@@ -70,6 +70,10 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
     }
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
     use(base, SeatEvent::lift_off);
+    force_slots_[static_cast<std::size_t>(force_slot_count_++)] = static_cast<int>(base);
+    if (a.state == ContactState::stick) {
+      force_slots_[static_cast<std::size_t>(force_slot_count_++)] = static_cast<int>(base + 1);
+    }
     use(base + 1,
         a.state == ContactState::stick ? SeatEvent::friction_limit : SeatEvent::slip_stops);
     // A sticking contact's point does not move along its segment or edge (the type B block
@@ -119,22 +123,6 @@ SeatSystem::Contacts SeatSystem::active_contacts(const BlockState& s) const {
   return contacts;
 }
 
-// Inlined into the guards, its one caller: a call returned the six contacts through memory.
-[[gnu::always_inline]] inline SeatSystem::Contacts SeatSystem::active_contacts(
-    const BlockState& s, std::span<const Vec2> world) const {
-  Contacts contacts;
-  for (int i = 0; i < count_; ++i) {
-    const auto at = static_cast<std::size_t>(i);
-    const SeatPair& pair = active_[at].pair;
-    if (pair.kind == ContactKind::block_vertex) {
-      contacts[at] = vertex_contact(at, world[static_cast<std::size_t>(pair.block)], s);
-    } else {
-      contacts[at] = c_.contacts->pose(pair, s).contact;
-    }
-  }
-  return contacts;
-}
-
 bool SeatSystem::solved_at(double t, const BlockState& s) const {
   return t == last_solve_.t && std::memcmp(&s, &last_solve_.s, sizeof s) == 0;
 }
@@ -165,8 +153,9 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
     const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
     // One contact's forces go straight into the kept ones; where its fixed-size solve gives
     // none, the general solve overwrites them whole.
-    if (!(count_ == 1 &&
-          one_contact_forces(contacts[0], states_[0], s, load, c_.mu, last_solve_.forces))) {
+    if (count_ == 0) {
+      last_solve_.forces = no_contact_forces(load);
+    } else if (!one_contact_forces(contacts[0], states_[0], s, load, c_.mu, last_solve_.forces)) {
       last_solve_.forces = fixed_state_forces(active, states, s, load, c_.mu);
     }
   }
@@ -225,7 +214,8 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   const auto contact_guards = std::span(wanted).subspan(2, kSeatContactGuards * count_);
   if (std::find(contact_guards.begin(), contact_guards.end(), true) != contact_guards.end()) {
     set_contact_guards(
-        t, s, std::span(world).first(static_cast<std::size_t>(c_.contacts->vertex_count())), out);
+        t, s, std::span(world).first(static_cast<std::size_t>(c_.contacts->vertex_count())), wanted,
+        out);
   }
   std::size_t g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const int i : watched_vertices_) {
@@ -240,30 +230,52 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
 }
 
 void SeatSystem::set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
-                                    std::array<double, kGuards>& out) {
+                                    const GuardClaims& wanted, std::array<double, kGuards>& out) {
   const double R = c_.geometry->size();
-  const Contacts contacts = active_contacts(s, world);
-  const FixedStateForces& f = solve(t, s, contacts);
+  // The active contacts at s as SeatContacts::pose gives them, from the world vertices: a block
+  // vertex's from its vertex alone, a seat point's posed once for its contact and its place along
+  // the block's edge (a slipping block's guards, at each sample inside its steps).
+  Contacts contacts;
+  std::array<SeatContacts::RunPlace, kMaxSeatContacts> on_edge;  // a seat point's place
+  for (int i = 0; i < count_; ++i) {
+    const auto at = static_cast<std::size_t>(i);
+    const SeatPair& pair = active_[at].pair;
+    if (pair.kind == ContactKind::block_vertex) {
+      contacts[at] = vertex_contact(at, world[static_cast<std::size_t>(pair.block)], s);
+    } else {
+      const PairPose p = c_.contacts->pose(pair, s, world);
+      contacts[at] = p.contact;
+      on_edge[at] = {p.along, p.length};
+    }
+  }
+  // Only a lift-off guard and a sticking contact's friction guard read the forces: a sample inside
+  // a slipping block's step mostly follows its slip's speed alone (the type B block sliding on its
+  // seat's fold under the reservoir, at each of its steps' samples), which the forces, and the
+  // water's loads they take, do not change.
+  bool forces_read = false;
+  for (int k = 0; k < force_slot_count_ && !forces_read; ++k) {
+    forces_read = wanted[static_cast<std::size_t>(force_slots_[static_cast<std::size_t>(k)])];
+  }
+  const FixedStateForces* f = forces_read ? &solve(t, s, contacts) : nullptr;
   const RigidVelocity v{s.vx, s.vy, s.omega};
   const double velocity_scale = std::sqrt(c_.g * R);
   for (int i = 0; i < count_; ++i) {
     const auto at = static_cast<std::size_t>(i);
     const auto base = static_cast<std::size_t>(2 + kSeatContactGuards * i);
     const PlanarContact& c = contacts[at];
-    out[base] = lift_off_guard(f, at);
     const int slip = slip_sign(active_[at].state);
-    out[base + 1] =
-        slip == 0 ? friction_guard(f, at) : slip * contact_velocity(c, v).tangent / velocity_scale;
-    if (slip != 0 && active_[at].pair.kind == ContactKind::block_vertex) {
-      const SeatContacts::RunPlace run =
-          c_.contacts->place_on_run(active_[at].pair.seat, {s.x + c.r.x, s.y + c.r.y});
-      out[base + 2] = run.along / R;
-      out[base + 3] = (run.length - run.along) / R;
-    } else if (slip != 0) {
-      const PairPose p = c_.contacts->pose(active_[at].pair, s);
-      out[base + 2] = p.along / R;
-      out[base + 3] = (p.length - p.along) / R;
+    if (f != nullptr) {
+      out[base] = lift_off_guard(*f, at);
+      if (slip == 0) out[base + 1] = friction_guard(*f, at);
     }
+    if (slip == 0) continue;
+    out[base + 1] = slip * contact_velocity(c, v).tangent / velocity_scale;
+    const SeatContacts::RunPlace place =
+        active_[at].pair.kind == ContactKind::block_vertex
+            ? c_.contacts->place_on_run(active_[at].pair.seat, {s.x + c.r.x, s.y + c.r.y})
+            : on_edge[at];
+    out[base + 2] = place.along / R;
+    out[base + 3] = (place.length - place.along) / R;
   }
 }
 

@@ -201,18 +201,15 @@ class SeatSystem {
   double friction_guard(const FixedStateForces& f, std::size_t at) const {
     return (c_.mu * f.normal[at] - std::abs(f.tangent[at])) / c_.g;
   }
-  // The active contacts' guards (four each from slot 2) into `out`; `world`: the block's vertices
-  // at s (SeatContacts::world_vertices).
+  // The active contacts' guards (four each from slot 2) among those `wanted` names into `out` (the
+  // others may be left unset); `world`: the block's vertices at s (SeatContacts::world_vertices).
   void set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
-                          std::array<double, kGuards>& out);
+                          const GuardClaims& wanted, std::array<double, kGuards>& out);
   // The active contacts at s (the first count_ set), as SeatContacts::pose gives them: a block
   // vertex's is its world vertex less the centre of mass on its segment's fixed normal, found
   // without pose()'s gap and place (every right-hand side of a slipping or sliding block).
   using Contacts = std::array<PlanarContact, kMaxSeatContacts>;
   Contacts active_contacts(const BlockState& s) const;
-  // The same with the block's vertices at s given, without turning a vertex again (a rocking
-  // block's guards, at every step).
-  Contacts active_contacts(const BlockState& s, std::span<const Vec2> world) const;
   // Active contact `at`, a block vertex's, with that vertex at p in the world frame.
   PlanarContact vertex_contact(std::size_t at, Vec2 p, const BlockState& s) const {
     return {{p.x - s.x, p.y - s.y}, normals_[at], ContactKind::block_vertex};
@@ -247,6 +244,10 @@ class SeatSystem {
   GuardClaims unused_, live_;            // live_: the used slots, each unused_'s negation
   std::array<int, kGuards> live_slots_;  // the used slots in order, the first live_count_
   int live_count_ = 0;
+  // The slots of the guards made of the contact forces (each active contact's lift-off guard, and a
+  // sticking one's friction guard), the first force_slot_count_.
+  std::array<int, 2 * kMaxSeatContacts> force_slots_;
+  int force_slot_count_ = 0;
   // The last forces solved, and the time and state they were solved at.
   struct Solved {
     double t = std::numeric_limits<double>::quiet_NaN();
@@ -364,6 +365,10 @@ class SeatOde {
         return;
       }
       dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
+    } else if constexpr (std::is_same_v<Chart, SlipChart>) {
+      const Vec2 r = chart_.fresh_arm(q[0]);
+      const BlockState s = chart_.full_at_arm(q, r);
+      dq = chart_.rates_at_arm(q, r, system_->solve(t, s).acceleration);
     } else {
       const BlockState s = chart_.full(t, q);
       dq = chart_.rates(q, s, system_->solve(t, s).acceleration);

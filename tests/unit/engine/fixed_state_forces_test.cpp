@@ -1,5 +1,6 @@
-// The forces of one contact on a seat (engine/seat/fixed_state_forces.hpp): the fixed-size solve
-// against the general one on random poses and velocities, and against the flat ground's closed
+// The forces of no contact and of one contact on a seat (engine/seat/fixed_state_forces.hpp): the
+// fixed-size solve against the general one on random poses and velocities, and against the flat
+// ground's closed
 // forms (engine/contact/contact_dynamics.hpp) for a contact whose normal is turned by any angle,
 // with the whole scene turned with it.
 #include "engine/seat/fixed_state_forces.hpp"
@@ -15,11 +16,13 @@
 #include "engine/contact/contact_dynamics.hpp"
 #include "engine/sine_cosine.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 
 namespace blockfrag {
 namespace {
 
 using testing::FixedUniforms;
+using testing::same_bits;
 
 constexpr double kG = 9.81;
 constexpr std::array<ContactState, 3> kStates = {ContactState::stick, ContactState::slip_positive,
@@ -56,6 +59,30 @@ TEST(OneContactForces, AgreeWithTheGeneralSolveOnRandomPosesAndVelocities) {
     ++compared;
   }
   EXPECT_GT(compared, 19900);
+}
+
+// Without contacts (flight, the system's shortcut and the solves' answer for none): no forces,
+// and the load's own accelerations M^-1 Q to the bit, under a diagonal and a coupled mass matrix.
+TEST(NoContactForces, AreNoneAndTheLoadsOwnAccelerations) {
+  FixedUniforms u(20261208);
+  for (int n = 0; n < 2000; ++n) {
+    const double k2 = u(1, 60), added = n % 2 == 0 ? 0.0 : u(0, 3), lever = u(-5, 5);
+    const BodyLoad load{{u(-2, 2) * kG, -kG * (1 + u(-0.5, 0.5))},
+                        u(-20, 20) * kG,
+                        {k2, added, -added * lever, added * lever * lever * u(1, 1.5)}};
+    const Eigen::Vector3d free = load.free_acceleration();
+    const BlockState s{0.0, 0.0, u(-1, 1), u(-3, 3), u(-3, 3), u(-1, 1)};
+    const FixedStateForces solved = fixed_state_forces({}, {}, s, load, u(0, 1.2));
+    for (const FixedStateForces& f : {no_contact_forces(load), solved}) {
+      EXPECT_TRUE(same_bits(f.acceleration.x_dd, free(0))) << n;
+      EXPECT_TRUE(same_bits(f.acceleration.y_dd, free(1))) << n;
+      EXPECT_TRUE(same_bits(f.acceleration.theta_dd, free(2))) << n;
+      EXPECT_TRUE(same_bits(f.total.x, 0.0) && same_bits(f.total.y, 0.0)) << n;
+      for (std::size_t i = 0; i < f.normal.size(); ++i) {
+        EXPECT_TRUE(same_bits(f.normal[i], 0.0) && same_bits(f.tangent[i], 0.0)) << n;
+      }
+    }
+  }
 }
 
 // Under a coupled mass matrix (an added mass with its lever arm, positive definite) and a moment.

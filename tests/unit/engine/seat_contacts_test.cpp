@@ -1,8 +1,9 @@
 // Where a block touches its seat (engine/seat/seat_contacts.hpp): which contact a seat point that
-// reaches the block at one of its corners is taken as.
+// reaches the block at one of its corners is taken as, and how a pair is posed.
 #include "engine/seat/seat_contacts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/same_bits.hpp"
 #include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
@@ -18,6 +20,7 @@ namespace {
 using testing::kFoldX;
 using testing::kTypeB;
 using testing::kTypeBSeat;
+using testing::same_bits;
 
 bool found(const std::vector<SeatPair>& pairs, const SeatPair& pair) {
   return std::find(pairs.begin(), pairs.end(), pair) != pairs.end();
@@ -121,6 +124,44 @@ TEST(SeatContacts, ASegmentsNormalIsItsBlockVertexContactsNormalAtAnyPose) {
       }
     }
   }
+}
+
+// The guards pose a seat point's contact from the world vertices they have turned: every pair's
+// pose from them is pose()'s to the bit (gap, place, length and contact), on every block edge and
+// seat segment, at any pose.
+TEST(SeatContacts, APoseFromTheWorldVerticesIsPosesToTheBit) {
+  const std::vector<std::array<double, 2>> valley = {{-3.0, 1.2}, {-1.1, 0.3}, {0.0, 0.0},
+                                                     {2.7, 0.4},  {4.4, 2.9},  {6.0, 2.95}};
+  testing::FixedUniforms u(11);
+  int compared = 0;
+  for (const auto& seat : {kTypeBSeat, valley}) {
+    const SeatContacts contacts(kTypeB, seat);
+    for (int trial = 0; trial < 50; ++trial) {
+      const BlockState s{u(-5.0, 5.0), u(-5.0, 5.0), u(-1.6, 1.6), 0.0, 0.0, 0.0};
+      std::array<Vec2, kMaxSeatClearances> world;
+      contacts.world_vertices(s, world);
+      for (int i = 0; i < contacts.vertex_count(); ++i) {
+        for (int k = 0; k < contacts.point_count(); ++k) {
+          for (const ContactKind kind : {ContactKind::block_vertex, ContactKind::seat_point}) {
+            if (kind == ContactKind::block_vertex && k + 1 == contacts.point_count()) continue;
+            const SeatPair pair{kind, i, k};
+            const PairPose posed = contacts.pose(pair, s);
+            const PairPose from_world = contacts.pose(pair, s, world);
+            EXPECT_TRUE(same_bits(from_world.gap, posed.gap)) << i << " " << k;
+            EXPECT_TRUE(same_bits(from_world.along, posed.along)) << i << " " << k;
+            EXPECT_TRUE(same_bits(from_world.length, posed.length)) << i << " " << k;
+            EXPECT_TRUE(same_bits(from_world.contact.r.x, posed.contact.r.x)) << i << " " << k;
+            EXPECT_TRUE(same_bits(from_world.contact.r.y, posed.contact.r.y)) << i << " " << k;
+            EXPECT_TRUE(same_bits(from_world.contact.normal.x, posed.contact.normal.x)) << i;
+            EXPECT_TRUE(same_bits(from_world.contact.normal.y, posed.contact.normal.y)) << i;
+            EXPECT_EQ(from_world.contact.kind, posed.contact.kind);
+            ++compared;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, 50 * 6 * (5 + 6 + 2 + 3));
 }
 
 // A segment's line is its unit direction from its first point to its next, the normal to its left

@@ -1,7 +1,7 @@
 // A block on one contact of its seat under the reservoir: the load pivot_turning finds at a state
 // is the one the system's solve there takes next (SeatSystem keeps it), so the forces solved
 // after a turning at the same state, at another state, or without one are the same to the bit, and
-// so is the turning itself.
+// so is the turning itself; in flight the forces are the general solve's without contacts.
 
 #include <gtest/gtest.h>
 
@@ -76,6 +76,28 @@ TEST(SeatLiftedLoad, ForcesAndTurningAreTheSameWhateverWasFoundBefore) {
     SeatSystem after_other = wet.on_toe();
     after_other.pivot_turning(t, other, arm);
     expect_same_forces(after_other.solve(t, s), alone);
+  }
+}
+
+// In flight (no contact) the system's forces are the general solve's without contacts under the
+// lifted block's load, to the bit.
+TEST(SeatLiftedLoad, AFlyingBlocksForcesAreTheGeneralSolvesWithoutContacts) {
+  const WetTypeB wet;
+  const BlockState rest = BlockOutline(wet.scene).rest_state();
+  FixedUniforms u(7);
+  SeatSystem flying(wet.context, {}, {}, {});
+  MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 3.0}, 0.0, 1e3};  // wet.ground's
+  for (int i = 0; i < 200; ++i) {
+    BlockState s = rest;
+    s.y += u(0.0, 0.5);
+    s.theta = u(-0.2, 0.2);
+    s.vx = u(-0.5, 0.5);
+    s.vy = u(-0.5, 0.5);
+    s.omega = u(-0.5, 0.5);
+    const double t = u(0.0, 2.0);
+    const BodyLoad load = body_load(wet.geometry.inertia_per_mass(), ground.lambda(t), 0.0,
+                                    wet.scene.g, &wet.water, s, Footing::lifted);
+    expect_same_forces(flying.solve(t, s), fixed_state_forces({}, {}, s, load, 0.8));
   }
 }
 
