@@ -25,7 +25,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <utility>
@@ -419,9 +421,16 @@ auto EventLoop<Ground>::integrate_with(const Ode& ode, Stepper& stepper, MotionP
 
     // The contact laws at the end of what is kept of the step, inside the mode.
     const double kept = which < 0 ? t : t_event;
-    ground.note_contact_violation(ode, crossing.before, state_at, forces_at);
-    observer_.observe_step(t0, kept, state_at, forces_at, kind);
-    ground.stepped(ode, state_at, kept);
+    // The states at the kept step's ends, found once: the observer, the contact laws' check (at
+    // the end of a step without an event) and the ground's stepped hook each look at them.
+    const BlockState at_start = state_at(t0), at_kept = state_at(kept);
+    const BlockState at_before =
+        std::bit_cast<std::uint64_t>(crossing.before) == std::bit_cast<std::uint64_t>(kept)
+            ? at_kept
+            : state_at(crossing.before);
+    ground.note_contact_violation(ode, crossing.before, at_before, forces_at);
+    observer_.observe_step(t0, kept, at_start, at_kept, state_at, forces_at, kind);
+    ground.stepped(ode, at_kept);
     if (which < 0) continue;
     return ground.on_event(ode, which, t_event, state_at(t_event));
   }

@@ -34,6 +34,7 @@ class SegmentObserver {
     last_theta_ = s.theta;
     summary_.max_abs_theta = std::max(summary_.max_abs_theta, std::abs(s.theta));
     summary_.max_abs_slide = std::max(summary_.max_abs_slide, std::abs(s.x - x0_));
+    if (!measures_depth_) return;
     const Rotation turn = geometry_.rotation(s.theta);
     double lowest = 0.0;
     for (int i = 0; i < geometry_.corner_count(); ++i) {
@@ -47,7 +48,12 @@ class SegmentObserver {
   template <class StateAt, class ForcesAt>
   void observe_step(double t0, double t1, const StateAt& state_at, const ForcesAt& forces_at,
                     ModeKind mode) {
-    const BlockState a = state_at(t0), b = state_at(t1);
+    observe_step(t0, t1, state_at(t0), state_at(t1), state_at, forces_at, mode);
+  }
+  // The same with the states at t0 and t1 given.
+  template <class StateAt, class ForcesAt>
+  void observe_step(double t0, double t1, const BlockState& a, const BlockState& b,
+                    const StateAt& state_at, const ForcesAt& forces_at, ModeKind mode) {
     observe_state(b);
     if (a.omega * b.omega < 0) observe_extremum(t0, t1, a.omega, state_at, &BlockState::omega);
     if (a.vx * b.vx < 0) observe_extremum(t0, t1, a.vx, state_at, &BlockState::vx);
@@ -62,6 +68,10 @@ class SegmentObserver {
   void finish(double t, const BlockState& s, const ContactForces& forces, ModeKind mode) {
     if (interval_ > 0 && (history_.empty() || history_.back().t < t)) record(t, s, forces, mode);
   }
+
+  // The depth below a flat ground at y = 0 is not measured: a ground of another shape measures
+  // its own (a seat's, at every step, from the vertices its guards turned).
+  void leave_depth_to_ground() { measures_depth_ = false; }
 
   double x0() const { return x0_; }
   std::vector<HistoryRow>& history() { return history_; }
@@ -87,6 +97,7 @@ class SegmentObserver {
   Summary& summary_;
   BlockGeometry& geometry_;
   double interval_, g_;
+  bool measures_depth_ = true;
   double x0_ = 0.0;
   // The pose last looked at (NaN: none yet).
   double last_x_ = std::numeric_limits<double>::quiet_NaN(), last_y_ = last_x_,

@@ -91,15 +91,16 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
                            const StateAt&, double, double, Crossing found, ModeKind) const {
     return found;
   }
-  template <class System, class StateAt, class ForcesAt>
-  void note_contact_violation(const System&, double t, const StateAt&, const ForcesAt& forces_at) {
+  template <class System, class ForcesAt>
+  void note_contact_violation(const System&, double t, const BlockState&,
+                              const ForcesAt& forces_at) {
     const ContactForces contact = forces_at(t);
     summary_.max_contact_violation = std::max(
         {summary_.max_contact_violation, -contact.normal / scene_.g,
          (std::abs(contact.friction) - scene_.contact.friction * contact.normal) / scene_.g});
   }
-  template <class System, class StateAt>
-  void stepped(const System&, const StateAt&, double) {}
+  template <class System>
+  void stepped(const System&, const BlockState&) {}
   template <class System>
   EventReport on_event(const System&, int which, double t_event, const BlockState& at_event);
 

@@ -107,7 +107,8 @@ class GuardWatch {
     found.before = t1;
     Scan& scan = scan_;
     if (start_scan(scan, t0, t1, next, least_at_ends)) sample_inside(scan, guards_at, t0, t1);
-    for (const int i : live()) {
+    // A guard not bracketed is clearly positive at the step's end (its fb).
+    for (const int i : bracketed(scan)) {
       if (scan.fb[i] > 0) continue;
       const auto f = [&](double x) { return guard_from(guards_at, i, x) + scan.offset[i]; };
       const Bracket located =
@@ -173,7 +174,14 @@ class GuardWatch {
     std::array<bool, G> looked_inside;
     std::array<std::array<double, kInteriorSamples + 1>, G> seen;
     std::array<int, G> seen_count;
+    // The guards whose bracket is set, in order (the first bracketed_count): only they can be
+    // sampled, looked inside or at or below zero at the step's end.
+    std::array<int, G> bracketed;
+    int bracketed_count = 0;
   };
+  static std::span<const int> bracketed(const Scan& scan) {
+    return std::span(scan.bracketed).first(static_cast<std::size_t>(scan.bracketed_count));
+  }
 
   // The step's ends, and which guards are looked inside; returns whether any is. Of an armed guard
   // clearly positive at both ends (most of a seat's, at most steps) only its end value is read
@@ -183,7 +191,6 @@ class GuardWatch {
                   const LeastAtEnds& least_at_ends) const {
     std::array<bool, G> asked{};
     bool any_asked = false;
-    std::array<int, G> bracketed;  // the guards whose bracket is set, the first count of them
     int count = 0;
     for (const int i : live()) {
       // Most guards at most steps: far from zero at both ends (and so armed), neither sampled nor
@@ -210,11 +217,12 @@ class GuardWatch {
       // Clearly positive: above the guards' rounding noise by far.
       asked[i] = scan.sampled[i] && least > 0.5 * kArmingMargin;
       any_asked = any_asked || asked[i];
-      bracketed[static_cast<std::size_t>(count++)] = i;
+      scan.bracketed[static_cast<std::size_t>(count++)] = i;
     }
+    scan.bracketed_count = count;
     const std::array<bool, G> claimed = any_asked ? least_at_ends(asked) : std::array<bool, G>{};
     bool any_sampled = false;
-    for (const int i : std::span(bracketed).first(static_cast<std::size_t>(count))) {
+    for (const int i : bracketed(scan)) {
       scan.sampled[i] = scan.sampled[i] && !(asked[i] && claimed[i]);
       scan.looked_inside[i] = scan.sampled[i];
       scan.seen[i][0] = scan.fa[i];
@@ -233,7 +241,7 @@ class GuardWatch {
       // Only the guards still sampled are read.
       const std::array<double, G> at_x = guards_from(guards_at, x, scan.sampled);
       any_sampled = false;
-      for (const int i : live()) {
+      for (const int i : bracketed(scan)) {
         if (!scan.sampled[i]) continue;
         const double fx = at_x[i] + scan.offset[i];
         scan.seen[i][scan.seen_count[i]++] = fx;
@@ -248,7 +256,7 @@ class GuardWatch {
         any_sampled = true;
       }
     }
-    for (const int i : live()) {
+    for (const int i : bracketed(scan)) {
       if (!scan.looked_inside[i]) continue;
       if (scan.sampled[i]) scan.seen[i][scan.seen_count[i]++] = scan.fb[i];
       find_dip_between_samples(guards_at, i, t0, (t1 - t0) / kInteriorSamples, scan.offset[i],

@@ -70,6 +70,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
         velocity_tol_(resting_speed(scene.g, R_)) {
     summary_.model = std::holds_alternative<NoMotion>(scene.vertical_motion) ? Model::full
                                                                              : Model::full_vertical;
+    // finish_summary reports the seat's depth in place of the flat ground's.
+    observer_.leave_depth_to_ground();
   }
 
  private:
@@ -109,11 +111,13 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   Crossing refine_crossing(const Ode& ode, const GuardWatch<SeatSystem::kGuards>& watch,
                            const GuardsAt& guards_at, const StateAt& state_at, double t0, double t1,
                            Crossing found, ModeKind kind) const;
-  template <class Ode, class StateAt, class ForcesAt>
-  void note_contact_violation(const Ode& ode, double t, const StateAt& state_at, const ForcesAt&);
-  template <class Ode, class StateAt>
-  void stepped(const Ode& ode, const StateAt& state_at, double t) {
-    deepest_ = std::max(deepest_, ode.penetration(state_at(t)));
+  // The contact laws at time t, in the state s.
+  template <class Ode, class ForcesAt>
+  void note_contact_violation(const Ode& ode, double t, const BlockState& s, const ForcesAt&);
+  // A step kept, ending in the state s.
+  template <class Ode>
+  void stepped(const Ode& ode, const BlockState& s) {
+    deepest_ = std::max(deepest_, ode.penetration(s));
   }
   template <class Ode>
   EventReport on_event(const Ode& ode, int which, double t_event, const BlockState& at_event);

@@ -261,12 +261,12 @@ SeatSimulation::Crossing SeatSimulation::refine_crossing(
   return found;
 }
 
-template <class Ode, class StateAt, class ForcesAt>
-void SeatSimulation::note_contact_violation(const Ode& ode, double t, const StateAt& state_at,
+template <class Ode, class ForcesAt>
+void SeatSimulation::note_contact_violation(const Ode& ode, double t, const BlockState& s,
                                             const ForcesAt&) {
   SeatSystem& system = ode.system();
   if (system.active_count() == 0) return;
-  const FixedStateForces& f = system.solve(t, state_at(t));
+  const FixedStateForces& f = system.solve(t, s);
   for (int i = 0; i < system.active_count(); ++i) {
     const auto at = static_cast<std::size_t>(i);
     summary_.max_contact_violation =

@@ -16,10 +16,18 @@ namespace blockfrag {
 
 namespace turn_cache_detail {
 
+// Eight entries: a pivot's Runge-Kutta step turns four new tilts (its stages and its end), and the
+// step's start, turned at the last step's end, is asked for again after them (the observer's look
+// at the step). A power of two, so that the ring's index wraps by a mask.
 struct RecentTurns {
-  static constexpr std::size_t kEntries = 4;
+  static constexpr std::size_t kEntries = 8;
+  static_assert(std::has_single_bit(kEntries));
   std::array<std::uint64_t, kEntries> bits{};  // theta = 0 in all at first
-  std::array<SineCosine, kEntries> turns{{{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}}};
+  std::array<SineCosine, kEntries> turns = [] {
+    std::array<SineCosine, kEntries> zero_turns;
+    zero_turns.fill({0.0, 1.0});
+    return zero_turns;
+  }();
   std::size_t next = 0;  // the entry replaced next, in turn
 };
 
@@ -32,7 +40,7 @@ inline RecentTurns& recent_turns() {
 // Computes and remembers sine_cosine(theta) in the entry replaced next.
 inline SineCosine remember_turn(RecentTurns& recent, std::uint64_t bits, double theta) {
   const std::size_t at = recent.next;
-  recent.next = (at + 1) % RecentTurns::kEntries;
+  recent.next = (at + 1) & (RecentTurns::kEntries - 1);
   recent.bits[at] = bits;
   recent.turns[at] = sine_cosine(theta);
   return recent.turns[at];
@@ -40,12 +48,14 @@ inline SineCosine remember_turn(RecentTurns& recent, std::uint64_t bits, double 
 
 }  // namespace turn_cache_detail
 
-// sine_cosine(theta), to the bit.
+// sine_cosine(theta), to the bit. The entries are looked at newest first: most askers want the
+// tilt last turned (a step's end, turned by its last stage).
 inline SineCosine cached_turn(double theta) {
   using turn_cache_detail::RecentTurns;
   RecentTurns& recent = turn_cache_detail::recent_turns();
   const auto bits = std::bit_cast<std::uint64_t>(theta);
-  for (std::size_t i = 0; i < RecentTurns::kEntries; ++i) {
+  for (std::size_t age = 1; age <= RecentTurns::kEntries; ++age) {
+    const std::size_t i = (recent.next - age) & (RecentTurns::kEntries - 1);
     if (recent.bits[i] == bits) return recent.turns[i];
   }
   return turn_cache_detail::remember_turn(recent, bits, theta);

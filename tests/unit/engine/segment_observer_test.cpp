@@ -30,5 +30,23 @@ TEST(SegmentObserver, PenetrationIsTheDeepestCornerBelowTheGroundOverR) {
   EXPECT_NEAR(summary.max_penetration, depth / std::hypot(0.5, 1.0), 1e-15);
 }
 
+// A ground that measures its own depth (a seat) leaves the flat ground's alone: the extremes of
+// the pose are still recorded.
+TEST(SegmentObserver, LeavesTheDepthToTheGroundWhenAsked) {
+  BlockGeometry block(RectangularBlock{0.5, 1.0, 1.0});
+  Summary summary;
+  SegmentObserver observer(summary, block, 0.0, 9.81);
+  observer.leave_depth_to_ground();
+  BlockState sunk;
+  sunk.y = 0.9;
+  sunk.theta = 0.1;
+  sunk.x = 0.25;
+  observer.start(BlockState{});
+  observer.observe_state(sunk);
+  EXPECT_EQ(summary.max_penetration, 0.0);
+  EXPECT_EQ(summary.max_abs_theta, 0.1);
+  EXPECT_EQ(summary.max_abs_slide, 0.25);
+}
+
 }  // namespace
 }  // namespace blockfrag
