@@ -185,6 +185,30 @@ SineCosine PivotSweep::turn_at(double theta) const {
 }
 
 GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) {
+  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count(), once asked for
+  bool world_set = false;
+  return claims_with(theta0, theta1, asked, [&](double lo, const Point& point, std::size_t) {
+    if (!world_set) system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
+    world_set = true;
+    return system_->c_.contacts->inside_block(point.k, world);
+  });
+}
+
+// A watched point's guard is its point_clearance_within over R at the block's pose there, whose
+// sign bit is inside_block's answer at that pose (-0 where it lies on the boundary inside); where
+// it is farther than the block's reach, positive and outside. The sweep's pose at an end (the
+// chart's at that tilt) is the guards', bit for bit: theta's guards were found at chart.full too.
+GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked,
+                               const std::array<double, kSeatGuards>& at0,
+                               const std::array<double, kSeatGuards>& at1) {
+  const std::array<double, kSeatGuards>& at_lo = theta1 < theta0 ? at1 : at0;
+  return claims_with(theta0, theta1, asked,
+                     [&](double, const Point&, std::size_t g) { return std::signbit(at_lo[g]); });
+}
+
+template <class InsideAtLo>
+GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardClaims& asked,
+                                    const InsideAtLo& inside_at_lo) {
   GuardClaims claims = system_->unused_guards();
   // The end's turn is the one the guards there just asked the turn cache for.
   const SineCosine turn0 = turn_at(theta0), turn1 = cached_turn(theta1);
@@ -203,16 +227,8 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
     claims[g] = asked[g] && vertex_claim(step, v);
     ++g;
   }
-  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count(), once asked for
-  bool world_set = false;
   for (const Point& point : points_) {
-    if (asked[g] && point_claim(step, point)) {
-      if (!world_set) {
-        system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
-      }
-      world_set = true;
-      claims[g] = !system_->c_.contacts->inside_block(point.k, world);
-    }
+    if (asked[g] && point_claim(step, point)) claims[g] = !inside_at_lo(lo, point, g);
     ++g;
   }
   return claims;
