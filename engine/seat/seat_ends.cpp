@@ -227,8 +227,10 @@ GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardCla
     claims[g] = asked[g] && vertex_claim(step, v);
     ++g;
   }
-  for (const Point& point : points_) {
-    if (asked[g] && point_claim(step, point)) claims[g] = !inside_at_lo(lo, point, g);
+  for (Point& point : points_) {
+    if (asked[g] && claims_point(step, lo, hi, point, theta1, turn1)) {
+      claims[g] = !inside_at_lo(lo, point, g);
+    }
     ++g;
   }
   return claims;
@@ -277,6 +279,45 @@ bool PivotSweep::point_claim(const ThetaStep& step, const Point& point) const {
     if (!(above || below) || step.holds_minimum(above ? line : -line)) return false;
   }
   return true;
+}
+
+bool PivotSweep::claims_point(const ThetaStep& step, double lo, double hi, Point& point,
+                              double theta_end, SineCosine end_turn) const {
+  if (lo >= point.claimed_lo && hi <= point.claimed_hi) return true;
+  if (!point_claim(step, point)) return false;
+  set_claimed_range(point, theta_end, end_turn);
+  return true;
+}
+
+// A sinusoid's slope and value move by at most |a| + |b| times the tilt's change: within `reach`
+// of theta, each of the point's sinusoids keeps its slope's sign (so neither it nor its negation
+// has a minimum there) and each line's value its side of the line beyond the line's margin
+// (kSeatLineMargin R) and the value's rounding (far less than kGeometryRounding of its terms).
+// A step whose range, widened as ThetaStep widens it, lies within that reach and
+// kThetaStepMarginRad more (far more than the slopes' rounding) finds what point_claim finds there:
+// no minimum, and each line on one side at both ends. A rocking block's steps mostly lie within the
+// last one's.
+void PivotSweep::set_claimed_range(Point& point, double theta, SineCosine turn) const {
+  const double off = kSeatLineMargin * system_->length_scale();
+  double reach = std::numeric_limits<double>::infinity();
+  const auto keep = [&reach](double margin, double swing) {
+    if (swing > 0) reach = std::min(reach, margin / swing);
+  };
+  for (const Sinusoid& corner : corners(point)) {
+    keep(std::abs(corner.slope_at(turn)), std::abs(corner.a) + std::abs(corner.b));
+  }
+  for (const Sinusoid& line : lines(point)) {
+    const double swing = std::abs(line.a) + std::abs(line.b);
+    keep(std::abs(line.slope_at(turn)), swing);
+    const double beyond =
+        std::abs(line.at(turn)) - off - kGeometryRounding * (std::abs(line.c) + swing);
+    keep(beyond, swing);
+    // A line parallel to the point's circle: its value never moves, and is beyond the margin.
+    if (swing == 0 && !(beyond > 0)) reach = -std::numeric_limits<double>::infinity();
+  }
+  const double margin = 2 * kThetaStepMarginRad;
+  point.claimed_lo = theta - reach + margin;
+  point.claimed_hi = theta + reach - margin;
 }
 
 GuardClaims SeatSystem::slip_claims(bool place_one_way, bool rate_one_way) const {

@@ -308,6 +308,10 @@ class PivotSweep {
     int k;              // the seat point
     std::size_t first;  // its squared distance from each block vertex, then its signed distance
                         // from each block edge's line
+    // The tilts within which every step's point_claim holds, as claimed_range found them at the
+    // last step whose claim was worked out (none at first).
+    double claimed_lo = std::numeric_limits<double>::infinity();
+    double claimed_hi = -std::numeric_limits<double>::infinity();
   };
   std::span<const Sinusoid> heights(const Vertex& v) const {
     return {sinusoids_.data() + v.first, segment_count_};
@@ -322,6 +326,11 @@ class PivotSweep {
   void add_point(int k);
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
   bool point_claim(const ThetaStep& step, const Point& point) const;
+  // point_claim over the step [lo, hi], from the point's claimed range where the step lies in it;
+  // else worked out, and where it holds, the range set anew about the step's end theta_end.
+  bool claims_point(const ThetaStep& step, double lo, double hi, Point& point, double theta_end,
+                    SineCosine end_turn) const;
+  void set_claimed_range(Point& point, double theta, SineCosine turn) const;
   // claims(), inside_at_lo(lo, point, g) saying whether a point whose clearance is otherwise
   // claimed (guard g) is inside the block at the step's lower tilt lo.
   template <class InsideAtLo>
