@@ -32,14 +32,17 @@ SegmentFrame segment_frame(Vec2 a, Vec2 b) {
   return {u, {-u.y, u.x}, length};
 }
 
-// The squared distance from p to the edge from a to b.
+// The squared distance from p to the edge from a to b: |ap - t d|^2, t the projection's place
+// clamped to [0, 1].
 double squared_distance_to_edge(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d = minus(b, a), ap = minus(p, a);
   // Clamped as the quotient would be, without dividing where it is clamped (a point off the
-  // edge's ends: a seat's far ends at every guard evaluation).
+  // edge's ends: a seat's far ends at every guard evaluation), nor taking 0 or 1 times d off ap,
+  // which leaves ap or ap - d to the bit (most edges, at every evaluation of a seat point's guard).
   const double along = dot(d, ap), squared_length = dot(d, d);
-  const double t = along <= 0.0 ? 0.0 : along >= squared_length ? 1.0 : along / squared_length;
-  const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
+  if (along <= 0.0) return dot(ap, ap);
+  const double t = along >= squared_length ? 1.0 : along / squared_length;
+  const Vec2 off = t == 1.0 ? minus(ap, d) : minus(ap, Vec2{t * d.x, t * d.y});
   return dot(off, off);
 }
 
