@@ -393,6 +393,11 @@ double SeatContacts::penetration(const BlockState& s) const {
 }
 
 double SeatContacts::penetration(std::span<const Vec2> world) const {
+  return deepest_point(world, deepest_vertex(world),
+                       [](int) { return std::numeric_limits<double>::quiet_NaN(); });
+}
+
+double SeatContacts::deepest_vertex(std::span<const Vec2> world) const {
   double deepest = 0.0;
   const double first = seat_.front().x, last = seat_.back().x;
   for (const Vec2& p : world) {
@@ -400,15 +405,6 @@ double SeatContacts::penetration(std::span<const Vec2> world) const {
     // block lifts, at every step).
     if (p.x >= first && p.x <= last && p.y > over_top_) continue;
     deepest = std::max(deepest, -clearance_at(p));
-  }
-  // A point outside adds nothing: its -clearance is not above 0. A point farther from the first
-  // vertex than the block's diameter (and its rounding) is outside without a pass over its edges
-  // (a flat seat's ends, 1e4 R away, at every step).
-  const double reach = 2.0 * block_radius_ * (1.0 + kGeometryRounding);
-  for (int k = 0; k < point_count(); ++k) {
-    const Vec2 off = minus(seat_[static_cast<std::size_t>(k)], world[0]);
-    if (dot(off, off) > reach * reach) continue;
-    if (inside_block(k, world)) deepest = std::max(deepest, boundary_distance(k, world));
   }
   return deepest;
 }

@@ -256,10 +256,13 @@ class SeatSystem {
   Solved last_solve_;
   // The block's vertices where guards() last turned it (the first vertex_count()), and that pose's
   // x, y and theta, bit for bit.
+  // With the watched points' clearances found there (point_clearance_within, in m, in the
+  // watched points' order), NaN where not asked for.
   struct TurnedBlock {
     std::array<std::uint64_t, 3> pose{};
     bool set = false;
     std::array<Vec2, kMaxSeatClearances> world;
+    std::array<double, kMaxSeatClearances> points;
   };
   TurnedBlock turned_;
   // The last wet lifted load found, and the time and state it was found at.
