@@ -196,8 +196,8 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
 
 // A watched point's guard is its point_clearance_within over R at the block's pose there, whose
 // sign bit is inside_block's answer at that pose (-0 where it lies on the boundary inside); where
-// it is farther than the block's reach, positive and outside. The sweep's pose at an end (the
-// chart's at that tilt) is the guards', bit for bit: theta's guards were found at chart.full too.
+// it is farther than the block's reach, positive and outside. The guards at an end were found at
+// the chart's pose for that tilt, the pose the claims above turn the block to, bit for bit.
 GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked,
                                const std::array<double, kSeatGuards>& at0,
                                const std::array<double, kSeatGuards>& at1) {

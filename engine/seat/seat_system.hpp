@@ -254,10 +254,9 @@ class SeatSystem {
     FixedStateForces forces;
   };
   Solved last_solve_;
-  // The block's vertices where guards() last turned it (the first vertex_count()), and that pose's
-  // x, y and theta, bit for bit.
-  // With the watched points' clearances found there (point_clearance_within, in m, in the
-  // watched points' order), NaN where not asked for.
+  // The block's vertices where guards() last turned it (the first vertex_count()), that pose's
+  // x, y and theta, bit for bit, and the watched points' clearances found there (in m, as
+  // point_clearance_within finds them, in the watched points' order; NaN where not asked for).
   struct TurnedBlock {
     std::array<std::uint64_t, 3> pose{};
     bool set = false;
@@ -311,8 +310,8 @@ class PivotSweep {
     int k;              // the seat point
     std::size_t first;  // its squared distance from each block vertex, then its signed distance
                         // from each block edge's line
-    // The tilts within which every step's point_claim holds, as claimed_range found them at the
-    // last step whose claim was worked out (none at first).
+    // The tilts within which every step's point_claim holds, as set_claimed_range found them at
+    // the last step whose claim was worked out (none at first).
     double claimed_lo = std::numeric_limits<double>::infinity();
     double claimed_hi = -std::numeric_limits<double>::infinity();
   };
