@@ -358,8 +358,10 @@ auto EventLoop<Ground>::crossing_in_step(const Ode& ode, Stepper& stepper,
                             }};
   const auto least_at_ends = [&](const std::array<bool, Ode::kGuards>& asked) {
     const auto one_way = [&](int i) { return stepper.moves_one_way(i); };
-    if constexpr (requires { ode.guard_claims(t0, t, q0, q, one_way, asked); }) {
-      auto claims = ode.guard_claims(t0, t, q0, q, one_way, asked);
+    if constexpr (requires {
+                    ode.guard_claims(t0, t, q0, q, one_way, watch.values(), next, asked);
+                  }) {
+      auto claims = ode.guard_claims(t0, t, q0, q, one_way, watch.values(), next, asked);
       // In flight nothing else claims the clearances: those the step cannot bring to zero.
       if constexpr (requires { stepper.dense_spread(0); }) {
         const auto spread = [&](int i) { return stepper.dense_spread(i); };

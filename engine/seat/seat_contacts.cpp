@@ -32,14 +32,17 @@ SegmentFrame segment_frame(Vec2 a, Vec2 b) {
   return {u, {-u.y, u.x}, length};
 }
 
-// The squared distance from p to the edge from a to b.
+// The squared distance from p to the edge from a to b: |ap - t d|^2, t the projection's place
+// clamped to [0, 1].
 double squared_distance_to_edge(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d = minus(b, a), ap = minus(p, a);
   // Clamped as the quotient would be, without dividing where it is clamped (a point off the
-  // edge's ends: a seat's far ends at every guard evaluation).
+  // edge's ends: a seat's far ends at every guard evaluation), nor taking 0 or 1 times d off ap,
+  // which leaves ap or ap - d to the bit (most edges, at every evaluation of a seat point's guard).
   const double along = dot(d, ap), squared_length = dot(d, d);
-  const double t = along <= 0.0 ? 0.0 : along >= squared_length ? 1.0 : along / squared_length;
-  const Vec2 off = minus(ap, Vec2{t * d.x, t * d.y});
+  if (along <= 0.0) return dot(ap, ap);
+  const double t = along >= squared_length ? 1.0 : along / squared_length;
+  const Vec2 off = t == 1.0 ? minus(ap, d) : minus(ap, Vec2{t * d.x, t * d.y});
   return dot(off, off);
 }
 
@@ -400,6 +403,11 @@ double SeatContacts::penetration(const BlockState& s) const {
 }
 
 double SeatContacts::penetration(std::span<const Vec2> world) const {
+  return deepest_point(world, deepest_vertex(world),
+                       [](int) { return std::numeric_limits<double>::quiet_NaN(); });
+}
+
+double SeatContacts::deepest_vertex(std::span<const Vec2> world) const {
   double deepest = 0.0;
   const double first = seat_.front().x, last = seat_.back().x;
   for (const Vec2& p : world) {
@@ -407,15 +415,6 @@ double SeatContacts::penetration(std::span<const Vec2> world) const {
     // block lifts, at every step).
     if (p.x >= first && p.x <= last && p.y > over_top_) continue;
     deepest = std::max(deepest, -clearance_at(p));
-  }
-  // A point outside adds nothing: its -clearance is not above 0. A point farther from the first
-  // vertex than the block's diameter (and its rounding) is outside without a pass over its edges
-  // (a flat seat's ends, 1e4 R away, at every step).
-  const double reach = 2.0 * block_radius_ * (1.0 + kGeometryRounding);
-  for (int k = 0; k < point_count(); ++k) {
-    const Vec2 off = minus(seat_[static_cast<std::size_t>(k)], world[0]);
-    if (dot(off, off) > reach * reach) continue;
-    if (inside_block(k, world)) deepest = std::max(deepest, boundary_distance(k, world));
   }
   return deepest;
 }

@@ -4,6 +4,7 @@
 // vertices and the seat's points; BlockState's (x, y) is the centre of mass there.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -160,6 +161,20 @@ class SeatContacts {
   double penetration(const BlockState& s) const;
   // The same with the block's vertices at the pose given (world_vertices).
   double penetration(std::span<const Vec2> world) const;
+  // The same with the clearances of the seat points `points` at that pose given as
+  // point_clearance_within finds them (NaN where not found): their sign says whether they are
+  // inside, and inside, their size is the distance boundary_distance finds, without a pass over
+  // the block's edges (a rocking block's watched points, at every step's end).
+  template <class Points>
+  double penetration(std::span<const Vec2> world, const Points& points,
+                     std::span<const double> clearances) const {
+    return deepest_point(world, deepest_vertex(world), [&](int k) {
+      for (std::size_t at = 0; at < points.size(); ++at) {
+        if (points[at] == k) return clearances[at];
+      }
+      return std::numeric_limits<double>::quiet_NaN();
+    });
+  }
   // How far the lowest block vertex is above the level `depth` below the end of the seat the
   // centre of mass has passed (> 0 while it has not fallen there); `depth` where it has passed
   // neither end. `world`: the block's vertices at the pose (world_vertices).
@@ -176,6 +191,28 @@ class SeatContacts {
   // pose() of a block vertex at p, and of a seat point on the block's edge from a to b.
   PairPose vertex_pose(const SeatPair& pair, const BlockState& s, Vec2 p) const;
   PairPose point_pose(const SeatPair& pair, const BlockState& s, Vec2 a, Vec2 b) const;
+  // penetration's passes: the deepest of the vertices under the seat, then of that and the seat
+  // points inside the block, known(k) giving point k's clearance where known (else NaN).
+  double deepest_vertex(std::span<const Vec2> world) const;
+  template <class Known>
+  double deepest_point(std::span<const Vec2> world, double deepest, const Known& known) const {
+    // A point outside adds nothing: its -clearance is not above 0. A point farther from the first
+    // vertex than the block's diameter (and its rounding) is outside without a pass over its edges
+    // (a flat seat's ends, 1e4 R away, at every step).
+    const double reach = 2.0 * block_radius_ * (1.0 + kGeometryRounding);
+    for (int k = 0; k < point_count(); ++k) {
+      const Vec2 p = seat_[static_cast<std::size_t>(k)];
+      const Vec2 off{p.x - world[0].x, p.y - world[0].y};
+      if (off.x * off.x + off.y * off.y > reach * reach) continue;
+      const double clearance = known(k);
+      if (!std::isnan(clearance)) {
+        if (std::signbit(clearance)) deepest = std::max(deepest, -clearance);
+      } else if (inside_block(k, world)) {
+        deepest = std::max(deepest, boundary_distance(k, world));
+      }
+    }
+    return deepest;
+  }
   // clearance_at on any seat, past its ends or over any of its segments.
   double clearance_at_any(Vec2 p) const;
   bool takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k, bool at_start,

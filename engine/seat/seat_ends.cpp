@@ -185,6 +185,30 @@ SineCosine PivotSweep::turn_at(double theta) const {
 }
 
 GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked) {
+  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count(), once asked for
+  bool world_set = false;
+  return claims_with(theta0, theta1, asked, [&](double lo, const Point& point, std::size_t) {
+    if (!world_set) system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
+    world_set = true;
+    return system_->c_.contacts->inside_block(point.k, world);
+  });
+}
+
+// A watched point's guard is its point_clearance_within over R at the block's pose there, whose
+// sign bit is inside_block's answer at that pose (-0 where it lies on the boundary inside); where
+// it is farther than the block's reach, positive and outside. The guards at an end were found at
+// the chart's pose for that tilt, the pose the claims above turn the block to, bit for bit.
+GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& asked,
+                               const std::array<double, kSeatGuards>& at0,
+                               const std::array<double, kSeatGuards>& at1) {
+  const std::array<double, kSeatGuards>& at_lo = theta1 < theta0 ? at1 : at0;
+  return claims_with(theta0, theta1, asked,
+                     [&](double, const Point&, std::size_t g) { return std::signbit(at_lo[g]); });
+}
+
+template <class InsideAtLo>
+GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardClaims& asked,
+                                    const InsideAtLo& inside_at_lo) {
   GuardClaims claims = system_->unused_guards();
   // The end's turn is the one the guards there just asked the turn cache for.
   const SineCosine turn0 = turn_at(theta0), turn1 = cached_turn(theta1);
@@ -203,15 +227,9 @@ GuardClaims PivotSweep::claims(double theta0, double theta1, const GuardClaims& 
     claims[g] = asked[g] && vertex_claim(step, v);
     ++g;
   }
-  std::array<Vec2, kMaxSeatClearances> world;  // the first vertex_count(), once asked for
-  bool world_set = false;
-  for (const Point& point : points_) {
-    if (asked[g] && point_claim(step, point)) {
-      if (!world_set) {
-        system_->c_.contacts->world_vertices(chart_.full(0.0, {lo, 0.0}), world);
-      }
-      world_set = true;
-      claims[g] = !system_->c_.contacts->inside_block(point.k, world);
+  for (Point& point : points_) {
+    if (asked[g] && claims_point(step, lo, hi, point, theta1, turn1)) {
+      claims[g] = !inside_at_lo(lo, point, g);
     }
     ++g;
   }
@@ -261,6 +279,45 @@ bool PivotSweep::point_claim(const ThetaStep& step, const Point& point) const {
     if (!(above || below) || step.holds_minimum(above ? line : -line)) return false;
   }
   return true;
+}
+
+bool PivotSweep::claims_point(const ThetaStep& step, double lo, double hi, Point& point,
+                              double theta_end, SineCosine end_turn) const {
+  if (lo >= point.claimed_lo && hi <= point.claimed_hi) return true;
+  if (!point_claim(step, point)) return false;
+  set_claimed_range(point, theta_end, end_turn);
+  return true;
+}
+
+// A sinusoid's slope and value move by at most |a| + |b| times the tilt's change: within `reach`
+// of theta, each of the point's sinusoids keeps its slope's sign (so neither it nor its negation
+// has a minimum there) and each line's value its side of the line beyond the line's margin
+// (kSeatLineMargin R) and the value's rounding (far less than kGeometryRounding of its terms).
+// A step whose range, widened as ThetaStep widens it, lies within that reach and
+// kThetaStepMarginRad more (far more than the slopes' rounding) finds what point_claim finds there:
+// no minimum, and each line on one side at both ends. A rocking block's steps mostly lie within the
+// last one's.
+void PivotSweep::set_claimed_range(Point& point, double theta, SineCosine turn) const {
+  const double off = kSeatLineMargin * system_->length_scale();
+  double reach = std::numeric_limits<double>::infinity();
+  const auto keep = [&reach](double margin, double swing) {
+    if (swing > 0) reach = std::min(reach, margin / swing);
+  };
+  for (const Sinusoid& corner : corners(point)) {
+    keep(std::abs(corner.slope_at(turn)), std::abs(corner.a) + std::abs(corner.b));
+  }
+  for (const Sinusoid& line : lines(point)) {
+    const double swing = std::abs(line.a) + std::abs(line.b);
+    keep(std::abs(line.slope_at(turn)), swing);
+    const double beyond =
+        std::abs(line.at(turn)) - off - kGeometryRounding * (std::abs(line.c) + swing);
+    keep(beyond, swing);
+    // A line parallel to the point's circle: its value never moves, and is beyond the margin.
+    if (swing == 0 && !(beyond > 0)) reach = -std::numeric_limits<double>::infinity();
+  }
+  const double margin = 2 * kThetaStepMarginRad;
+  point.claimed_lo = theta - reach + margin;
+  point.claimed_hi = theta + reach - margin;
 }
 
 GuardClaims SeatSystem::slip_claims(bool place_one_way, bool rate_one_way) const {

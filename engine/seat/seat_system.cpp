@@ -222,9 +222,12 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
     if (wanted[g]) out[g] = c_.contacts->clearance_at(world[static_cast<std::size_t>(i)]) / R;
     ++g;
   }
-  for (const int k : watched_points_) {
-    if (wanted[g]) out[g] = c_.contacts->point_clearance_within(k, world, R) / R;
-    ++g;
+  for (std::size_t at = 0; at < watched_points_.size(); ++at, ++g) {
+    double& clearance = turned_.points[at];
+    clearance = std::numeric_limits<double>::quiet_NaN();
+    if (!wanted[g]) continue;
+    clearance = c_.contacts->point_clearance_within(watched_points_[at], world, R);
+    out[g] = clearance / R;
   }
   return out;
 }
@@ -301,7 +304,8 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
 double SeatSystem::penetration(const BlockState& s) const {
   if (!turned_.set || !has_pose_bits(s, turned_.pose)) return c_.contacts->penetration(s);
   const auto n = static_cast<std::size_t>(c_.contacts->vertex_count());
-  return c_.contacts->penetration(std::span<const Vec2>(turned_.world).first(n));
+  return c_.contacts->penetration(std::span<const Vec2>(turned_.world).first(n), watched_points_,
+                                  turned_.points);
 }
 
 bool SeatSystem::contacts_hold(double t, const BlockState& s) {

@@ -255,12 +255,14 @@ class SeatSystem {
     FixedStateForces forces;
   };
   Solved last_solve_;
-  // The block's vertices where guards() last turned it (the first vertex_count()), and that pose's
-  // x, y and theta, bit for bit.
+  // The block's vertices where guards() last turned it (the first vertex_count()), that pose's
+  // x, y and theta, bit for bit, and the watched points' clearances found there (in m, as
+  // point_clearance_within finds them, in the watched points' order; NaN where not asked for).
   struct TurnedBlock {
     std::array<std::uint64_t, 3> pose{};
     bool set = false;
     std::array<Vec2, kMaxSeatClearances> world;
+    std::array<double, kMaxSeatClearances> points;
   };
   TurnedBlock turned_;
   // The last wet lifted load found, and the time and state it was found at.
@@ -282,6 +284,12 @@ class PivotSweep {
   PivotSweep(const SeatSystem& system, const PivotChart& chart);
   // Not const: the turn at a step's end is kept for the next step's start.
   GuardClaims claims(double theta0, double theta1, const GuardClaims& asked);
+  // The same, the guards at theta0 and theta1 given (at0, at1) as SeatSystem::guards finds them on
+  // the chart: a watched point's sign there, not a pass over the block's edges, says whether it is
+  // inside the block at the step's lower end (every step of a rocking block).
+  GuardClaims claims(double theta0, double theta1, const GuardClaims& asked,
+                     const std::array<double, kSeatGuards>& at0,
+                     const std::array<double, kSeatGuards>& at1);
   // Whether the sweep serves `system` turning on `chart`: the same pivot, the same watched
   // vertices and points. A record starts a motion piece at each of its samples, and each piece a
   // system; building its sweep anew was 6 % of the type B block's run under a record.
@@ -303,6 +311,10 @@ class PivotSweep {
     int k;              // the seat point
     std::size_t first;  // its squared distance from each block vertex, then its signed distance
                         // from each block edge's line
+    // The tilts within which every step's point_claim holds, as set_claimed_range found them at
+    // the last step whose claim was worked out (none at first).
+    double claimed_lo = std::numeric_limits<double>::infinity();
+    double claimed_hi = -std::numeric_limits<double>::infinity();
   };
   std::span<const Sinusoid> heights(const Vertex& v) const {
     return {sinusoids_.data() + v.first, segment_count_};
@@ -317,6 +329,16 @@ class PivotSweep {
   void add_point(int k);
   bool vertex_claim(const ThetaStep& step, const Vertex& vertex) const;
   bool point_claim(const ThetaStep& step, const Point& point) const;
+  // point_claim over the step [lo, hi], from the point's claimed range where the step lies in it;
+  // else worked out, and where it holds, the range set anew about the step's end theta_end.
+  bool claims_point(const ThetaStep& step, double lo, double hi, Point& point, double theta_end,
+                    SineCosine end_turn) const;
+  void set_claimed_range(Point& point, double theta, SineCosine turn) const;
+  // claims(), inside_at_lo(lo, point, g) saying whether a point whose clearance is otherwise
+  // claimed (guard g) is inside the block at the step's lower tilt lo.
+  template <class InsideAtLo>
+  GuardClaims claims_with(double theta0, double theta1, const GuardClaims& asked,
+                          const InsideAtLo& inside_at_lo);
   // sine_cosine(theta): the last step's end is the next one's start.
   SineCosine turn_at(double theta) const;
 
@@ -414,6 +436,19 @@ class SeatOde {
     } else {
       return system_->free_claims(chart_.full(0.0, q0).x, chart_.full(0.0, q1).x, one_way(0),
                                   one_way(2));
+    }
+  }
+  // The same with the guards at the step's ends as guards() found them (at0 at q0, at1 at q1),
+  // which turning about a pivot tell whether a watched point is inside the block there.
+  template <class OneWay>
+  GuardClaims guard_claims(double t0, double t1, const OdeState<N>& q0, const OdeState<N>& q1,
+                           const OneWay& one_way, const std::array<double, kGuards>& at0,
+                           const std::array<double, kGuards>& at1, const GuardClaims& asked) const {
+    if constexpr (std::is_same_v<Chart, PivotChart>) {
+      if (!one_way(0)) return system_->unused_guards();
+      return sweep_->claims(q0[0], q1[0], asked, at0, at1);
+    } else {
+      return guard_claims(t0, t1, q0, q1, one_way, asked);
     }
   }
   // In flight, adds to `claims` the clearances among `asked` that a step from (t0, q0) to (t1, q1)

@@ -1,7 +1,8 @@
 // A seat point's clearance from the block and whether it is inside (engine/seat/seat_contacts.hpp):
 // the shortcuts that skip the divisions where their quotients are known (a point beside an edge's
-// level crossing, a point off an edge's ends) give the plain crossing test's and the plain clamped
-// projection's values to the bit, for points on the block's corners and edges, near it and far.
+// level crossing, a point off an edge's ends, where 0 or 1 times the edge is not taken off) give
+// the plain crossing test's and the plain clamped projection's values to the bit, for points on
+// the block's corners and edges, near it and far.
 #include <algorithm>
 #include <array>
 #include <cmath>
