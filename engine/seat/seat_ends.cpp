@@ -25,6 +25,18 @@ int side_of(double x, const SeatContacts& seat) {
   return x > seat.seat_point(seat.point_count() - 1).x ? 1 : 0;
 }
 
+// Whether the seat is one segment running left to right and a vertex whose x is the sinusoid x
+// stays over it at every tilt: its x within |a| + |b| of c, that reach again (far more than the
+// rounding of its extent) and `margin` (kSeatEndMargin R) inside the seat's ends. Then
+// vertex_claim finds neither end's case and asks only whether the step holds its height's minimum
+// over that segment.
+bool stays_over_one_segment(const SeatContacts& seat, const Sinusoid& x, double margin) {
+  if (seat.point_count() != 2) return false;
+  const double first = seat.seat_point(0).x, last = seat.seat_point(1).x;
+  const double reach = 2 * (std::abs(x.a) + std::abs(x.b)) + kGeometryRounding * std::abs(x.c);
+  return first < last && x.c - reach >= first + margin && x.c + reach <= last - margin;
+}
+
 }  // namespace
 
 void SeatSystem::claim_overturn_and_fall(double x_lo, double x_hi, bool theta_one_way,
@@ -134,6 +146,8 @@ void PivotSweep::reset(const SeatSystem& system, const PivotChart& chart) {
       const double m = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
       sinusoids_.push_back({p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y});
     }
+    vertex.over_one_segment =
+        stays_over_one_segment(seat, vertex.x, kSeatEndMargin * system.length_scale());
     vertices_.push_back(vertex);
   }
   for (const int k : system.watched_points_) add_point(k);
@@ -223,8 +237,8 @@ GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardCla
     system_->claim_overturn_and_fall(x.least, x.largest, true, false, claims);
   }
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
-  for (const Vertex& v : vertices_) {
-    claims[g] = asked[g] && vertex_claim(step, v);
+  for (Vertex& v : vertices_) {
+    claims[g] = asked[g] && claims_vertex(step, lo, hi, v, theta1, turn1);
     ++g;
   }
   for (Point& point : points_) {
@@ -259,6 +273,30 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
   return system_->clearance_least_at_ends(x_lo, x_hi, [&](int k) {
     return !step.holds_minimum(heights(vertex)[static_cast<std::size_t>(k)]);
   });
+}
+
+bool PivotSweep::claims_vertex(const ThetaStep& step, double lo, double hi, Vertex& vertex,
+                               double theta_end, SineCosine end_turn) const {
+  if (lo >= vertex.claimed_lo && hi <= vertex.claimed_hi) return true;
+  if (!vertex_claim(step, vertex)) return false;
+  if (vertex.over_one_segment) set_claimed_range(vertex, theta_end, end_turn);
+  return true;
+}
+
+// Over one segment the claim is that the step holds no minimum of the vertex's height. The
+// height's slope moves by at most |a| + |b| times the tilt's change: within `reach` of theta it
+// keeps its sign, so no step there holds a minimum. As for a point's range, a step whose range,
+// widened by kThetaStepMarginRad, lies within that reach less kThetaStepMarginRad more (far more
+// than the slopes' rounding) finds what vertex_claim finds there. A rocking block's steps mostly
+// lie within the last one's.
+void PivotSweep::set_claimed_range(Vertex& vertex, double theta, SineCosine turn) const {
+  const Sinusoid& height = heights(vertex)[0];
+  const double swing = std::abs(height.a) + std::abs(height.b);
+  const double reach =
+      swing > 0 ? std::abs(height.slope_at(turn)) / swing : std::numeric_limits<double>::infinity();
+  const double margin = 2 * kThetaStepMarginRad;
+  vertex.claimed_lo = theta - reach + margin;
+  vertex.claimed_hi = theta + reach - margin;
 }
 
 // The point's clearance is its distance from the block's boundary, the least of its distances from

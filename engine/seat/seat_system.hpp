@@ -306,6 +306,13 @@ class PivotSweep {
     Sinusoid x;
     std::size_t first;             // its height over each seat segment's line
     std::array<Sinusoid, 2> ends;  // squared distance from the seat's first and last points
+    // Whether the seat is one segment that the vertex stays over, by far more than the end margin
+    // and the rounding of its extent, at every tilt: its claim is then its height's alone.
+    bool over_one_segment = false;
+    // The tilts within which every step's vertex_claim holds, as set_claimed_range found them at
+    // the last step whose claim was worked out over one segment (none at first).
+    double claimed_lo = std::numeric_limits<double>::infinity();
+    double claimed_hi = -std::numeric_limits<double>::infinity();
   };
   struct Point {
     int k;              // the seat point
@@ -334,6 +341,11 @@ class PivotSweep {
   bool claims_point(const ThetaStep& step, double lo, double hi, Point& point, double theta_end,
                     SineCosine end_turn) const;
   void set_claimed_range(Point& point, double theta, SineCosine turn) const;
+  // vertex_claim over the step [lo, hi], from the vertex's claimed range where the step lies in
+  // it; else worked out, and over one segment, the range set anew about the step's end theta_end.
+  bool claims_vertex(const ThetaStep& step, double lo, double hi, Vertex& vertex, double theta_end,
+                     SineCosine end_turn) const;
+  void set_claimed_range(Vertex& vertex, double theta, SineCosine turn) const;
   // claims(), inside_at_lo(lo, point, g) saying whether a point whose clearance is otherwise
   // claimed (guard g) is inside the block at the step's lower tilt lo.
   template <class InsideAtLo>
