@@ -237,9 +237,18 @@ GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardCla
     system_->claim_overturn_and_fall(x.least, x.largest, true, false, claims);
   }
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
-  for (Vertex& v : vertices_) {
-    claims[g] = asked[g] && claims_vertex(step, lo, hi, v, theta1, turn1);
-    ++g;
+  // Only a vertex over a seat of one segment keeps a range: on a folded seat, the claim alone.
+  if (segment_count_ == 1) {
+    for (Vertex& v : vertices_) {
+      claims[g] = asked[g] && (v.over_one_segment ? claims_vertex(step, lo, hi, v, theta1, turn1)
+                                                  : vertex_claim(step, v));
+      ++g;
+    }
+  } else {
+    for (const Vertex& v : vertices_) {
+      claims[g] = asked[g] && vertex_claim(step, v);
+      ++g;
+    }
   }
   for (Point& point : points_) {
     if (asked[g] && claims_point(step, lo, hi, point, theta1, turn1)) {
@@ -279,7 +288,7 @@ bool PivotSweep::claims_vertex(const ThetaStep& step, double lo, double hi, Vert
                                double theta_end, SineCosine end_turn) const {
   if (lo >= vertex.claimed_lo && hi <= vertex.claimed_hi) return true;
   if (!vertex_claim(step, vertex)) return false;
-  if (vertex.over_one_segment) set_claimed_range(vertex, theta_end, end_turn);
+  set_claimed_range(vertex, theta_end, end_turn);
   return true;
 }
 

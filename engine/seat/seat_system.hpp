@@ -341,8 +341,9 @@ class PivotSweep {
   bool claims_point(const ThetaStep& step, double lo, double hi, Point& point, double theta_end,
                     SineCosine end_turn) const;
   void set_claimed_range(Point& point, double theta, SineCosine turn) const;
-  // vertex_claim over the step [lo, hi], from the vertex's claimed range where the step lies in
-  // it; else worked out, and over one segment, the range set anew about the step's end theta_end.
+  // vertex_claim over the step [lo, hi] of a vertex over one segment, from its claimed range where
+  // the step lies in it; else worked out, and where it holds, the range set anew about the step's
+  // end theta_end.
   bool claims_vertex(const ThetaStep& step, double lo, double hi, Vertex& vertex, double theta_end,
                      SineCosine end_turn) const;
   void set_claimed_range(Vertex& vertex, double theta, SineCosine turn) const;
