@@ -118,6 +118,7 @@ void PivotSweep::reset(const SeatSystem& system, const PivotChart& chart) {
   last_end_ = 0;
   last_end_turn_ = {0.0, 1.0};
   vertices_.clear();
+  vertex_ranges_.clear();
   points_.clear();
   sinusoids_.clear();
   const SeatContacts& seat = *system.c_.contacts;
@@ -146,8 +147,11 @@ void PivotSweep::reset(const SeatSystem& system, const PivotChart& chart) {
       const double m = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
       sinusoids_.push_back({p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y});
     }
-    vertex.over_one_segment =
-        stays_over_one_segment(seat, vertex.x, kSeatEndMargin * system.length_scale());
+    // A folded seat's pivots, set up at every sample of a record, keep no ranges.
+    if (segment_count_ == 1) {
+      vertex_ranges_.push_back(
+          {stays_over_one_segment(seat, vertex.x, kSeatEndMargin * system.length_scale())});
+    }
     vertices_.push_back(vertex);
   }
   for (const int k : system.watched_points_) add_point(k);
@@ -239,9 +243,13 @@ GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardCla
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
   // Only a vertex over a seat of one segment keeps a range: on a folded seat, the claim alone.
   if (segment_count_ == 1) {
-    for (Vertex& v : vertices_) {
-      claims[g] = asked[g] && (v.over_one_segment ? claims_vertex(step, lo, hi, v, theta1, turn1)
-                                                  : vertex_claim(step, v));
+    VertexRange* range = vertex_ranges_.data();
+    for (const Vertex& v : vertices_) {
+      VertexRange& r = *range++;
+      const bool in_range = lo >= r.claimed_lo && hi <= r.claimed_hi;
+      claims[g] = asked[g] && (in_range || (r.over_one_segment
+                                                ? claims_vertex(step, lo, hi, v, r, theta1, turn1)
+                                                : vertex_claim(step, v)));
       ++g;
     }
   } else {
@@ -284,11 +292,11 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
   });
 }
 
-bool PivotSweep::claims_vertex(const ThetaStep& step, double lo, double hi, Vertex& vertex,
-                               double theta_end, SineCosine end_turn) const {
-  if (lo >= vertex.claimed_lo && hi <= vertex.claimed_hi) return true;
+bool PivotSweep::claims_vertex(const ThetaStep& step, double lo, double hi, const Vertex& vertex,
+                               VertexRange& range, double theta_end, SineCosine end_turn) const {
+  if (lo >= range.claimed_lo && hi <= range.claimed_hi) return true;
   if (!vertex_claim(step, vertex)) return false;
-  set_claimed_range(vertex, theta_end, end_turn);
+  set_claimed_range(vertex, range, theta_end, end_turn);
   return true;
 }
 
@@ -298,14 +306,15 @@ bool PivotSweep::claims_vertex(const ThetaStep& step, double lo, double hi, Vert
 // widened by kThetaStepMarginRad, lies within that reach less kThetaStepMarginRad more (far more
 // than the slopes' rounding) finds what vertex_claim finds there. A rocking block's steps mostly
 // lie within the last one's.
-void PivotSweep::set_claimed_range(Vertex& vertex, double theta, SineCosine turn) const {
+void PivotSweep::set_claimed_range(const Vertex& vertex, VertexRange& range, double theta,
+                                   SineCosine turn) const {
   const Sinusoid& height = heights(vertex)[0];
   const double swing = std::abs(height.a) + std::abs(height.b);
   const double reach =
       swing > 0 ? std::abs(height.slope_at(turn)) / swing : std::numeric_limits<double>::infinity();
   const double margin = 2 * kThetaStepMarginRad;
-  vertex.claimed_lo = theta - reach + margin;
-  vertex.claimed_hi = theta + reach - margin;
+  range.claimed_lo = theta - reach + margin;
+  range.claimed_hi = theta + reach - margin;
 }
 
 // The point's clearance is its distance from the block's boundary, the least of its distances from
