@@ -25,6 +25,18 @@ int side_of(double x, const SeatContacts& seat) {
   return x > seat.seat_point(seat.point_count() - 1).x ? 1 : 0;
 }
 
+// Whether the seat is one segment running left to right and a vertex whose x is the sinusoid x
+// stays over it at every tilt: its x within |a| + |b| of c, that reach again (far more than the
+// rounding of its extent) and `margin` (kSeatEndMargin R) inside the seat's ends. Then
+// vertex_claim finds neither end's case and asks only whether the step holds its height's minimum
+// over that segment.
+bool stays_over_one_segment(const SeatContacts& seat, const Sinusoid& x, double margin) {
+  if (seat.point_count() != 2) return false;
+  const double first = seat.seat_point(0).x, last = seat.seat_point(1).x;
+  const double reach = 2 * (std::abs(x.a) + std::abs(x.b)) + kGeometryRounding * std::abs(x.c);
+  return first < last && x.c - reach >= first + margin && x.c + reach <= last - margin;
+}
+
 }  // namespace
 
 void SeatSystem::claim_overturn_and_fall(double x_lo, double x_hi, bool theta_one_way,
@@ -106,6 +118,7 @@ void PivotSweep::reset(const SeatSystem& system, const PivotChart& chart) {
   last_end_ = 0;
   last_end_turn_ = {0.0, 1.0};
   vertices_.clear();
+  vertex_ranges_.clear();
   points_.clear();
   sinusoids_.clear();
   const SeatContacts& seat = *system.c_.contacts;
@@ -133,6 +146,11 @@ void PivotSweep::reset(const SeatSystem& system, const PivotChart& chart) {
       // A segment that does not run left to right is never asked (clearance_least_at_ends).
       const double m = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
       sinusoids_.push_back({p.y - a.y - m * (p.x - a.x), w.y - m * w.x, w.x + m * w.y});
+    }
+    // A folded seat's pivots, set up at every sample of a record, keep no ranges.
+    if (segment_count_ == 1) {
+      vertex_ranges_.push_back(
+          {stays_over_one_segment(seat, vertex.x, kSeatEndMargin * system.length_scale())});
     }
     vertices_.push_back(vertex);
   }
@@ -223,9 +241,22 @@ GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardCla
     system_->claim_overturn_and_fall(x.least, x.largest, true, false, claims);
   }
   auto g = static_cast<std::size_t>(kFirstClearanceGuard);
-  for (const Vertex& v : vertices_) {
-    claims[g] = asked[g] && vertex_claim(step, v);
-    ++g;
+  // Only a vertex over a seat of one segment keeps a range: on a folded seat, the claim alone.
+  if (segment_count_ == 1) {
+    VertexRange* range = vertex_ranges_.data();
+    for (const Vertex& v : vertices_) {
+      VertexRange& r = *range++;
+      const bool in_range = lo >= r.claimed_lo && hi <= r.claimed_hi;
+      claims[g] = asked[g] && (in_range || (r.over_one_segment
+                                                ? claims_vertex(step, lo, hi, v, r, theta1, turn1)
+                                                : vertex_claim(step, v)));
+      ++g;
+    }
+  } else {
+    for (const Vertex& v : vertices_) {
+      claims[g] = asked[g] && vertex_claim(step, v);
+      ++g;
+    }
   }
   for (Point& point : points_) {
     if (asked[g] && claims_point(step, lo, hi, point, theta1, turn1)) {
@@ -259,6 +290,31 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
   return system_->clearance_least_at_ends(x_lo, x_hi, [&](int k) {
     return !step.holds_minimum(heights(vertex)[static_cast<std::size_t>(k)]);
   });
+}
+
+bool PivotSweep::claims_vertex(const ThetaStep& step, double lo, double hi, const Vertex& vertex,
+                               VertexRange& range, double theta_end, SineCosine end_turn) const {
+  if (lo >= range.claimed_lo && hi <= range.claimed_hi) return true;
+  if (!vertex_claim(step, vertex)) return false;
+  set_claimed_range(vertex, range, theta_end, end_turn);
+  return true;
+}
+
+// Over one segment the claim is that the step holds no minimum of the vertex's height. The
+// height's slope moves by at most |a| + |b| times the tilt's change: within `reach` of theta it
+// keeps its sign, so no step there holds a minimum. As for a point's range, a step whose range,
+// widened by kThetaStepMarginRad, lies within that reach less kThetaStepMarginRad more (far more
+// than the slopes' rounding) finds what vertex_claim finds there. A rocking block's steps mostly
+// lie within the last one's.
+void PivotSweep::set_claimed_range(const Vertex& vertex, VertexRange& range, double theta,
+                                   SineCosine turn) const {
+  const Sinusoid& height = heights(vertex)[0];
+  const double swing = std::abs(height.a) + std::abs(height.b);
+  const double reach =
+      swing > 0 ? std::abs(height.slope_at(turn)) / swing : std::numeric_limits<double>::infinity();
+  const double margin = 2 * kThetaStepMarginRad;
+  range.claimed_lo = theta - reach + margin;
+  range.claimed_hi = theta + reach - margin;
 }
 
 // The point's clearance is its distance from the block's boundary, the least of its distances from

@@ -307,6 +307,15 @@ class PivotSweep {
     std::size_t first;             // its height over each seat segment's line
     std::array<Sinusoid, 2> ends;  // squared distance from the seat's first and last points
   };
+  // On a seat of one segment, a watched vertex's: whether it stays over the segment, by far more
+  // than the end margin and the rounding of its extent, at every tilt (its claim is then its
+  // height's alone), and the tilts within which every step's vertex_claim holds, as
+  // set_claimed_range found them at the last step whose claim was worked out (none at first).
+  struct VertexRange {
+    bool over_one_segment = false;
+    double claimed_lo = std::numeric_limits<double>::infinity();
+    double claimed_hi = -std::numeric_limits<double>::infinity();
+  };
   struct Point {
     int k;              // the seat point
     std::size_t first;  // its squared distance from each block vertex, then its signed distance
@@ -334,6 +343,13 @@ class PivotSweep {
   bool claims_point(const ThetaStep& step, double lo, double hi, Point& point, double theta_end,
                     SineCosine end_turn) const;
   void set_claimed_range(Point& point, double theta, SineCosine turn) const;
+  // vertex_claim over the step [lo, hi] of a vertex over one segment, from its claimed range where
+  // the step lies in it; else worked out, and where it holds, the range set anew about the step's
+  // end theta_end.
+  bool claims_vertex(const ThetaStep& step, double lo, double hi, const Vertex& vertex,
+                     VertexRange& range, double theta_end, SineCosine end_turn) const;
+  void set_claimed_range(const Vertex& vertex, VertexRange& range, double theta,
+                         SineCosine turn) const;
   // claims(), inside_at_lo(lo, point, g) saying whether a point whose clearance is otherwise
   // claimed (guard g) is inside the block at the step's lower tilt lo.
   template <class InsideAtLo>
@@ -349,6 +365,7 @@ class PivotSweep {
   Sinusoid centre_x_;
   std::vector<Vertex> vertices_;
   std::vector<Point> points_;
+  std::vector<VertexRange> vertex_ranges_;  // vertices_'s, on a seat of one segment only
   std::size_t segment_count_ = 0, block_vertex_count_ = 0;
   std::vector<Sinusoid> sinusoids_;
   // The block's edges' unit inward normals (edge j from vertex j to the next), found for the seat
