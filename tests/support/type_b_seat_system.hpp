@@ -33,7 +33,7 @@ inline std::vector<std::vector<ActiveContact>> type_b_contact_sets() {
           {{heel, ContactState::stick}, {point, ContactState::slip_negative}}};
 }
 
-// Not to be copied: its context points into it.
+// On its own seat, or on `seat`. Not to be copied: its context points into it.
 struct TypeBSeat {
   SeatContacts contacts{kTypeB, kTypeBSeat};
   BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
@@ -41,6 +41,7 @@ struct TypeBSeat {
   SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
 
   TypeBSeat() = default;
+  explicit TypeBSeat(const std::vector<Vertex>& seat) : contacts(kTypeB, seat) {}
   TypeBSeat(const TypeBSeat&) = delete;
   TypeBSeat& operator=(const TypeBSeat&) = delete;
 

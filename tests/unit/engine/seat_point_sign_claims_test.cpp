@@ -24,18 +24,6 @@ using testing::FixedUniforms;
 using testing::kEveryGuard;
 using testing::kTypeB;
 
-// The type B block on a seat, on still ground (as tests/support/type_b_seat_system.hpp's).
-struct SignedScene {
-  SeatContacts contacts;
-  BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
-  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
-  SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
-
-  explicit SignedScene(const std::vector<Vertex>& seat) : contacts(kTypeB, seat) {}
-  SignedScene(const SignedScene&) = delete;
-  SignedScene& operator=(const SignedScene&) = delete;
-};
-
 struct SignedPivot {
   int vertex, segment;
   WatchedList vertices, points;
@@ -47,7 +35,7 @@ struct SignCounts {
 
 // Random steps about `pivot`'s block vertex, at its seat point: the claims from the guards' signs
 // are the claims from the block's edges.
-SignCounts check_sign_claims(const SignedScene& scene, const SignedPivot& pivot, Vec2 point,
+SignCounts check_sign_claims(const testing::TypeBSeat& scene, const SignedPivot& pivot, Vec2 point,
                              FixedUniforms& u) {
   const SeatContacts& c = scene.contacts;
   SeatSystem system(
@@ -76,7 +64,7 @@ SignCounts check_sign_claims(const SignedScene& scene, const SignedPivot& pivot,
 
 TEST(SeatPointSignClaims, AreTheEdgesClaimsOnTheNotchAndFarFromTheSeatsEnds) {
   FixedUniforms u(51);
-  const SignedScene notch({{0, 0}, {testing::kFoldX, 0}, {testing::kToeX, testing::kToeY}});
+  const testing::TypeBSeat notch({{0, 0}, {testing::kFoldX, 0}, {testing::kToeX, testing::kToeY}});
   const SignCounts heel =
       check_sign_claims(notch, {0, 0, {1, 2, 3, 4, 5}, {1, 2}}, notch.contacts.seat_point(0), u);
   const SignCounts toe =
@@ -87,7 +75,7 @@ TEST(SeatPointSignClaims, AreTheEdgesClaimsOnTheNotchAndFarFromTheSeatsEnds) {
   EXPECT_GT(heel.claimed, 1000);
   EXPECT_GT(toe.claimed, 1000);
   // A long flat seat's ends, 1e4 m away: their guards are a bound on their distance, positive.
-  const SignedScene flat({{-1e4, 0}, {1e4, 0}});
+  const testing::TypeBSeat flat({{-1e4, 0}, {1e4, 0}});
   const SignCounts corner = check_sign_claims(flat, {0, 0, {1, 2, 3, 4, 5}, {0, 1}}, {0.0, 0.0}, u);
   EXPECT_EQ(corner.inside, 0);
   EXPECT_GT(corner.claimed, 1000);

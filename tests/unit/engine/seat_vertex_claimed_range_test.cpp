@@ -25,26 +25,13 @@ using testing::FixedUniforms;
 using testing::kEveryGuard;
 using testing::kTypeB;
 
-// The type B block on a flat seat of one segment from `first` to `last` (x, m). Not to be copied:
-// its context points into it.
-struct FlatSeat {
-  SeatContacts contacts;
-  BlockGeometry geometry{PolygonBlock{kTypeB, 1.0}};
-  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
-  SeatSystemContext context{&contacts, &geometry, &still, &still, 9.81, 1.0, 0.5 * geometry.size()};
-
-  FlatSeat(double first, double last) : contacts(kTypeB, {{first, 0.0}, {last, 0.0}}) {}
-  FlatSeat(const FlatSeat&) = delete;
-  FlatSeat& operator=(const FlatSeat&) = delete;
-};
-
 struct Counts {
   int claimed = 0, unclaimed = 0;
 };
 
 // Swings about block vertex `pivot` (at the seat's origin), watching the other vertices: the
 // rocking sweep's claims against a fresh sweep's at every step.
-Counts rock_about(const FlatSeat& seat, int pivot, FixedUniforms& u) {
+Counts rock_about(const testing::TypeBSeat& seat, int pivot, FixedUniforms& u) {
   WatchedList watched;
   for (int i = 0; i < seat.contacts.vertex_count(); ++i) {
     if (i != pivot) watched.push_back(i);
@@ -81,7 +68,7 @@ Counts rock_about(const FlatSeat& seat, int pivot, FixedUniforms& u) {
 }
 
 TEST(SeatVertexClaimedRange, ARockingSweepClaimsWhatEachStepAloneClaims) {
-  const FlatSeat long_seat(-1e4, 1e4);
+  const testing::TypeBSeat long_seat({{-1e4, 0.0}, {1e4, 0.0}});
   FixedUniforms u(53);
   for (const int pivot : {0, 2}) {
     const Counts counts = rock_about(long_seat, pivot, u);
@@ -92,7 +79,7 @@ TEST(SeatVertexClaimedRange, ARockingSweepClaimsWhatEachStepAloneClaims) {
 }
 
 TEST(SeatVertexClaimedRange, ASeatItsCornersPassClaimsWhatEachStepAloneClaims) {
-  const FlatSeat short_seat(-3.0, 5.0);
+  const testing::TypeBSeat short_seat({{-3.0, 0.0}, {5.0, 0.0}});
   FixedUniforms u(54);
   for (const int pivot : {0, 2}) {
     const Counts counts = rock_about(short_seat, pivot, u);
