@@ -37,6 +37,22 @@ bool stays_over_one_segment(const SeatContacts& seat, const Sinusoid& x, double 
   return first < last && x.c - reach >= first + margin && x.c + reach <= last - margin;
 }
 
+// A sinusoid's slope moves by at most |a| + |b| times the tilt's change: within this reach of the
+// tilt whose turn is given, it keeps the sign it has there (a constant's, everywhere).
+double slope_sign_reach(const Sinusoid& f, SineCosine turn) {
+  const double swing = std::abs(f.a) + std::abs(f.b);
+  return swing > 0 ? std::abs(f.slope_at(turn)) / swing : std::numeric_limits<double>::infinity();
+}
+
+// The tilts within `reach` of theta, less twice kThetaStepMarginRad at each side: a step whose
+// range, widened by kThetaStepMarginRad, lies inside them lies within reach (far more than the
+// slopes' rounding).
+void set_range_about(double theta, double reach, double& lo, double& hi) {
+  const double margin = 2 * kThetaStepMarginRad;
+  lo = theta - reach + margin;
+  hi = theta + reach - margin;
+}
+
 }  // namespace
 
 void SeatSystem::claim_overturn_and_fall(double x_lo, double x_hi, bool theta_one_way,
@@ -247,9 +263,9 @@ GuardClaims PivotSweep::claims_with(double theta0, double theta1, const GuardCla
     for (const Vertex& v : vertices_) {
       VertexRange& r = *range++;
       const bool in_range = lo >= r.claimed_lo && hi <= r.claimed_hi;
-      claims[g] = asked[g] && (in_range || (r.over_one_segment
-                                                ? claims_vertex(step, lo, hi, v, r, theta1, turn1)
-                                                : vertex_claim(step, v)));
+      claims[g] =
+          asked[g] && (in_range || (r.over_one_segment ? claims_vertex(step, v, r, theta1, turn1)
+                                                       : vertex_claim(step, v)));
       ++g;
     }
   } else {
@@ -292,29 +308,20 @@ bool PivotSweep::vertex_claim(const ThetaStep& step, const Vertex& vertex) const
   });
 }
 
-bool PivotSweep::claims_vertex(const ThetaStep& step, double lo, double hi, const Vertex& vertex,
-                               VertexRange& range, double theta_end, SineCosine end_turn) const {
-  if (lo >= range.claimed_lo && hi <= range.claimed_hi) return true;
+bool PivotSweep::claims_vertex(const ThetaStep& step, const Vertex& vertex, VertexRange& range,
+                               double theta_end, SineCosine end_turn) const {
   if (!vertex_claim(step, vertex)) return false;
   set_claimed_range(vertex, range, theta_end, end_turn);
   return true;
 }
 
-// Over one segment the claim is that the step holds no minimum of the vertex's height. The
-// height's slope moves by at most |a| + |b| times the tilt's change: within `reach` of theta it
-// keeps its sign, so no step there holds a minimum. As for a point's range, a step whose range,
-// widened by kThetaStepMarginRad, lies within that reach less kThetaStepMarginRad more (far more
-// than the slopes' rounding) finds what vertex_claim finds there. A rocking block's steps mostly
-// lie within the last one's.
+// Over one segment the claim is that the step holds no minimum of the vertex's height: within the
+// reach of its slope's sign no step does, and vertex_claim finds that there. A rocking block's
+// steps mostly lie within the last one's.
 void PivotSweep::set_claimed_range(const Vertex& vertex, VertexRange& range, double theta,
                                    SineCosine turn) const {
-  const Sinusoid& height = heights(vertex)[0];
-  const double swing = std::abs(height.a) + std::abs(height.b);
-  const double reach =
-      swing > 0 ? std::abs(height.slope_at(turn)) / swing : std::numeric_limits<double>::infinity();
-  const double margin = 2 * kThetaStepMarginRad;
-  range.claimed_lo = theta - reach + margin;
-  range.claimed_hi = theta + reach - margin;
+  set_range_about(theta, slope_sign_reach(heights(vertex)[0], turn), range.claimed_lo,
+                  range.claimed_hi);
 }
 
 // The point's clearance is its distance from the block's boundary, the least of its distances from
@@ -349,31 +356,24 @@ bool PivotSweep::claims_point(const ThetaStep& step, double lo, double hi, Point
 // of theta, each of the point's sinusoids keeps its slope's sign (so neither it nor its negation
 // has a minimum there) and each line's value its side of the line beyond the line's margin
 // (kSeatLineMargin R) and the value's rounding (far less than kGeometryRounding of its terms).
-// A step whose range, widened as ThetaStep widens it, lies within that reach and
-// kThetaStepMarginRad more (far more than the slopes' rounding) finds what point_claim finds there:
-// no minimum, and each line on one side at both ends. A rocking block's steps mostly lie within the
-// last one's.
+// A step inside the range set about theta finds what point_claim finds there: no minimum, and
+// each line on one side at both ends. A rocking block's steps mostly lie within the last one's.
 void PivotSweep::set_claimed_range(Point& point, double theta, SineCosine turn) const {
   const double off = kSeatLineMargin * system_->length_scale();
   double reach = std::numeric_limits<double>::infinity();
-  const auto keep = [&reach](double margin, double swing) {
-    if (swing > 0) reach = std::min(reach, margin / swing);
-  };
   for (const Sinusoid& corner : corners(point)) {
-    keep(std::abs(corner.slope_at(turn)), std::abs(corner.a) + std::abs(corner.b));
+    reach = std::min(reach, slope_sign_reach(corner, turn));
   }
   for (const Sinusoid& line : lines(point)) {
     const double swing = std::abs(line.a) + std::abs(line.b);
-    keep(std::abs(line.slope_at(turn)), swing);
+    reach = std::min(reach, slope_sign_reach(line, turn));
     const double beyond =
         std::abs(line.at(turn)) - off - kGeometryRounding * (std::abs(line.c) + swing);
-    keep(beyond, swing);
+    if (swing > 0) reach = std::min(reach, beyond / swing);
     // A line parallel to the point's circle: its value never moves, and is beyond the margin.
     if (swing == 0 && !(beyond > 0)) reach = -std::numeric_limits<double>::infinity();
   }
-  const double margin = 2 * kThetaStepMarginRad;
-  point.claimed_lo = theta - reach + margin;
-  point.claimed_hi = theta + reach - margin;
+  set_range_about(theta, reach, point.claimed_lo, point.claimed_hi);
 }
 
 GuardClaims SeatSystem::slip_claims(bool place_one_way, bool rate_one_way) const {

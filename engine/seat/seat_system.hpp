@@ -343,11 +343,10 @@ class PivotSweep {
   bool claims_point(const ThetaStep& step, double lo, double hi, Point& point, double theta_end,
                     SineCosine end_turn) const;
   void set_claimed_range(Point& point, double theta, SineCosine turn) const;
-  // vertex_claim over the step [lo, hi] of a vertex over one segment, from its claimed range where
-  // the step lies in it; else worked out, and where it holds, the range set anew about the step's
-  // end theta_end.
-  bool claims_vertex(const ThetaStep& step, double lo, double hi, const Vertex& vertex,
-                     VertexRange& range, double theta_end, SineCosine end_turn) const;
+  // vertex_claim of a vertex over one segment, for a step outside its claimed range; where it
+  // holds, the range set anew about the step's end theta_end.
+  bool claims_vertex(const ThetaStep& step, const Vertex& vertex, VertexRange& range,
+                     double theta_end, SineCosine end_turn) const;
   void set_claimed_range(const Vertex& vertex, VertexRange& range, double theta,
                          SineCosine turn) const;
   // claims(), inside_at_lo(lo, point, g) saying whether a point whose clearance is otherwise
