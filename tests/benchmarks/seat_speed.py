@@ -8,8 +8,10 @@ configs/dam_block_type_a.json (median time of --repeat runs, steps), their ratio
 (configs/dam_type_b_record_suite.json, configs/record_suite_study.json: the same records, inputs
 and levels) on two ranks, and their ratio. With --wet, also each block under its reservoir
 (configs/dam_block_type_{a,b}_reservoir.json, water at the crest) and its ratio wet / dry: what
-the water costs. The builds' runs alternate, so that a change of the machine's load falls on
-both.
+the water costs; and each under a pool 1 cm deep (its reservoir with the level 1 cm above the
+block's lowest point): the dry motion with every load of the water computed at every right-hand
+side, which parts the water's own cost from what the water does to the motion. The builds' runs
+alternate, so that a change of the machine's load falls on both.
 
     /usr/bin/python3 tests/benchmarks/seat_speed.py --blockfrag build/mpi_driver/blockfrag \\
         [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies] [--wet] [--markdown]
@@ -33,6 +35,17 @@ ROOT = Path(__file__).resolve().parents[2]
 SCENES = {"B": "configs/dam_block_type_b.json", "A": "configs/dam_block_type_a.json"}
 STUDIES = {"B": "configs/dam_type_b_record_suite.json", "A": "configs/record_suite_study.json"}
 WET = {"B": "configs/dam_block_type_b_reservoir.json", "A": "configs/dam_block_type_a_reservoir.json"}
+SHALLOW_POOL_M = 0.01  # the shallow pool's depth over the block's lowest point
+
+
+def shallow_pool(wet_scene, folder):
+    """A copy of the wet scene with its reservoir SHALLOW_POOL_M deep, written in folder."""
+    scene = json.loads((ROOT / wet_scene).read_text())
+    lowest = min(y for _, y in scene["block"]["polygon"])
+    scene["reservoir"]["level"] = lowest + SHALLOW_POOL_M
+    path = Path(folder) / ("shallow_" + Path(wet_scene).name)
+    path.write_text(json.dumps(scene))
+    return str(path)
 
 
 def bench(blockfrag, scene, repeat):
@@ -55,11 +68,13 @@ def study_wall(blockfrag, study):
 def measure(builds, repeat, studies, wet):
     rows = {name: {} for name in builds}
     scenes = [("bench " + key, scene) for key, scene in SCENES.items()]
-    if wet:
-        scenes += [("wet " + key, scene) for key, scene in WET.items()]
-    for label, scene in scenes:
-        for name, binary in builds.items():
-            rows[name][label] = bench(binary, scene, repeat)
+    with tempfile.TemporaryDirectory() as folder:
+        if wet:
+            scenes += [("wet " + key, scene) for key, scene in WET.items()]
+            scenes += [("shallow " + key, shallow_pool(scene, folder)) for key, scene in WET.items()]
+        for label, scene in scenes:
+            for name, binary in builds.items():
+                rows[name][label] = bench(binary, scene, repeat)
     if studies:
         for key, study in STUDIES.items():
             for name, binary in reversed(list(builds.items())):
@@ -88,6 +103,10 @@ def table(rows, studies, wet):
                 lambda r, k=key: f"{r['wet ' + k][0]:.2f} ({r['wet ' + k][1]:,})")
             row(f"**wet / dry, type {key}**",
                 lambda r, k=key: f"**{r['wet ' + k][0] / r['bench ' + k][0]:.2f}**")
+            row(f"bench type {key} under a pool 1 cm deep: median ms (steps)",
+                lambda r, k=key: f"{r['shallow ' + k][0]:.2f} ({r['shallow ' + k][1]:,})")
+            row(f"**1 cm pool / dry, type {key}**",
+                lambda r, k=key: f"**{r['shallow ' + k][0] / r['bench ' + k][0]:.2f}**")
     return "\n".join(lines)
 
 
