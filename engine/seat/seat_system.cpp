@@ -47,6 +47,7 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
       watched_points_(watched_points) {
   count_ = static_cast<int>(active.size());
   std::copy(active.begin(), active.end(), active_.begin());
+  one_sticking_ = count_ == 1 && active_[0].state == ContactState::stick;
   // Only the used slots are set (events_ starts at none): a record builds a system at each of its
   // samples, and passes over all 64 slots were a third of a construction.
   unused_.fill(true);
@@ -137,6 +138,7 @@ const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const C
 
 const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
                                                const Contacts& contacts) {
+  if (count_ == 1) return solve_one_anew(t, s, contacts[0]);
   const auto n = static_cast<std::size_t>(count_);
   const std::span<const PlanarContact> active = std::span(contacts).first(n);
   const std::span<const ContactState> states = std::span(states_).first(n);
@@ -149,15 +151,23 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
                              c_.external};
     last_solve_.forces =
         fixed_state_forces(active, states, s, seated_load(in, s, active, states), c_.mu);
-  } else {
+  } else {  // no contact: flight
     const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
-    // One contact's forces go straight into the kept ones; where its fixed-size solve gives
-    // none, the general solve overwrites them whole.
-    if (count_ == 0) {
-      last_solve_.forces = no_contact_forces(load);
-    } else if (!one_contact_forces(contacts[0], states_[0], s, load, c_.mu, last_solve_.forces)) {
-      last_solve_.forces = fixed_state_forces(active, states, s, load, c_.mu);
-    }
+    last_solve_.forces = no_contact_forces(load);
+  }
+  last_solve_.t = t;
+  last_solve_.s = s;
+  return last_solve_.forces;
+}
+
+const FixedStateForces& SeatSystem::solve_one_anew(double t, const BlockState& s,
+                                                   const PlanarContact& contact) {
+  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
+  // The fixed-size solve's forces go straight into the kept ones; where it gives none, the
+  // general solve overwrites them whole.
+  if (!one_contact_forces(contact, states_[0], s, load, c_.mu, last_solve_.forces)) {
+    last_solve_.forces =
+        fixed_state_forces(std::span(&contact, 1), std::span(states_).first(1), s, load, c_.mu);
   }
   last_solve_.t = t;
   last_solve_.s = s;
@@ -212,7 +222,11 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
   turned_.set = true;
   if (wanted[1]) out[1] = c_.contacts->height_over_fall(s, world, c_.fall_depth) / R;
   const auto contact_guards = std::span(wanted).subspan(2, kSeatContactGuards * count_);
-  if (std::find(contact_guards.begin(), contact_guards.end(), true) != contact_guards.end()) {
+  if (one_sticking_) {
+    // Its lift-off and friction guards, slots 2 and 3; the contact's other two are unused.
+    if (wanted[2] || wanted[3]) set_sticking_guards(t, s, world, out);
+  } else if (std::find(contact_guards.begin(), contact_guards.end(), true) !=
+             contact_guards.end()) {
     set_contact_guards(
         t, s, std::span(world).first(static_cast<std::size_t>(c_.contacts->vertex_count())), wanted,
         out);
@@ -280,6 +294,19 @@ void SeatSystem::set_contact_guards(double t, const BlockState& s, std::span<con
     out[base + 2] = place.along / R;
     out[base + 3] = (place.length - place.along) / R;
   }
+}
+
+void SeatSystem::set_sticking_guards(double t, const BlockState& s, std::span<const Vec2> world,
+                                     std::array<double, kGuards>& out) {
+  const SeatPair& pair = active_[0].pair;
+  // A block vertex's contact as active_contacts poses it, a seat point's as pose() does.
+  const FixedStateForces& f =
+      solved_at(t, s) ? last_solve_.forces
+      : pair.kind == ContactKind::block_vertex
+          ? solve_one_anew(t, s, vertex_contact(0, world[static_cast<std::size_t>(pair.block)], s))
+          : solve_one_anew(t, s, c_.contacts->pose(pair, s, world).contact);
+  out[2] = lift_off_guard(f, 0);
+  out[3] = friction_guard(f, 0);
 }
 
 double SeatSystem::guard(int i, double t, const BlockState& s) {

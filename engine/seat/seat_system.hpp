@@ -205,6 +205,10 @@ class SeatSystem {
   // others may be left unset); `world`: the block's vertices at s (SeatContacts::world_vertices).
   void set_contact_guards(double t, const BlockState& s, std::span<const Vec2> world,
                           const GuardClaims& wanted, std::array<double, kGuards>& out);
+  // set_contact_guards where the one active contact sticks (a block turning on its pivot, at every
+  // step's end): its contact alone posed and solved, without the passes over the contacts.
+  void set_sticking_guards(double t, const BlockState& s, std::span<const Vec2> world,
+                           std::array<double, kGuards>& out);
   // The active contacts at s (the first count_ set), as SeatContacts::pose gives them: a block
   // vertex's is its world vertex less the centre of mass on its segment's fixed normal, found
   // without pose()'s gap and place (every right-hand side of a slipping or sliding block).
@@ -219,6 +223,9 @@ class SeatSystem {
   // The forces with the active contacts at s given; solve_anew does not look at the last.
   const FixedStateForces& solve(double t, const BlockState& s, const Contacts& contacts);
   const FixedStateForces& solve_anew(double t, const BlockState& s, const Contacts& contacts);
+  // solve_anew with one active contact, `contact`.
+  const FixedStateForces& solve_one_anew(double t, const BlockState& s,
+                                         const PlanarContact& contact);
   // The load on the block lifted from its seat (one contact or none) under the external load at
   // time t in the state s, kept for the next call at the same time and state.
   const BodyLoad& wet_lifted_load(double t, const BlockState& s);
@@ -239,6 +246,7 @@ class SeatSystem {
       states_{};                                  // active_'s states, as the solves take them
   std::array<Vec2, kMaxSeatContacts> normals_{};  // a block vertex's contact normal: its segment's
   int count_ = 0;
+  bool one_sticking_ = false;  // one active contact, sticking
   WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
   GuardClaims unused_, live_;            // live_: the used slots, each unused_'s negation
