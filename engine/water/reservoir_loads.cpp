@@ -38,6 +38,7 @@ ReservoirLoads::ReservoirLoads(const Scene& scene)
   crack_length_ = crack_.length();
   crack_lengths_ = segment_lengths(crack_.points);
   const double rest_head = std::max(0.0, reservoir_.level - crack_.points.front()[1]);
+  unit_weight_ = reservoir_.density * g_;
   rest_mouth_pressure_ = reservoir_.uplift_area_factor * reservoir_.density * g_ * rest_head;
   added_mass_scale_ = reservoir_.hydrodynamic == Hydrodynamic::westergaard
                           ? westergaard_scale(reservoir_.density, reservoir_.depth)
@@ -69,23 +70,31 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
   const SineCosine& turn = out.turn;
   const Vertex& centre = out.centre;
   // The push and the added mass in one pass over the wetted face.
-  const double unit_weight = reservoir_.density * g_;
   const bool added_mass = reservoir_.hydrodynamic == Hydrodynamic::westergaard;
-  const double z = reservoir_.level - centre[1];
+  AddedMassPass added(out.added, added_mass_scale_, reservoir_.level - centre[1], centre);
   const auto add_piece = [&](const WettedPiece& piece) {
-    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight, centre);
-    if (added_mass) add_added_mass_piece(out.added, piece, added_mass_scale_, z, centre);
+    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight_, centre);
+    if (added_mass) added.add(piece);
   };
-  // An edge that surely rises at the pose is dry (wetted_face.hpp): its ends are not placed.
+  // An edge that surely rises at the pose is dry (wetted_face.hpp): its ends are not placed; nor
+  // is the start of an edge whose end is at or above the surface, dry too. An end placed is the
+  // next edge's start.
   const double surely_rising = kSurelyRisingEdge * (std::abs(centre[1]) + reach_);
+  std::size_t placed_index = outline_.body().size();
+  Vertex placed{};
   for (const FaceEdge& edge : face_edges_) {
     if (edge.along[0] * turn.sin + edge.along[1] * turn.cos > surely_rising) continue;
-    visit_wetted_edge(outline_.placed_vertex(edge.from, centre, turn),
-                      outline_.placed_vertex(edge.to, centre, turn), reservoir_.level, add_piece);
+    const bool from_placed = edge.from == placed_index;
+    const Vertex previous = placed;
+    placed = outline_.placed_vertex(edge.to, centre, turn);
+    placed_index = edge.to;
+    if (!(placed[1] < reservoir_.level)) continue;
+    visit_wetted_edge(from_placed ? previous : outline_.placed_vertex(edge.from, centre, turn),
+                      placed, reservoir_.level, add_piece);
   }
   if (reservoir_.uplift == UpliftRule::none) return out;
   const double head = std::max(0.0, reservoir_.level - mouth_height(out));
-  out.full_head = reservoir_.density * g_ * head;
+  out.full_head = unit_weight_ * head;
   out.closed_mouth = reservoir_.uplift == UpliftRule::unchanged
                          ? rest_mouth_pressure_
                          : reservoir_.uplift_area_factor * out.full_head;

@@ -95,6 +95,7 @@ class ReservoirLoads {
   // The uplift at any other opening: the crack placed at the pose and its pressure integrated.
   WaterLoad placed_crack_uplift(const ReservoirPose& pose, CrackOpening open) const;
   UnitUplifts closed_uplifts_, whole_uplifts_;
+  double unit_weight_;          // rho_w g
   double rest_mouth_pressure_;  // c rho_w g h at rest
   double added_mass_scale_;     // westergaard_scale, "westergaard" only
 };

@@ -49,28 +49,69 @@ double westergaard_scale(double density, double reservoir_depth) {
   return 7.0 / 8.0 * density * std::sqrt(reservoir_depth);
 }
 
-void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, double scale, double z,
-                          const Vertex& centre) {
+AddedMassPass::AddedMassPass(AddedMassWithRates& sums, double scale, double z, const Vertex& centre)
+    : out_(sums),
+      scale_(scale),
+      z_(z),
+      centre_x_(centre[0]),
+      z23_(2.0 / 3.0 * z),
+      z23z_(z23_ * z),
+      z45_(4.0 / 5.0 * z),
+      z43_(4.0 / 3.0 * z) {}
+
+// depth_powers, depth_antiderivatives, depth_integrands and surface_height_derivatives, with z's
+// products found once a pose.
+AddedMassPass::EndTerms AddedMassPass::end_terms(double depth) const {
+  const DepthPowers p = depth_powers(depth);
+  const double below = z_ - depth;
+  const double first = p.root * below;
+  return {{2.0 / 3.0 * p.u32, z23_ * p.u32 - 2.0 / 5.0 * p.u52,
+           z23z_ * p.u32 - z45_ * p.u52 + 2.0 / 7.0 * p.u72},
+          {p.root, first, first * below},
+          2.0 / 3.0 * p.u32,
+          z43_ * p.u32 - 4.0 / 5.0 * p.u52};
+}
+
+void AddedMassPass::add(const WettedPiece& piece) {
   const bool a_deeper = piece.depth_a > piece.depth_b;
-  if ((a_deeper ? piece.depth_b : piece.depth_a) != 0.0) {
-    add_added_mass_piece_in_full(out, piece, scale, z, centre);
+  const double deep = a_deeper ? piece.depth_a : piece.depth_b;
+  const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
+  const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre_x_;
+  if (shallow == 0.0) {
+    add_cut(end_terms(deep), deep_x);
     return;
   }
-  // A piece cut by the surface: its shallow end's antiderivatives, integrands and derivatives are
-  // zeros (of either sign), and a zero added to a sum that started at +0 leaves it as it was (in
-  // round-to-nearest such a sum is never -0), so the deep end's terms alone give the full sums'
-  // bits.
-  const double deep = a_deeper ? piece.depth_a : piece.depth_b;
-  const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre[0];
-  const DepthPowers p_deep = depth_powers(deep);
-  const AddedMass at_deep = depth_antiderivatives(p_deep, z);
-  out.at.mass += scale * at_deep.mass;
-  out.at.first_moment += scale * at_deep.first_moment;
-  out.at.second_moment += scale * at_deep.second_moment;
-  const AddedMass f_deep = depth_integrands(deep, p_deep, z);
-  add_scaled(out.d_dy, -scale, f_deep);
-  add_scaled(out.d_dy, -scale, surface_height_derivatives(p_deep, z));
-  add_scaled(out.d_dtheta, -scale * deep_x, f_deep);
+  const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre_x_;
+  add_whole(end_terms(deep), end_terms(shallow), deep_x, shallow_x);
+}
+
+// A piece cut by the surface: its shallow end's antiderivatives, integrands and derivatives are
+// zeros (of either sign), and a zero added to a sum that started at +0 leaves it as it was (in
+// round-to-nearest such a sum is never -0), so the deep end's terms alone give the full sums'
+// bits. The derivatives in Z add their M_a part, zero, to no effect for the same reason.
+void AddedMassPass::add_cut(const EndTerms& deep, double deep_x) {
+  out_.at.mass += scale_ * deep.at.mass;
+  out_.at.first_moment += scale_ * deep.at.first_moment;
+  out_.at.second_moment += scale_ * deep.at.second_moment;
+  add_scaled(out_.d_dy, -scale_, deep.integrand);
+  out_.d_dy.first_moment += -scale_ * deep.dz_first;
+  out_.d_dy.second_moment += -scale_ * deep.dz_second;
+  add_scaled(out_.d_dtheta, -scale_ * deep_x, deep.integrand);
+}
+
+void AddedMassPass::add_whole(const EndTerms& deep, const EndTerms& shallow, double deep_x,
+                              double shallow_x) {
+  out_.at.mass += scale_ * (deep.at.mass - shallow.at.mass);
+  out_.at.first_moment += scale_ * (deep.at.first_moment - shallow.at.first_moment);
+  out_.at.second_moment += scale_ * (deep.at.second_moment - shallow.at.second_moment);
+  add_scaled(out_.d_dy, -scale_, deep.integrand);
+  add_scaled(out_.d_dy, scale_, shallow.integrand);
+  out_.d_dy.first_moment += -scale_ * deep.dz_first;
+  out_.d_dy.second_moment += -scale_ * deep.dz_second;
+  out_.d_dy.first_moment += scale_ * shallow.dz_first;
+  out_.d_dy.second_moment += scale_ * shallow.dz_second;
+  add_scaled(out_.d_dtheta, -scale_ * deep_x, deep.integrand);
+  add_scaled(out_.d_dtheta, scale_ * shallow_x, shallow.integrand);
 }
 
 void add_added_mass_piece_in_full(AddedMassWithRates& out, const WettedPiece& piece, double scale,
@@ -106,9 +147,9 @@ AddedMassWithRates westergaard_added_mass_with_rates(std::span<const Vertex> pol
   const double scale = westergaard_scale(density, reservoir_depth);
   const double z = surface - centre[1];
   AddedMassWithRates out;
-  for_each_wetted_piece(polygon, surface, crack_edges, [&](const WettedPiece& piece) {
-    add_added_mass_piece(out, piece, scale, z, centre);
-  });
+  AddedMassPass pass(out, scale, z, centre);
+  for_each_wetted_piece(polygon, surface, crack_edges,
+                        [&](const WettedPiece& piece) { pass.add(piece); });
   return out;
 }
 

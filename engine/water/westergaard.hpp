@@ -62,14 +62,33 @@ AddedMassWithRates westergaard_added_mass_with_rates(std::span<const Vertex> pol
 // Throws ContractViolation for H <= 0.
 double westergaard_scale(double density, double reservoir_depth);
 
-// One wetted piece's added mass and rates about `centre` added to `out`: `scale` from
-// westergaard_scale, `z` the surface's height above the centre.
-// The sums in `out` must have started at zero: a piece cut by the surface (its shallow end's depth
-// zero) adds its deep end's terms alone, to the same bits.
-void add_added_mass_piece(AddedMassWithRates& out, const WettedPiece& piece, double scale, double z,
-                          const Vertex& centre);
-// The same with both ends' terms whatever the depths: what add_added_mass_piece does with a piece
-// under the surface at both ends.
+// The added mass and its rates about `centre` summed into `sums`, which must start at zero, over
+// one pose's wetted pieces, each piece's terms added as add_added_mass_piece_in_full adds them, to
+// the same bits: `scale` from westergaard_scale, `z` the surface's height above the centre.
+class AddedMassPass {
+ public:
+  AddedMassPass(AddedMassWithRates& sums, double scale, double z, const Vertex& centre);
+  void add(const WettedPiece& piece);
+
+ private:
+  // At one end: the antiderivatives, the integrands and the antiderivatives' derivatives in Z
+  // (whose M_a part is zero).
+  struct EndTerms {
+    AddedMass at, integrand;
+    double dz_first, dz_second;
+  };
+  EndTerms end_terms(double depth) const;
+  void add_cut(const EndTerms& deep, double deep_x);
+  void add_whole(const EndTerms& deep, const EndTerms& shallow, double deep_x, double shallow_x);
+
+  AddedMassWithRates& out_;
+  double scale_, z_, centre_x_;
+  // z's products every end's terms take, found once a pose: (2/3) z, (2/3) z^2, (4/5) z, (4/3) z.
+  double z23_, z23z_, z45_, z43_;
+};
+
+// One wetted piece's added mass and rates with both ends' terms whatever the depths, added to
+// `out`: the plain sum AddedMassPass shortcuts.
 void add_added_mass_piece_in_full(AddedMassWithRates& out, const WettedPiece& piece, double scale,
                                   double z, const Vertex& centre);
 

@@ -1,9 +1,11 @@
 // The reservoir's loads at a pose (ReservoirLoads::pose) against the plain pass over the whole
 // placed outline that they shortcut, to the bit: the pose leaves out the edges that surely rise
-// without placing their ends, and a piece cut by the surface adds its deep end's added mass alone
-// (add_added_mass_piece). Random poses over every tilt, tilts on either side of the rising test's
-// slack, and levels below, at and above the crest; cut and uncut pieces from sums that started at
-// zero.
+// without placing their ends, places an edge's start only where its end is under the surface and
+// an end once for the edge after it too, and a piece's added mass (AddedMassPass) takes z's
+// products found once a pose, a piece cut by the surface adding its deep end's terms alone and no
+// piece adding the derivatives' zero M_a parts. Random poses over every tilt, tilts on either
+// side of the rising test's slack, and levels below, at and above the crest; cut and uncut pieces
+// from sums that started at zero.
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -115,16 +117,17 @@ TEST(ReservoirPoseShortcuts, APieceCutByTheSurfaceAddsItsFullTermsBits) {
     const double surface = u(-10.0, 30.0);
     const Vertex centre{u(-5.0, 5.0), surface + u(-25.0, 10.0)};
     // Sums that start at zero, with an uncut piece or none before.
-    AddedMassWithRates shortcut, full;
+    AddedMassWithRates shortcut_sums, full;
+    AddedMassPass shortcut(shortcut_sums, scale, surface - centre[1], centre);
     if (i % 2 == 1) {
       const WettedPiece before = random_piece(u, surface, false);
-      add_added_mass_piece(shortcut, before, scale, surface - centre[1], centre);
+      shortcut.add(before);
       add_added_mass_piece_in_full(full, before, scale, surface - centre[1], centre);
     }
     const WettedPiece piece = random_piece(u, surface, i % 3 != 2);
-    add_added_mass_piece(shortcut, piece, scale, surface - centre[1], centre);
+    shortcut.add(piece);
     add_added_mass_piece_in_full(full, piece, scale, surface - centre[1], centre);
-    expect_same_rates(shortcut, full);
+    expect_same_rates(shortcut_sums, full);
   }
 }
 
