@@ -72,9 +72,13 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
   // The push and the added mass in one pass over the wetted face.
   const bool added_mass = reservoir_.hydrodynamic == Hydrodynamic::westergaard;
   AddedMassPass added(out.added, added_mass_scale_, reservoir_.level - centre[1], centre);
-  const auto add_piece = [&](const WettedPiece& piece) {
+  const auto add_cut = [&](const WettedPiece& piece) {
     add_hydrostatic_piece(out.hydrostatic, piece, unit_weight_, centre);
-    if (added_mass) added.add(piece);
+    if (added_mass) added.add_cut(piece);
+  };
+  const auto add_whole = [&](const WettedPiece& piece) {
+    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight_, centre);
+    if (added_mass) added.add_whole(piece);
   };
   // An edge that surely rises at the pose is dry (wetted_face.hpp): its ends are not placed; nor
   // is the start of an edge whose end is at or above the surface, dry too. An end placed is the
@@ -89,8 +93,9 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
     placed = outline_.placed_vertex(edge.to, centre, turn);
     placed_index = edge.to;
     if (!(placed[1] < reservoir_.level)) continue;
-    visit_wetted_edge(from_placed ? previous : outline_.placed_vertex(edge.from, centre, turn),
-                      placed, reservoir_.level, add_piece);
+    visit_wetted_edge_parts(
+        from_placed ? previous : outline_.placed_vertex(edge.from, centre, turn), placed,
+        reservoir_.level, add_cut, add_whole);
   }
   if (reservoir_.uplift == UpliftRule::none) return out;
   const double head = std::max(0.0, reservoir_.level - mouth_height(out));

@@ -78,18 +78,27 @@ void AddedMassPass::add(const WettedPiece& piece) {
   const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
   const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre_x_;
   if (shallow == 0.0) {
-    add_cut(end_terms(deep), deep_x);
+    add_cut_terms(end_terms(deep), deep_x);
     return;
   }
   const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre_x_;
-  add_whole(end_terms(deep), end_terms(shallow), deep_x, shallow_x);
+  add_whole_terms(end_terms(deep), end_terms(shallow), deep_x, shallow_x);
+}
+
+void AddedMassPass::add_cut(const WettedPiece& piece) {
+  add_cut_terms(end_terms(piece.depth_b), piece.b[0] - centre_x_);
+}
+
+void AddedMassPass::add_whole(const WettedPiece& piece) {
+  add_whole_terms(end_terms(piece.depth_b), end_terms(piece.depth_a), piece.b[0] - centre_x_,
+                  piece.a[0] - centre_x_);
 }
 
 // A piece cut by the surface: its shallow end's antiderivatives, integrands and derivatives are
 // zeros (of either sign), and a zero added to a sum that started at +0 leaves it as it was (in
 // round-to-nearest such a sum is never -0), so the deep end's terms alone give the full sums'
 // bits. The derivatives in Z add their M_a part, zero, to no effect for the same reason.
-void AddedMassPass::add_cut(const EndTerms& deep, double deep_x) {
+void AddedMassPass::add_cut_terms(const EndTerms& deep, double deep_x) {
   out_.at.mass += scale_ * deep.at.mass;
   out_.at.first_moment += scale_ * deep.at.first_moment;
   out_.at.second_moment += scale_ * deep.at.second_moment;
@@ -99,8 +108,8 @@ void AddedMassPass::add_cut(const EndTerms& deep, double deep_x) {
   add_scaled(out_.d_dtheta, -scale_ * deep_x, deep.integrand);
 }
 
-void AddedMassPass::add_whole(const EndTerms& deep, const EndTerms& shallow, double deep_x,
-                              double shallow_x) {
+void AddedMassPass::add_whole_terms(const EndTerms& deep, const EndTerms& shallow, double deep_x,
+                                    double shallow_x) {
   out_.at.mass += scale_ * (deep.at.mass - shallow.at.mass);
   out_.at.first_moment += scale_ * (deep.at.first_moment - shallow.at.first_moment);
   out_.at.second_moment += scale_ * (deep.at.second_moment - shallow.at.second_moment);

@@ -69,6 +69,10 @@ class AddedMassPass {
  public:
   AddedMassPass(AddedMassWithRates& sums, double scale, double z, const Vertex& centre);
   void add(const WettedPiece& piece);
+  // The same for a piece known to be cut by the surface, or known to be wetted whole, its b at
+  // least as deep as its a (visit_wetted_edge_parts's pieces).
+  void add_cut(const WettedPiece& piece);
+  void add_whole(const WettedPiece& piece);
 
  private:
   // At one end: the antiderivatives, the integrands and the antiderivatives' derivatives in Z
@@ -78,8 +82,9 @@ class AddedMassPass {
     double dz_first, dz_second;
   };
   EndTerms end_terms(double depth) const;
-  void add_cut(const EndTerms& deep, double deep_x);
-  void add_whole(const EndTerms& deep, const EndTerms& shallow, double deep_x, double shallow_x);
+  void add_cut_terms(const EndTerms& deep, double deep_x);
+  void add_whole_terms(const EndTerms& deep, const EndTerms& shallow, double deep_x,
+                       double shallow_x);
 
   AddedMassWithRates& out_;
   double scale_, z_, centre_x_;

@@ -34,10 +34,14 @@ struct WettedPiece {
   }
 };
 
-// Calls visit(const WettedPiece&) with the wetted piece of the polygon's edge from a to b, if it
-// has one.
-template <class Visit>
-void visit_wetted_edge(const Vertex& a, const Vertex& b, double surface, Visit&& visit) {
+// Calls on_cut(const WettedPiece&) with the wetted piece of the polygon's edge from a to b if the
+// surface cuts the edge (the piece's depth_a is zero), on_whole(const WettedPiece&) if the edge is
+// wetted whole (depth_a > 0: a lies below the surface). Either piece's b is at least as deep as
+// its a: the edge descends to b, and a depth, the surface less a height, falls as the height
+// rises, rounded or not.
+template <class OnCut, class OnWhole>
+void visit_wetted_edge_parts(const Vertex& a, const Vertex& b, double surface, OnCut&& on_cut,
+                             OnWhole&& on_whole) {
   const double dx = b[0] - a[0], dy = b[1] - a[1];
   // The outward normal (dy, -dx) / length has n_x < 0 on a descending edge, whose end b is its
   // lowest point.
@@ -47,8 +51,17 @@ void visit_wetted_edge(const Vertex& a, const Vertex& b, double surface, Visit&&
     const double t = (surface - a[1]) / dy;
     piece.a = {a[0] + t * dx, surface};
     piece.depth_a = 0.0;
+    on_cut(piece);
+    return;
   }
-  visit(piece);
+  on_whole(piece);
+}
+
+// Calls visit(const WettedPiece&) with the wetted piece of the polygon's edge from a to b, if it
+// has one.
+template <class Visit>
+void visit_wetted_edge(const Vertex& a, const Vertex& b, double surface, Visit&& visit) {
+  visit_wetted_edge_parts(a, b, surface, visit, visit);
 }
 
 // Calls visit(const WettedPiece&) for each wetted piece of the counter-clockwise polygon. A surface

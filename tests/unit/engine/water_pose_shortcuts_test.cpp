@@ -6,6 +6,7 @@
 // piece adding the derivatives' zero M_a parts. Random poses over every tilt, tilts on either
 // side of the rising test's slack, and levels below, at and above the crest; cut and uncut pieces
 // from sums that started at zero.
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -128,6 +129,36 @@ TEST(ReservoirPoseShortcuts, APieceCutByTheSurfaceAddsItsFullTermsBits) {
     shortcut.add(piece);
     add_added_mass_piece_in_full(full, piece, scale, surface - centre[1], centre);
     expect_same_rates(shortcut_sums, full);
+  }
+}
+
+// A random edge's end: above, below or right at the surface.
+Vertex random_end(FixedUniforms& u, double surface, int i) {
+  return {u(-5.0, 5.0), i % 7 == 0 ? surface : surface + u(-20.0, 3.0)};
+}
+
+TEST(ReservoirPoseShortcuts, AnEdgesCutAndWholePiecesAddTheirFullTermsBits) {
+  FixedUniforms u(47);
+  const double scale = westergaard_scale(1000.0, 100.0);
+  for (int i = 0; i < 2000; ++i) {
+    SCOPED_TRACE(::testing::Message() << "edges " << i);
+    const double surface = u(-10.0, 30.0);
+    const Vertex centre{u(-5.0, 5.0), surface + u(-25.0, 10.0)};
+    const double z = surface - centre[1];
+    AddedMassWithRates parts_sums, full;
+    AddedMassPass parts(parts_sums, scale, z, centre);
+    // Two edges in a row, as an outline's: a to b, then b to c.
+    const Vertex a = random_end(u, surface, i), b = random_end(u, surface, i / 2),
+                 c = random_end(u, surface, i / 3);
+    for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, c}}) {
+      visit_wetted_edge_parts(
+          from, to, surface, [&](const WettedPiece& piece) { parts.add_cut(piece); },
+          [&](const WettedPiece& piece) { parts.add_whole(piece); });
+      visit_wetted_edge(from, to, surface, [&](const WettedPiece& piece) {
+        add_added_mass_piece_in_full(full, piece, scale, z, centre);
+      });
+    }
+    expect_same_rates(parts_sums, full);
   }
 }
 
