@@ -73,16 +73,11 @@ AddedMassPass::EndTerms AddedMassPass::end_terms(double depth) const {
 }
 
 void AddedMassPass::add(const WettedPiece& piece) {
-  const bool a_deeper = piece.depth_a > piece.depth_b;
-  const double deep = a_deeper ? piece.depth_a : piece.depth_b;
-  const double shallow = a_deeper ? piece.depth_b : piece.depth_a;
-  const double deep_x = (a_deeper ? piece.a : piece.b)[0] - centre_x_;
-  if (shallow == 0.0) {
-    add_cut_terms(end_terms(deep), deep_x);
-    return;
+  if (piece.depth_a == 0.0) {
+    add_cut(piece);
+  } else {
+    add_whole(piece);
   }
-  const double shallow_x = (a_deeper ? piece.b : piece.a)[0] - centre_x_;
-  add_whole_terms(end_terms(deep), end_terms(shallow), deep_x, shallow_x);
 }
 
 void AddedMassPass::add_cut(const WettedPiece& piece) {

@@ -68,9 +68,11 @@ double westergaard_scale(double density, double reservoir_depth);
 class AddedMassPass {
  public:
   AddedMassPass(AddedMassWithRates& sums, double scale, double z, const Vertex& centre);
+  // A piece whose b is at least as deep as its a, as visit_wetted_edge's are, cut by the surface
+  // where its depth_a is zero.
   void add(const WettedPiece& piece);
-  // The same for a piece known to be cut by the surface, or known to be wetted whole, its b at
-  // least as deep as its a (visit_wetted_edge_parts's pieces).
+  // The same for a piece known to be cut by the surface, or known to be wetted whole
+  // (visit_wetted_edge_parts's).
   void add_cut(const WettedPiece& piece);
   void add_whole(const WettedPiece& piece);
 
