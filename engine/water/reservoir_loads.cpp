@@ -62,27 +62,12 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
           at_pose.added.d_dtheta};
 }
 
-// Every call it makes inlined: each wetted piece's push and added mass were a call apiece.
-[[gnu::flatten]] ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
-  ReservoirPose out;
-  out.turn = cached_turn(s.theta);
-  out.centre = outline_.centre(s);
-  const SineCosine& turn = out.turn;
-  const Vertex& centre = out.centre;
-  // The push and the added mass in one pass over the wetted face.
-  const bool added_mass = reservoir_.hydrodynamic == Hydrodynamic::westergaard;
-  AddedMassPass added(out.added, added_mass_scale_, reservoir_.level - centre[1], centre);
-  const auto add_cut = [&](const WettedPiece& piece) {
-    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight_, centre);
-    if (added_mass) added.add_cut(piece);
-  };
-  const auto add_whole = [&](const WettedPiece& piece) {
-    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight_, centre);
-    if (added_mass) added.add_whole(piece);
-  };
-  // An edge that surely rises at the pose is dry (wetted_face.hpp): its ends are not placed; nor
-  // is the start of an edge whose end is at or above the surface, dry too. An end placed is the
-  // next edge's start.
+// An edge that surely rises at the pose is dry (wetted_face.hpp): its ends are not placed; nor is
+// the start of an edge whose end is at or above the surface, dry too. An end placed is the next
+// edge's start.
+template <class OnCut, class OnWhole>
+void ReservoirLoads::visit_wetted_face(const Vertex& centre, const SineCosine& turn, OnCut&& on_cut,
+                                       OnWhole&& on_whole) const {
   const double surely_rising = kSurelyRisingEdge * (std::abs(centre[1]) + reach_);
   std::size_t placed_index = outline_.body().size();
   Vertex placed{};
@@ -95,7 +80,35 @@ ReservoirLoadSet ReservoirLoads::at(const BlockState& s, CrackOpening open) cons
     if (!(placed[1] < reservoir_.level)) continue;
     visit_wetted_edge_parts(
         from_placed ? previous : outline_.placed_vertex(edge.from, centre, turn), placed,
-        reservoir_.level, add_cut, add_whole);
+        reservoir_.level, on_cut, on_whole);
+  }
+}
+
+// Every call it makes inlined: each wetted piece's push and added mass were a call apiece.
+[[gnu::flatten]] ReservoirPose ReservoirLoads::pose(const BlockState& s) const {
+  ReservoirPose out;
+  out.turn = cached_turn(s.theta);
+  out.centre = outline_.centre(s);
+  const Vertex& centre = out.centre;
+  // The push and the added mass in one pass over the wetted face; the added mass's pass set up
+  // only under "westergaard".
+  const auto add_push = [&](const WettedPiece& piece) {
+    add_hydrostatic_piece(out.hydrostatic, piece, unit_weight_, centre);
+  };
+  if (reservoir_.hydrodynamic == Hydrodynamic::westergaard) {
+    AddedMassPass added(out.added, added_mass_scale_, reservoir_.level - centre[1], centre);
+    visit_wetted_face(
+        centre, out.turn,
+        [&](const WettedPiece& piece) {
+          add_push(piece);
+          added.add_cut(piece);
+        },
+        [&](const WettedPiece& piece) {
+          add_push(piece);
+          added.add_whole(piece);
+        });
+  } else {
+    visit_wetted_face(centre, out.turn, add_push, add_push);
   }
   if (reservoir_.uplift == UpliftRule::none) return out;
   const double head = std::max(0.0, reservoir_.level - mouth_height(out));

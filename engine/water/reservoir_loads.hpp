@@ -66,6 +66,11 @@ class ReservoirLoads {
   WaterLoad uplift(const ReservoirPose& pose, CrackOpening open) const;
 
  private:
+  // Calls on_cut and on_whole (visit_wetted_edge_parts) with each wetted piece of the face at the
+  // pose whose centre of mass is `centre`.
+  template <class OnCut, class OnWhole>
+  void visit_wetted_face(const Vertex& centre, const SineCosine& turn, OnCut&& on_cut,
+                         OnWhole&& on_whole) const;
   // The height of the crack's mouth at the pose: a mouth on a vertex to the bits of the vertex
   // placed there (its point at rest is the vertex's).
   double mouth_height(const ReservoirPose& pose) const;
