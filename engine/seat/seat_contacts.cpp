@@ -59,6 +59,29 @@ bool crossed_right_of(Vec2 p, Vec2 a, Vec2 b) {
   return p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
 }
 
+// A lower bound on sqrt(squared_distance_to_edge(p, a, b)) as computed, for an edge with both ends
+// above p's level y (above) or both not: N - kGeometryRounding F, N and F the computed heights of
+// its nearer and farther ends from that level. Used only where over kSmallestGap.
+//
+// Why rounding cannot put the edge's value under it, u = 2^-53, G <= H the exact heights: for any
+// t in [0, 1] the point a + t (b - a) lies between the ends' levels, so the exact ap - t d has a y
+// of size at least G. Each branch of squared_distance_to_edge rounds ap.y, d.y (both at most H in
+// size, the ends being on one side), t d.y and their difference, fused or not: its off.y is within
+// 3.01 u H of that y before its own rounding, so |off.y| >= (1 - u)(G - 3.01 u H). The squared
+// distance, fl(off.y^2) plus a term >= 0, rounded, is at least (1 - u) off.y^2, so its root is at
+// least N - 5.52 u F (N >= G within u G, F within u H). The bound's product, subtraction and
+// square add at most 1.51 u N <= 1.51 u F: its square at or above a squared distance D puts
+// sqrt(D) at most N - (kGeometryRounding - 1.6 u) F, below this edge's root as kGeometryRounding
+// >= 8 u; min() then keeps D. Gaps over kSmallestGap keep every square clear of underflow.
+double level_gap(double y, double a_y, double b_y, bool above) {
+  const double low = std::min(a_y, b_y), high = std::max(a_y, b_y);
+  const double nearer = above ? low - y : y - high, farther = above ? high - y : y - low;
+  return nearer - kGeometryRounding * farther;
+}
+
+// Gaps at most this small are not pruned (see level_gap).
+constexpr double kSmallestGap = 1e-100;
+
 // Seats with at most this many points between their ends find a place's segment by a scan.
 constexpr std::ptrdiff_t kScannedSeatPoints = 4;
 
@@ -347,13 +370,26 @@ double SeatContacts::point_clearance(int k, std::span<const Vec2> world) const {
   double squared = std::numeric_limits<double>::infinity();
   bool inside = false;
   const std::size_t n = body_.size();
-  bool end_above = world[n - 1].y > p.y;
-  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-    squared = std::min(squared, squared_distance_to_edge(p, world[i], world[j]));
+  bool end_above = world[0].y > p.y;
+  // The edge from vertex j to vertex i, i after j, with its ends as the plain pass orders them. An
+  // edge wholly above or below p farther than the nearest so far is not the nearest (the block's
+  // far edges, at every evaluation): min() of the rest is the same to the bit, in any order, as
+  // squared starts at infinity and min() never takes a NaN from an edge.
+  const auto visit = [&](std::size_t i, std::size_t j) {
     const bool start_above = world[i].y > p.y;
-    if (start_above != end_above) inside = inside != crossed_right_of(p, world[i], world[j]);
-    end_above = start_above;
-  }
+    if (start_above != end_above) {
+      inside = inside != crossed_right_of(p, world[i], world[j]);
+      end_above = start_above;
+    } else {
+      const double gap = level_gap(p.y, world[i].y, world[j].y, start_above);
+      if (gap > kSmallestGap && gap * gap >= squared) return;
+    }
+    squared = std::min(squared, squared_distance_to_edge(p, world[i], world[j]));
+  };
+  // The base's edges first: the seat's points lie under the base, so the nearest so far is small
+  // early and prunes the rest.
+  for (std::size_t i = 1; i < n; ++i) visit(i, i - 1);
+  visit(0, n - 1);
   const double distance = std::sqrt(squared);
   return inside ? -distance : distance;
 }

@@ -79,5 +79,33 @@ TEST(SeatPointClearance, IsThePlainTestsToTheBitOnAndOffTheBlock) {
   EXPECT_GT(inside, 300);  // the test tells inside from outside
 }
 
+// The edges pruned by their height over or under p (a point under the block's base, above its
+// top, beside it): points straight under or over each vertex tie that vertex's two edges, whose
+// rounded distances differ by an ulp where one of them is taken as ap - d, so a bound without its
+// room for rounding would keep the larger.
+TEST(SeatPointClearance, PrunedEdgesKeepTheLeastToTheBit) {
+  FixedUniforms u(977);
+  const SeatContacts posed(kTypeB, {{-1e5, 0.0}, {1e5, 0.0}});
+  const std::size_t n = kTypeB.size();
+  for (int trial = 0; trial < 3000; ++trial) {
+    const BlockState s{u(-20, 20), u(-20, 20), u(-3.2, 3.2), 0.0, 0.0, 0.0};
+    std::vector<Vec2> world(n);
+    posed.world_vertices(s, world);
+    std::vector<Vertex> seat;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 v = world[i];
+      seat.push_back({v.x, v.y - u(0, 1) * std::pow(10.0, u(-6, 1))});
+      seat.push_back({v.x, v.y + u(0, 1) * std::pow(10.0, u(-6, 1))});
+      seat.push_back({v.x + u(-1e-9, 1e-9), v.y - u(0, 3)});
+      seat.push_back({s.x + u(-25, 25), s.y + u(-25, 25)});
+    }
+    std::sort(seat.begin(), seat.end());
+    const SeatContacts contacts(kTypeB, seat);
+    for (int k = 0; k < contacts.point_count(); ++k) {
+      EXPECT_EQ(contacts.point_clearance(k, world), plain_clearance(contacts.seat_point(k), world));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace blockfrag
