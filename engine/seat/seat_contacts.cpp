@@ -317,6 +317,24 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
   return found;
 }
 
+bool SeatContacts::leaves_with(const SeatPair& left, const SeatPair& pair, int slip,
+                               const BlockState& s) const {
+  if (left.kind == pair.kind || slip == 0) return false;
+  const SeatPair& vertex = left.kind == ContactKind::block_vertex ? left : pair;
+  const SeatPair& point = left.kind == ContactKind::block_vertex ? pair : left;
+  // The point's edge starts or ends at the vertex; the vertex's segment starts or ends at the
+  // point.
+  const int n = vertex_count();
+  const bool same_vertex = point.block == vertex.block || (point.block + 1) % n == vertex.block;
+  const bool same_point = vertex.seat == point.seat || vertex.seat + 1 == point.seat;
+  if (!same_vertex || !same_point) return false;
+  // A vertex moves along its segment with its contact's tangent (the segment's direction); a seat
+  // point moves along its edge against it (the edge's direction, the block moving under it).
+  const int along_rate = pair.kind == ContactKind::block_vertex ? slip : -slip;
+  const PairPose p = pose(pair, s);
+  return (p.along < 0.0 && along_rate < 0) || (p.along > p.length && along_rate > 0);
+}
+
 void SeatContacts::world_vertices(const BlockState& s, std::span<Vec2> out) const {
   const SineCosine turn = cached_turn(s.theta);
   for (std::size_t i = 0; i < body_.size(); ++i) {

@@ -82,6 +82,12 @@ class SeatContacts {
   // it approaches faster: the one it came in through.
   std::vector<SeatPair> touching(const BlockState& s, double tolerance,
                                  const std::optional<SeatPair>& left, int arrived) const;
+  // Whether `pair`, slipping with sign `slip` (its contact's tangential velocity's), is the other
+  // pair of the block-vertex-on-seat-point corner `left` has just left through its end (a vertex
+  // on a segment that ends at the point, the point on an edge that ends at the vertex), lies past
+  // its own end at s, and moves further past it: the corner leaves the seat, and `pair` touches
+  // only within the tolerance a drifted contact is given.
+  bool leaves_with(const SeatPair& left, const SeatPair& pair, int slip, const BlockState& s) const;
 
   // Where p (on the line of seat segment k) lies along the straight run of seats segments k is
   // part of (between the points either side of it that bend: see touches_edges), and the run's

@@ -188,6 +188,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     PlanarForcesInput problem;
   };
   void put_back_on_held_contacts(const std::vector<SeatPair>& pairs);
+  SeatMode contact_states(const std::vector<SeatPair>& pairs, const EventReport& report,
+                          std::size_t logged);
   void settle_or_lay(BlockState& s, const std::vector<SeatPair>& pairs, bool impacted);
   CarryingContacts carrying_contacts(const std::vector<SeatPair>& pairs);
   SeatMode rest_on(const std::vector<SeatPair>& carrying);

@@ -173,6 +173,26 @@ SeatMode SeatSimulation::resolve(const EventReport& report) {
   }
   settle_or_lay(s, pairs, impacted);
   state_ = s;
+  SeatMode mode = contact_states(pairs, report, logged);
+  if (!report.force || report.force->event != SeatEvent::leaves_end) return mode;
+  // Where a block vertex on a seat point left the seat through one pair's end, the other pair
+  // there touches within the drift's tolerance; slipping on past its own end, it would leave at
+  // once, the first pair touch again, and the block swap between the two every 1e-8 s without
+  // moving (the type B block slipping off the seat's upstream end as it turns about its heel).
+  const auto leaving = std::find_if(mode.active.begin(), mode.active.end(), [&](const auto& a) {
+    return contacts_.leaves_with(report.force->pair, a.pair, slip_sign(a.state), state_);
+  });
+  if (leaving == mode.active.end()) return mode;
+  std::vector<SeatPair> staying = pairs;
+  std::erase(staying, leaving->pair);
+  return contact_states(staying, report, logged);
+}
+
+// The contact states over the touching pairs that carry force, from the complementarity problem
+// at state_.
+SeatMode SeatSimulation::contact_states(const std::vector<SeatPair>& pairs,
+                                        const EventReport& report, std::size_t logged) {
+  const BlockState& s = state_;
   CarryingContacts carrying = carrying_contacts(pairs);
   if (carrying.pairs.empty()) return logged_mode(SeatMode{}, logged);
   PlanarForces forces = resolve_contact_forces(carrying.problem);
