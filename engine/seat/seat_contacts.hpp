@@ -111,6 +111,19 @@ class SeatContacts {
   // it) would go down past it, its base edge crossing the incline with no vertex or seat point
   // inside the other.
   bool under_end_segment(Vec2 p, bool last_end) const;
+  // Whether block vertex i at s lies inside the seat's x range within `near` of an end's x, more
+  // than `depth` below the seat there, while the block's centre of mass is past that end: a vertex
+  // of a block going down beside the seat that comes into its range under its end (a seat has no
+  // face under its ends, and its clearance jumps there from the distance to the end to the depth
+  // under the seat). A block whose centre is over the seat is not beside it.
+  bool under_an_end(int i, const BlockState& s, double near, double depth) const {
+    const double first = seat_.front().x, last = seat_.back().x;
+    if (s.x >= first && s.x <= last) return false;
+    const Vec2 p = vertex_at(i, s);
+    const bool beside =
+        s.x < first ? p.x >= first && p.x - first <= near : p.x <= last && last - p.x <= near;
+    return beside && clearance_at(p) < -depth;
+  }
   // Whether the seat's points lie on one line (a flat seat, within `tolerance` m).
   bool straight(double tolerance) const;
   // How far theta is from overturning (> 0 inside): on a straight seat the flat ground's rule (the

@@ -300,6 +300,18 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
       report.arrived_point = -1;
     }
   }
+  // A vertex of a block beside the seat that comes into the seat's range under an end has not
+  // touched it: the block has gone down past that end (the type B block falling upstream of its
+  // seat, its downstream corner 0.59 m under the seat's end; taken as a touch, no contact was found
+  // there, and the vertex's guard fired again 7e-10 s on, without end).
+  if (event == SeatEvent::touches && report.arrived_point < 0) {
+    const int vertex =
+        system.watched_vertices()[static_cast<std::size_t>(which - kFirstClearanceGuard)];
+    const double drift = kSeatContactDrift * R_;
+    if (contacts_.under_an_end(vertex, at_event, drift, drift)) {
+      event = SeatEvent::falls;
+    }
+  }
   if (event == SeatEvent::lift_off || event == SeatEvent::friction_limit ||
       event == SeatEvent::leaves_end) {
     const auto contact = static_cast<std::size_t>((which - 2) / kSeatContactGuards);

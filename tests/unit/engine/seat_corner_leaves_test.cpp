@@ -1,6 +1,8 @@
-// A block vertex on a seat point (the type B block's heel on the seat's upstream end) that slips
-// off the seat: the corner's two pairs (the vertex on the seat's first segment, the seat's end
-// point on the block's upstream face) must not take turns leaving their ends.
+// A block leaving its seat past the seat's upstream end. A block vertex on a seat point (the type B
+// block's heel on the seat's end) that slips off the seat: the corner's two pairs (the vertex on
+// the seat's first segment, the seat's end point on the block's upstream face) must not take turns
+// leaving their ends. A block falling upstream of the seat whose corner comes under the seat's end
+// from beside it has gone down past that end: it has not touched the seat.
 #include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
@@ -50,6 +52,41 @@ TEST(SeatCornerLeaves, HeelSlippingOffTheSeatsEndFallsBesideTheSeat) {
   ASSERT_TRUE(s.fell_time.has_value());
   EXPECT_GT(*s.fell_time, 4.0);
   EXPECT_TRUE(s.settled);
+}
+
+// The randomized wet scene that failed on the event budget: the type B block under its reservoir
+// (5 m below the crest, full head in the open crack) slides upstream off its seat, flies, and its
+// downstream base corner swings under the seat's upstream end, 0.59 m below it.
+Scene falling_upstream_under_the_reservoir() {
+  Scene scene;
+  scene.polygon = PolygonBlock{testing::kTypeB, 521301.0};
+  scene.seat = Seat{testing::kTypeBSeat};
+  scene.contact = {0.8601308400138321, 0.35850795285028264};
+  scene.reservoir =
+      Reservoir{16.781358466199976,           100.0, 1000.0, Hydrodynamic::westergaard,
+                UpliftRule::full_head_in_gap, 1.0};
+  scene.ground_motion = SinePulse{-1.6874201701881233, 2.821448446752989, 1.0};
+  scene.duration = 4.0;
+  scene.solver.method = Method::rk4;
+  scene.solver.dt = 0.00025;
+  scene.solver.max_events = 10'000;
+  return scene;
+}
+
+TEST(SeatCornerLeaves, CornerComingUnderTheSeatsEndFromBesideItFalls) {
+  const Summary s = simulate(falling_upstream_under_the_reservoir());
+  ASSERT_EQ(s.status, Status::ok) << s.status_reason;
+  EXPECT_LT(s.events, 100);
+  EXPECT_TRUE(s.fell);
+  EXPECT_FALSE(s.overturned);
+  EXPECT_TRUE(s.settled);
+  ASSERT_TRUE(s.fell_time.has_value());
+  ASSERT_FALSE(s.modes.empty());
+  // In flight since it left the seat, upstream of it and turned upstream.
+  EXPECT_EQ(s.modes.back().mode, ModeKind::flight);
+  EXPECT_GT(*s.fell_time, s.modes.back().time);
+  EXPECT_LT(s.final_slide, -10.0);
+  EXPECT_GT(s.final_theta, 0.5);
 }
 
 }  // namespace
