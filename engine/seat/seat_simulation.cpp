@@ -266,6 +266,13 @@ void SeatSimulation::note_contact_violation(const Ode& ode, double t, const Bloc
                                             const ForcesAt&) {
   SeatSystem& system = ode.system();
   if (system.active_count() == 0) return;
+  if (system.lean_pivot()) {
+    const SeatSystem::PivotForce f = system.pivot_force(t, s);
+    summary_.max_contact_violation =
+        std::max({summary_.max_contact_violation, -f.normal / scene_.g,
+                  (std::abs(f.tangent) - scene_.contact.friction * f.normal) / scene_.g});
+    return;
+  }
   const FixedStateForces& f = system.solve(t, s);
   for (int i = 0; i < system.active_count(); ++i) {
     const auto at = static_cast<std::size_t>(i);
@@ -418,8 +425,10 @@ SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t
       [&](const auto& chart) {
         using Chart = std::decay_t<decltype(chart)>;
         if constexpr (std::is_same_v<Chart, PivotChart>) {
+          moving.set_clear_of_ends(contacts_.within_ends_turning_about(chart.point));
           integrate(SeatOde<PivotChart>(moving, chart, sweep_for(moving, chart)));
         } else {
+          moving.set_clear_of_ends(false);
           const SeatOde ode(moving, chart);
           if constexpr (std::is_same_v<Chart, FlightChart>) {
             if (vertical_.piece_at(t_).is_zero() && external_ == nullptr) {

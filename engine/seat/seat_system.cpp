@@ -48,6 +48,8 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   count_ = static_cast<int>(active.size());
   std::copy(active.begin(), active.end(), active_.begin());
   one_sticking_ = count_ == 1 && active_[0].state == ContactState::stick;
+  vertex_pivot_ = one_sticking_ && active_[0].pair.kind == ContactKind::block_vertex &&
+                  c_.contacts->point_count() == 2 && c_.external == nullptr;
   // Only the used slots are set (events_ starts at none): a record builds a system at each of its
   // samples, and passes over all 64 slots were a third of a construction.
   unused_.fill(true);
@@ -105,6 +107,8 @@ void SeatSystem::start_piece(const SeatSystemContext& c) {
   vertical_still_ = c.vertical->is_zero();
   last_solve_.t = std::numeric_limits<double>::quiet_NaN();
   last_lifted_.t = std::numeric_limits<double>::quiet_NaN();
+  lean_.t = std::numeric_limits<double>::quiet_NaN();
+  lean_.deepest_set = false;
   turned_.set = false;
 }
 
@@ -186,7 +190,11 @@ const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
 
 std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) {
   if (count_ != 1) return std::nullopt;
-  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
+  return turning_under(c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s), s,
+                       r);
+}
+
+double SeatSystem::turning_under(const BodyLoad& load, const BlockState& s, Vec2 r) {
   const BodyInertia& m = load.inertia;
   const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
   const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta
@@ -206,6 +214,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s,
                                                            const GuardClaims& wanted) {
+  if (lean_pivot_) return lean_pivot_guards(t, s, wanted);
   std::array<double, kGuards> out = unused_guard_values();
   const double R = c_.geometry->size();
   // A sample inside a step mostly follows one clearance (a vertex just over the seat in flight):
@@ -309,6 +318,77 @@ void SeatSystem::set_sticking_guards(double t, const BlockState& s, std::span<co
   out[3] = friction_guard(f, 0);
 }
 
+void SeatSystem::set_clear_of_ends(bool clear) {
+  lean_pivot_ = clear && vertex_pivot_;
+  if (!lean_pivot_) return;
+  const auto points_from = static_cast<int>(kFirstClearanceGuard + watched_vertices_.size());
+  lean_live_count_ = 0;
+  for (const int slot : std::span(live_slots_).first(static_cast<std::size_t>(live_count_))) {
+    if (slot == 1 || slot >= points_from) continue;
+    lean_live_slots_[static_cast<std::size_t>(lean_live_count_++)] = slot;
+  }
+}
+
+SeatSystem::PivotForce SeatSystem::pivot_force(double t, const BlockState& s) {
+  if (t == lean_.t && std::memcmp(&s, &lean_.s, sizeof s) == 0) return lean_.force;
+  return pivot_force_at(t, s, cached_turn(s.theta));
+}
+
+SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s,
+                                                  SineCosine turn) const {
+  // The arm as the pivot's chart turns it (PivotChart::arm).
+  const Vec2 r = rotate(c_.contacts->body_vertex(active_[0].pair.block), turn.cos, turn.sin);
+  const BodyLoad load = dry_lifted_load(t, s);
+  const double turning = turning_under(load, s, r);
+  // The centre of mass at pivot - r: its acceleration is -(d/dt)^2 r.
+  const double w2 = s.omega * s.omega;
+  const Vec2 force{turning * r.y + w2 * r.x - load.force.x,
+                   -turning * r.x + w2 * r.y - load.force.y};
+  const Vec2 n = normals_[0];
+  return {force.x * n.x + force.y * n.y, force.x * n.y - force.y * n.x};
+}
+
+std::array<double, SeatSystem::kGuards> SeatSystem::lean_pivot_guards(double t, const BlockState& s,
+                                                                      const GuardClaims& wanted) {
+  std::array<double, kGuards> out = unused_guard_values();
+  if (wanted[0]) out[0] = c_.contacts->overturn_margin(*c_.geometry, s.theta);
+  const SineCosine turn = cached_turn(s.theta);
+  if (wanted[2] || wanted[3]) {
+    lean_.force = pivot_force_at(t, s, turn);
+    lean_.t = t;
+    lean_.s = s;
+    out[2] = lean_.force.normal / c_.g;
+    out[3] = (c_.mu * lean_.force.normal - std::abs(lean_.force.tangent)) / c_.g;
+  }
+  const double R = c_.geometry->size();
+  // The deepest is known where every watched vertex is wanted (a step's end, whose penetration
+  // follows).
+  bool every = true;
+  double deepest = 0.0;
+  std::size_t g = static_cast<std::size_t>(kFirstClearanceGuard);
+  for (const int i : watched_vertices_) {
+    if (wanted[g]) {
+      const double c = lean_clearance(i, s, turn);
+      out[g] = c / R;
+      deepest = std::max(deepest, -c);
+    } else {
+      every = false;
+    }
+    ++g;
+  }
+  lean_.deepest_set = every;
+  if (every) {
+    lean_.pose = pose_bits(s);
+    lean_.deepest = std::max(deepest, -lean_clearance(active_[0].pair.block, s, turn));
+  }
+  return out;
+}
+
+double SeatSystem::lean_clearance(int i, const BlockState& s, SineCosine turn) const {
+  const Vec2 r = rotate(c_.contacts->body_vertex(i), turn.cos, turn.sin);
+  return c_.contacts->clearance_at({s.x + r.x, s.y + r.y});
+}
+
 double SeatSystem::guard(int i, double t, const BlockState& s) {
   const double R = c_.geometry->size();
   const auto vertices = static_cast<int>(watched_vertices_.size());
@@ -329,6 +409,15 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
 }
 
 double SeatSystem::penetration(const BlockState& s) const {
+  // A lean pivot's other vertices lie above the line its watched ones do (HullWatch), and the
+  // seat's points are out of the block's reach.
+  if (lean_pivot_) {
+    if (lean_.deepest_set && has_pose_bits(s, lean_.pose)) return lean_.deepest;
+    const SineCosine turn = cached_turn(s.theta);
+    double deepest = std::max(0.0, -lean_clearance(active_[0].pair.block, s, turn));
+    for (const int i : watched_vertices_) deepest = std::max(deepest, -lean_clearance(i, s, turn));
+    return deepest;
+  }
   if (!turned_.set || !has_pose_bits(s, turned_.pose)) return c_.contacts->penetration(s);
   const auto n = static_cast<std::size_t>(c_.contacts->vertex_count());
   return c_.contacts->penetration(std::span<const Vec2>(turned_.world).first(n), watched_points_,

@@ -120,12 +120,29 @@ class SeatSystem {
   // Not const: the load it finds is the one the guards' solve at a step's end needs next (a step
   // ends by this, at its end).
   std::optional<double> pivot_turning(double t, const BlockState& s, Vec2 r);
+  // Whether the block turns about its pivot clear of the seat's ends (SeatContacts::
+  // within_ends_turning_about, asked once per pivot). On a one-segment seat, dry, a block vertex
+  // sticking there is then the flat ground's rocking block, and its guards are found as the flat
+  // ground finds them: its contact force in closed form from pivot_turning, the watched vertices'
+  // heights alone, the seat's ends and the fall out of reach (their guards 1).
+  void set_clear_of_ends(bool clear);
+  bool lean_pivot() const { return lean_pivot_; }
+  // The pivot's normal and tangential force (per unit mass, along its segment's normal and
+  // contact_tangent) at (t, s) on a lean pivot: M a of the centre of mass turning about the fixed
+  // pivot, less the load. It is the fixed-state solve's, to its rounding.
+  struct PivotForce {
+    double normal, tangent;
+  };
+  PivotForce pivot_force(double t, const BlockState& s);
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
   // The guards whose slot is used (the others are 1 throughout).
   GuardClaims live_guards() const { return live_; }
-  // The same as their slots, in order: a guard watch takes them at each motion piece.
+  // The same as their slots, in order: a guard watch takes them at each motion piece. On a lean
+  // pivot, without the fall's and the seat points', which stay 1.
   std::span<const int> live_slots() const {
-    return std::span(live_slots_).first(static_cast<std::size_t>(live_count_));
+    return lean_pivot_
+               ? std::span(lean_live_slots_).first(static_cast<std::size_t>(lean_live_count_))
+               : std::span(live_slots_).first(static_cast<std::size_t>(live_count_));
   }
   // The seat point a touching guard watches, or -1 (a block vertex's guard, or another guard).
   int watched_point(int guard) const {
@@ -209,6 +226,15 @@ class SeatSystem {
   // step's end): its contact alone posed and solved, without the passes over the contacts.
   void set_sticking_guards(double t, const BlockState& s, std::span<const Vec2> world,
                            std::array<double, kGuards>& out);
+  // theta'' of pivot_turning under the load given.
+  static double turning_under(const BodyLoad& load, const BlockState& s, Vec2 r);
+  // pivot_force with the block's turn at s given.
+  PivotForce pivot_force_at(double t, const BlockState& s, SineCosine turn) const;
+  // Block vertex i's clearance at s, the block's turn given.
+  double lean_clearance(int i, const BlockState& s, SineCosine turn) const;
+  // guards(t, s, wanted) on a lean pivot (set_clear_of_ends).
+  std::array<double, kGuards> lean_pivot_guards(double t, const BlockState& s,
+                                                const GuardClaims& wanted);
   // The active contacts at s (the first count_ set), as SeatContacts::pose gives them: a block
   // vertex's is its world vertex less the centre of mass on its segment's fixed normal, found
   // without pose()'s gap and place (every right-hand side of a slipping or sliding block).
@@ -247,6 +273,22 @@ class SeatSystem {
   std::array<Vec2, kMaxSeatContacts> normals_{};  // a block vertex's contact normal: its segment's
   int count_ = 0;
   bool one_sticking_ = false;  // one active contact, sticking
+  bool vertex_pivot_ = false;  // that contact a block vertex's on a one-segment seat, dry
+  bool lean_pivot_ = false;    // and turning clear of the seat's ends (set_clear_of_ends)
+  // What lean_pivot_guards last found of the pivot's force, at what time and state (a step's end,
+  // whose contact check asks again), and of the deepest of the pivot and the watched vertices, at
+  // what pose (the step's penetration).
+  struct LeanPivot {
+    double t = std::numeric_limits<double>::quiet_NaN();
+    BlockState s;
+    PivotForce force{0.0, 0.0};
+    std::array<std::uint64_t, 3> pose{};
+    bool deepest_set = false;
+    double deepest = 0.0;
+  };
+  LeanPivot lean_;
+  std::array<int, kGuards> lean_live_slots_;  // live_slots() on a lean pivot, the first
+  int lean_live_count_ = 0;                   // lean_live_count_
   WatchedList watched_vertices_, watched_points_;
   std::array<SeatEvent, kGuards> events_{};
   GuardClaims unused_, live_;            // live_: the used slots, each unused_'s negation
