@@ -10,11 +10,15 @@ and levels) on two ranks, and their ratio. With --wet, also each block under its
 (configs/dam_block_type_{a,b}_reservoir.json, water at the crest) and its ratio wet / dry: what
 the water costs; and each under a pool 1 cm deep (its reservoir with the level 1 cm above the
 block's lowest point): the dry motion with every load of the water computed at every right-hand
-side, which parts the water's own cost from what the water does to the motion. The builds' runs
-alternate, so that a change of the machine's load falls on both.
+side, which parts the water's own cost from what the water does to the motion. With --flat-seat,
+also the type A block on the flat ground given as a seat of one segment (1 km either side of its
+base's middle) and its ratio to the flat ground's: what the seat's engine costs where the two
+engines run the same physics. The builds' runs alternate, so that a change of the machine's load
+falls on both.
 
     /usr/bin/python3 tests/benchmarks/seat_speed.py --blockfrag build/mpi_driver/blockfrag \\
-        [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies] [--wet] [--markdown]
+        [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies] [--wet] [--flat-seat]
+        [--markdown]
 
 --markdown prints under the table the line docs/performance.md shows under it: the version, the
 cores and the load average that measured it, and this command (tests/benchmarks/markdown_stamp.py).
@@ -36,6 +40,7 @@ SCENES = {"B": "configs/dam_block_type_b.json", "A": "configs/dam_block_type_a.j
 STUDIES = {"B": "configs/dam_type_b_record_suite.json", "A": "configs/record_suite_study.json"}
 WET = {"B": "configs/dam_block_type_b_reservoir.json", "A": "configs/dam_block_type_a_reservoir.json"}
 SHALLOW_POOL_M = 0.01  # the shallow pool's depth over the block's lowest point
+FLAT_SEAT_HALF_M = 1000.0  # how far the flat seat reaches either side of the block's base's middle
 
 
 def shallow_pool(wet_scene, folder):
@@ -44,6 +49,18 @@ def shallow_pool(wet_scene, folder):
     lowest = min(y for _, y in scene["block"]["polygon"])
     scene["reservoir"]["level"] = lowest + SHALLOW_POOL_M
     path = Path(folder) / ("shallow_" + Path(wet_scene).name)
+    path.write_text(json.dumps(scene))
+    return str(path)
+
+
+def flat_seat(scene_file, folder):
+    """A copy of the dry scene on a seat of one level segment under its base, written in folder."""
+    scene = json.loads((ROOT / scene_file).read_text())
+    lowest = min(y for _, y in scene["block"]["polygon"])
+    base = [x for x, y in scene["block"]["polygon"] if y == lowest]
+    middle = 0.5 * (min(base) + max(base))
+    scene["seat"] = [[middle - FLAT_SEAT_HALF_M, lowest], [middle + FLAT_SEAT_HALF_M, lowest]]
+    path = Path(folder) / ("flat_seat_" + Path(scene_file).name)
     path.write_text(json.dumps(scene))
     return str(path)
 
@@ -65,10 +82,12 @@ def study_wall(blockfrag, study):
         return time.monotonic() - start
 
 
-def measure(builds, repeat, studies, wet):
+def measure(builds, repeat, studies, wet, on_flat_seat):
     rows = {name: {} for name in builds}
     scenes = [("bench " + key, scene) for key, scene in SCENES.items()]
     with tempfile.TemporaryDirectory() as folder:
+        if on_flat_seat:
+            scenes.append(("flat seat A", flat_seat(SCENES["A"], folder)))
         if wet:
             scenes += [("wet " + key, scene) for key, scene in WET.items()]
             scenes += [("shallow " + key, shallow_pool(scene, folder)) for key, scene in WET.items()]
@@ -82,7 +101,7 @@ def measure(builds, repeat, studies, wet):
     return rows
 
 
-def table(rows, studies, wet):
+def table(rows, studies, wet, on_flat_seat):
     names = list(rows)
     lines = ["| measure | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
 
@@ -93,6 +112,11 @@ def table(rows, studies, wet):
         row(f"bench type {key}: median ms (steps)",
             lambda r, k=key: f"{r['bench ' + k][0]:.2f} ({r['bench ' + k][1]:,})")
     row("**bench ratio B / A**", lambda r: f"**{r['bench B'][0] / r['bench A'][0]:.2f}**")
+    if on_flat_seat:
+        row("bench type A on a one-segment seat: median ms (steps)",
+            lambda r: f"{r['flat seat A'][0]:.2f} ({r['flat seat A'][1]:,})")
+        row("**one-segment seat / flat ground, type A**",
+            lambda r: f"**{r['flat seat A'][0] / r['bench A'][0]:.2f}**")
     if studies:
         for key in STUDIES:
             row(f"record-suite study type {key}: wall s", lambda r, k=key: f"{r['study ' + k]:.2f}")
@@ -119,6 +143,8 @@ def main():
                         help="also time the two record-suite studies on two ranks")
     parser.add_argument("--wet", action="store_true",
                         help="also bench each block under its reservoir, and wet / dry")
+    parser.add_argument("--flat-seat", action="store_true",
+                        help="also bench the type A block on a one-segment seat, and its ratio")
     parser.add_argument("--markdown", action="store_true", help="the stamp line under the table")
     args = parser.parse_args()
     builds = {"build": args.blockfrag}
@@ -129,7 +155,8 @@ def main():
             sys.exit(f"seat_speed.py: no such program: {binary}")
         builds[name] = os.path.abspath(binary)
     stamp = Stamp(builds["build"], note=f"bench medians of {args.repeat} runs") if args.markdown else None
-    print(table(measure(builds, args.repeat, args.studies, args.wet), args.studies, args.wet))
+    rows = measure(builds, args.repeat, args.studies, args.wet, args.flat_seat)
+    print(table(rows, args.studies, args.wet, args.flat_seat))
     if stamp:
         print()
         print(stamp.line())
