@@ -49,7 +49,7 @@ SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveConta
   std::copy(active.begin(), active.end(), active_.begin());
   one_sticking_ = count_ == 1 && active_[0].state == ContactState::stick;
   vertex_pivot_ = one_sticking_ && active_[0].pair.kind == ContactKind::block_vertex &&
-                  c_.contacts->point_count() == 2 && c_.external == nullptr;
+                  c_.contacts->point_count() == 2;
   // Only the used slots are set (events_ starts at none): a record builds a system at each of its
   // samples, and passes over all 64 slots were a third of a construction.
   unused_.fill(true);
@@ -214,7 +214,13 @@ std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const Block
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s,
                                                            const GuardClaims& wanted) {
-  if (lean_pivot_) return lean_pivot_guards(t, s, wanted);
+  // Two calls, not an early return: each result is built in the caller's place (an early return
+  // of another array than the one built here copied all 64 slots at every call).
+  return lean_pivot_ ? lean_pivot_guards(t, s, wanted) : general_guards(t, s, wanted);
+}
+
+std::array<double, SeatSystem::kGuards> SeatSystem::general_guards(double t, const BlockState& s,
+                                                                   const GuardClaims& wanted) {
   std::array<double, kGuards> out = unused_guard_values();
   const double R = c_.geometry->size();
   // A sample inside a step mostly follows one clearance (a vertex just over the seat in flight):
@@ -334,16 +340,18 @@ SeatSystem::PivotForce SeatSystem::pivot_force(double t, const BlockState& s) {
   return pivot_force_at(t, s, cached_turn(s.theta));
 }
 
-SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s,
-                                                  SineCosine turn) const {
+SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s, SineCosine turn) {
   // The arm as the pivot's chart turns it (PivotChart::arm).
   const Vec2 r = rotate(c_.contacts->body_vertex(active_[0].pair.block), turn.cos, turn.sin);
-  const BodyLoad load = dry_lifted_load(t, s);
+  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
   const double turning = turning_under(load, s, r);
-  // The centre of mass at pivot - r: its acceleration is -(d/dt)^2 r.
+  // The centre of mass at pivot - r: its acceleration is -(d/dt)^2 r. The force is M a - Q in x
+  // and y, the added mass (horizontal) coupling x and theta; dry, M's added parts are zero and add
+  // nothing.
   const double w2 = s.omega * s.omega;
-  const Vec2 force{turning * r.y + w2 * r.x - load.force.x,
-                   -turning * r.x + w2 * r.y - load.force.y};
+  const Vec2 a{turning * r.y + w2 * r.x, -turning * r.x + w2 * r.y};
+  const BodyInertia& m = load.inertia;
+  const Vec2 force{(1.0 + m.xx) * a.x + m.xtheta * turning - load.force.x, a.y - load.force.y};
   const Vec2 n = normals_[0];
   return {force.x * n.x + force.y * n.y, force.x * n.y - force.y * n.x};
 }

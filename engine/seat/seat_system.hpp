@@ -121,10 +121,10 @@ class SeatSystem {
   // ends by this, at its end).
   std::optional<double> pivot_turning(double t, const BlockState& s, Vec2 r);
   // Whether the block turns about its pivot clear of the seat's ends (SeatContacts::
-  // within_ends_turning_about, asked once per pivot). On a one-segment seat, dry, a block vertex
-  // sticking there is then the flat ground's rocking block, and its guards are found as the flat
-  // ground finds them: its contact force in closed form from pivot_turning, the watched vertices'
-  // heights alone, the seat's ends and the fall out of reach (their guards 1).
+  // within_ends_turning_about, asked once per pivot). On a one-segment seat a block vertex sticking
+  // there is then the flat ground's rocking block, and its guards are found as the flat ground
+  // finds them: its contact force in closed form from pivot_turning, the watched vertices' heights
+  // alone, the seat's ends and the fall out of reach (their guards 1).
   void set_clear_of_ends(bool clear);
   bool lean_pivot() const { return lean_pivot_; }
   // The pivot's normal and tangential force (per unit mass, along its segment's normal and
@@ -229,9 +229,12 @@ class SeatSystem {
   // theta'' of pivot_turning under the load given.
   static double turning_under(const BodyLoad& load, const BlockState& s, Vec2 r);
   // pivot_force with the block's turn at s given.
-  PivotForce pivot_force_at(double t, const BlockState& s, SineCosine turn) const;
+  PivotForce pivot_force_at(double t, const BlockState& s, SineCosine turn);
   // Block vertex i's clearance at s, the block's turn given.
   double lean_clearance(int i, const BlockState& s, SineCosine turn) const;
+  // guards(t, s, wanted) elsewhere.
+  std::array<double, kGuards> general_guards(double t, const BlockState& s,
+                                             const GuardClaims& wanted);
   // guards(t, s, wanted) on a lean pivot (set_clear_of_ends).
   std::array<double, kGuards> lean_pivot_guards(double t, const BlockState& s,
                                                 const GuardClaims& wanted);
@@ -273,7 +276,7 @@ class SeatSystem {
   std::array<Vec2, kMaxSeatContacts> normals_{};  // a block vertex's contact normal: its segment's
   int count_ = 0;
   bool one_sticking_ = false;  // one active contact, sticking
-  bool vertex_pivot_ = false;  // that contact a block vertex's on a one-segment seat, dry
+  bool vertex_pivot_ = false;  // that contact a block vertex's on a one-segment seat
   bool lean_pivot_ = false;    // and turning clear of the seat's ends (set_clear_of_ends)
   // What lean_pivot_guards last found of the pivot's force, at what time and state (a step's end,
   // whose contact check asks again), and of the deepest of the pivot and the watched vertices, at

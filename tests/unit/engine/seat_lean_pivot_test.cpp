@@ -1,12 +1,13 @@
-// A block vertex sticking on a one-segment seat, dry, turning clear of the seat's ends, has its
+// A block vertex sticking alone on a one-segment seat, turning clear of the seat's ends, has its
 // guards found as the flat ground finds a rocking block's (SeatSystem::set_clear_of_ends): its
-// contact force in closed form, M times the acceleration of a centre of mass turning about a fixed
-// point, less the load, and only the watched vertices' heights. Over random poses of the type A
-// block turning on its toe and on its heel on a flat seat and on a seat inclined by 0.2 rad,
-// against the same system's general guards (the fixed-state solve of the contact, every vertex and
-// point): the force guards agree to the solve's rounding; the overturning margin, the watched
-// vertices' clearances and the penetration are the same to the bit; the fall and the seat's far
-// ends, out of the block's reach, are left at 1 where the general guards find them positive.
+// contact force in closed form, the mass matrix (the added mass's coupling with it) times the
+// acceleration of a centre of mass turning about a fixed point, less the load, and only the watched
+// vertices' heights. Over random poses of the type A block turning on its toe and on its heel, dry
+// and under the reservoir at its crest, on a flat seat and on a seat inclined by 0.2 rad, against
+// the same system's general guards (the fixed-state solve of the contact, every vertex and point):
+// the force guards agree to the solve's rounding; the overturning margin, the watched vertices'
+// clearances and the penetration are the same to the bit; the fall and the seat's far ends, out of
+// the block's reach, are left at 1 where the general guards find them positive.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -32,25 +33,32 @@ using testing::same_bits;
 
 constexpr double kLeanPivotMu = 0.9;
 
-// The type A block, dry, on a one-segment seat 1000 m either side of its heel, falling by `slope`
-// downstream. Not to be copied: its context points into it.
+// The type A block, dry or under the reservoir at its crest, on a one-segment seat 1000 m either
+// side of its heel, falling by `slope` downstream. Not to be copied: its context points into it.
 struct BlockOnLine {
-  explicit BlockOnLine(double slope) : scene(make_scene(slope)) {}
+  BlockOnLine(double slope, bool wet) : scene(make_scene(slope)), under_water(wet) {}
   BlockOnLine(const BlockOnLine&) = delete;
   BlockOnLine& operator=(const BlockOnLine&) = delete;
 
   Scene scene;
+  bool under_water;
+  ReservoirLoad water{scene};
   SeatContacts contacts{scene_block_vertices(scene), scene.seat->points};
   BlockGeometry geometry{*scene.polygon};
   MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 1.9}, 0.0, 1e3};
   MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
-  SeatSystemContext context{
-      &contacts, &geometry, &ground, &still, scene.g, kLeanPivotMu, 0.5 * geometry.size(), nullptr};
+  SeatSystemContext context{&contacts,
+                            &geometry,
+                            &ground,
+                            &still,
+                            scene.g,
+                            kLeanPivotMu,
+                            0.5 * geometry.size(),
+                            under_water ? &water : nullptr};
 
  private:
   static Scene make_scene(double slope) {
     Scene s = testing::wet_type_a_step(kLeanPivotMu, 0.3, UpliftRule::unchanged);
-    s.reservoir.reset();
     const double c = std::cos(slope), sn = std::sin(slope);
     s.seat = Seat{{{-1000.0, 0.0}, {1000.0, 0.0}}};
     validate_scene(s);
@@ -109,20 +117,24 @@ int expect_lean_guards_are_the_general_ones(const BlockOnLine& seat, int pivot, 
 }
 
 TEST(SeatLeanPivot, GuardsAreTheGeneralOnesOnAFlatSeat) {
-  const BlockOnLine seat(0.0);
-  EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 1, 31), 200);  // the toe
-  EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 0, 37), 200);  // the heel
+  for (const bool wet : {false, true}) {
+    const BlockOnLine seat(0.0, wet);
+    EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 1, wet ? 31 : 47), 200);  // the toe
+    EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 0, wet ? 37 : 53), 200);  // the heel
+  }
 }
 
 TEST(SeatLeanPivot, GuardsAreTheGeneralOnesOnAnInclinedSeat) {
-  const BlockOnLine seat(0.2);
-  EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 1, 41), 200);
-  EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 0, 43), 200);
+  for (const bool wet : {false, true}) {
+    const BlockOnLine seat(0.2, wet);
+    EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 1, wet ? 41 : 59), 200);
+    EXPECT_EQ(expect_lean_guards_are_the_general_ones(seat, 0, wet ? 43 : 61), 200);
+  }
 }
 
-// Only a block vertex sticking alone on a one-segment seat, dry, is a lean pivot.
-TEST(SeatLeanPivot, IsOnlyOneDryVertexSticking) {
-  const BlockOnLine seat(0.0);
+// Only a block vertex sticking alone on a one-segment seat, clear of its ends, is a lean pivot.
+TEST(SeatLeanPivot, IsOnlyOneVertexStickingClearOfTheEnds) {
+  const BlockOnLine seat(0.0, false);
   const SeatPair toe{ContactKind::block_vertex, 1, 0}, heel{ContactKind::block_vertex, 0, 0};
   SeatSystem slipping(seat.context, {{toe, ContactState::slip_positive}}, {0}, {});
   slipping.set_clear_of_ends(true);
@@ -130,20 +142,19 @@ TEST(SeatLeanPivot, IsOnlyOneDryVertexSticking) {
   SeatSystem two(seat.context, {{heel, ContactState::stick}, {toe, ContactState::stick}}, {}, {});
   two.set_clear_of_ends(true);
   EXPECT_FALSE(two.lean_pivot());
-  SeatSystem near_an_end(seat.context, {{toe, ContactState::stick}}, {0}, {});
-  near_an_end.set_clear_of_ends(false);
-  EXPECT_FALSE(near_an_end.lean_pivot());
-  Scene wet_scene = testing::wet_type_a_step(kLeanPivotMu, 0.3, UpliftRule::unchanged);
-  wet_scene.seat = seat.scene.seat;
-  const ReservoirLoad water(wet_scene);
-  SeatSystemContext wet_context = seat.context;
-  wet_context.external = &water;
-  SeatSystem wet(wet_context, {{toe, ContactState::stick}}, {0}, {});
-  wet.set_clear_of_ends(true);
-  EXPECT_FALSE(wet.lean_pivot());
-  SeatSystem dry(seat.context, {{toe, ContactState::stick}}, {0}, {});
-  dry.set_clear_of_ends(true);
-  EXPECT_TRUE(dry.lean_pivot());
+  SeatSystem pivot(seat.context, {{toe, ContactState::stick}}, {0}, {});
+  pivot.set_clear_of_ends(false);
+  EXPECT_FALSE(pivot.lean_pivot());
+  pivot.set_clear_of_ends(true);
+  EXPECT_TRUE(pivot.lean_pivot());
+  Scene on_two = seat.scene;
+  on_two.seat = Seat{{{-1000.0, 0.0}, {0.0, 0.0}, {1000.0, 0.0}}};
+  const SeatContacts folded(scene_block_vertices(on_two), on_two.seat->points);
+  SeatSystemContext on_two_context = seat.context;
+  on_two_context.contacts = &folded;
+  SeatSystem on_two_segments(on_two_context, {{toe, ContactState::stick}}, {0}, {});
+  on_two_segments.set_clear_of_ends(true);
+  EXPECT_FALSE(on_two_segments.lean_pivot());
 }
 
 }  // namespace
