@@ -121,6 +121,8 @@ class GuardWatch {
 
   // Whether guard i was armed at the step's start: a guard that was not fires below -offset.
   bool armed(int i) const { return armed_[i]; }
+  // The level guard i fires at: zero armed, -offset unarmed.
+  double fires_below(int i) const { return armed_[i] ? 0.0 : -unarmed_offset_[i]; }
   // The guards at the step's start (the live ones' values; the others are not to be read).
   const std::array<double, G>& values() const { return value_; }
 

@@ -224,6 +224,14 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   template <class GuardsAt>
   static Crossing landing_at_zero(const GuardsAt& guards_at, double t0, Crossing found,
                                   double noise);
+  template <class GuardsAt>
+  static Crossing unarmed_landing_before(const SeatSystem& system,
+                                         const GuardWatch<SeatSystem::kGuards>& watch,
+                                         const GuardsAt& guards_at, double t0, Crossing found,
+                                         double noise);
+  template <class GuardsAt>
+  static Crossing landing_between(const GuardsAt& guards_at, int g, double a, double fa, double b,
+                                  double fb, double noise, double tolerance);
   template <class StateAt>
   Crossing touch_before_an_end(const SeatSystem& system, const StateAt& state_at, double t0,
                                double t1) const;

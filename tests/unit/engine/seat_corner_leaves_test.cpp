@@ -2,7 +2,10 @@
 // block's heel on the seat's end) that slips off the seat: the corner's two pairs (the vertex on
 // the seat's first segment, the seat's end point on the block's upstream face) must not take turns
 // leaving their ends. A block falling upstream of the seat whose corner comes under the seat's end
-// from beside it has gone down past that end: it has not touched the seat.
+// from beside it has gone down past that end: it has not touched the seat. A block whose base
+// bounces off the seat's upstream corner, its heel just upstream of it, lands on that corner again.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
@@ -87,6 +90,39 @@ TEST(SeatCornerLeaves, CornerComingUnderTheSeatsEndFromBesideItFalls) {
   EXPECT_GT(*s.fell_time, s.modes.back().time);
   EXPECT_LT(s.final_slide, -10.0);
   EXPECT_GT(s.final_theta, 0.5);
+}
+
+// The randomized dry scene that failed on no progress: the type B block rocking about its fold
+// lands its base on the seat's upstream corner, its heel 8e-5 m upstream of it, and bounces off it
+// at e = 0.039. The bounce lands within a millisecond, far inside one sample spacing of the flight.
+Scene base_bouncing_off_the_seats_corner() {
+  Scene scene;
+  scene.polygon = PolygonBlock{testing::kTypeB, 521301.0};
+  scene.seat = Seat{testing::kTypeBSeat};
+  scene.contact = {0.957, 0.039};
+  scene.ground_motion = SinePulse{-0.546, 2.01, 1.0};
+  scene.duration = 4.0;
+  scene.solver.method = Method::rk4;
+  scene.solver.dt = 0.00025;
+  scene.solver.max_events = 10'000;
+  return scene;
+}
+
+TEST(SeatCornerLeaves, BaseBouncingOffTheSeatsCornerLandsOnItAgainAndComesToRest) {
+  const Summary s = simulate(base_bouncing_off_the_seats_corner());
+  ASSERT_EQ(s.status, Status::ok) << s.status_reason;
+  EXPECT_LT(s.events, 100);
+  EXPECT_FALSE(s.fell);
+  EXPECT_FALSE(s.overturned);
+  // The corner never goes into the block: missed, the bounce's landing left it 5e-5 m inside.
+  EXPECT_LT(s.max_penetration, 1e-12);
+  // It rocks between the corner and the fold, and comes to rest on its seat within 0.2 s.
+  EXPECT_TRUE(s.settled);
+  ASSERT_TRUE(s.settle_time.has_value());
+  EXPECT_GT(*s.settle_time, 1.3);
+  EXPECT_LT(*s.settle_time, 1.5);
+  EXPECT_LT(std::abs(s.final_theta), 1e-4);
+  EXPECT_LT(std::abs(s.final_slide), 1e-3);
 }
 
 }  // namespace
