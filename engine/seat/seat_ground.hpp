@@ -210,6 +210,12 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   void project(const SeatMode& mode);
   // `decompositions`: the contact problem's, kept over the rest range's search.
   bool rest_holds(double lambda, LcpDecompositions& decompositions) const;
+  // The same on these pairs.
+  bool rest_holds(const std::vector<SeatPair>& pairs, double lambda,
+                  LcpDecompositions& decompositions) const;
+  // A force event of a still block whose resolution brings back, at the same pose, the contact
+  // set the last event left (two guards handing the block back and forth).
+  bool swaps_back(const SeatMode& resolved, const EventReport& report) const;
   void set_rest_thresholds(SeatMode& mode);
   // Under the pieces being integrated: at a piece's end its own formula, not the next piece's.
   double rest_margin(double t, MotionPiece& piece, MotionPiece& vertical) const;
@@ -242,6 +248,9 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   HullWatch hull_watch_;  // the block's hull on a one-segment seat, which alone asks for it
   double R_, velocity_tol_;
   SeatMode mode_;
+  // The pairs active before the last event, and the pose at it.
+  std::vector<SeatPair> left_at_last_event_;
+  BlockState last_event_pose_{};
   // Where each block vertex that sticks on a seat segment stuck (its place along the segment, m),
   // kept while it sticks.
   std::vector<std::pair<SeatPair, double>> anchors_;

@@ -154,8 +154,15 @@ void SeatSimulation::project(const SeatMode& mode) {
 
 // Whether the block at rest on its active contacts stays at rest under lambda (with g).
 bool SeatSimulation::rest_holds(double lambda, LcpDecompositions& decompositions) const {
+  std::vector<SeatPair> pairs;
+  for (const ActiveContact& a : mode_.active) pairs.push_back(a.pair);
+  return rest_holds(pairs, lambda, decompositions);
+}
+
+bool SeatSimulation::rest_holds(const std::vector<SeatPair>& pairs, double lambda,
+                                LcpDecompositions& decompositions) const {
   std::vector<PlanarContact> contacts;
-  for (const ActiveContact& a : mode_.active) contacts.push_back(contact_of(a.pair, state_));
+  for (const SeatPair& pair : pairs) contacts.push_back(contact_of(pair, state_));
   const BodyLoad load = seated_load(
       {geometry_.inertia_per_mass(), lambda, 0.0, scene_.g, scene_.contact.friction, external_},
       state_, contacts, std::vector<ContactState>(contacts.size(), ContactState::stick));

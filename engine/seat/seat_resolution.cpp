@@ -212,8 +212,32 @@ SeatMode SeatSimulation::contact_states(const std::vector<SeatPair>& pairs,
     forces = choice_that_moves(carrying.problem, report, forces);
   }
   SeatMode mode = states_after_guard(carrying.pairs, forces, report);
+  // Each guard's state brings back the other's in a statically indeterminate set (a block nested
+  // in the seat on four pairs: the heel's lift-off and the fold's friction limit took turns every
+  // 1e-10 s while lambda crept on): rest is decided over all the pairs at once, as at rest's start.
+  if (still && swaps_back(mode, report)) {
+    LcpDecompositions decompositions;
+    if (rest_holds(carrying.pairs, motion_.lambda(t_) / gravity_factor(t_), decompositions)) {
+      return logged_mode(rest_on(carrying.pairs), logged);
+    }
+  }
   mode.pinned = pins_body(fixed_rows(mode), R_);
   return logged_mode(mode, logged);
+}
+
+bool SeatSimulation::swaps_back(const SeatMode& resolved, const EventReport& report) const {
+  if (!report.force || (report.force->event != SeatEvent::lift_off &&
+                        report.force->event != SeatEvent::friction_limit)) {
+    return false;
+  }
+  const BlockState& s = state_;
+  const BlockState& p = last_event_pose_;
+  if (s.x != p.x || s.y != p.y || s.theta != p.theta) return false;
+  if (resolved.active.size() != left_at_last_event_.size()) return false;
+  return std::all_of(resolved.active.begin(), resolved.active.end(), [&](const ActiveContact& a) {
+    return std::find(left_at_last_event_.begin(), left_at_last_event_.end(), a.pair) !=
+           left_at_last_event_.end();
+  });
 }
 
 // Between events the contacts hold only at the acceleration level: the integrator lets their gaps
@@ -402,6 +426,9 @@ bool SeatSimulation::holds_at_rest(const PlanarForces& f, double relative_tolera
 void SeatSimulation::enter(const SeatMode& next, const EventReport& report) {
   const bool first = summary_.modes.empty();
   const ModeKind before = kind_of(mode_);
+  left_at_last_event_.clear();
+  for (const ActiveContact& a : mode_.active) left_at_last_event_.push_back(a.pair);
+  last_event_pose_ = state_;
   mode_ = next;
   project(mode_);
   if (mode_.rest) {
