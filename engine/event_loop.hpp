@@ -151,6 +151,7 @@ void EventLoop<Ground>::run() {
     const auto report = ground.advance(piece, t_stop);
     if (stopped_ || t_ >= t_end) break;
     no_progress_.count_event(t_);
+    if (report.ended_by_event()) no_progress_.count_pose(t_, state_);
     // A piece boundary is not an event: a mode whose contact forces still hold under the next
     // piece goes on. Re-resolving there would lay a block that has only just lifted flat again
     // (its corners are still slower than the settling speed), so a finely tabulated motion

@@ -269,5 +269,10 @@ inline constexpr std::size_t kMaxCrestNodes = 2'000'000;
 // 100 s of CPU at most (engine/no_progress.hpp).
 inline constexpr double kInstant = 1e-6;
 inline constexpr int kMaxInstantEvents = 100'000;
+// Events that leave the block at one pose, to the bit, in a row: a still block whose guards hand
+// it back and forth between contact sets 1e-10 s apart spreads its changes wider than an instant
+// as lambda creeps on, at 3 ms of CPU each (the contact problem over five pairs). This fails it
+// within a minute, well before the event budget.
+inline constexpr int kMaxStandstillEvents = 10'000;
 
 }  // namespace blockfrag

@@ -1,6 +1,9 @@
 // The no-progress guard (engine/no_progress.hpp): a run fails once more than kMaxInstantEvents
 // contact changes fall within kInstant (1 + t) s of the first of them; changes spread wider go on.
+// It also fails once more than kMaxStandstillEvents events in a row leave the block where it was.
 #include "engine/no_progress.hpp"
+
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -35,6 +38,28 @@ TEST(NoProgressGuard, TimeMovingOnStartsANewInstant) {
     // A burst just under the limit, then time moves past the instant's width.
     for (int i = 0; i <= kMaxInstantEvents; ++i) ASSERT_NO_THROW(guard.count_event(t));
     t += 2 * kInstant * (1.0 + t);
+  }
+}
+
+// The type B block nested in its seat, its lift-off and friction-limit guards taking turns every
+// 1e-10 s as lambda crept on: wider than an instant, but the block never moved.
+TEST(NoProgressGuard, FailsPastTheLimitOfEventsThatLeaveTheBlockWhereItWas) {
+  NoProgressGuard guard;
+  const BlockState nested{5.0714241494943524, 10.976798667607049, 6.0897865691412181e-17};
+  double t = 3.1965107095733107;
+  for (int i = 0; i < kMaxStandstillEvents; ++i) {
+    ASSERT_NO_THROW(guard.count_pose(t, nested));
+    t += 1e-10;
+  }
+  EXPECT_THROW(guard.count_pose(t, nested), SimulationFailure);
+}
+
+TEST(NoProgressGuard, ABlockThatMovesByABitStartsTheCountAgain) {
+  NoProgressGuard guard;
+  BlockState s{1.0, 2.0, 0.0};
+  for (int burst = 0; burst < 3; ++burst) {
+    for (int i = 0; i < kMaxStandstillEvents; ++i) ASSERT_NO_THROW(guard.count_pose(1.0, s));
+    s.x = std::nextafter(s.x, 2.0);
   }
 }
 
