@@ -1,26 +1,19 @@
 // A bounce in flight that lands and goes on into the seat between two of the flight's guard
 // samples: its clearance's guard, not armed as the flight began, fires only where a sample finds it
 // below its level, and a crossing found later (another corner's) must not leave it in the seat.
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
-#include "tests/support/type_b_block.hpp"
+#include "tests/support/type_b_rk4_scene.hpp"
 
 namespace blockfrag {
 namespace {
 
 Scene type_b_dry(double friction, double restitution, GroundMotion motion) {
-  Scene scene;
-  scene.polygon = PolygonBlock{testing::kTypeB, 521301.0};
-  scene.seat = Seat{testing::kTypeBSeat};
-  scene.contact = {friction, restitution};
-  scene.ground_motion = motion;
-  scene.duration = 4.0;
-  scene.solver.method = Method::rk4;
-  scene.solver.dt = 0.00025;
   // Each failed on no progress; a few thousand events fail them at once.
-  scene.solver.max_events = 10'000;
-  return scene;
+  return testing::type_b_rk4_scene(friction, restitution, std::move(motion), 4.0, 10'000);
 }
 
 // The randomized scene that failed on no progress at 1.1843 s: the type B block flies off its

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
-#include "tests/support/type_b_block.hpp"
+#include "tests/support/type_b_rk4_scene.hpp"
 
 namespace blockfrag {
 namespace {
@@ -18,17 +18,10 @@ namespace {
 // about its heel on the seat's upstream end until its centre of mass is 11 m upstream of it, where
 // the heel's friction reaches its limit and the heel slips upstream, off the seat.
 Scene heel_slipping_off_the_seat(double duration) {
-  Scene scene;
-  scene.polygon = PolygonBlock{testing::kTypeB, 521301.0};
-  scene.seat = Seat{testing::kTypeBSeat};
-  scene.contact = {1.191383085497047, 0.15497948891468735};
-  scene.ground_motion = SinePulse{-1.8205088204121125, 2.9330372085683694, 1.0};
-  scene.duration = duration;
-  scene.solver.method = Method::rk4;
-  scene.solver.dt = 0.00025;
   // The swapping took a million events; a few thousand fail it at once.
-  scene.solver.max_events = 10'000;
-  return scene;
+  return testing::type_b_rk4_scene(1.191383085497047, 0.15497948891468735,
+                                   SinePulse{-1.8205088204121125, 2.9330372085683694, 1.0},
+                                   duration, 10'000);
 }
 
 TEST(SeatCornerLeaves, HeelSlippingOffTheSeatsEndFliesOffInsteadOfSwappingItsPairs) {
@@ -61,18 +54,12 @@ TEST(SeatCornerLeaves, HeelSlippingOffTheSeatsEndFallsBesideTheSeat) {
 // (5 m below the crest, full head in the open crack) slides upstream off its seat, flies, and its
 // downstream base corner swings under the seat's upstream end, 0.59 m below it.
 Scene falling_upstream_under_the_reservoir() {
-  Scene scene;
-  scene.polygon = PolygonBlock{testing::kTypeB, 521301.0};
-  scene.seat = Seat{testing::kTypeBSeat};
-  scene.contact = {0.8601308400138321, 0.35850795285028264};
+  Scene scene = testing::type_b_rk4_scene(0.8601308400138321, 0.35850795285028264,
+                                          SinePulse{-1.6874201701881233, 2.821448446752989, 1.0},
+                                          4.0, 10'000);
   scene.reservoir =
       Reservoir{16.781358466199976,           100.0, 1000.0, Hydrodynamic::westergaard,
                 UpliftRule::full_head_in_gap, 1.0};
-  scene.ground_motion = SinePulse{-1.6874201701881233, 2.821448446752989, 1.0};
-  scene.duration = 4.0;
-  scene.solver.method = Method::rk4;
-  scene.solver.dt = 0.00025;
-  scene.solver.max_events = 10'000;
   return scene;
 }
 
@@ -96,16 +83,7 @@ TEST(SeatCornerLeaves, CornerComingUnderTheSeatsEndFromBesideItFalls) {
 // lands its base on the seat's upstream corner, its heel 8e-5 m upstream of it, and bounces off it
 // at e = 0.039. The bounce lands within a millisecond, far inside one sample spacing of the flight.
 Scene base_bouncing_off_the_seats_corner() {
-  Scene scene;
-  scene.polygon = PolygonBlock{testing::kTypeB, 521301.0};
-  scene.seat = Seat{testing::kTypeBSeat};
-  scene.contact = {0.957, 0.039};
-  scene.ground_motion = SinePulse{-0.546, 2.01, 1.0};
-  scene.duration = 4.0;
-  scene.solver.method = Method::rk4;
-  scene.solver.dt = 0.00025;
-  scene.solver.max_events = 10'000;
-  return scene;
+  return testing::type_b_rk4_scene(0.957, 0.039, SinePulse{-0.546, 2.01, 1.0}, 4.0, 10'000);
 }
 
 TEST(SeatCornerLeaves, BaseBouncingOffTheSeatsCornerLandsOnItAgainAndComesToRest) {

@@ -24,6 +24,7 @@
 #include "engine/water/reservoir_load.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/same_bits.hpp"
+#include "tests/support/seat_system_fixture.hpp"
 #include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
@@ -34,27 +35,9 @@ using testing::same_bits;
 constexpr double kLeanPivotMu = 0.9;
 
 // The type A block, dry or under the reservoir at its crest, on a one-segment seat 1000 m either
-// side of its heel, falling by `slope` downstream. Not to be copied: its context points into it.
-struct BlockOnLine {
-  BlockOnLine(double slope, bool wet) : scene(make_scene(slope)), under_water(wet) {}
-  BlockOnLine(const BlockOnLine&) = delete;
-  BlockOnLine& operator=(const BlockOnLine&) = delete;
-
-  Scene scene;
-  bool under_water;
-  ReservoirLoad water{scene};
-  SeatContacts contacts{scene_block_vertices(scene), scene.seat->points};
-  BlockGeometry geometry{*scene.polygon};
-  MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 1.9}, 0.0, 1e3};
-  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
-  SeatSystemContext context{&contacts,
-                            &geometry,
-                            &ground,
-                            &still,
-                            scene.g,
-                            kLeanPivotMu,
-                            0.5 * geometry.size(),
-                            under_water ? &water : nullptr};
+// side of its heel, falling by `slope` downstream.
+struct BlockOnLine : testing::SeatSystemFixture {
+  BlockOnLine(double slope, bool wet) : SeatSystemFixture(make_scene(slope), wet, kLeanPivotMu) {}
 
  private:
   static Scene make_scene(double slope) {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/simulate.hpp"
-#include "tests/support/type_b_block.hpp"
+#include "tests/support/type_b_rk4_scene.hpp"
 
 namespace blockfrag {
 namespace {
@@ -39,19 +39,12 @@ Scene sliding_back_into_the_fold() {
   for (std::size_t k = 0; k < record->acceleration_g.size(); ++k) {
     record->times.push_back(static_cast<double>(k) / 100.0);
   }
-  Scene scene;
-  scene.polygon = PolygonBlock{testing::kTypeB, 521301.0};
-  scene.seat = Seat{testing::kTypeBSeat};
-  scene.contact = {0.307, 0.49};
-  scene.reservoir =
-      Reservoir{18.1066, 100.0, 1000.0, Hydrodynamic::westergaard, UpliftRule::zero_in_gap, 1.0};
-  scene.ground_motion = RecordedMotion{"Kobe TAK-090, 2.11 s to 3.2 s", 0.636, record};
-  scene.duration = 1.2;
-  scene.solver.method = Method::rk4;
-  scene.solver.dt = 0.00025;
   // The lift-off and the friction limit took turns every 1e-10 s up to a million events; a few
   // hundred fail it at once.
-  scene.solver.max_events = 600;
+  Scene scene = testing::type_b_rk4_scene(
+      0.307, 0.49, RecordedMotion{"Kobe TAK-090, 2.11 s to 3.2 s", 0.636, record}, 1.2, 600);
+  scene.reservoir =
+      Reservoir{18.1066, 100.0, 1000.0, Hydrodynamic::westergaard, UpliftRule::zero_in_gap, 1.0};
   return scene;
 }
 

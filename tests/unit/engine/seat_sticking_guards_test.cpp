@@ -20,6 +20,7 @@
 #include "engine/water/reservoir_load.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/same_bits.hpp"
+#include "tests/support/seat_system_fixture.hpp"
 #include "tests/support/wet_dam_blocks.hpp"
 
 namespace blockfrag {
@@ -30,27 +31,9 @@ using testing::same_bits;
 constexpr double kMu = 0.9;
 
 // A dam block on its seat (the type A block's: flat, of one segment, 1000 m either side), dry or
-// under the reservoir at its crest. Not to be copied: its context points into it.
-struct BlockOnSeat {
-  BlockOnSeat(bool type_b, bool wet) : scene(make_scene(type_b)), under_water(wet) {}
-  BlockOnSeat(const BlockOnSeat&) = delete;
-  BlockOnSeat& operator=(const BlockOnSeat&) = delete;
-
-  Scene scene;
-  bool under_water;
-  ReservoirLoad water{scene};
-  SeatContacts contacts{scene_block_vertices(scene), scene.seat->points};
-  BlockGeometry geometry{*scene.polygon};
-  MotionPiece ground{{MotionPiece::Shape::cosine, 0.4, 1.9}, 0.0, 1e3};
-  MotionPiece still{MotionPiece::Formula{}, 0.0, 1e3};
-  SeatSystemContext context{&contacts,
-                            &geometry,
-                            &ground,
-                            &still,
-                            scene.g,
-                            kMu,
-                            0.5 * geometry.size(),
-                            under_water ? &water : nullptr};
+// under the reservoir at its crest.
+struct BlockOnSeat : testing::SeatSystemFixture {
+  BlockOnSeat(bool type_b, bool wet) : SeatSystemFixture(make_scene(type_b), wet, kMu) {}
 
  private:
   static Scene make_scene(bool type_b) {
