@@ -345,19 +345,21 @@ void SeatSimulation::note_contact_violation(const Ode& ode, double t, const Bloc
                                             const ForcesAt&) {
   SeatSystem& system = ode.system();
   if (system.active_count() == 0) return;
+  // How far a contact's force lies outside its cone (below zero, or past friction), in g.
+  const auto note = [&](double normal, double tangent) {
+    summary_.max_contact_violation =
+        std::max({summary_.max_contact_violation, -normal / scene_.g,
+                  (std::abs(tangent) - scene_.contact.friction * normal) / scene_.g});
+  };
   if (system.lean_pivot()) {
     const SeatSystem::PivotForce f = system.pivot_force(t, s);
-    summary_.max_contact_violation =
-        std::max({summary_.max_contact_violation, -f.normal / scene_.g,
-                  (std::abs(f.tangent) - scene_.contact.friction * f.normal) / scene_.g});
+    note(f.normal, f.tangent);
     return;
   }
   const FixedStateForces& f = system.solve(t, s);
   for (int i = 0; i < system.active_count(); ++i) {
     const auto at = static_cast<std::size_t>(i);
-    summary_.max_contact_violation =
-        std::max({summary_.max_contact_violation, -f.normal[at] / scene_.g,
-                  (std::abs(f.tangent[at]) - scene_.contact.friction * f.normal[at]) / scene_.g});
+    note(f.normal[at], f.tangent[at]);
   }
 }
 
