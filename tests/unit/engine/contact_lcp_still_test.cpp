@@ -16,6 +16,7 @@
 #include "engine/scene/polygon_properties.hpp"
 #include "engine/tolerances.hpp"
 #include "tests/support/fixed_uniforms.hpp"
+#include "tests/support/random_trials.hpp"
 #include "tests/support/type_b_block.hpp"
 
 namespace blockfrag {
@@ -54,14 +55,17 @@ bool at_rest(const PlanarForces& f, const PlanarForcesInput& in) {
 }
 
 TEST(ContactLcpStill, TheFirstConsistentChoiceDecidesRestAsTheFullSearchFindsIt) {
-  testing::FixedUniforms u(91);
+  // Every contact set keeps its series, each drawn from its own stream: a share of trials runs
+  // the first problems of every series (the counts' floors scale with it).
+  const int trials = testing::random_trials(60);
   int slipping = 0, still = 0, resting = 0;
   for (int series = 0; series < 40; ++series) {
+    testing::FixedUniforms u(91 + static_cast<unsigned>(series));
     const unsigned used = series < 20 ? 0xFu : 1u + static_cast<unsigned>(series % 15);
     const double mu = u(0.2, 1.5), g = 9.81;
     const bool moving = series % 4 == 3;
     LcpDecompositions kept;
-    for (int n = 0; n < 60; ++n) {
+    for (int n = 0; n < trials; ++n) {
       const double lambda = n % 3 == 0 ? u(-0.5, 0.5) * mu : u(-3.0, 3.0);
       const RigidVelocity velocity =
           moving ? RigidVelocity{u(-1.0, 1.0), u(-0.1, 0.1), u(-0.1, 0.1)} : RigidVelocity{};
@@ -88,9 +92,9 @@ TEST(ContactLcpStill, TheFirstConsistentChoiceDecidesRestAsTheFullSearchFindsIt)
       resting += expected_rest;
     }
   }
-  EXPECT_GT(slipping, 200);
-  EXPECT_GT(still, 200);
-  EXPECT_GT(resting, 100);
+  EXPECT_GT(slipping, 200 * trials / 60);
+  EXPECT_GT(still, 200 * trials / 60);
+  EXPECT_GT(resting, 100 * trials / 60);
 }
 
 }  // namespace
