@@ -71,7 +71,10 @@ with h5py.File(sys.argv[1], "r") as f:
 PY
 then pass; else fail "the adaptive batches are not as documented"; fi
 
-# start STEM COMMAND...: runs in the background until rank 0 has logged its second batch.
+# start STEM COMMAND...: runs in the background until rank 0 has logged its second batch. The runs
+# to be stopped hold each checkpoint write for 0.2 s (the test hook) so that the run is still
+# going when the signal comes: unheld, the batches after the second took less time on a loaded
+# machine than the test took to send it.
 start_until_second_batch() {
   : >job.err
   "$@" 2>>job.err &
@@ -84,7 +87,7 @@ start_until_second_batch() {
 }
 
 # SIGKILL on 1 rank, then resume.
-start_until_second_batch "$BLOCKFRAG" run study.json --output killed.h5
+start_until_second_batch "$BLOCKFRAG_PAUSED_CHECKPOINTS" 0.2 run study.json --output killed.h5
 kill -KILL "$job" 2>/dev/null
 wait "$job" 2>/dev/null
 if [[ -e killed.h5 ]]; then
@@ -99,7 +102,8 @@ else
 fi
 
 # SIGTERM on 2 ranks: exit code 4, a checkpoint, and the resume completes identically.
-start_until_second_batch mpirun -n 2 --oversubscribe "$BLOCKFRAG" run study.json --output termed.h5
+start_until_second_batch mpirun -n 2 --oversubscribe "$BLOCKFRAG_PAUSED_CHECKPOINTS" 0.2 run study.json \
+  --output termed.h5
 ranks=$(pgrep -P "$job")
 [[ -n "$ranks" ]] && kill -TERM $ranks 2>/dev/null
 wait "$job" 2>/dev/null
