@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "engine/seat/level_rest_range.hpp"
 #include "engine/seat/seat_ground.hpp"
 #include "engine/seat/seated_load.hpp"
 #include "engine/tolerances.hpp"
@@ -175,11 +177,22 @@ bool SeatSimulation::rest_holds(const std::vector<SeatPair>& pairs, double lambd
       in, [&](const PlanarForces& f) { return holds_at_rest(f, in.tolerance); }, &decompositions);
 }
 
-// The lambda range of rest: rest holds on an interval of lambda (the contact forces that balance
-// the load, affine in lambda, form a convex cone), found by doubling then halving each way from
-// lambda = 0, or, where a load pushes the block (the reservoir's) so that it rests only under the
-// ground's help, from the lambda it came to rest under.
+// The lambda range of rest: in closed form for a dry block on a level line (level_rest_range);
+// else, as rest holds on an interval of lambda (the contact forces that balance the load, affine
+// in lambda, form a convex cone), found by doubling then halving each way from lambda = 0, or,
+// where a load pushes the block (the reservoir's) so that it rests only under the ground's help,
+// from the lambda it came to rest under.
 void SeatSimulation::set_rest_thresholds(SeatMode& mode) {
+  if (external_ == nullptr) {
+    std::vector<PlanarContact> contacts;
+    for (const ActiveContact& a : mode.active) contacts.push_back(contact_of(a.pair, state_));
+    if (const std::optional<RestRange> range =
+            level_rest_range(contacts, scene_.contact.friction)) {
+      mode.rest_low = range->low;
+      mode.rest_high = range->high;
+      return;
+    }
+  }
   LcpDecompositions decompositions;
   const auto holds = [&](double lambda) { return rest_holds(lambda, decompositions); };
   const double start =
