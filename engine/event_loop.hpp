@@ -84,6 +84,11 @@ class EventLoop {
   template <class Margin, class ForcesAt>
   bool advance_rest(MotionPiece& piece, double t_stop, bool holds_throughout, const Margin& margin,
                     const ForcesAt& forces_at);
+  // A flight from t0 to t_end in closed form (pose(t)), seen by the observer in equal parts no
+  // longer than an integrator's step could be, so that it finds where x turns inside the flight as
+  // it does in the other modes.
+  template <class Pose>
+  void observe_flight(double t0, double t_end, const Pose& pose, MotionPiece& piece);
   // Steps until a guard crosses zero or t_stop; a crossing is located on the dense output and the
   // state is left just after it, where the next mode's conditions hold (the ground's on_event).
   // Returns the Ground::EventReport of what ended the stretch (none at t_stop).
@@ -279,6 +284,21 @@ bool EventLoop<Ground>::advance_rest(MotionPiece& piece, double t_stop, bool hol
   observer_.observe_step(t_, t_stop, state_at, forces_at, ModeKind::rest);
   t_ = t_stop;
   return false;
+}
+
+template <class Ground>
+template <class Pose>
+void EventLoop<Ground>::observe_flight(double t0, double t_end, const Pose& pose,
+                                       MotionPiece& piece) {
+  if (reached(t0, t_end)) return;
+  const auto forces_at = [](double) { return ContactForces{0.0, 0.0}; };
+  const double parts = std::ceil((t_end - t0) / step_cap(piece));
+  double from = t0;
+  for (double k = 1.0; k <= parts; k += 1.0) {
+    const double to = k == parts ? t_end : t0 + (t_end - t0) * (k / parts);
+    observer_.observe_step(from, to, pose, forces_at, ModeKind::flight);
+    from = to;
+  }
 }
 
 // Guard i of a system at (t, q): alone where the system computes one alone (guard()).

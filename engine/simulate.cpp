@@ -123,12 +123,6 @@ class FlatGroundSimulation : public EventLoop<FlatGroundSimulation> {
   EventReport advance(const RestMode&, MotionPiece& piece, double t_stop);
   // Flight without vertical motion: theta, y and x in closed form.
   EventReport advance(const FlightMode&, MotionPiece& piece, double t_stop);
-  // Where a flight from `start` at t_ ends (by t_stop), and whether it ends overturned there.
-  struct FlightEnd {
-    double t;
-    bool overturns;
-  };
-  FlightEnd flight_end_of(const FlightStart& start, double t_stop);
   template <class System>
   EventReport advance(const System& system, MotionPiece& piece, double t_stop);
 
@@ -247,47 +241,14 @@ FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const RestMode&,
   return {};
 }
 
-FlatGroundSimulation::FlightEnd FlatGroundSimulation::flight_end_of(const FlightStart& start,
-                                                                    double t_stop) {
-  const double g = scene_.g;
-  const double t0 = t_;
-  const double min_step = kFlightMinStep * block_time_;
-  // The flight ends where it lands or overturns. When this stretch ends the run, both are looked
-  // for up to where the centre of mass would reach the ground in free fall (a corner lands before
-  // that), not up to the run's end: where a run ends then cannot move a landing it reaches, and a
-  // run past the settle time gives the settled run's summary.
-  const bool ends_run = t_stop >= run_end_;
-  double t_end =
-      ends_run ? t0 + (start.vy + std::sqrt(start.vy * start.vy + 2.0 * g * start.y)) / g : t_stop;
-  bool overturns = false;
-  if (start.omega != 0.0) {
-    const double tau = (geometry_.overturn_theta(start.omega) - start.theta) / start.omega;
-    if (tau > 0 && t0 + tau < t_end) {
-      t_end = t0 + tau;
-      overturns = true;
-    }
-  }
-  if (const auto landing = first_landing(geometry_, start, g, t_end - t0, min_step)) {
-    if (t0 + *landing <= t_end) {
-      t_end = t0 + *landing;
-      overturns = false;
-    }
-  }
-  if (t_end > t_stop) {  // the run ends first
-    t_end = t_stop;
-    overturns = false;
-  }
-  return {t_end, overturns};
-}
-
 FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode&,
                                                                 MotionPiece& piece, double t_stop) {
   const double g = scene_.g;
   const FlightStart start{state_.y, state_.theta, state_.vy, state_.omega};
   const double t0 = t_;
-  const FlightEnd flight_end = flight_end_of(start, t_stop);
-  const double t_end = flight_end.t;
-  const bool overturns = flight_end.overturns;
+  const FlightEnd ends =
+      flight_end(geometry_, start, g, t0, t_stop, t_stop >= run_end_, kFlightMinStep * block_time_);
+  const double t_end = ends.t;
   // Only the horizontal drift feels the ground motion, and it has a closed form too.
   const GroundDrift drift(piece, t0);
   const double x0 = state_.x, vx0 = state_.vx;
@@ -301,20 +262,9 @@ FlatGroundSimulation::EventReport FlatGroundSimulation::advance(const FlightMode
   // The end is asked for twice (the observer's last part, then the state the flight leaves): its
   // pulse integrals are the dearest part of a chattering block's flight.
   const BlockState end = pose_at(t_end);
-  const auto pose = [&](double t) { return t == t_end ? end : pose_at(t); };
-  // The observer sees the flight in equal parts no longer than an integrator's step could be,
-  // so it finds where x turns inside the flight as it does in the other modes.
-  const auto forces_at = [](double) { return ContactForces{0.0, 0.0}; };
-  if (!reached(t0, t_end)) {
-    const double parts = std::ceil((t_end - t0) / step_cap(piece));
-    double from = t0;
-    for (double k = 1.0; k <= parts; k += 1.0) {
-      const double to = k == parts ? t_end : t0 + (t_end - t0) * (k / parts);
-      observer_.observe_step(from, to, pose, forces_at, ModeKind::flight);
-      from = to;
-    }
-  }
-  if (overturns) {
+  observe_flight(
+      t0, t_end, [&](double t) { return t == t_end ? end : pose_at(t); }, piece);
+  if (ends.overturns) {
     overturn_at(t_end, end);
     return {};
   }

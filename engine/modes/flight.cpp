@@ -170,4 +170,33 @@ std::optional<double> first_landing(BlockGeometry& geometry, const FlightStart& 
   return first;
 }
 
+double flight_horizon(const FlightStart& start, double g, double t0, double t_stop, bool ends_run) {
+  if (!ends_run) return t_stop;
+  return t0 + (start.vy + std::sqrt(start.vy * start.vy + 2.0 * g * start.y)) / g;
+}
+
+FlightEnd flight_end(BlockGeometry& geometry, const FlightStart& start, double g, double t0,
+                     double t_stop, bool ends_run, double min_step) {
+  double t_end = flight_horizon(start, g, t0, t_stop, ends_run);
+  bool overturns = false;
+  if (start.omega != 0.0) {
+    const double tau = (geometry.overturn_theta(start.omega) - start.theta) / start.omega;
+    if (tau > 0 && t0 + tau < t_end) {
+      t_end = t0 + tau;
+      overturns = true;
+    }
+  }
+  if (const auto landing = first_landing(geometry, start, g, t_end - t0, min_step)) {
+    if (t0 + *landing <= t_end) {
+      t_end = t0 + *landing;
+      overturns = false;
+    }
+  }
+  if (t_end > t_stop) {  // the run ends first
+    t_end = t_stop;
+    overturns = false;
+  }
+  return {t_end, overturns};
+}
+
 }  // namespace blockfrag

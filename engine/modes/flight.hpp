@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "engine/scene/block_geometry.hpp"
 #include "engine/scene/block_state.hpp"
 
 namespace blockfrag {
@@ -29,5 +30,20 @@ inline BlockState flight_pose(const FlightStart& f, double g, double tau) {
 // corner's landing from any sample above the ground: no advancement, and no graze missed.
 std::optional<double> first_landing(BlockGeometry& geometry, const FlightStart& f, double g,
                                     double tau_max, double min_step);
+
+// How far a flight from `start` at t0 is searched for its landing and its overturning: to t_stop,
+// or, when the stretch ends the run (`ends_run`), to where the centre of mass would reach the
+// ground in free fall (a corner lands before that). Where a run ends then cannot move a landing
+// it reaches, and a run past the settle time gives the settled run's summary.
+double flight_horizon(const FlightStart& start, double g, double t0, double t_stop, bool ends_run);
+
+// Where a flight from `start` at t0 ends (by t_stop): where it lands or reaches the overturning
+// tilt, and whether it ends overturned there. Heights are from the ground's level.
+struct FlightEnd {
+  double t;
+  bool overturns;
+};
+FlightEnd flight_end(BlockGeometry& geometry, const FlightStart& start, double g, double t0,
+                     double t_stop, bool ends_run, double min_step);
 
 }  // namespace blockfrag
