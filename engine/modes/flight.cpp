@@ -178,7 +178,7 @@ double flight_horizon(const FlightStart& start, double g, double t0, double t_st
 FlightEnd flight_end(BlockGeometry& geometry, const FlightStart& start, double g, double t0,
                      double t_stop, bool ends_run, double min_step) {
   double t_end = flight_horizon(start, g, t0, t_stop, ends_run);
-  bool overturns = false;
+  bool overturns = false, lands = false;
   if (start.omega != 0.0) {
     const double tau = (geometry.overturn_theta(start.omega) - start.theta) / start.omega;
     if (tau > 0 && t0 + tau < t_end) {
@@ -190,13 +190,15 @@ FlightEnd flight_end(BlockGeometry& geometry, const FlightStart& start, double g
     if (t0 + *landing <= t_end) {
       t_end = t0 + *landing;
       overturns = false;
+      lands = true;
     }
   }
   if (t_end > t_stop) {  // the run ends first
     t_end = t_stop;
     overturns = false;
+    lands = false;
   }
-  return {t_end, overturns};
+  return {t_end, overturns, lands};
 }
 
 }  // namespace blockfrag

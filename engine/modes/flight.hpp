@@ -38,10 +38,10 @@ std::optional<double> first_landing(BlockGeometry& geometry, const FlightStart& 
 double flight_horizon(const FlightStart& start, double g, double t0, double t_stop, bool ends_run);
 
 // Where a flight from `start` at t0 ends (by t_stop): where it lands or reaches the overturning
-// tilt, and whether it ends overturned there. Heights are from the ground's level.
+// tilt, and whether it ends overturned or landed there. Heights are from the ground's level.
 struct FlightEnd {
   double t;
-  bool overturns;
+  bool overturns, lands;
 };
 FlightEnd flight_end(BlockGeometry& geometry, const FlightStart& start, double g, double t0,
                      double t_stop, bool ends_run, double min_step);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -140,6 +142,15 @@ bool SeatContacts::straight(double tolerance) const {
   return std::all_of(seat_.begin(), seat_.end(), [&](const Vec2& p) {
     return std::abs(dot(whole.normal, minus(p, seat_.front()))) <= tolerance;
   });
+}
+
+std::optional<double> SeatContacts::level() const {
+  const double y = seat_.front().y;
+  const bool level = std::all_of(seat_.begin(), seat_.end(), [&](const Vec2& p) {
+    return std::bit_cast<std::uint64_t>(p.y) == std::bit_cast<std::uint64_t>(y);
+  });
+  if (!level) return std::nullopt;
+  return y;
 }
 
 double SeatContacts::overturn_margin(const BlockGeometry& geometry, double theta) const {

@@ -134,6 +134,14 @@ class SeatContacts {
   // The tilt the block is reported at when it overturns towards the sign of `direction`.
   double overturn_theta(const BlockGeometry& geometry, double direction) const;
 
+  // The seat's height where all its points have the same one (a level seat), else none.
+  std::optional<double> level() const;
+  // Whether every point of the block lies strictly inside the seat's x range, by `margin`, at
+  // every pose whose centre of mass is within `drift` of x along x.
+  bool inside_ends_drifting(double x, double drift, double margin) const {
+    const double reach = block_radius_ * (1.0 + kGeometryRounding) + drift + margin;
+    return x - reach > seat_.front().x && x + reach < seat_.back().x;
+  }
   // Whether every point of the block at the pose lies over the seat's x range, its ends included.
   bool within_ends(const BlockState& s) const {
     const double reach = block_radius_ * (1.0 + kGeometryRounding);

@@ -64,6 +64,7 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
       : EventLoop(scene, output_interval),
         external_(external),
         contacts_(scene_block_vertices(scene), scene.seat->points),
+        level_(contacts_.level()),
         hull_watch_(contacts_.point_count() == 2 ? HullWatch(body_vertices(contacts_))
                                                  : HullWatch()),
         R_(geometry_.size()),
@@ -222,6 +223,14 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   void enter(const SeatMode& mode, const EventReport& report);
   void stop_at(double t, const BlockState& s, SeatEvent why);
   EventReport advance_rest(double t_stop);
+  // A dry flight without vertical motion over a level seat, inside its ends by t_stop: flown as the
+  // flat ground flies (flight_end), its landing found on the block's corners and reported as its
+  // lowest vertex's touching guard. None where it does not apply
+  // (engine/seat/seat_level_flight.cpp).
+  std::optional<EventReport> fly_over_level_seat(const SeatOde<FlightChart>& ode,
+                                                 MotionPiece& piece, double t_stop);
+  // The touching guard of the lowest vertex `system` watches at s.
+  int lowest_vertex_guard(const SeatSystem& system, const BlockState& s) const;
   // The rounding noise of a vertex's clearance over R near the block's pose s.
   double clearance_noise(const BlockState& s) const {
     return 8 * std::numeric_limits<double>::epsilon() *
@@ -245,7 +254,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
 
   const ExternalLoad* external_;
   SeatContacts contacts_;
-  HullWatch hull_watch_;  // the block's hull on a one-segment seat, which alone asks for it
+  std::optional<double> level_;  // the seat's height where it is level (contacts_.level())
+  HullWatch hull_watch_;         // the block's hull on a one-segment seat, which alone asks for it
   double R_, velocity_tol_;
   SeatMode mode_;
   // The pairs active before the last event, and the pose at it.

@@ -513,6 +513,10 @@ SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t
           const SeatOde ode(moving, chart);
           if constexpr (std::is_same_v<Chart, FlightChart>) {
             if (vertical_.piece_at(t_).is_zero() && external_ == nullptr) {
+              if (const auto landed = fly_over_level_seat(ode, piece, t_stop)) {
+                report = *landed;
+                return;
+              }
               ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
               report = integrate_with(ode, flight, piece, t_stop, kind);
               return;
@@ -524,6 +528,10 @@ SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t
       chart_of(mode_));
   return report;
 }
+
+// fly_over_level_seat's event (engine/seat/seat_level_flight.cpp).
+template SeatSimulation::EventReport SeatSimulation::on_event(const SeatOde<FlightChart>&, int,
+                                                              double, const BlockState&);
 
 PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart& chart) {
   if (!sweep_) {
