@@ -306,9 +306,15 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
   std::vector<SeatPair> found;
   std::vector<bool> vertex_on_seat(body_.size(), false);
   vertices_on_segments(s, tolerance, left, found, vertex_on_seat);
+  // Within `tolerance` of an edge, a point is within the block's radius and twice the tolerance of
+  // the centre of mass: every edge lies inside the circle through the farthest vertex. A point
+  // farther off (a long seat's ends, at each landing) touches none.
+  const double reach = block_radius_ * (1.0 + kGeometryRounding) + 2.0 * tolerance;
   for (int k = 0; k < point_count(); ++k) {
-    const Vec2 up = upward_at_point(k);
     if (!touches_edges(k)) continue;
+    const Vec2 point = seat_point(k);
+    if (std::abs(point.x - s.x) > reach || std::abs(point.y - s.y) > reach) continue;
+    const Vec2 up = upward_at_point(k);
     for (int m = 0; m < vertex_count(); ++m) {
       const SeatPair pair{ContactKind::seat_point, m, k};
       if (left && *left == pair) continue;
