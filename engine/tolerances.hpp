@@ -88,6 +88,10 @@ inline constexpr int kRestThresholdHalvings = 64;
 // block started to rock a few 1e-9 s after the flat ground's closed-form onset, which is
 // kOnsetMargin past its threshold.
 inline constexpr double kRestTolerance = 1e-13;
+// How far inside the flat ground's rest range (in lambda) a still block on a level line is taken
+// to rest without the contact problem: well past where its tolerance (kContactProblemTolerance)
+// could choose otherwise.
+inline constexpr double kLevelRestInside = 1e-6;
 // A contact problem's column subset solved by its solve matrix rather than its QR (to skip the
 // subsets that surely fail): only where the columns' condition is at most kMaxScreenedCondition
 // (the type B block's are below 340), and trusted where its answer fails a check by more than

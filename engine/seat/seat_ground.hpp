@@ -204,6 +204,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
                                              const std::vector<ContactState>& states,
                                              const BlockState& s) const;
   bool holds_at_rest(const PlanarForces& f, double relative_tolerance) const;
+  // Whether the still block of `problem` rests, lambda well inside the flat ground's rest range.
+  bool rests_inside_level_range(const PlanarForcesInput& problem);
   Eigen::Vector3d least_kinetic_change(const Eigen::MatrixXd& j, const Eigen::VectorXd& b,
                                        const BodyInertia& inertia) const;
   void lay_on(const std::vector<SeatPair>& pairs, BlockState& s);

@@ -9,6 +9,7 @@
 #include "engine/contact/planar_impact.hpp"
 #include "engine/contact/rocking_restitution.hpp"
 #include "engine/errors.hpp"
+#include "engine/seat/level_rest_range.hpp"
 #include "engine/seat/seat_ground.hpp"
 #include "engine/seat/seated_load.hpp"
 #include "engine/tolerances.hpp"
@@ -195,10 +196,13 @@ SeatMode SeatSimulation::contact_states(const std::vector<SeatPair>& pairs,
   const BlockState& s = state_;
   CarryingContacts carrying = carrying_contacts(pairs);
   if (carrying.pairs.empty()) return logged_mode(SeatMode{}, logged);
-  PlanarForces forces = resolve_contact_forces(carrying.problem);
-  if (forces.determinacy != Determinacy::unique) ++summary_.painleve_events;
   const bool still = std::abs(s.vx) <= velocity_tol_ && std::abs(s.vy) <= velocity_tol_ &&
                      R_ * std::abs(s.omega) <= velocity_tol_;
+  if (still && !report.force && !report.rest_ended && rests_inside_level_range(carrying.problem)) {
+    return logged_mode(rest_on(carrying.pairs), logged);
+  }
+  PlanarForces forces = resolve_contact_forces(carrying.problem);
+  if (forces.determinacy != Determinacy::unique) ++summary_.painleve_events;
   // Just past a lift-off or slip-start guard, or where rest ended, the block cannot stay put,
   // whatever the tolerance of the contact problem lets it choose: rest's range is of lambda over
   // the gravity factor 1 + lambda_v, the problem's tolerance of the accelerations, and under a
@@ -416,6 +420,19 @@ SeatMode SeatSimulation::logged_mode(const SeatMode& mode, std::size_t logged) {
 
 // No contact slips and the block does not accelerate (to the contact problem's tolerance, relative
 // to g): the one test of rest, at an event and where rest's lambda range ends.
+// Well inside the flat ground's rest range (level_rest_range) the contact problem's first
+// consistent choice is every contact sticking, the block still: the rest it finds, without the
+// problem's solves (a study's every scene starts so, and a settled one ends so). Near the range's
+// ends the problem decides, at its own tolerance.
+bool SeatSimulation::rests_inside_level_range(const PlanarForcesInput& problem) {
+  if (external_ != nullptr) return false;
+  const std::optional<RestRange> range = level_rest_range(problem.contacts, problem.friction);
+  if (!range) return false;
+  const double lambda = motion_.lambda(t_) / gravity_factor(t_);
+  return gravity_factor(t_) > 0 && lambda > range->low + kLevelRestInside &&
+         lambda < range->high - kLevelRestInside;
+}
+
 bool SeatSimulation::holds_at_rest(const PlanarForces& f, double relative_tolerance) const {
   const double tolerance = relative_tolerance * scene_.g;
   return std::none_of(f.states.begin(), f.states.end(), is_slip) &&
