@@ -91,6 +91,9 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
     std::optional<ForceEvent> force;  // the contact whose guard ended it, if one did
     bool rest_ended = false;          // lambda left rest's range
     int arrived_point = -1;           // the seat point that reached the block, if one did
+    // The pairs touching at the event, where the event found them (a touch's overturning check):
+    // the resolution's, at the same pose and mode.
+    std::optional<std::vector<SeatPair>> touching;
     bool ended_by_event() const { return by_event; }
   };
 

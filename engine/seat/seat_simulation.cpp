@@ -377,10 +377,9 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
   // (by the integrator's error, far more than 1e-9 rad at an adaptive tolerance of 1e-8), and a
   // pivot sunk into the seat lets the face's far corner touch before the tilt is reached.
   if (event == SeatEvent::touches) {
+    report.touching = touching(at_event, report);
     std::vector<ActiveContact> landed;
-    for (const SeatPair& pair : touching(at_event, report)) {
-      landed.push_back({pair, ContactState::stick});
-    }
+    for (const SeatPair& pair : *report.touching) landed.push_back({pair, ContactState::stick});
     BlockState on_seat = at_event;
     project_positions(landed, on_seat);
     if (contacts_.overturn_margin(geometry_, on_seat.theta) <= kContactHeight) {
