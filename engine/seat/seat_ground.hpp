@@ -234,8 +234,12 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   // (engine/seat/seat_level_flight.cpp).
   std::optional<EventReport> fly_over_level_seat(const SeatOde<FlightChart>& ode,
                                                  MotionPiece& piece, double t_stop);
-  // The touching guard of the lowest vertex `system` watches at s.
-  int lowest_vertex_guard(const SeatSystem& system, const BlockState& s) const;
+  // The lowest vertex `system` watches at s: its touching guard and its clearance.
+  struct LowestVertex {
+    int guard;
+    double clearance;
+  };
+  LowestVertex lowest_vertex(const SeatSystem& system, const BlockState& s) const;
   // The rounding noise of a vertex's clearance over R near the block's pose s.
   double clearance_noise(const BlockState& s) const {
     return 8 * std::numeric_limits<double>::epsilon() *

@@ -39,29 +39,29 @@ std::optional<SeatSimulation::EventReport> SeatSimulation::fly_over_level_seat(
   observe_flight(
       t0, ends.t, [&](double t) { return t == ends.t ? end : ode.full(t, flight.dense(t)); },
       piece);
-  deepest_ = std::max(deepest_, contacts_.penetration(end));
+  // Over a level seat the deepest point is the lowest vertex (SeatContacts::penetration).
+  const LowestVertex lowest = lowest_vertex(ode.system(), end);
+  deepest_ = std::max(deepest_, -lowest.clearance);
   if (ends.overturns) {
     stop_at(ends.t, end, SeatEvent::overturns);
     return EventReport{};
   }
-  if (ends.lands) return on_event(ode, lowest_vertex_guard(ode.system(), end), ends.t, end);
+  if (ends.lands) return on_event(ode, lowest.guard, ends.t, end);
   t_ = ends.t;
   state_ = end;
   return EventReport{};
 }
 
-int SeatSimulation::lowest_vertex_guard(const SeatSystem& system, const BlockState& s) const {
-  int guard = kFirstClearanceGuard, lowest_guard = -1;
-  double lowest = std::numeric_limits<double>::infinity();
+SeatSimulation::LowestVertex SeatSimulation::lowest_vertex(const SeatSystem& system,
+                                                           const BlockState& s) const {
+  LowestVertex lowest{-1, std::numeric_limits<double>::infinity()};
+  int guard = kFirstClearanceGuard;
   for (const int i : system.watched_vertices()) {
-    const double y = contacts_.vertex_at(i, s).y;
-    if (y < lowest) {
-      lowest = y;
-      lowest_guard = guard;
-    }
+    const double clearance = contacts_.clearance_at(contacts_.vertex_at(i, s));
+    if (clearance < lowest.clearance) lowest = {guard, clearance};
     ++guard;
   }
-  return lowest_guard;
+  return lowest;
 }
 
 }  // namespace blockfrag
