@@ -41,6 +41,27 @@ PlanarImpact newton_impact(const PlanarImpactInput& in, double e) {
   return {after, s.states, s.normal, s.tangent, false, s.determinacy};
 }
 
+// The one-corner law at contact c of a block without added mass: the impulse in the contact's
+// frame and the velocity after.
+struct CornerImpact {
+  CornerImpulse impulse;
+  RigidVelocity after;
+};
+CornerImpact corner_impact_at(const PlanarContact& c, const RigidVelocity& velocity,
+                              const BodyInertia& inertia, double friction, double restitution) {
+  const Vec2 t = contact_tangent(c);
+  const ContactVelocity u = contact_velocity(c, velocity);
+  // The contact's frame (t, n) is right-handed (t x n = 1), so theta and omega keep their sense.
+  const CornerImpulse p = corner_impact({1.0, inertia.k2, t.x * c.r.x + t.y * c.r.y,
+                                         c.normal.x * c.r.x + c.normal.y * c.r.y, u.tangent,
+                                         u.normal, friction, restitution});
+  const double p_x = p.p_x * t.x + p.p_y * c.normal.x;
+  const double p_y = p.p_x * t.y + p.p_y * c.normal.y;
+  return {p,
+          {velocity.vx + p_x, velocity.vy + p_y,
+           velocity.omega + (c.r.x * p_y - c.r.y * p_x) / inertia.k2}};
+}
+
 }  // namespace
 
 PlanarImpact simultaneous_impact(const PlanarImpactInput& in) {
@@ -65,23 +86,25 @@ PlanarImpact resolve_contact_impact(const PlanarImpactInput& in) {
   // The one-corner law knows a block alone; with an added mass the general problem takes it.
   if (in.contacts.size() != 1 || in.inertia.coupled()) return simultaneous_impact(in);
   const PlanarContact& c = in.contacts.front();
-  const Vec2 t = contact_tangent(c);
-  const ContactVelocity u = contact_velocity(c, in.velocity);
-  // The contact's frame (t, n) is right-handed (t x n = 1), so theta and omega keep their sense.
-  const CornerImpulse p = corner_impact({1.0, in.inertia.k2, t.x * c.r.x + t.y * c.r.y,
-                                         c.normal.x * c.r.x + c.normal.y * c.r.y, u.tangent,
-                                         u.normal, in.friction, in.restitution});
-  const double p_x = p.p_x * t.x + p.p_y * c.normal.x;
-  const double p_y = p.p_x * t.y + p.p_y * c.normal.y;
-  const RigidVelocity after{in.velocity.vx + p_x, in.velocity.vy + p_y,
-                            in.velocity.omega + (c.r.x * p_y - c.r.y * p_x) / in.inertia.k2};
+  const CornerImpact impact =
+      corner_impact_at(c, in.velocity, in.inertia, in.friction, in.restitution);
+  const CornerImpulse& p = impact.impulse;
   PlanarImpact out;
-  out.after = after;
-  out.states = {leaving_state(p, contact_velocity(c, after).tangent)};
+  out.after = impact.after;
+  out.states = {leaving_state(p, contact_velocity(c, impact.after).tangent)};
   out.normal = {p.p_y};
   out.tangent = {p.p_x};
   out.energy_capped = p.energy_capped;
   return out;
+}
+
+RigidVelocity velocity_after_impact(const PlanarContact& c, const RigidVelocity& velocity,
+                                    const BodyInertia& inertia, double friction, double restitution,
+                                    double length) {
+  if (inertia.coupled()) {
+    return resolve_contact_impact({{c}, velocity, inertia, friction, restitution, length}).after;
+  }
+  return corner_impact_at(c, velocity, inertia, friction, restitution).after;
 }
 
 }  // namespace blockfrag

@@ -29,6 +29,11 @@ struct PlanarImpact {
 // impulse, with its repairs) in the contact's frame, so a block landing on one corner is treated
 // as on the flat ground. Several: simultaneous_impact.
 PlanarImpact resolve_contact_impact(const PlanarImpactInput& in);
+// resolve_contact_impact's velocity after for the one contact c (length: R), without the states
+// and impulses it reports, nor their allocations: a seat's every landing asks it.
+RigidVelocity velocity_after_impact(const PlanarContact& c, const RigidVelocity& velocity,
+                                    const BodyInertia& inertia, double friction, double restitution,
+                                    double length);
 
 // Every contact at once: the complementarity problem of engine/contact/contact_lcp.hpp on the
 // velocities after the impact (each active contact leaves at u_n+ = -e min(u_n-, 0), sticking or

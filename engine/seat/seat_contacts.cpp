@@ -216,7 +216,7 @@ PairPose SeatContacts::point_pose(const SeatPair& pair, const BlockState& s, Vec
 void SeatContacts::vertices_on_segments(const BlockState& s, double tolerance,
                                         const std::optional<SeatPair>& left,
                                         std::vector<SeatPair>& found,
-                                        std::vector<bool>& vertex_on_seat) const {
+                                        VertexMarks& vertex_on_seat) const {
   for (int i = 0; i < vertex_count(); ++i) {
     for (int j = 0; j + 1 < point_count(); ++j) {
       const SeatPair pair{ContactKind::block_vertex, i, j};
@@ -277,7 +277,7 @@ bool arrived_point_prefers_other_edge(const PlanarContact& here_contact, const P
 
 bool SeatContacts::takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k,
                                          bool at_start, Vec2 up, int arrived,
-                                         const std::vector<bool>& vertex_on_seat) const {
+                                         const VertexMarks& vertex_on_seat) const {
   // Taken only when that vertex is on no seat segment, and only on the one of the vertex's two
   // edges whose normal is nearer the seat's upward direction (the heel's base, not its upstream
   // face).
@@ -304,7 +304,10 @@ std::vector<SeatPair> SeatContacts::touching(const BlockState& s, double toleran
                                              const std::optional<SeatPair>& left,
                                              int arrived) const {
   std::vector<SeatPair> found;
-  std::vector<bool> vertex_on_seat(body_.size(), false);
+  // Room for any set of contacts the simulation takes (kMaxSeatContacts) without growing: the
+  // search runs at every landing.
+  found.reserve(8);
+  VertexMarks vertex_on_seat{};
   vertices_on_segments(s, tolerance, left, found, vertex_on_seat);
   // Within `tolerance` of an edge, a point is within the block's radius and twice the tolerance of
   // the centre of mass: every edge lies inside the circle through the farthest vertex. A point

@@ -211,9 +211,11 @@ class SeatContacts {
   // touching's steps: the block vertices on seat segments (marking those vertices), the seat's
   // upward direction at point k, and whether a seat point at a block vertex (the pair's point at
   // the start of edge m, or at its end) is taken on that edge.
+  // Per block vertex (at most kMaxSeatClearances of them, as the scene's validation has it).
+  using VertexMarks = std::array<bool, kMaxSeatClearances>;
   void vertices_on_segments(const BlockState& s, double tolerance,
                             const std::optional<SeatPair>& left, std::vector<SeatPair>& found,
-                            std::vector<bool>& vertex_on_seat) const;
+                            VertexMarks& vertex_on_seat) const;
   Vec2 upward_at_point(int k) const;
   // pose() of a block vertex at p, and of a seat point on the block's edge from a to b.
   PairPose vertex_pose(const SeatPair& pair, const BlockState& s, Vec2 p) const;
@@ -243,7 +245,7 @@ class SeatContacts {
   // clearance_at on any seat, past its ends or over any of its segments.
   double clearance_at_any(Vec2 p) const;
   bool takes_point_at_vertex(const BlockState& s, const PairPose& p, int m, int k, bool at_start,
-                             Vec2 up, int arrived, const std::vector<bool>& vertex_on_seat) const;
+                             Vec2 up, int arrived, const VertexMarks& vertex_on_seat) const;
 
   struct Segment {  // a seat segment's unit direction, upward normal and length
     Vec2 direction, normal;

@@ -20,6 +20,7 @@ std::vector<SeatPair> SeatSimulation::touching(const BlockState& s,
                                                const EventReport& report) const {
   const double tight = kContactHeight * R_;
   std::vector<SeatPair> out;
+  out.reserve(static_cast<std::size_t>(kMaxSeatContacts));
   std::optional<SeatPair> left;
   if (report.force && report.force->event == SeatEvent::leaves_end) left = report.force->pair;
   for (const SeatPair& pair :
@@ -40,6 +41,7 @@ std::vector<SeatPair> SeatSimulation::touching(const BlockState& s,
 SeatSimulation::Approach SeatSimulation::fastest_approach(const std::vector<SeatPair>& pairs,
                                                           const BlockState& s) const {
   Approach approach{{}, 0.0, -1};
+  approach.all.reserve(pairs.size());
   for (const SeatPair& pair : pairs) {
     approach.all.push_back(contact_of(pair, s));
     const double u_n = contact_velocity(approach.all.back(), velocity_of(s)).normal;
@@ -58,10 +60,8 @@ void SeatSimulation::landing_impact(BlockState& s, const Approach& approach,
   const int first = approach.first;
   const double e =
       landing_restitution(scene_.contact.restitution, approach.fastest, settle_velocity());
-  const PlanarImpactInput one{
-      {all[static_cast<std::size_t>(first)]}, velocity_of(s), inertia, mu, e, R_};
-  PlanarImpact impact = resolve_contact_impact(one);
-  set_velocity(s, impact.after);
+  set_velocity(s, velocity_after_impact(all[static_cast<std::size_t>(first)], velocity_of(s),
+                                        inertia, mu, e, R_));
   // The paper's law at the contact that hits first, as on the flat ground; when that drives
   // another touching contact into the seat (a flat landing), all take their impulses together.
   bool others_approach = false;

@@ -65,6 +65,31 @@ TEST(PlanarImpact, OneContactIsThePapersLawInTheContactsFrame) {
   }
 }
 
+// The velocity alone, as a seat's landing asks it, is the full impact's to the bit: for a block
+// alone (the one-corner law) and with an added mass (the general problem).
+TEST(PlanarImpact, VelocityAfterImpactIsTheFullImpactsToTheBit) {
+  RandomImpact make;
+  int compared = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const PlanarContact c = make.contact();
+    const double k2 = make.between(0.05, 2.0), mu = make.between(0.0, 1.5),
+                 e = make.between(0.0, 1.0);
+    const BodyInertia inertia = trial % 2 == 0
+                                    ? BodyInertia(k2)
+                                    : BodyInertia(k2, make.between(0.1, 1.0),
+                                                  make.between(-0.3, 0.3), make.between(0.0, 0.5));
+    const RigidVelocity v{make.between(-1, 1), make.between(-2, -0.1), make.between(-2, 2)};
+    if (contact_velocity(c, v).normal >= 0) continue;
+    const RigidVelocity full = resolve_contact_impact({{c}, v, inertia, mu, e, 1.0}).after;
+    const RigidVelocity alone = velocity_after_impact(c, v, inertia, mu, e, 1.0);
+    EXPECT_EQ(alone.vx, full.vx);
+    EXPECT_EQ(alone.vy, full.vy);
+    EXPECT_EQ(alone.omega, full.omega);
+    ++compared;
+  }
+  EXPECT_GT(compared, 100);
+}
+
 // On flat ground the contact's frame is the ground's: the same bits as corner_impact.
 TEST(PlanarImpact, OneContactOnFlatGroundIsCornerImpactToTheBit) {
   const RigidVelocity v{0.3, -0.7, 1.1};
