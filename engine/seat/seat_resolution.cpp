@@ -164,7 +164,9 @@ bool SeatSimulation::plastic_landing(const std::vector<SeatPair>& pairs) {
 // approaches, the block settled or laid on its contacts, then the contact states of the
 // complementarity problem over those that carry force.
 SeatMode SeatSimulation::resolve(const EventReport& report) {
-  const std::vector<SeatPair> pairs = report.touching ? *report.touching : touching(state_, report);
+  std::vector<SeatPair> found;
+  if (!report.touching) found = touching(state_, report);
+  const std::vector<SeatPair>& pairs = report.touching ? *report.touching : found;
   put_back_on_held_contacts(pairs);
   const std::size_t logged = impact_log_.size();
   BlockState s = state_;

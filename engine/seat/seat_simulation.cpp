@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -512,8 +513,8 @@ SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t
           const SeatOde ode(moving, chart);
           if constexpr (std::is_same_v<Chart, FlightChart>) {
             if (vertical_.piece_at(t_).is_zero() && external_ == nullptr) {
-              if (const auto landed = fly_over_level_seat(ode, piece, t_stop)) {
-                report = *landed;
+              if (auto landed = fly_over_level_seat(ode, piece, t_stop)) {
+                report = std::move(*landed);
                 return;
               }
               ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
