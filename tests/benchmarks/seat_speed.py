@@ -13,8 +13,12 @@ block's lowest point): the dry motion with every load of the water computed at e
 side, which parts the water's own cost from what the water does to the motion. With --flat-seat,
 also the type A block on the flat ground given as a seat of one segment (1 km either side of its
 base's middle) and its ratio to the flat ground's: what the seat's engine costs where the two
-engines run the same physics. The builds' runs alternate, so that a change of the machine's load
-falls on both.
+engines run the same physics; with --studies too, the same for two whole studies on one rank, each
+on the flat ground and on a one-segment seat under the rectangle's base: the paper's grid (a = 0.5
+m, b = 1 m, mu 0.6, e 0.6, a one-cycle cosine pulse of 2 s for 4 s, 4,000 amplitudes from 0.3 to
+1.5 g, no bootstrap) and configs/example_study.json at 1,000 samples a level (medians of 5 runs,
+the flat ground's and the seat's alternating). The builds' runs
+alternate, so that a change of the machine's load falls on both.
 
     /usr/bin/python3 tests/benchmarks/seat_speed.py --blockfrag build/mpi_driver/blockfrag \\
         [--baseline OLD/mpi_driver/blockfrag] [--repeat 10] [--studies] [--wet] [--flat-seat]
@@ -27,6 +31,7 @@ cores and the load average that measured it, and this command (tests/benchmarks/
 import argparse
 import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -41,6 +46,17 @@ STUDIES = {"B": "configs/dam_type_b_record_suite.json", "A": "configs/record_sui
 WET = {"B": "configs/dam_block_type_b_reservoir.json", "A": "configs/dam_block_type_a_reservoir.json"}
 SHALLOW_POOL_M = 0.01  # the shallow pool's depth over the block's lowest point
 FLAT_SEAT_HALF_M = 1000.0  # how far the flat seat reaches either side of the block's base's middle
+PAPER_GRID = {
+    "scene": {"block": {"half_width": 0.5, "half_height": 1.0},
+              "contact": {"friction": 0.6, "restitution": 0.6},
+              "ground_motion": {"type": "cosine_pulse", "amplitude_g": 1.0, "period": 2.0,
+                                "cycles": 1},
+              "duration": 4.0},
+    "intensity_measure": {"from": 0.3, "to": 1.5, "count": 4000}, "samples_per_level": 1,
+    "limit_states": [{"name": "overturn", "type": "overturning"}], "seed": 1,
+    "output": "out.h5", "checkpoint_interval_s": 600, "bootstrap_resamples": 0}
+EXAMPLE_SAMPLES_PER_LEVEL = 1000
+FLAT_SEAT_STUDY_RUNS = 5  # each study's wall time is the median of this many runs
 
 
 def shallow_pool(wet_scene, folder):
@@ -63,6 +79,32 @@ def flat_seat(scene_file, folder):
     path = Path(folder) / ("flat_seat_" + Path(scene_file).name)
     path.write_text(json.dumps(scene))
     return str(path)
+
+
+def flat_seat_studies(folder):
+    """The paper's grid and the example study, each as is and on a one-segment seat under its
+    rectangle's base, written in folder: {label: path}."""
+    example = json.loads((ROOT / "configs/example_study.json").read_text())
+    example["samples_per_level"] = EXAMPLE_SAMPLES_PER_LEVEL
+    example["checkpoint_interval_s"] = 600
+    studies = {}
+    for name, study in (("grid", PAPER_GRID), ("example", example)):
+        seated = json.loads(json.dumps(study))
+        base = -seated["scene"]["block"]["half_height"]
+        seated["scene"]["seat"] = [[-FLAT_SEAT_HALF_M, base], [FLAT_SEAT_HALF_M, base]]
+        for label, content in ((name + " flat", study), (name + " seat", seated)):
+            path = Path(folder) / (label.replace(" ", "_") + ".json")
+            path.write_text(json.dumps(content))
+            studies[label] = str(path)
+    return studies
+
+
+def one_rank_wall(blockfrag, study):
+    with tempfile.TemporaryDirectory() as folder:
+        start = time.monotonic()
+        subprocess.run([blockfrag, "run", study, "--output", os.path.join(folder, "out.h5")],
+                       cwd=folder, check=True, capture_output=True)
+        return time.monotonic() - start
 
 
 def bench(blockfrag, scene, repeat):
@@ -94,6 +136,16 @@ def measure(builds, repeat, studies, wet, on_flat_seat):
         for label, scene in scenes:
             for name, binary in builds.items():
                 rows[name][label] = bench(binary, scene, repeat)
+        if studies and on_flat_seat:
+            paths = flat_seat_studies(folder)
+            walls = {(name, label): [] for name in builds for label in paths}
+            for run in range(FLAT_SEAT_STUDY_RUNS):
+                order = list(paths) if run % 2 == 0 else list(reversed(list(paths)))
+                for label in order:
+                    for name, binary in builds.items():
+                        walls[name, label].append(one_rank_wall(binary, paths[label]))
+            for (name, label), wall in walls.items():
+                rows[name][label] = statistics.median(wall)
     if studies:
         for key, study in STUDIES.items():
             for name, binary in reversed(list(builds.items())):
@@ -121,6 +173,13 @@ def table(rows, studies, wet, on_flat_seat):
         for key in STUDIES:
             row(f"record-suite study type {key}: wall s", lambda r, k=key: f"{r['study ' + k]:.2f}")
         row("**study ratio B / A**", lambda r: f"**{r['study B'] / r['study A']:.2f}**")
+    if studies and on_flat_seat:
+        for key, what in (("grid", "paper grid, 4,000 amplitudes"),
+                          ("example", "example study, 1,000 samples a level")):
+            row(f"{what}, one rank: wall s flat / seat",
+                lambda r, k=key: f"{r[k + ' flat']:.2f} / {r[k + ' seat']:.2f}")
+            row(f"**{what}: seat / flat**",
+                lambda r, k=key: f"**{r[k + ' seat'] / r[k + ' flat']:.2f}**")
     if wet:
         for key in SCENES:
             row(f"bench type {key} under its reservoir: median ms (steps)",
