@@ -213,6 +213,12 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
                                        const BodyInertia& inertia) const;
   void lay_on(const std::vector<SeatPair>& pairs, BlockState& s);
   void project_positions(const std::vector<ActiveContact>& active, BlockState& s) const;
+  // Whether the block landing at s on the `touching` pairs lies on its face next to the base
+  // (overturned), its tilt read with those pairs put back on the seat.
+  bool lies_overturned(const BlockState& s, const std::vector<SeatPair>& touching) const;
+  // lies_overturned for a landing on a level seat, clear of its ends, whose touching pairs are
+  // block vertices; their projection is not made where it cannot tilt the block that far.
+  bool lies_overturned_on_level(const BlockState& s, const std::vector<SeatPair>& touching) const;
   void project(const SeatMode& mode);
   // `decompositions`: the contact problem's, kept over the rest range's search.
   bool rest_holds(double lambda, LcpDecompositions& decompositions) const;
@@ -234,12 +240,8 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   // (engine/seat/seat_level_flight.cpp).
   std::optional<EventReport> fly_over_level_seat(const SeatOde<FlightChart>& ode,
                                                  MotionPiece& piece, double t_stop);
-  // The lowest vertex `system` watches at s: its touching guard and its clearance.
-  struct LowestVertex {
-    int guard;
-    double clearance;
-  };
-  LowestVertex lowest_vertex(const SeatSystem& system, const BlockState& s) const;
+  // The least clearance of the vertices `system` watches at s (the lowest one's).
+  double lowest_clearance(const SeatSystem& system, const BlockState& s) const;
   // The rounding noise of a vertex's clearance over R near the block's pose s.
   double clearance_noise(const BlockState& s) const {
     return 8 * std::numeric_limits<double>::epsilon() *

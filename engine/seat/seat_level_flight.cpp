@@ -1,7 +1,8 @@
 // A flight over a level seat, clear of its ends, is the flat ground's flight: its landing is a
 // corner's, found in closed form (engine/modes/flight.hpp) in place of watching every vertex's and
 // point's guard at samples inside each step, which was three quarters of the example study's
-// engine time on a flat seat.
+// engine time on a flat seat. Its landing is a block vertex's touch, as on_event reports one: no
+// seat point can reach the block, and no vertex pass under an end.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -40,26 +41,45 @@ std::optional<SeatSimulation::EventReport> SeatSimulation::fly_over_level_seat(
       t0, ends.t, [&](double t) { return t == ends.t ? end : ode.full(t, flight.dense(t)); },
       piece);
   // Over a level seat the deepest point is the lowest vertex (SeatContacts::penetration).
-  const LowestVertex lowest = lowest_vertex(ode.system(), end);
-  deepest_ = std::max(deepest_, -lowest.clearance);
-  if (ends.overturns) {
+  deepest_ = std::max(deepest_, -lowest_clearance(ode.system(), end));
+  EventReport report;
+  if (ends.lands) {
+    report.by_event = true;
+    report.touching = touching(end, report);
+  }
+  if (ends.overturns || (ends.lands && lies_overturned_on_level(end, *report.touching))) {
     stop_at(ends.t, end, SeatEvent::overturns);
     return EventReport{};
   }
-  if (ends.lands) return on_event(ode, lowest.guard, ends.t, end);
   t_ = ends.t;
   state_ = end;
-  return EventReport{};
+  return report;
 }
 
-SeatSimulation::LowestVertex SeatSimulation::lowest_vertex(const SeatSystem& system,
-                                                           const BlockState& s) const {
-  LowestVertex lowest{-1, std::numeric_limits<double>::infinity()};
-  int guard = kFirstClearanceGuard;
+bool SeatSimulation::lies_overturned_on_level(const BlockState& s,
+                                              const std::vector<SeatPair>& touching) const {
+  // Each touching vertex is put back on the seat from at most the touching tolerance away: alone,
+  // that turns the block by at most the tolerance over twice its radius of gyration (the least
+  // kinetic change); two of them, by at most twice the tolerance over their distance apart. Twice
+  // these bounds from overturning, the projection is not needed to know the block stands.
+  const double tolerance = kSeatContactDrift * R_;
+  double turn = tolerance / (2.0 * std::sqrt(geometry_.inertia_per_mass()));
+  for (std::size_t i = 0; i < touching.size(); ++i) {
+    const Vec2 a = contacts_.vertex_at(touching[i].block, s);
+    for (std::size_t j = i + 1; j < touching.size(); ++j) {
+      const double apart = std::abs(contacts_.vertex_at(touching[j].block, s).x - a.x);
+      if (!(apart > kGeometryRounding * R_)) return lies_overturned(s, touching);
+      turn += 2.0 * tolerance / apart;
+    }
+  }
+  if (contacts_.overturn_margin(geometry_, s.theta) > kContactHeight + 2.0 * turn) return false;
+  return lies_overturned(s, touching);
+}
+
+double SeatSimulation::lowest_clearance(const SeatSystem& system, const BlockState& s) const {
+  double lowest = std::numeric_limits<double>::infinity();
   for (const int i : system.watched_vertices()) {
-    const double clearance = contacts_.clearance_at(contacts_.vertex_at(i, s));
-    if (clearance < lowest.clearance) lowest = {guard, clearance};
-    ++guard;
+    lowest = std::min(lowest, contacts_.clearance_at(contacts_.vertex_at(i, s)));
   }
   return lowest;
 }

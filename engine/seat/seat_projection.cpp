@@ -119,6 +119,19 @@ void SeatSimulation::project_positions(const std::vector<ActiveContact>& active,
   }
 }
 
+// The tilt is read with every touching contact put back on the seat: the active ones have drifted
+// (by the integrator's error, far more than 1e-9 rad at an adaptive tolerance of 1e-8), and a
+// pivot sunk into the seat lets the face's far corner touch before the tilt is reached.
+bool SeatSimulation::lies_overturned(const BlockState& s,
+                                     const std::vector<SeatPair>& touching) const {
+  std::vector<ActiveContact> landed;
+  landed.reserve(touching.size());
+  for (const SeatPair& pair : touching) landed.push_back({pair, ContactState::stick});
+  BlockState on_seat = s;
+  project_positions(landed, on_seat);
+  return contacts_.overturn_margin(geometry_, on_seat.theta) <= kContactHeight;
+}
+
 // Puts the active contacts' gaps back to zero (the least change) and their normal
 // velocities (and a sticking one's tangential velocity) too.
 void SeatSimulation::project(const SeatMode& mode) {

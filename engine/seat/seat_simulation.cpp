@@ -373,17 +373,10 @@ SeatSimulation::EventReport SeatSimulation::on_event(const Ode& ode, int which, 
   report.by_event = true;
   report.arrived_point = event == SeatEvent::touches ? system.watched_point(which) : -1;
   // The face next to the base lands as the block reaches the overturning tilt (a rectangle's
-  // top corner at theta = pi/2): that is overturning, whichever guard rounding put first. The
-  // tilt is read with every touching contact put back on the seat: the active ones have drifted
-  // (by the integrator's error, far more than 1e-9 rad at an adaptive tolerance of 1e-8), and a
-  // pivot sunk into the seat lets the face's far corner touch before the tilt is reached.
+  // top corner at theta = pi/2): that is overturning, whichever guard rounding put first.
   if (event == SeatEvent::touches) {
     report.touching = touching(at_event, report);
-    std::vector<ActiveContact> landed;
-    for (const SeatPair& pair : *report.touching) landed.push_back({pair, ContactState::stick});
-    BlockState on_seat = at_event;
-    project_positions(landed, on_seat);
-    if (contacts_.overturn_margin(geometry_, on_seat.theta) <= kContactHeight) {
+    if (lies_overturned(at_event, *report.touching)) {
       event = SeatEvent::overturns;
       report.arrived_point = -1;
     }
@@ -528,10 +521,6 @@ SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t
       chart_of(mode_));
   return report;
 }
-
-// fly_over_level_seat's event (engine/seat/seat_level_flight.cpp).
-template SeatSimulation::EventReport SeatSimulation::on_event(const SeatOde<FlightChart>&, int,
-                                                              double, const BlockState&);
 
 PivotSweep& SeatSimulation::sweep_for(const SeatSystem& system, const PivotChart& chart) {
   if (!sweep_) {
