@@ -38,15 +38,24 @@ struct RandomImpact {
             n,
             unit(random) < 0.5 ? ContactKind::block_vertex : ContactKind::seat_point};
   }
+
+  // A contact, the block's k^2, mu and e, drawn in that order.
+  struct OneContact {
+    PlanarContact contact;
+    double k2, mu, e;
+  };
+  OneContact one_contact() {
+    const PlanarContact c = contact();
+    const double k2 = between(0.05, 2.0), mu = between(0.0, 1.5);
+    return {c, k2, mu, between(0.0, 1.0)};
+  }
 };
 
 // One contact, a tilted seat: the paper's law computed here in the contact's frame by hand.
 TEST(PlanarImpact, OneContactIsThePapersLawInTheContactsFrame) {
   RandomImpact make;
   for (int trial = 0; trial < 2000; ++trial) {
-    const PlanarContact c = make.contact();
-    const double k2 = make.between(0.05, 2.0), mu = make.between(0.0, 1.5),
-                 e = make.between(0.0, 1.0);
+    const auto [c, k2, mu, e] = make.one_contact();
     const RigidVelocity v{make.between(-1, 1), make.between(-2, -0.1), make.between(-2, 2)};
     if (contact_velocity(c, v).normal >= 0) continue;
     const PlanarImpact impact = resolve_contact_impact({{c}, v, k2, mu, e, 1.0});
@@ -71,9 +80,7 @@ TEST(PlanarImpact, VelocityAfterImpactIsTheFullImpactsToTheBit) {
   RandomImpact make;
   int compared = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    const PlanarContact c = make.contact();
-    const double k2 = make.between(0.05, 2.0), mu = make.between(0.0, 1.5),
-                 e = make.between(0.0, 1.0);
+    const auto [c, k2, mu, e] = make.one_contact();
     const BodyInertia inertia = trial % 2 == 0
                                     ? BodyInertia(k2)
                                     : BodyInertia(k2, make.between(0.1, 1.0),
@@ -111,9 +118,7 @@ TEST(PlanarImpact, SimultaneousLawOnOneContactAgreesWithThePapersLaw) {
   RandomImpact make;
   int compared = 0;
   for (int trial = 0; trial < 5000; ++trial) {
-    const PlanarContact c = make.contact();
-    const double k2 = make.between(0.05, 2.0), mu = make.between(0.0, 1.5),
-                 e = make.between(0.0, 1.0);
+    const auto [c, k2, mu, e] = make.one_contact();
     const RigidVelocity v{make.between(-1, 1), make.between(-2, -0.1), make.between(-2, 2)};
     if (contact_velocity(c, v).normal >= 0) continue;
     const PlanarImpactInput in{{c}, v, k2, mu, e, 1.0};
