@@ -238,10 +238,10 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   // flat ground flies (flight_end), its landing found on the block's corners and reported as its
   // lowest vertex's touching guard. None where it does not apply
   // (engine/seat/seat_level_flight.cpp).
-  std::optional<EventReport> fly_over_level_seat(const SeatOde<FlightChart>& ode,
-                                                 MotionPiece& piece, double t_stop);
-  // The least clearance of the vertices `system` watches at s (the lowest one's).
-  double lowest_clearance(const SeatSystem& system, const BlockState& s) const;
+  std::optional<EventReport> fly_over_level_seat(const FlightChart& chart, MotionPiece& piece,
+                                                 double t_stop);
+  // The least clearance of the block's vertices at s (the lowest one's).
+  double lowest_clearance(const BlockState& s) const;
   // The rounding noise of a vertex's clearance over R near the block's pose s.
   double clearance_noise(const BlockState& s) const {
     return 8 * std::numeric_limits<double>::epsilon() *

@@ -16,7 +16,7 @@
 namespace blockfrag {
 
 std::optional<SeatSimulation::EventReport> SeatSimulation::fly_over_level_seat(
-    const SeatOde<FlightChart>& ode, MotionPiece& piece, double t_stop) {
+    const FlightChart& chart, MotionPiece& piece, double t_stop) {
   if (!level_) return std::nullopt;
   const double g = scene_.g;
   const double t0 = t_;
@@ -35,13 +35,13 @@ std::optional<SeatSimulation::EventReport> SeatSimulation::fly_over_level_seat(
   }
   const FlightEnd ends =
       flight_end(geometry_, start, g, t0, t_stop, ends_run, kFlightMinStep * block_time_);
-  const ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t0, g);
-  const BlockState end = ode.full(ends.t, flight.dense(ends.t));
+  const ClosedFormFlight flight(chart.coordinates(state_), state_, piece, t0, g);
+  const BlockState end = chart.full(ends.t, flight.dense(ends.t));
   observe_flight(
-      t0, ends.t, [&](double t) { return t == ends.t ? end : ode.full(t, flight.dense(t)); },
+      t0, ends.t, [&](double t) { return t == ends.t ? end : chart.full(t, flight.dense(t)); },
       piece);
   // Over a level seat the deepest point is the lowest vertex (SeatContacts::penetration).
-  deepest_ = std::max(deepest_, -lowest_clearance(ode.system(), end));
+  deepest_ = std::max(deepest_, -lowest_clearance(end));
   EventReport report;
   if (ends.lands) {
     report.by_event = true;
@@ -76,9 +76,9 @@ bool SeatSimulation::lies_overturned_on_level(const BlockState& s,
   return lies_overturned(s, touching);
 }
 
-double SeatSimulation::lowest_clearance(const SeatSystem& system, const BlockState& s) const {
+double SeatSimulation::lowest_clearance(const BlockState& s) const {
   double lowest = std::numeric_limits<double>::infinity();
-  for (const int i : system.watched_vertices()) {
+  for (int i = 0; i < contacts_.vertex_count(); ++i) {
     lowest = std::min(lowest, contacts_.clearance_at(contacts_.vertex_at(i, s)));
   }
   return lowest;

@@ -486,6 +486,15 @@ SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t
   if (mode_.rest) return advance_rest(t_stop);
   from_piece_end_ = system_ready_ && piece_end_ready_;
   piece_end_ready_ = false;
+  // A level flight needs no system: it watches no guard.
+  const bool closed_form_flight =
+      mode_.active.empty() && external_ == nullptr && vertical_.piece_at(t_).is_zero();
+  if (closed_form_flight) {
+    if (auto landed = fly_over_level_seat(std::get<FlightChart>(chart_of(mode_)), piece, t_stop)) {
+      system_ready_ = false;
+      return std::move(*landed);
+    }
+  }
   SeatSystem& moving = system_ready_ ? *system_ : build_system(piece);
   system_ready_ = false;
   const ModeKind kind = kind_of(mode_);
@@ -505,11 +514,7 @@ SeatSimulation::EventReport SeatSimulation::advance(MotionPiece& piece, double t
           moving.set_clear_of_ends(false);
           const SeatOde ode(moving, chart);
           if constexpr (std::is_same_v<Chart, FlightChart>) {
-            if (vertical_.piece_at(t_).is_zero() && external_ == nullptr) {
-              if (auto landed = fly_over_level_seat(ode, piece, t_stop)) {
-                report = std::move(*landed);
-                return;
-              }
+            if (closed_form_flight) {
               ClosedFormFlight flight(ode.coordinates(state_), state_, piece, t_, scene_.g);
               report = integrate_with(ode, flight, piece, t_stop, kind);
               return;
