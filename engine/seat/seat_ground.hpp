@@ -177,11 +177,11 @@ class SeatSimulation : public EventLoop<SeatSimulation> {
   // resolve_impacts' steps: the pairs' contacts and the one that approaches fastest (first: -1
   // where none approaches), and the impact at that one by the scene's restitution.
   struct Approach {
-    std::vector<PlanarContact> all;
+    const std::vector<PlanarContact>& all;
     double fastest;
     int first;
   };
-  Approach fastest_approach(const std::vector<SeatPair>& pairs, const BlockState& s) const;
+  Approach fastest_approach(const std::vector<PlanarContact>& contacts, const BlockState& s) const;
   void landing_impact(BlockState& s, const Approach& approach, const BlockState& start,
                       const BodyInertia& inertia);
   bool plastic_landing(const std::vector<SeatPair>& pairs);

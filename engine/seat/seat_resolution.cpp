@@ -38,16 +38,14 @@ std::vector<SeatPair> SeatSimulation::touching(const BlockState& s,
   return out;
 }
 
-SeatSimulation::Approach SeatSimulation::fastest_approach(const std::vector<SeatPair>& pairs,
-                                                          const BlockState& s) const {
-  Approach approach{{}, 0.0, -1};
-  approach.all.reserve(pairs.size());
-  for (const SeatPair& pair : pairs) {
-    approach.all.push_back(contact_of(pair, s));
-    const double u_n = contact_velocity(approach.all.back(), velocity_of(s)).normal;
+SeatSimulation::Approach SeatSimulation::fastest_approach(
+    const std::vector<PlanarContact>& contacts, const BlockState& s) const {
+  Approach approach{contacts, 0.0, -1};
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const double u_n = contact_velocity(contacts[i], velocity_of(s)).normal;
     if (u_n < -velocity_tol_ && u_n < approach.fastest) {
       approach.fastest = u_n;
-      approach.first = static_cast<int>(approach.all.size()) - 1;
+      approach.first = static_cast<int>(i);
     }
   }
   return approach;
@@ -87,8 +85,13 @@ void SeatSimulation::landing_impact(BlockState& s, const Approach& approach,
 bool SeatSimulation::resolve_impacts(BlockState& s, const std::vector<SeatPair>& pairs,
                                      bool& impacted) {
   const double mu = scene_.contact.friction;
+  // An impact changes the velocity alone, so the pairs' contacts are posed once for every round;
+  // laying the block, which moves it, ends the rounds.
+  std::vector<PlanarContact> contacts;
+  contacts.reserve(pairs.size());
+  for (const SeatPair& pair : pairs) contacts.push_back(contact_of(pair, s));
   for (int round = 0; round < kMaxImpactRounds; ++round) {
-    const Approach approach = fastest_approach(pairs, s);
+    const Approach approach = fastest_approach(contacts, s);
     const double fastest = approach.fastest;
     const int first = approach.first;
     if (first < 0) return true;
