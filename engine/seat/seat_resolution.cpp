@@ -423,8 +423,6 @@ SeatMode SeatSimulation::logged_mode(const SeatMode& mode, std::size_t logged) {
   return mode;
 }
 
-// No contact slips and the block does not accelerate (to the contact problem's tolerance, relative
-// to g): the one test of rest, at an event and where rest's lambda range ends.
 // Well inside the flat ground's rest range (level_rest_range) the contact problem's first
 // consistent choice is every contact sticking, the block still: the rest it finds, without the
 // problem's solves (a study's every scene starts so, and a settled one ends so). Near the range's
@@ -433,11 +431,14 @@ bool SeatSimulation::rests_inside_level_range(const PlanarForcesInput& problem) 
   if (external_ != nullptr) return false;
   const std::optional<RestRange> range = level_rest_range(problem.contacts, problem.friction);
   if (!range) return false;
-  const double lambda = motion_.lambda(t_) / gravity_factor(t_);
-  return gravity_factor(t_) > 0 && lambda > range->low + kLevelRestInside &&
+  const double factor = gravity_factor(t_);
+  const double lambda = motion_.lambda(t_) / factor;
+  return factor > 0 && lambda > range->low + kLevelRestInside &&
          lambda < range->high - kLevelRestInside;
 }
 
+// No contact slips and the block does not accelerate (to the contact problem's tolerance, relative
+// to g): the one test of rest, at an event and where rest's lambda range ends.
 bool SeatSimulation::holds_at_rest(const PlanarForces& f, double relative_tolerance) const {
   const double tolerance = relative_tolerance * scene_.g;
   return std::none_of(f.states.begin(), f.states.end(), is_slip) &&
