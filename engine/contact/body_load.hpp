@@ -155,11 +155,17 @@ inline BodyLoad with_addition(BodyLoad load, double inertia_per_mass, const Load
   return load;
 }
 
+// The load on a dry block of k^2 = I/M under lambda and lambda_v: gravity and the ground's inertia
+// alone, which do not depend on the block's state.
+inline BodyLoad dry_body_load(double inertia_per_mass, double lambda, double lambda_v, double g) {
+  return {{lambda * g, -g * (1.0 + lambda_v)}, 0.0, inertia_per_mass};
+}
+
 // The load on a block of k^2 = I/M under lambda, lambda_v and an external load (none: dry), the
 // block standing as `footing` says.
 inline BodyLoad body_load(double inertia_per_mass, double lambda, double lambda_v, double g,
                           const ExternalLoad* external, const BlockState& s, Footing footing) {
-  BodyLoad load{{lambda * g, -g * (1.0 + lambda_v)}, 0.0, inertia_per_mass};
+  const BodyLoad load = dry_body_load(inertia_per_mass, lambda, lambda_v, g);
   if (external == nullptr) return load;
   return with_addition(load, inertia_per_mass, external->at(s, lambda, g, footing));
 }
@@ -168,8 +174,8 @@ inline BodyLoad body_load(double inertia_per_mass, double lambda, double lambda_
 // (ExternalLoad::seated_opened, or one of ExternalLoad::search_openings).
 inline BodyLoad seated_body_load(double inertia_per_mass, double lambda, double lambda_v, double g,
                                  const CrackOpenings& openings, LiftingSide side, double fraction) {
-  const BodyLoad load{{lambda * g, -g * (1.0 + lambda_v)}, 0.0, inertia_per_mass};
-  return with_addition(load, inertia_per_mass, openings.opened(side, fraction));
+  return with_addition(dry_body_load(inertia_per_mass, lambda, lambda_v, g), inertia_per_mass,
+                       openings.opened(side, fraction));
 }
 
 }  // namespace blockfrag

@@ -156,7 +156,7 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
     last_solve_.forces =
         fixed_state_forces(active, states, s, seated_load(in, s, active, states), c_.mu);
   } else {  // no contact: flight
-    const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
+    const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t) : wet_lifted_load(t, s);
     last_solve_.forces = no_contact_forces(load);
   }
   last_solve_.t = t;
@@ -166,7 +166,7 @@ const FixedStateForces& SeatSystem::solve_anew(double t, const BlockState& s,
 
 const FixedStateForces& SeatSystem::solve_one_anew(double t, const BlockState& s,
                                                    const PlanarContact& contact) {
-  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
+  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t) : wet_lifted_load(t, s);
   // The fixed-size solve's forces go straight into the kept ones; where it gives none, the
   // general solve overwrites them whole.
   if (!one_contact_forces(contact, states_[0], s, load, c_.mu, last_solve_.forces)) {
@@ -186,21 +186,6 @@ const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
     last_lifted_.s = s;
   }
   return last_lifted_.load;
-}
-
-std::optional<double> SeatSystem::pivot_turning(double t, const BlockState& s, Vec2 r) {
-  if (count_ != 1) return std::nullopt;
-  return turning_under(c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s), s,
-                       r);
-}
-
-double SeatSystem::turning_under(const BodyLoad& load, const BlockState& s, Vec2 r) {
-  const BodyInertia& m = load.inertia;
-  const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
-  const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta
-  const double inertia = along_x * r.y + r.x * r.x + along_theta;
-  const double load_along = load.force.x * r.y - load.force.y * r.x + load.moment;
-  return (load_along - s.omega * s.omega * r.x * (along_x - r.y)) / inertia;
 }
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s) {
@@ -343,8 +328,8 @@ SeatSystem::PivotForce SeatSystem::pivot_force(double t, const BlockState& s) {
 SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s, SineCosine turn) {
   // The arm as the pivot's chart turns it (PivotChart::arm).
   const Vec2 r = rotate(c_.contacts->body_vertex(active_[0].pair.block), turn.cos, turn.sin);
-  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t, s) : wet_lifted_load(t, s);
-  const double turning = turning_under(load, s, r);
+  const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t) : wet_lifted_load(t, s);
+  const double turning = turning_under(load, s.omega, r);
   // The centre of mass at pivot - r: its acceleration is -(d/dt)^2 r. The force is M a - Q in x
   // and y, the added mass (horizontal) coupling x and theta; dry, M's added parts are zero and add
   // nothing.

@@ -42,8 +42,10 @@ inline SineCosine remember_turn(RecentTurns& recent, std::uint64_t bits, double 
   const std::size_t at = recent.next;
   recent.next = (at + 1) & (RecentTurns::kEntries - 1);
   recent.bits[at] = bits;
-  recent.turns[at] = sine_cosine(theta);
-  return recent.turns[at];
+  // Returned as computed, not read back from the ring: every pivot's right-hand side takes it.
+  const SineCosine turn = sine_cosine(theta);
+  recent.turns[at] = turn;
+  return turn;
 }
 
 }  // namespace turn_cache_detail
