@@ -322,12 +322,10 @@ void SeatSystem::set_clear_of_ends(bool clear) {
 
 SeatSystem::PivotForce SeatSystem::pivot_force(double t, const BlockState& s) {
   if (t == lean_.t && std::memcmp(&s, &lean_.s, sizeof s) == 0) return lean_.force;
-  return pivot_force_at(t, s, cached_turn(s.theta));
+  return pivot_force_at(t, s, lean_arm(active_[0].pair.block, cached_turn(s.theta)));
 }
 
-SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s, SineCosine turn) {
-  // The arm as the pivot's chart turns it (PivotChart::arm).
-  const Vec2 r = rotate(c_.contacts->body_vertex(active_[0].pair.block), turn.cos, turn.sin);
+SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s, Vec2 r) {
   const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t) : wet_lifted_load(t, s);
   const double turning = turning_under(load, s.omega, r);
   // The centre of mass at pivot - r: its acceleration is -(d/dt)^2 r. The force is M a - Q in x
@@ -346,8 +344,10 @@ std::array<double, SeatSystem::kGuards> SeatSystem::lean_pivot_guards(double t, 
   std::array<double, kGuards> out = unused_guard_values();
   if (wanted[0]) out[0] = c_.contacts->overturn_margin(*c_.geometry, s.theta);
   const SineCosine turn = cached_turn(s.theta);
+  // The pivot's arm, turned once for its force and its own clearance.
+  const Vec2 r = lean_arm(active_[0].pair.block, turn);
   if (wanted[2] || wanted[3]) {
-    lean_.force = pivot_force_at(t, s, turn);
+    lean_.force = pivot_force_at(t, s, r);
     lean_.t = t;
     lean_.s = s;
     out[2] = lean_.force.normal / c_.g;
@@ -361,7 +361,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::lean_pivot_guards(double t, 
   std::size_t g = static_cast<std::size_t>(kFirstClearanceGuard);
   for (const int i : watched_vertices_) {
     if (wanted[g]) {
-      const double c = lean_clearance(i, s, turn);
+      const double c = lean_clearance(s, lean_arm(i, turn));
       out[g] = c / R;
       deepest = std::max(deepest, -c);
     } else {
@@ -372,14 +372,9 @@ std::array<double, SeatSystem::kGuards> SeatSystem::lean_pivot_guards(double t, 
   lean_.deepest_set = every;
   if (every) {
     lean_.pose = pose_bits(s);
-    lean_.deepest = std::max(deepest, -lean_clearance(active_[0].pair.block, s, turn));
+    lean_.deepest = std::max(deepest, -lean_clearance(s, r));
   }
   return out;
-}
-
-double SeatSystem::lean_clearance(int i, const BlockState& s, SineCosine turn) const {
-  const Vec2 r = rotate(c_.contacts->body_vertex(i), turn.cos, turn.sin);
-  return c_.contacts->clearance_at({s.x + r.x, s.y + r.y});
 }
 
 double SeatSystem::guard(int i, double t, const BlockState& s) {
@@ -407,8 +402,10 @@ double SeatSystem::penetration(const BlockState& s) const {
   if (lean_pivot_) {
     if (lean_.deepest_set && has_pose_bits(s, lean_.pose)) return lean_.deepest;
     const SineCosine turn = cached_turn(s.theta);
-    double deepest = std::max(0.0, -lean_clearance(active_[0].pair.block, s, turn));
-    for (const int i : watched_vertices_) deepest = std::max(deepest, -lean_clearance(i, s, turn));
+    double deepest = std::max(0.0, -lean_clearance(s, lean_arm(active_[0].pair.block, turn)));
+    for (const int i : watched_vertices_) {
+      deepest = std::max(deepest, -lean_clearance(s, lean_arm(i, turn)));
+    }
     return deepest;
   }
   if (!turned_.set || !has_pose_bits(s, turned_.pose)) return c_.contacts->penetration(s);

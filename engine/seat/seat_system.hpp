@@ -248,10 +248,17 @@ class SeatSystem {
     const double load_along = load.force.x * r.y - load.force.y * r.x + load.moment;
     return (load_along - omega * omega * r.x * (along_x - r.y)) / inertia;
   }
-  // pivot_force with the block's turn at s given.
-  PivotForce pivot_force_at(double t, const BlockState& s, SineCosine turn);
-  // Block vertex i's clearance at s, the block's turn given.
-  double lean_clearance(int i, const BlockState& s, SineCosine turn) const;
+  // pivot_force with the pivot's arm at s given (lean_arm).
+  PivotForce pivot_force_at(double t, const BlockState& s, Vec2 r);
+  // Block vertex i less the centre of mass, the block turned by `turn`: for the pivot, its arm as
+  // its chart turns it (PivotChart::arm).
+  Vec2 lean_arm(int i, SineCosine turn) const {
+    return rotate(c_.contacts->body_vertex(i), turn.cos, turn.sin);
+  }
+  // The clearance at s of the block vertex whose lean_arm is r.
+  double lean_clearance(const BlockState& s, Vec2 r) const {
+    return c_.contacts->clearance_at({s.x + r.x, s.y + r.y});
+  }
   // guards(t, s, wanted) elsewhere.
   std::array<double, kGuards> general_guards(double t, const BlockState& s,
                                              const GuardClaims& wanted);
