@@ -19,14 +19,6 @@ std::array<std::uint64_t, 3> pose_bits(const BlockState& s) {
           std::bit_cast<std::uint64_t>(s.theta)};
 }
 
-// Whether s's place and tilt are `bits`, compared word by word: array's != calls memcmp, whose
-// cost for 24 bytes depends on where they lie (a step's end, at every step).
-bool has_pose_bits(const BlockState& s, const std::array<std::uint64_t, 3>& bits) {
-  return std::bit_cast<std::uint64_t>(s.x) == bits[0] &&
-         std::bit_cast<std::uint64_t>(s.y) == bits[1] &&
-         std::bit_cast<std::uint64_t>(s.theta) == bits[2];
-}
-
 // Every guard at 1, an unused slot's value. Unrolled, the fill is one store per two slots: a
 // loop's, or a copy of a constant array (a string copy, one instruction per slot), cost twice
 // that or more (a rocking block's guards, at every step).
@@ -320,11 +312,6 @@ void SeatSystem::set_clear_of_ends(bool clear) {
   }
 }
 
-SeatSystem::PivotForce SeatSystem::pivot_force(double t, const BlockState& s) {
-  if (t == lean_.t && std::memcmp(&s, &lean_.s, sizeof s) == 0) return lean_.force;
-  return pivot_force_at(t, s, lean_arm(active_[0].pair.block, cached_turn(s.theta)));
-}
-
 SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s, Vec2 r) {
   const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t) : wet_lifted_load(t, s);
   const double turning = turning_under(load, s.omega, r);
@@ -396,11 +383,18 @@ double SeatSystem::guard(int i, double t, const BlockState& s) {
   return guards(t, s)[static_cast<std::size_t>(i)];
 }
 
-double SeatSystem::penetration(const BlockState& s) const {
+Vec2 SeatSystem::lean_arm(int i, SineCosine turn) const {
+  return rotate(c_.contacts->body_vertex(i), turn.cos, turn.sin);
+}
+
+double SeatSystem::lean_clearance(const BlockState& s, Vec2 r) const {
+  return c_.contacts->clearance_at({s.x + r.x, s.y + r.y});
+}
+
+double SeatSystem::penetration_anew(const BlockState& s) const {
   // A lean pivot's other vertices lie above the line its watched ones do (HullWatch), and the
   // seat's points are out of the block's reach.
   if (lean_pivot_) {
-    if (lean_.deepest_set && has_pose_bits(s, lean_.pose)) return lean_.deepest;
     const SineCosine turn = cached_turn(s.theta);
     double deepest = std::max(0.0, -lean_clearance(s, lean_arm(active_[0].pair.block, turn)));
     for (const int i : watched_vertices_) {

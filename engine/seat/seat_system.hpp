@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <span>
@@ -108,8 +110,12 @@ class SeatSystem {
   // guards() finds them, without the clearances: what a piece boundary asks of the mode.
   bool contacts_hold(double t, const BlockState& s);
   // How deep the block is in the seat at s (SeatContacts::penetration), from the vertices guards()
-  // turned where it last turned them at s: a step's end, whose penetration follows its guards.
-  double penetration(const BlockState& s) const;
+  // turned where it last turned them at s: a step's end, whose penetration follows its guards
+  // (inline where a lean pivot's did: the call was most of it).
+  double penetration(const BlockState& s) const {
+    if (lean_pivot_ && lean_.deepest_set && has_pose_bits(s, lean_.pose)) return lean_.deepest;
+    return penetration_anew(s);
+  }
   const FixedStateForces& solve(double t, const BlockState& s);
   // theta'' of the block turning about the fixed point at r from its centre of mass, where one
   // sticking contact holds it there (a PivotChart's); none with two contacts or more. The contact
@@ -122,10 +128,9 @@ class SeatSystem {
   std::optional<double> pivot_turning(double t, const BlockState& s, Vec2 r) {
     return pivot_turning(t, r, s.omega, [&]() -> const BlockState& { return s; });
   }
-  // The same at the state state_at() gives, its omega given: the state is built only where it is
-  // read, under a load that depends on it (the reservoir's). A pivot's right-hand side builds it
-  // from its chart, and building it for the dry block, whose turning reads omega alone, was 7 %
-  // of the right-hand side's instructions.
+  // The same at the state state_at() builds, its omega given: built only under a load that reads
+  // it (the reservoir's). The dry block's turning reads omega alone, and building its state was
+  // 7 % of a pivot's right-hand side.
   template <class StateAt>
   std::optional<double> pivot_turning(double t, Vec2 r, double omega, const StateAt& state_at) {
     if (count_ != 1) return std::nullopt;
@@ -145,7 +150,11 @@ class SeatSystem {
   struct PivotForce {
     double normal, tangent;
   };
-  PivotForce pivot_force(double t, const BlockState& s);
+  // Inline where the guards found it (a step's end, checked again): the call was most of it.
+  PivotForce pivot_force(double t, const BlockState& s) {
+    if (t == lean_.t && std::memcmp(&s, &lean_.s, sizeof s) == 0) return lean_.force;
+    return pivot_force_at(t, s, lean_arm(active_[0].pair.block, cached_turn(s.theta)));
+  }
   SeatEvent event(int guard) const { return events_[static_cast<std::size_t>(guard)]; }
   // The guards whose slot is used (the others are 1 throughout).
   GuardClaims live_guards() const { return live_; }
@@ -238,8 +247,7 @@ class SeatSystem {
   // step's end): its contact alone posed and solved, without the passes over the contacts.
   void set_sticking_guards(double t, const BlockState& s, std::span<const Vec2> world,
                            std::array<double, kGuards>& out);
-  // theta'' of pivot_turning under the load given, the block turning at omega. Inline: every
-  // right-hand side of a pivot takes it.
+  // theta'' of pivot_turning under the load given at omega (inline: every pivot's right-hand side).
   static double turning_under(const BodyLoad& load, double omega, Vec2 r) {
     const BodyInertia& m = load.inertia;
     const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
@@ -248,17 +256,22 @@ class SeatSystem {
     const double load_along = load.force.x * r.y - load.force.y * r.x + load.moment;
     return (load_along - omega * omega * r.x * (along_x - r.y)) / inertia;
   }
+  // Whether s's place and tilt are `bits`, word by word: array's != calls memcmp, whose cost for
+  // 24 bytes depends on where they lie (a step's end, at every step).
+  static bool has_pose_bits(const BlockState& s, const std::array<std::uint64_t, 3>& b) {
+    using std::bit_cast;
+    return bit_cast<std::uint64_t>(s.x) == b[0] && bit_cast<std::uint64_t>(s.y) == b[1] &&
+           bit_cast<std::uint64_t>(s.theta) == b[2];
+  }
+  // penetration(s) where the guards did not find it.
+  double penetration_anew(const BlockState& s) const;
   // pivot_force with the pivot's arm at s given (lean_arm).
   PivotForce pivot_force_at(double t, const BlockState& s, Vec2 r);
   // Block vertex i less the centre of mass, the block turned by `turn`: for the pivot, its arm as
   // its chart turns it (PivotChart::arm).
-  Vec2 lean_arm(int i, SineCosine turn) const {
-    return rotate(c_.contacts->body_vertex(i), turn.cos, turn.sin);
-  }
+  Vec2 lean_arm(int i, SineCosine turn) const;
   // The clearance at s of the block vertex whose lean_arm is r.
-  double lean_clearance(const BlockState& s, Vec2 r) const {
-    return c_.contacts->clearance_at({s.x + r.x, s.y + r.y});
-  }
+  double lean_clearance(const BlockState& s, Vec2 r) const;
   // guards(t, s, wanted) elsewhere.
   std::array<double, kGuards> general_guards(double t, const BlockState& s,
                                              const GuardClaims& wanted);
