@@ -314,7 +314,7 @@ void SeatSystem::set_clear_of_ends(bool clear) {
 
 SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s, Vec2 r) {
   const BodyLoad load = c_.external == nullptr ? dry_lifted_load(t) : wet_lifted_load(t, s);
-  const double turning = turning_under(load, s.omega, r);
+  const double turning = turning_about_pivot(load, s.omega, r);
   // The centre of mass at pivot - r: its acceleration is -(d/dt)^2 r. The force is M a - Q in x
   // and y, the added mass (horizontal) coupling x and theta; dry, M's added parts are zero and add
   // nothing.

@@ -22,6 +22,7 @@
 #include "engine/modes/modes.hpp"
 #include "engine/motion/ground_motion.hpp"
 #include "engine/seat/fixed_state_forces.hpp"
+#include "engine/seat/pivot_turning.hpp"
 #include "engine/seat/seat_chart.hpp"
 #include "engine/seat/seat_contacts.hpp"
 #include "engine/seat/sinusoid.hpp"
@@ -129,13 +130,13 @@ class SeatSystem {
     return pivot_turning(t, r, s.omega, [&]() -> const BlockState& { return s; });
   }
   // The same at the state state_at() builds, its omega given: built only under a load that reads
-  // it (the reservoir's). The dry block's turning reads omega alone, and building its state was
-  // 7 % of a pivot's right-hand side.
+  // it (the reservoir's). The dry block's turning reads omega alone, so that a dry pivot's
+  // right-hand sides build no state.
   template <class StateAt>
   std::optional<double> pivot_turning(double t, Vec2 r, double omega, const StateAt& state_at) {
     if (count_ != 1) return std::nullopt;
-    if (c_.external == nullptr) return turning_under(dry_lifted_load(t), omega, r);
-    return turning_under(wet_lifted_load(t, state_at()), omega, r);
+    if (c_.external == nullptr) return dry_turning_about_pivot(dry_lifted_load(t), omega, r);
+    return turning_about_pivot(wet_lifted_load(t, state_at()), omega, r);
   }
   // Whether the block turns about its pivot clear of the seat's ends (SeatContacts::
   // within_ends_turning_about, asked once per pivot). On a one-segment seat a block vertex sticking
@@ -247,17 +248,8 @@ class SeatSystem {
   // step's end): its contact alone posed and solved, without the passes over the contacts.
   void set_sticking_guards(double t, const BlockState& s, std::span<const Vec2> world,
                            std::array<double, kGuards>& out);
-  // theta'' of pivot_turning under the load given at omega (inline: every pivot's right-hand side).
-  static double turning_under(const BodyLoad& load, double omega, Vec2 r) {
-    const BodyInertia& m = load.inertia;
-    const double along_x = (1.0 + m.xx) * r.y + m.xtheta;             // (J^T M)_x
-    const double along_theta = m.xtheta * r.y + m.k2 + m.thetatheta;  // (J^T M)_theta
-    const double inertia = along_x * r.y + r.x * r.x + along_theta;
-    const double load_along = load.force.x * r.y - load.force.y * r.x + load.moment;
-    return (load_along - omega * omega * r.x * (along_x - r.y)) / inertia;
-  }
-  // Whether s's place and tilt are `bits`, word by word: array's != calls memcmp, whose cost for
-  // 24 bytes depends on where they lie (a step's end, at every step).
+  // Whether s's place and tilt are `b`, word by word: array's != calls memcmp, whose cost for 24
+  // bytes depends on where they lie (a step's end, at every step).
   static bool has_pose_bits(const BlockState& s, const std::array<std::uint64_t, 3>& b) {
     using std::bit_cast;
     return bit_cast<std::uint64_t>(s.x) == b[0] && bit_cast<std::uint64_t>(s.y) == b[1] &&
