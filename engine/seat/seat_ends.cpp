@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
 #include <span>
 #include <utility>
 
@@ -376,9 +377,61 @@ void PivotSweep::set_claimed_range(Point& point, double theta, SineCosine turn) 
   set_range_about(theta, reach, point.claimed_lo, point.claimed_hi);
 }
 
-GuardClaims SeatSystem::slip_claims(bool place_one_way, bool rate_one_way) const {
+namespace {
+
+// A sinusoid a cos(theta) + b sin(theta), not constant, has its minima at atan2(-b, -a) + 2 pi k:
+// whether one lies in [lo, hi] widened by kThetaStepMarginRad (far more than atan2's rounding).
+bool minimum_within(double a, double b, double lo, double hi) {
+  constexpr double kTurn = 2.0 * std::numbers::pi;
+  const double least = std::atan2(-b, -a);
+  const double first_after = least + kTurn * std::ceil((lo - kThetaStepMarginRad - least) / kTurn);
+  return first_after <= hi + kThetaStepMarginRad;
+}
+
+}  // namespace
+
+// The slipping vertex (the chart's `body`) stays on its segment's line, at p(s) = origin + s d +
+// offset n: the centre of mass is at p(s) - Rot(theta) body, and another vertex, w = v - body from
+// it in the body frame, at p(s) + Rot(theta) w. Their x are p(s).x, linear in the place s, within
+// |body| or |w| (bounded by the sum of their coordinates' sizes): with s moving one way, within
+// that of its range over the step. A vertex's height over the slip's own line is p(s)'s (its
+// constant offset) plus (w.y - m w.x) cos(theta) + (w.x + m w.y) sin(theta) for the line's slope
+// m, a sinusoid of theta alone: with theta moving one way and no minimum of it between the step's
+// tilts, it is least at the step's ends. Over another segment's line its height moves with s too:
+// not claimed.
+GuardClaims SeatSystem::slip_claims(const SlipChart& chart, const OdeState<SlipChart::N>& q0,
+                                    const OdeState<SlipChart::N>& q1, SlipMoves moves,
+                                    const GuardClaims& asked) const {
   GuardClaims claims = unused_guards();
-  claim_contact_guards(place_one_way, rate_one_way, claims);
+  claim_contact_guards(moves.place, moves.rate, claims);
+  if (!moves.theta || !moves.place) return claims;
+  const SeatLine& line = chart.line;
+  const auto place_x = [&](double s) {
+    return chart.origin.x + s * line.direction.x + line.offset * line.normal.x;
+  };
+  const double x0 = place_x(q0[2]), x1 = place_x(q1[2]);
+  const double x_lo = std::min(x0, x1), x_hi = std::max(x0, x1);
+  if (asked[0] || asked[1]) {
+    const double reach = std::abs(chart.body.x) + std::abs(chart.body.y);
+    claim_overturn_and_fall(x_lo - reach, x_hi + reach, true, false, claims);
+  }
+  const int seat = active_[0].pair.seat;
+  const Vec2 a = c_.contacts->seat_point(seat), b = c_.contacts->seat_point(seat + 1);
+  // A segment that does not run left to right is never asked (clearance_least_at_ends).
+  const double m = b.x > a.x ? (b.y - a.y) / (b.x - a.x) : 0.0;
+  const double lo = std::min(q0[0], q1[0]), hi = std::max(q0[0], q1[0]);
+  auto g = static_cast<std::size_t>(kFirstClearanceGuard);
+  for (const int i : watched_vertices_) {
+    if (asked[g]) {
+      const Vec2 v = c_.contacts->body_vertex(i);
+      const Vec2 w{v.x - chart.body.x, v.y - chart.body.y};
+      const double reach = std::abs(w.x) + std::abs(w.y);
+      claims[g] = clearance_least_at_ends(x_lo - reach, x_hi + reach, [&](int k) {
+        return k == seat && !minimum_within(w.y - m * w.x, w.x + m * w.y, lo, hi);
+      });
+    }
+    ++g;
+  }
   return claims;
 }
 

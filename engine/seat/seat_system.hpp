@@ -185,8 +185,14 @@ class SeatSystem {
   // The claims (GuardClaims) of the guards `asked` names over a step (engine/seat/seat_ends.cpp),
   // made only where they are exactly true of guards() (docs/physics.md, "Contact on a seat"); a
   // guard not asked is not looked at. Turning about a fixed point: PivotSweep.
-  // A vertex slipping along a line, its place and its rate along it moving one way or not:
-  GuardClaims slip_claims(bool place_one_way, bool rate_one_way) const;
+  // A vertex slipping along a seat segment's line on `chart` from q0 to q1, its tilt, place and
+  // rate along the line moving one way or not (`moves`):
+  struct SlipMoves {
+    bool theta, place, rate;
+  };
+  GuardClaims slip_claims(const SlipChart& chart, const OdeState<SlipChart::N>& q0,
+                          const OdeState<SlipChart::N>& q1, SlipMoves moves,
+                          const GuardClaims& asked) const;
   // Sliding without turning between the states s0 and s1, its place and rate likewise, and its
   // contacts' normal forces moving one way or not (slide_forces_one_way):
   GuardClaims slide_claims(const BlockState& s0, const BlockState& s1, bool place_one_way,
@@ -526,7 +532,7 @@ class SeatOde {
       if (!one_way(0)) return system_->unused_guards();
       return sweep_->claims(q0[0], q1[0], asked);
     } else if constexpr (std::is_same_v<Chart, SlipChart>) {
-      return system_->slip_claims(one_way(2), one_way(3));
+      return system_->slip_claims(chart_, q0, q1, {one_way(0), one_way(2), one_way(3)}, asked);
     } else if constexpr (std::is_same_v<Chart, SlideChart>) {
       return system_->slide_claims(
           chart_.full(0.0, q0), chart_.full(0.0, q1), one_way(0), one_way(1),

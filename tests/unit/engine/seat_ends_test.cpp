@@ -179,12 +179,52 @@ TEST(SeatEnds, SlideAndSlipClaimsHoldOverRandomSteps) {
         0.0, 0.0, p, q, [](int i) { return i >= 2; }, kEveryGuard);
     EXPECT_TRUE(slip_claims[3]);  // the slip's velocity
     EXPECT_TRUE(slip_claims[4]);  // its distance from its run's ends
-    check_claims(slipping, slip_claims, [&](double f) {
+    const auto slip_path = [&](double f) {
+      const auto at = [&](std::size_t i) { return p[i] + f * (q[i] - p[i]); };
+      return slip.guards(0.0, {at(0), at(1), at(2), at(3)});
+    };
+    check_claims(slipping, slip_claims, slip_path);
+    // theta moving one way too (the overturning margin).
+    check_claims(slipping,
+                 slip.guard_claims(
+                     0.0, 0.0, p, q, [](int) { return true; }, kEveryGuard),
+                 slip_path);
+  }
+  EXPECT_GT(claimed, 300);
+}
+
+// The heel slipping along a long level seat: the other vertices' heights are sinusoids of theta
+// alone, claimed least at an end of a step where theta and the place move one way and no minimum of
+// theirs lies within the step's tilts (every vertex of the block tilted up off the seat), and only
+// there.
+TEST(SeatEnds, SlippingOnALevelSeatTheOtherVerticesClearancesAreLeastAtAnEnd) {
+  const TypeBSeat level({{-1e4, 0.0}, {1e4, 0.0}});
+  const SeatContacts& c = level.contacts;
+  SeatSystem slipping = level.system(
+      {{{ContactKind::block_vertex, 0, 0}, ContactState::slip_negative}}, {1, 2, 3, 4, 5}, {});
+  const SeatOde slip(slipping, SlipChart{{0.0, 0.0}, c.segment_line(0), c.body_vertex(0)});
+  FixedUniforms u(37);
+  int tilted_up = 0;
+  for (int n = 0; n < 600; ++n) {
+    // Every other step at any tilt, its range holding some vertices' least heights.
+    const bool anywhere = n % 2 == 1;
+    const OdeState<4> p{anywhere ? u(-3, 3) : u(0.01, 0.5), 0.2, u(-20, 20), u(-1, 0)};
+    const double turn = anywhere ? u(-0.5, 0.5) : u(-0.05, 0.05);
+    const OdeState<4> q{p[0] + turn, 0.2, p[2] + u(-1, 1), u(-1, 0)};
+    const auto claims = slip.guard_claims(
+        0.0, 0.0, p, q, [](int) { return true; }, kEveryGuard);
+    const int claimed = check_claims(slipping, claims, [&](double f) {
       const auto at = [&](std::size_t i) { return p[i] + f * (q[i] - p[i]); };
       return slip.guards(0.0, {at(0), at(1), at(2), at(3)});
     });
+    if (!anywhere) tilted_up += claimed;
+    for (const int still : {0, 2}) {
+      const auto none = slip.guard_claims(
+          0.0, 0.0, p, q, [&](int i) { return i != still; }, kEveryGuard);
+      EXPECT_FALSE(none[kFirstClearanceGuard]) << n;
+    }
   }
-  EXPECT_GT(claimed, 300);
+  EXPECT_EQ(tilted_up, 300 * 5);
 }
 
 // Sliding down the inclined segment under a sine: the ground's inertia has a part across the line,
