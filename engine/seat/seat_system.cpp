@@ -128,6 +128,13 @@ const FixedStateForces& SeatSystem::solve(double t, const BlockState& s) {
   return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, active_contacts(s));
 }
 
+const FixedStateForces& SeatSystem::solve_slipping(double t, const BlockState& s, Vec2 r) {
+  // Two contacts: the vertex on two collinear segments (a flat seat's joint).
+  if (count_ != 1) return solve(t, s);
+  if (solved_at(t, s)) return last_solve_.forces;
+  return solve_one_anew(t, s, vertex_contact(0, {s.x + r.x, s.y + r.y}, s));
+}
+
 const FixedStateForces& SeatSystem::solve(double t, const BlockState& s, const Contacts& contacts) {
   return solved_at(t, s) ? last_solve_.forces : solve_anew(t, s, contacts);
 }

@@ -118,6 +118,10 @@ class SeatSystem {
     return penetration_anew(s);
   }
   const FixedStateForces& solve(double t, const BlockState& s);
+  // solve(t, s) on a SlipChart, r the slipping vertex's arm at s as the chart turns it (as
+  // SeatContacts::vertex_at turns it): its contact is posed from r, not turned again (every
+  // right-hand side of a slipping block).
+  const FixedStateForces& solve_slipping(double t, const BlockState& s, Vec2 r);
   // theta'' of the block turning about the fixed point at r from its centre of mass, where one
   // sticking contact holds it there (a PivotChart's); none with two contacts or more. The contact
   // force does no work on the turning: with J = d(x, y, theta)/d theta = (r_y, -r_x, 1) and the
@@ -497,7 +501,7 @@ class SeatOde {
     } else if constexpr (std::is_same_v<Chart, SlipChart>) {
       const Vec2 r = chart_.fresh_arm(q[0]);
       const BlockState s = chart_.full_at_arm(q, r);
-      dq = chart_.rates_at_arm(q, r, system_->solve(t, s).acceleration);
+      dq = chart_.rates_at_arm(q, r, system_->solve_slipping(t, s, r).acceleration);
     } else {
       const BlockState s = chart_.full(t, q);
       dq = chart_.rates(q, s, system_->solve(t, s).acceleration);
