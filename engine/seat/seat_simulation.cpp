@@ -19,6 +19,7 @@
 #include "engine/seat/closed_form_flight.hpp"
 #include "engine/seat/hull_watch.hpp"
 #include "engine/seat/seat_ground.hpp"
+#include "engine/seat/seat_ode.hpp"
 #include "engine/sine_cosine.hpp"
 #include "engine/tolerances.hpp"
 

@@ -29,6 +29,16 @@ std::array<double, SeatSystem::kGuards> unused_guard_values() {
   return ones;
 }
 
+// Every guard wanted (a step's end).
+const GuardClaims& every_guard() {
+  static const GuardClaims every = [] {
+    GuardClaims all;
+    all.fill(true);
+    return all;
+  }();
+  return every;
+}
+
 }  // namespace
 
 SeatSystem::SeatSystem(const SeatSystemContext& c, const std::vector<ActiveContact>& active,
@@ -188,19 +198,23 @@ const BodyLoad& SeatSystem::wet_lifted_load(double t, const BlockState& s) {
 }
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s) {
-  static const GuardClaims every = [] {
-    GuardClaims all;
-    all.fill(true);
-    return all;
-  }();
-  return guards(t, s, every);
+  return guards(t, s, every_guard());
 }
 
 std::array<double, SeatSystem::kGuards> SeatSystem::guards(double t, const BlockState& s,
                                                            const GuardClaims& wanted) {
-  // Two calls, not an early return: each result is built in the caller's place (an early return
-  // of another array than the one built here copied all 64 slots at every call).
-  return lean_pivot_ ? lean_pivot_guards(t, s, wanted) : general_guards(t, s, wanted);
+  // Calls returned, not a local array: each result is built in the caller's place (an early
+  // return of another array than the one built here copied all 64 slots at every call).
+  if (!lean_pivot_) return general_guards(t, s, wanted);
+  const SineCosine turn = cached_turn(s.theta);
+  return lean_pivot_guards(t, s, wanted, turn, lean_arm(active_[0].pair.block, turn));
+}
+
+std::array<double, SeatSystem::kGuards> SeatSystem::pivot_guards(double t, const BlockState& s,
+                                                                 SineCosine turn, Vec2 r) {
+  // A lean pivot is a block vertex's, whose chart turns that vertex (its body) to r as lean_arm
+  // does.
+  return lean_pivot_ ? lean_pivot_guards(t, s, every_guard(), turn, r) : guards(t, s);
 }
 
 std::array<double, SeatSystem::kGuards> SeatSystem::general_guards(double t, const BlockState& s,
@@ -334,7 +348,8 @@ SeatSystem::PivotForce SeatSystem::pivot_force_at(double t, const BlockState& s,
 }
 
 std::array<double, SeatSystem::kGuards> SeatSystem::lean_pivot_guards(double t, const BlockState& s,
-                                                                      const GuardClaims& wanted) {
+                                                                      const GuardClaims& wanted,
+                                                                      SineCosine turn, Vec2 r) {
   // Not all 64 slots at 1 (a sixth of this, at every step of a rocking block): only the ones a
   // lean pivot keeps at 1 that are read, the fall's and the seat points', which a piece's end keeps
   // for the next piece's watch (SeatSimulation::ended_piece). No one reads the unused slots. A
@@ -347,9 +362,7 @@ std::array<double, SeatSystem::kGuards> SeatSystem::lean_pivot_guards(double t, 
   if (points > 0) out[points_from] = 1.0;
   if (points > 1) out[points_from + 1] = 1.0;
   if (wanted[0]) out[0] = c_.contacts->overturn_margin(*c_.geometry, s.theta);
-  const SineCosine turn = cached_turn(s.theta);
-  // The pivot's arm, turned once for its force and its own clearance.
-  const Vec2 r = lean_arm(active_[0].pair.block, turn);
+  // The pivot's arm serves its force and its own clearance.
   if (wanted[2] || wanted[3]) {
     lean_.force = pivot_force_at(t, s, r);
     lean_.t = t;

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/seat/seat_ode.hpp"
 #include "engine/seat/seat_system.hpp"
 #include "engine/seat/sinusoid.hpp"
 #include "engine/sine_cosine.hpp"

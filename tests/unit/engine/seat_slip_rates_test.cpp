@@ -12,6 +12,7 @@
 #include "engine/scene/block_geometry.hpp"
 #include "engine/scene/scene_validation.hpp"
 #include "engine/scene/seat.hpp"
+#include "engine/seat/seat_ode.hpp"
 #include "engine/seat/seat_system.hpp"
 #include "engine/sine_cosine.hpp"
 #include "engine/water/reservoir_load.hpp"

@@ -13,6 +13,7 @@
 
 #include "engine/integrate/rk4_stepper.hpp"
 #include "engine/seat/closed_form_flight.hpp"
+#include "engine/seat/seat_ode.hpp"
 #include "engine/seat/seat_system.hpp"
 #include "tests/support/fixed_uniforms.hpp"
 #include "tests/support/type_b_seat_system.hpp"
