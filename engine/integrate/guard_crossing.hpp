@@ -141,14 +141,16 @@ class GuardWatch {
     }
   }
 
+  // The guards watched, in increasing order: only their entries are set.
+  std::span<const int> live() const {
+    return std::span(live_).first(static_cast<std::size_t>(live_count_));
+  }
+
  private:
   static std::array<bool, G> all_live() {
     std::array<bool, G> live;
     live.fill(true);
     return live;
-  }
-  std::span<const int> live() const {
-    return std::span(live_).first(static_cast<std::size_t>(live_count_));
   }
   // Only the live guards' entries are set, and only theirs are read: a watch is set up at every
   // motion piece (a record's every sample), most of a seat's 64 guard slots unused.

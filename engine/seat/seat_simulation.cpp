@@ -262,8 +262,12 @@ SeatSimulation::Crossing SeatSimulation::unarmed_landing_before(
   std::array<bool, SeatSystem::kGuards> wanted{};
   std::array<double, SeatSystem::kGuards> a, fa;  // each one's last sample above zero
   bool any = false;
-  for (std::size_t g = kFirst; g < end; ++g) {
-    wanted[g] = static_cast<int>(g) != found.which && !watch.armed(static_cast<int>(g));
+  // The watched clearances alone: an unwatched slot's arming is not set (a lean pivot's seat
+  // points).
+  for (const int i : watch.live()) {
+    const auto g = static_cast<std::size_t>(i);
+    if (g < kFirst || g >= end) continue;
+    wanted[g] = i != found.which && !watch.armed(i);
     a[g] = t0;
     fa[g] = watch.values()[g];
     any = any || wanted[g];
