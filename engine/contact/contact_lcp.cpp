@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -15,6 +16,15 @@
 #include "engine/tolerances.hpp"
 
 namespace blockfrag {
+
+std::optional<double> solve_single(double a, double d) {
+  // FullPivLU's rank test of a 1 x 1 matrix: its pivot above the pivot's size times epsilon
+  // (false for 0, infinity and NaN alike).
+  const double size = std::abs(a);
+  if (!(size > size * std::numeric_limits<double>::epsilon())) return std::nullopt;
+  // Its triangular solve divides only a right-hand side that is not zero, keeping a zero's sign.
+  return d != 0.0 ? d / a : d;
+}
 
 namespace {
 
@@ -39,6 +49,13 @@ std::vector<ContactState> allowed_states(const LcpContact& c) {
 
 // The preference order: fewest contacts not sticking, then fewest off, then the contacts' order.
 std::vector<std::vector<ContactState>> choices_in_order(const LcpProblem& p) {
+  // One contact's allowed states already come in this order (a landing corner, a pivot): most
+  // problems on a seat, spared the products and the sort below.
+  if (p.contacts.size() == 1) {
+    std::vector<std::vector<ContactState>> single;
+    for (const ContactState s : allowed_states(p.contacts.front())) single.push_back({s});
+    return single;
+  }
   std::vector<std::vector<ContactState>> choices{{}};
   for (const LcpContact& c : p.contacts) {
     std::vector<std::vector<ContactState>> longer;
@@ -198,6 +215,11 @@ class Choice {
       d(r) = row.normal ? c.target_n - c.free_n : -c.free_t;
     }
     if (m.pinned) return std::nullopt;
+    // One slipping contact alone (k = n = 1): the LU's decomposition and solve, in closed form.
+    if (k == 1) {
+      const std::optional<double> amount = solve_single(m.a(0, 0), d(0));
+      return amount ? check(Vector::Constant(1, *amount)) : std::nullopt;
+    }
     if (m.reach) {
       const Eigen::Vector3d reach = m.reach->solve(d);
       if ((m.j * reach - d).cwiseAbs().maxCoeff() > p_.tolerance) return std::nullopt;

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -85,6 +86,11 @@ LcpSolution solve_contact_lcp(const LcpProblem& problem, LcpSearch search = LcpS
 bool first_consistent_is_still(const LcpProblem& problem,
                                const std::function<bool(const LcpSolution&)>& still,
                                LcpDecompositions* decompositions = nullptr);
+
+// The solution of a x = d as solve_contact_lcp's FullPivLU gives it for a 1 x 1 system, to the
+// bit, or none where that LU finds the system singular: a choice with one slipping contact and
+// every other off, decided without decomposing.
+std::optional<double> solve_single(double a, double d);
 
 // y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
 // Inline: every right-hand side on a seat asks for it several times per contact.
