@@ -26,6 +26,39 @@ std::optional<double> solve_single(double a, double d) {
   return d != 0.0 ? d / a : d;
 }
 
+std::optional<std::array<double, 2>> solve_pair(const std::array<std::array<double, 2>, 2>& a,
+                                                const std::array<double, 2>& d) {
+  for (const auto& row : a) {
+    if (!std::isfinite(row[0]) || !std::isfinite(row[1])) return std::nullopt;
+  }
+  const auto at = [&](int r, int c) {
+    return a[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+  };
+  // The pivot: the first largest in column-major order, as Eigen's maxCoeff visits.
+  int pr = 0, pc = 0;
+  double best = std::abs(at(0, 0));
+  for (const auto& [r, c] : {std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}}) {
+    if (std::abs(at(r, c)) > best) best = std::abs(at(r, c)), pr = r, pc = c;
+  }
+  if (best == 0.0) return std::nullopt;
+  const double pivot = at(pr, pc), u01 = at(pr, 1 - pc);
+  const double l = at(1 - pr, pc) / pivot;
+  const double u11 = at(1 - pr, 1 - pc) - l * u01;
+  // The rank test: both pivots above the larger's size times the diagonal size times epsilon.
+  const double threshold =
+      std::max(best, std::abs(u11)) * (2.0 * std::numeric_limits<double>::epsilon());
+  if (!(std::abs(u11) > threshold) || !(best > threshold)) return std::nullopt;
+  // The triangular solves, each skipping a zero right-hand side as Eigen's does.
+  double c0 = d[static_cast<std::size_t>(pr)], c1 = d[static_cast<std::size_t>(1 - pr)];
+  if (c0 != 0.0) c1 -= c0 * l;
+  if (c1 != 0.0) {
+    c1 /= u11;
+    c0 -= c1 * u01;
+  }
+  if (c0 != 0.0) c0 /= pivot;
+  return pc == 0 ? std::array{c0, c1} : std::array{c1, c0};
+}
+
 namespace {
 
 // More contacts than this would make trying every choice (4^n) too slow to be exact.
@@ -219,6 +252,15 @@ class Choice {
     if (k == 1) {
       const std::optional<double> amount = solve_single(m.a(0, 0), d(0));
       return amount ? check(Vector::Constant(1, *amount)) : std::nullopt;
+    }
+    // One sticking contact alone, or two slipping: likewise, where the LU would find it invertible.
+    if (k == 2) {
+      if (const auto amounts =
+              solve_pair({{{m.a(0, 0), m.a(0, 1)}, {m.a(1, 0), m.a(1, 1)}}}, {d(0), d(1)})) {
+        Vector x(2);
+        x << (*amounts)[0], (*amounts)[1];
+        return check(x);
+      }
     }
     if (m.reach) {
       const Eigen::Vector3d reach = m.reach->solve(d);

@@ -9,6 +9,7 @@
 // touches a seat at a few points) make this exact and let every consistent choice be seen.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -91,6 +92,11 @@ bool first_consistent_is_still(const LcpProblem& problem,
 // bit, or none where that LU finds the system singular: a choice with one slipping contact and
 // every other off, decided without decomposing.
 std::optional<double> solve_single(double a, double d);
+
+// Likewise for an invertible 2 x 2 system (a[row][column]): one sticking contact, or two slipping.
+// None where that LU finds it singular, or where it is not finite: left to the LU.
+std::optional<std::array<double, 2>> solve_pair(const std::array<std::array<double, 2>, 2>& a,
+                                                const std::array<double, 2>& d);
 
 // y_n and y_t rows of a contact for q' = (x', y', theta'): n . u and t . u of the material point.
 // Inline: every right-hand side on a seat asks for it several times per contact.
