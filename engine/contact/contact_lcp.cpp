@@ -103,21 +103,21 @@ std::vector<std::vector<ContactState>> choices_in_order(const LcpProblem& p) {
   // Sorted on (not sticking, off, position in the list): the position as the last key keeps the
   // contacts' order among equals as stable_sort would, without its temporary buffer, whose
   // allocation AddressSanitizer reports as mismatched with Debian 12's libstdc++.
-  const auto key = [&](std::size_t i) {
+  // Each key computed once, not in every comparison: the keys are distinct, so the order is the
+  // same.
+  std::vector<std::tuple<int, int, std::size_t>> keys(choices.size());
+  for (std::size_t i = 0; i < choices.size(); ++i) {
     int not_sticking = 0, off = 0;
     for (const ContactState s : choices[i]) {
       not_sticking += s != ContactState::stick;
       off += s == ContactState::off;
     }
-    return std::tuple{not_sticking, off, i};
-  };
-  std::vector<std::size_t> order(choices.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+    keys[i] = {not_sticking, off, i};
+  }
+  std::sort(keys.begin(), keys.end());
   std::vector<std::vector<ContactState>> sorted;
   sorted.reserve(choices.size());
-  for (const std::size_t i : order) sorted.push_back(std::move(choices[i]));
+  for (const auto& [not_sticking, off, i] : keys) sorted.push_back(std::move(choices[i]));
   return sorted;
 }
 
