@@ -248,12 +248,14 @@ class Choice {
       d(r) = row.normal ? c.target_n - c.free_n : -c.free_t;
     }
     if (m.pinned) return std::nullopt;
-    // One slipping contact alone (k = n = 1): the LU's decomposition and solve, in closed form.
+    // One slipping contact alone (k = n = 1), one sticking, or two slipping: the LU's
+    // decomposition and solve in closed form where the LU would find the system invertible; a
+    // singular one is left to the LU's search of redundant rows below.
     if (k == 1) {
-      const std::optional<double> amount = solve_single(m.a(0, 0), d(0));
-      return amount ? check(Vector::Constant(1, *amount)) : std::nullopt;
+      if (const std::optional<double> amount = solve_single(m.a(0, 0), d(0))) {
+        return check(Vector::Constant(1, *amount));
+      }
     }
-    // One sticking contact alone, or two slipping: likewise, where the LU would find it invertible.
     if (k == 2) {
       if (const auto amounts =
               solve_pair({{{m.a(0, 0), m.a(0, 1)}, {m.a(1, 0), m.a(1, 1)}}}, {d(0), d(1)})) {
